@@ -1,0 +1,126 @@
+# aero: physically based aerodynamic sound for Pure Data.
+#
+#   make            externals (one per object), the core library, aerotex
+#   make lib        the single-binary library aero.pd_linux (aero_setup())
+#   make check      every test CI runs (installs missing dependencies first)
+#   make demo       renders the demo scenes under build/demo/
+#   make bench      benchmarks (not part of check), see BENCHMARKS.md
+#   make deps       installs the Debian packages the project needs
+#   make install    installs into Pd's externals folder (pd-lib-builder)
+#
+# The Pd externals are built by pd-lib-builder: a copy in pd-lib-builder/ if
+# one is placed there, otherwise Debian's package (never copied into this tree).
+
+lib.name = aero
+
+# --- the Pd side: one external per object, plus the single-binary setup ----
+class.sources = $(sort $(wildcard src/pd/*~.c))
+lib.setup.sources = src/pd/aero.c
+
+datafiles = $(wildcard help/*.pd) $(wildcard abstractions/*.pd) \
+    README.md LICENSE
+datadirs = $(if $(wildcard textures/*.wav),textures)
+
+# No -ffast-math: the core relies on NaN checks (x != x) to sanitise input.
+CFLAGS = -Wall -Wextra -Wshadow -O3 -funroll-loops -fomit-frame-pointer
+cflags = -std=c99 -D_POSIX_C_SOURCE=200809L -Isrc/core
+ldlibs = build/libaero_core.a -lm
+
+PDLIBBUILDER_DIR ?= $(if $(wildcard pd-lib-builder/Makefile.pdlibbuilder),\
+    pd-lib-builder,/usr/share/pd-lib-builder)
+
+ifneq ($(wildcard $(PDLIBBUILDER_DIR)/Makefile.pdlibbuilder),)
+include $(PDLIBBUILDER_DIR)/Makefile.pdlibbuilder
+else
+all:
+	@echo "pd-lib-builder is missing: run 'make deps' first" >&2; exit 1
+endif
+
+# --- the host-independent core: build/libaero_core.a ------------------------
+BUILD = build
+CORE_CC = $(CC)
+CORE_CFLAGS = -std=c99 -D_POSIX_C_SOURCE=200809L -O3 -fPIC -fopenmp \
+    -Wall -Wextra -Wshadow -Isrc/core
+core.sources = $(sort $(wildcard src/core/*.c))
+core.objects = $(patsubst src/core/%.c,$(BUILD)/core/%.o,$(core.sources))
+core.lib = $(BUILD)/libaero_core.a
+TOOL_LIBS = $(core.lib) -lsndfile -lfftw3 -lfftw3f -lpng -lm -fopenmp
+
+$(BUILD)/core/%.o: src/core/%.c $(wildcard src/core/*.h)
+	@mkdir -p $(dir $@)
+	$(CORE_CC) $(CORE_CFLAGS) -c $< -o $@
+
+$(core.lib): $(core.objects)
+	@mkdir -p $(dir $@)
+	rm -f $@
+	ar rcs $@ $^
+
+# externals and the lib binary link the core archive
+$(classes.executables) $(lib.name).$(extension): $(core.lib)
+
+# --- tools: aerotex and the test analyser -----------------------------------
+aerotex.sources = $(sort $(wildcard src/tools/aerotex*.c))
+analyze.sources = tests/analyze/aero-analyze.c
+
+$(BUILD)/aerotex: $(aerotex.sources) $(core.lib) $(wildcard src/tools/*.h)
+	$(CORE_CC) $(CORE_CFLAGS) $(aerotex.sources) -o $@ $(TOOL_LIBS)
+
+$(BUILD)/aero-analyze: $(analyze.sources) $(core.lib)
+	$(CORE_CC) $(CORE_CFLAGS) $(analyze.sources) -o $@ $(TOOL_LIBS)
+
+# --- unit tests of src/core: one binary per tests/unit/test_*.c -------------
+unit.sources = $(sort $(wildcard tests/unit/test_*.c))
+unit.binaries = $(patsubst tests/unit/%.c,$(BUILD)/tests/%,$(unit.sources))
+
+$(BUILD)/tests/%: tests/unit/%.c tests/unit/unit.h $(core.lib)
+	@mkdir -p $(dir $@)
+	$(CORE_CC) $(CORE_CFLAGS) $< -o $@ $(TOOL_LIBS)
+
+.PHONY: tools lib pdinstance deps check check-only demo bench textures
+
+all: tools
+tools: $(BUILD)/aerotex $(BUILD)/aero-analyze $(unit.binaries)
+
+# the single binary (what a libpd app links); built by a second
+# pd-lib-builder pass that reuses the same object files
+lib: all
+	$(MAKE) --no-print-directory make-lib-executable=yes
+
+# the wrappers must also compile for multi-instance libpd
+pdinstance:
+	@for f in $(class.sources) $(lib.setup.sources); do \
+	    $(CC) -std=c99 -fsyntax-only -Wall -Wextra -Werror \
+	        -DPDINSTANCE -DPDTHREADS -I/usr/include/pd -Isrc/core $$f \
+	        || exit 1; \
+	done; echo "wrappers compile with -DPDINSTANCE -DPDTHREADS"
+
+# --- dependencies: Debian packages ------------------------------------------
+DEB_PACKAGES = puredata-core puredata-dev pd-lib-builder libfftw3-dev \
+    libsndfile1-dev libpng-dev sox gcc make
+deps:
+	@sh tests/deps.sh $(DEB_PACKAGES)
+
+# --- the two commands of the README -----------------------------------------
+check:
+	@$(MAKE) --no-print-directory deps
+	@$(MAKE) --no-print-directory -s all lib >$(BUILD).log 2>&1 || \
+	    { cat $(BUILD).log; exit 1; }
+	@sh tests/run.sh
+
+demo:
+	@$(MAKE) --no-print-directory deps
+	@$(MAKE) --no-print-directory -s all >/dev/null
+	@sh tests/demo.sh
+
+bench:
+	@$(MAKE) --no-print-directory deps
+	@$(MAKE) --no-print-directory -s all >/dev/null
+	@sh bench/run.sh
+
+textures:
+	@$(MAKE) --no-print-directory -s tools
+	@sh textures/make.sh
+
+clean: clean-aero
+clean-aero:
+	rm -rf $(BUILD) $(BUILD).log

@@ -1,0 +1,101 @@
+/* aero: aeolian tone of a circular cylinder, Strouhal/Reynolds model mode.
+ *
+ * The light-weight model of papers 001 and 000, done physically (DESIGN.md):
+ * a cylinder of diameter d and length l, its axis along z, in a flow of
+ * speed U along x (the speed is a signal). The wake sheds at f = St(Re) U / d;
+ * the fluctuating lift (a dipole along y) radiates at f, the fluctuating drag
+ * (a dipole along x, ~10x weaker) at 2f. Far field of a compact force (Curle):
+ *     p = x_i dF_i/dt / (4 pi c0 r^2),
+ * per unit span F' = 1/2 rho U^2 d C_L', dF/dt ~ 2 pi f F', so the pressure
+ * amplitude grows as U^3 (not U^6, the intensity law the papers apply to
+ * amplitude). The span is split into incoherent segments of ~3 d (the
+ * spanwise correlation length, paper 000): their powers add.
+ *
+ * The shedding is a narrow-band process: its phase diffuses and its envelope
+ * wanders, the peak widening continuously as the wake turns turbulent.
+ *
+ * Life cycle: init, set_*, process (any block size), no free needed (no
+ * allocation). All state is in the struct; no globals. */
+#ifndef AERO_AEOLIAN_MODEL_H
+#define AERO_AEOLIAN_MODEL_H
+
+#include <stdint.h>
+
+#define AERO_AEOLIAN_MAX_EARS 2
+#define AERO_AEOLIAN_CHUNK 256     /* scratch length of the inner loops */
+#define AERO_AEOLIAN_MAX_POINTS 256 /* span integration points (geometry) */
+
+/* Controls that ramp linearly to their targets (no zipper noise). */
+enum {
+    AERO_CTL_DIAMETER,
+    AERO_CTL_LENGTH,
+    AERO_CTL_GAIN, /* linear factor */
+    AERO_CTL_EAR,  /* 3 * AERO_AEOLIAN_MAX_EARS coordinates follow */
+    AERO_CTL_COUNT = AERO_CTL_EAR + 3 * AERO_AEOLIAN_MAX_EARS
+};
+
+typedef struct aero_aeolian_model {
+    double sample_rate;
+    int n_ears;
+    uint32_t rng;
+
+    /* ramped controls */
+    double ctl[AERO_CTL_COUNT], ctl_target[AERO_CTL_COUNT];
+    double ramp_samples;  /* ramp length for new targets */
+    double ramp_left;     /* samples until the targets are reached */
+    int geometry_dirty;
+
+    /* geometric radiation factors per ear, sqrt(sum (x_i / r^2)^2) over the
+     * span segments: lift (y) and drag (x) dipoles, 1/m^2 */
+    double lift_geometry[AERO_AEOLIAN_MAX_EARS];
+    double drag_geometry[AERO_AEOLIAN_MAX_EARS];
+    double centre_distance; /* mean ear distance, for Doppler */
+    double prev_distance;   /* the same at the previous block */
+
+    /* per-sample coefficients at the end of the previous block, from which
+     * the next block interpolates */
+    int primed;
+    double freq_coef;   /* cycles per sample per (m/s) */
+    double lift_coef[AERO_AEOLIAN_MAX_EARS]; /* Pa per (m/s)^3 */
+    double drag_coef[AERO_AEOLIAN_MAX_EARS];
+    double jitter;      /* phase diffusion step, cycles (uniform width) */
+    double am_alpha;    /* envelope low-pass coefficient */
+    double am_scale;    /* envelope depth / its std deviation */
+
+    /* oscillator state */
+    double phase;       /* cycles, [0, 1) */
+    double envelope;    /* low-passed noise of the envelope */
+
+    int clamped;        /* set when a speed above Mach 0.3 was clamped */
+
+    float scratch_phase[AERO_AEOLIAN_CHUNK];
+    float scratch_amp[AERO_AEOLIAN_CHUNK];
+} aero_aeolian_model;
+
+/* Defaults: d = 1 cm, l = 0.5 m, one listener 1 m away along +y (across the
+ * flow and the axis), gain 0 dB, ramp 20 ms. */
+void aero_aeolian_model_init(aero_aeolian_model *m, double sample_rate,
+                             int n_ears, uint32_t seed);
+
+/* Setters return 0 when accepted, -1 when the value is invalid (then the
+ * previous value stays). Geometry ramps over the ramp time. */
+int aero_aeolian_model_set_sample_rate(aero_aeolian_model *m, double sr);
+int aero_aeolian_model_set_diameter(aero_aeolian_model *m, double d);
+int aero_aeolian_model_set_length(aero_aeolian_model *m, double l);
+int aero_aeolian_model_set_gain_db(aero_aeolian_model *m, double db);
+int aero_aeolian_model_set_ramp_ms(aero_aeolian_model *m, double ms);
+int aero_aeolian_model_set_ear(aero_aeolian_model *m, int ear, double x,
+                               double y, double z);
+void aero_aeolian_model_set_seed(aero_aeolian_model *m, uint32_t seed);
+
+/* Render n samples. speed[i]: flow speed in m/s across the axis (sign is
+ * the flow direction; NaN counts as 0; |U| is clamped at Mach 0.3).
+ * out[e][i]: sound pressure in Pa at ear e. Returns 1 if this block had to
+ * clamp a speed, else 0. */
+int aero_aeolian_model_process(aero_aeolian_model *m, const float *speed,
+                               float *const *out, int n);
+
+/* Peak frequency of the lift tone for a steady speed (Hz), 0 below onset. */
+double aero_aeolian_model_tone_hz(const aero_aeolian_model *m, double speed);
+
+#endif

@@ -1,0 +1,34 @@
+/* aero: vortex shedding from a circular cylinder as a function of the
+ * Reynolds number, the laws shared by every object that sheds (DESIGN.md,
+ * papers 000 and 001). */
+#ifndef AERO_STROUHAL_H
+#define AERO_STROUHAL_H
+
+/* Shedding onset: the wake becomes unstable at Re ~ 47 (Provansal et al.
+ * 1987; Williamson 1996). Below it there is no tone. */
+#define AERO_RE_ONSET 47.0
+
+/* Re = rho U d / mu for air (DESIGN.md constants). */
+double aero_reynolds(double speed, double diameter);
+
+/* Strouhal number St(Re) of a circular cylinder:
+ *   Williamson (1996) laminar fit  St = -3.3265/Re + 0.1816 + 1.6e-4 Re
+ *     (valid 49 < Re < 178),
+ *   Roshko's form  St = 0.198 (1 - 19.7/Re)  above (as in paper 001),
+ * blended with a smoothstep between Re 170 and 260, where the wake turns
+ * three-dimensional and St really does drop (Williamson's mode A).
+ * Below onset it returns the fit's value at onset (the tone is silent there). */
+double aero_strouhal(double re);
+
+/* Relative strength of shedding, 0 below onset rising to 1: the lift
+ * amplitude of a Hopf bifurcation grows as sqrt(Re - Re_c) (Provansal et al.
+ * 1987); it saturates with a scale chosen so that the rms lift at Re 100 is
+ * about half of the subcritical value (0.23 vs 0.45, Norberg 2003). */
+double aero_shedding_strength(double re);
+
+/* How turbulent the wake is, 0 (laminar, Re << 400) to 1 (Re >> 400): a
+ * continuous logistic law in log Re centred on the wake transition range
+ * (Re ~ 190..1000). Drives the width of the shedding peak. */
+double aero_wake_turbulence(double re);
+
+#endif

@@ -1,0 +1,283 @@
+/* [aeolian~]: the aeolian tone of a cylinder in a flow (wind past a wire, a
+ * rod, a branch). Thin Pd wrapper around src/core/aeolian_model: it parses
+ * flags, routes messages to setters and calls process from perform.
+ *
+ *   [aeolian~ -d 0.01 -l 0.5 -gain 0 -seed 1 -ramp 20 -stereo]
+ *   inlet 1 (signal): flow speed across the axis, m/s
+ *   outlet(s) (signal): sound pressure at the listener (ears), Pa
+ */
+#include "m_pd.h"
+#include "g_canvas.h"
+
+#include "aeolian_model.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+static t_class *aeolian_tilde_class;
+
+typedef struct _aeolian_tilde {
+    t_object x_obj;
+    t_float x_f;
+    aero_aeolian_model x_model;
+    int x_stereo;
+    int x_clamped;        /* set by perform, reported by the clock */
+    int x_warned_clamp;
+    t_clock *x_clock;
+    t_outlet *x_out[2];
+} t_aeolian_tilde;
+
+#define OBJ "[aeolian~]"
+
+static void aeolian_tilde_report(t_aeolian_tilde *x)
+{
+    if (x->x_clamped && !x->x_warned_clamp) {
+        pd_error(x, OBJ ": flow speed above Mach 0.3 clamped to %g m/s "
+                 "(the model does not hold there)", 0.3 * 343.0);
+        x->x_warned_clamp = 1;
+    }
+}
+
+static t_int *aeolian_tilde_perform(t_int *w)
+{
+    t_aeolian_tilde *x = (t_aeolian_tilde *)(w[1]);
+    t_sample *speed = (t_sample *)(w[2]);
+    t_sample *outs[2] = {(t_sample *)(w[3]), (t_sample *)(w[4])};
+    int n = (int)(w[5]);
+    /* the core reads each chunk of speed before writing that chunk of the
+     * outputs, so Pd may hand us aliased in and out buffers */
+    if (aero_aeolian_model_process(&x->x_model, speed, outs, n) &&
+        !x->x_clamped) {
+        x->x_clamped = 1;
+        clock_delay(x->x_clock, 0);
+    }
+    return w + 6;
+}
+
+static void aeolian_tilde_dsp(t_aeolian_tilde *x, t_signal **sp)
+{
+    if (aero_aeolian_model_set_sample_rate(&x->x_model, sp[0]->s_sr))
+        pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
+    dsp_add(aeolian_tilde_perform, 5, x, sp[0]->s_vec, sp[1]->s_vec,
+            x->x_stereo ? sp[2]->s_vec : sp[1]->s_vec, (t_int)sp[0]->s_n);
+}
+
+/* --- messages (each also a creation flag of the same name) --------------- */
+
+static void aeolian_tilde_diameter(t_aeolian_tilde *x, t_floatarg f)
+{
+    if (aero_aeolian_model_set_diameter(&x->x_model, f))
+        pd_error(x, OBJ ": diameter %g m out of range (1e-5..10), kept %g",
+                 f, x->x_model.ctl_target[AERO_CTL_DIAMETER]);
+}
+
+static void aeolian_tilde_length(t_aeolian_tilde *x, t_floatarg f)
+{
+    if (aero_aeolian_model_set_length(&x->x_model, f))
+        pd_error(x, OBJ ": length %g m out of range (1e-5..1000), kept %g",
+                 f, x->x_model.ctl_target[AERO_CTL_LENGTH]);
+}
+
+static void aeolian_tilde_gain(t_aeolian_tilde *x, t_floatarg f)
+{
+    if (aero_aeolian_model_set_gain_db(&x->x_model, f))
+        pd_error(x, OBJ ": gain %g dB out of range (-200..120)", f);
+}
+
+static void aeolian_tilde_ramp(t_aeolian_tilde *x, t_floatarg f)
+{
+    if (aero_aeolian_model_set_ramp_ms(&x->x_model, f))
+        pd_error(x, OBJ ": ramp %g ms out of range (0..600000)", f);
+}
+
+static void aeolian_tilde_seed(t_aeolian_tilde *x, t_floatarg f)
+{
+    aero_aeolian_model_set_seed(&x->x_model, (uint32_t)(int64_t)f);
+}
+
+static int floats_from_atoms(t_aeolian_tilde *x, const char *what, int argc,
+                             t_atom *argv, int want, double *v)
+{
+    if (argc != want) {
+        pd_error(x, OBJ ": '%s' takes %d numbers, got %d", what, want, argc);
+        return -1;
+    }
+    for (int i = 0; i < want; i++) {
+        if (argv[i].a_type != A_FLOAT) {
+            pd_error(x, OBJ ": '%s' takes numbers only", what);
+            return -1;
+        }
+        v[i] = atom_getfloat(argv + i);
+    }
+    return 0;
+}
+
+static void aeolian_tilde_listener(t_aeolian_tilde *x, t_symbol *s, int argc,
+                                   t_atom *argv)
+{
+    double v[3];
+    if (x->x_stereo) {
+        pd_error(x, OBJ ": created with -stereo: use 'ears lx ly lz rx ry rz'");
+        return;
+    }
+    if (floats_from_atoms(x, s->s_name, argc, argv, 3, v))
+        return;
+    if (aero_aeolian_model_set_ear(&x->x_model, 0, v[0], v[1], v[2]))
+        pd_error(x, OBJ ": listener position must be finite, within 1e5 m");
+}
+
+static void aeolian_tilde_ears(t_aeolian_tilde *x, t_symbol *s, int argc,
+                               t_atom *argv)
+{
+    double v[6];
+    if (!x->x_stereo) {
+        pd_error(x, OBJ ": 'ears' needs -stereo; use 'listener x y z'");
+        return;
+    }
+    if (floats_from_atoms(x, s->s_name, argc, argv, 6, v))
+        return;
+    if (aero_aeolian_model_set_ear(&x->x_model, 0, v[0], v[1], v[2]) ||
+        aero_aeolian_model_set_ear(&x->x_model, 1, v[3], v[4], v[5]))
+        pd_error(x, OBJ ": ear positions must be finite, within 1e5 m");
+}
+
+/* --- creation -------------------------------------------------------------- */
+
+/* A default seed that differs between objects but is the same every time
+ * the patch is loaded: from $0 and the object's index in its canvas. */
+static uint32_t aeolian_tilde_default_seed(void)
+{
+    t_glist *canvas = canvas_getcurrent();
+    uint32_t seed = 1;
+    if (canvas) {
+        t_symbol *dollar0 = canvas_realizedollar(canvas, gensym("$0"));
+        seed += (uint32_t)atoi(dollar0->s_name) * 7919u;
+        for (t_gobj *g = canvas->gl_list; g; g = g->g_next)
+            seed += 104729u;
+    }
+    return seed;
+}
+
+/* one flag with its numbers; returns how many atoms it used, 0 if unknown */
+static int aeolian_tilde_flag(t_aeolian_tilde *x, t_symbol *flag, int argc,
+                              t_atom *argv)
+{
+    static const struct {
+        const char *name;
+        int count;
+    } flags[] = {{"-d", 1},      {"-diameter", 1}, {"-l", 1},
+                 {"-length", 1}, {"-gain", 1},     {"-seed", 1},
+                 {"-ramp", 1},   {"-listener", 3}, {"-ears", 6},
+                 {"-stereo", 0}};
+    for (size_t k = 0; k < sizeof(flags) / sizeof(flags[0]); k++) {
+        if (strcmp(flag->s_name, flags[k].name))
+            continue;
+        int count = flags[k].count;
+        if (argc < count) {
+            pd_error(x, OBJ ": flag %s needs %d number(s)", flag->s_name,
+                     count);
+            return argc + 1;
+        }
+        for (int i = 0; i < count; i++)
+            if (argv[i].a_type != A_FLOAT) {
+                pd_error(x, OBJ ": flag %s needs numbers", flag->s_name);
+                return count + 1;
+            }
+        t_float f = count ? atom_getfloat(argv) : 0;
+        const char *name = flags[k].name + 1;
+        if (!strcmp(name, "d") || !strcmp(name, "diameter"))
+            aeolian_tilde_diameter(x, f);
+        else if (!strcmp(name, "l") || !strcmp(name, "length"))
+            aeolian_tilde_length(x, f);
+        else if (!strcmp(name, "gain"))
+            aeolian_tilde_gain(x, f);
+        else if (!strcmp(name, "seed"))
+            aeolian_tilde_seed(x, f);
+        else if (!strcmp(name, "ramp"))
+            aeolian_tilde_ramp(x, f);
+        else if (!strcmp(name, "listener"))
+            aeolian_tilde_listener(x, gensym("listener"), 3, argv);
+        else if (!strcmp(name, "ears"))
+            aeolian_tilde_ears(x, gensym("ears"), 6, argv);
+        return count + 1;
+    }
+    return 0;
+}
+
+static void *aeolian_tilde_new(t_symbol *s, int argc, t_atom *argv)
+{
+    (void)s;
+    t_aeolian_tilde *x = (t_aeolian_tilde *)pd_new(aeolian_tilde_class);
+    /* -stereo decides the outlets, so look for it first */
+    for (int i = 0; i < argc; i++)
+        if (argv[i].a_type == A_SYMBOL &&
+            !strcmp(argv[i].a_w.w_symbol->s_name, "-stereo"))
+            x->x_stereo = 1;
+    aero_aeolian_model_init(&x->x_model, sys_getsr(), x->x_stereo ? 2 : 1,
+                            aeolian_tilde_default_seed());
+    x->x_clock = clock_new(x, (t_method)aeolian_tilde_report);
+
+    while (argc > 0) {
+        int used = 0;
+        if (argv->a_type == A_SYMBOL)
+            used = aeolian_tilde_flag(x, argv->a_w.w_symbol, argc - 1,
+                                      argv + 1);
+        if (!used) {
+            char buf[MAXPDSTRING];
+            atom_string(argv, buf, sizeof(buf));
+            pd_error(x, OBJ ": unknown argument '%s' ignored (flags: -d -l "
+                     "-gain -seed -ramp -listener -ears -stereo)", buf);
+            used = 1;
+        }
+        if (used > argc)
+            used = argc;
+        argc -= used;
+        argv += used;
+    }
+
+    x->x_out[0] = outlet_new(&x->x_obj, &s_signal);
+    if (x->x_stereo)
+        x->x_out[1] = outlet_new(&x->x_obj, &s_signal);
+    return x;
+}
+
+static void aeolian_tilde_free(t_aeolian_tilde *x)
+{
+    clock_free(x->x_clock);
+    for (int i = 0; i < 2; i++)
+        if (x->x_out[i])
+            outlet_free(x->x_out[i]);
+}
+
+void aeolian_tilde_setup(void)
+{
+    /* via t_method (void (*)(void)), which gcc's -Wcast-function-type
+     * accepts as the generic function type Pd's API means */
+    aeolian_tilde_class = class_new(gensym("aeolian~"),
+                                    (t_newmethod)(t_method)aeolian_tilde_new,
+                                    (t_method)aeolian_tilde_free,
+                                    sizeof(t_aeolian_tilde), CLASS_DEFAULT,
+                                    A_GIMME, 0);
+    CLASS_MAINSIGNALIN(aeolian_tilde_class, t_aeolian_tilde, x_f);
+    class_addmethod(aeolian_tilde_class, (t_method)aeolian_tilde_dsp,
+                    gensym("dsp"), A_CANT, 0);
+    class_addmethod(aeolian_tilde_class, (t_method)aeolian_tilde_diameter,
+                    gensym("diameter"), A_FLOAT, 0);
+    class_addmethod(aeolian_tilde_class, (t_method)aeolian_tilde_diameter,
+                    gensym("d"), A_FLOAT, 0);
+    class_addmethod(aeolian_tilde_class, (t_method)aeolian_tilde_length,
+                    gensym("length"), A_FLOAT, 0);
+    class_addmethod(aeolian_tilde_class, (t_method)aeolian_tilde_length,
+                    gensym("l"), A_FLOAT, 0);
+    class_addmethod(aeolian_tilde_class, (t_method)aeolian_tilde_gain,
+                    gensym("gain"), A_FLOAT, 0);
+    class_addmethod(aeolian_tilde_class, (t_method)aeolian_tilde_ramp,
+                    gensym("ramp"), A_FLOAT, 0);
+    class_addmethod(aeolian_tilde_class, (t_method)aeolian_tilde_seed,
+                    gensym("seed"), A_FLOAT, 0);
+    class_addmethod(aeolian_tilde_class, (t_method)aeolian_tilde_listener,
+                    gensym("listener"), A_GIMME, 0);
+    class_addmethod(aeolian_tilde_class, (t_method)aeolian_tilde_ears,
+                    gensym("ears"), A_GIMME, 0);
+    class_sethelpsymbol(aeolian_tilde_class, gensym("aeolian~"));
+}

@@ -1,0 +1,12 @@
+/* aero: setup of the single-binary library (`-lib aero`, or a libpd app that
+ * links every class statically): it only calls each class's setup, as
+ * libpd_init() does for the objects it bundles. */
+#include "m_pd.h"
+
+void aeolian_tilde_setup(void);
+
+void aero_setup(void)
+{
+    aeolian_tilde_setup();
+    post("aero: aerodynamic sound library loaded ([aeolian~])");
+}

@@ -1,0 +1,358 @@
+/* aero-analyze: measures a rendered sound file and asserts on the result.
+ * Used by tests/run.sh on the WAV files Pd writes in batch mode.
+ *
+ *   aero-analyze peak FILE      spectral peak (Welch PSD, FFTW), Hz
+ *   aero-analyze peakratio A B  peak(B) / peak(A)
+ *   aero-analyze level FILE     rms level, dB SPL (1 Pa = 94 dB)
+ *   aero-analyze leveldiff A B  level(B) - level(A), dB
+ *   aero-analyze band FILE F1 F2  level of the band F1..F2 Hz, dB SPL
+ *   aero-analyze finite FILE    no NaN/Inf (nor their 1e9 markers), |x|
+ *                               below --max (default 1e4)
+ *   aero-analyze clicks FILE    worst local jump of the 2nd difference
+ *                               against its neighbourhood (a ratio)
+ * options: --ch K (channel, default 0)  --skip S (seconds ignored at the
+ * start)  --fmin F --fmax F (peak search range)  --nfft N
+ * --smooth HZ (moving average of the spectrum before the peak search)
+ *   --expect V --tol T   pass if |value - V| <= T (relative for peak,
+ *                        absolute dB otherwise)
+ *   --min V --max V      pass if value >= V / <= V
+ * Prints one line "ok ..." or "FAIL ..."; exit status 0 pass, 1 fail,
+ * 2 unreadable file or bad usage. */
+#include <fftw3.h>
+#include <math.h>
+#include <sndfile.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define TWO_PI 6.28318530717958647692
+
+typedef struct {
+    int channel;
+    double skip, fmin, fmax, smooth;
+    int nfft;
+    int has_expect, has_tol, has_min, has_max;
+    double expect, tol, min, max;
+} options;
+
+typedef struct {
+    double *x;
+    long n;
+    double sr;
+} signal_t;
+
+static int load(const char *path, const options *o, signal_t *s)
+{
+    SF_INFO info;
+    memset(&info, 0, sizeof(info));
+    SNDFILE *f = sf_open(path, SFM_READ, &info);
+    if (!f) {
+        printf("FAIL cannot read %s: %s\n", path, sf_strerror(NULL));
+        return -1;
+    }
+    if (o->channel < 0 || o->channel >= info.channels) {
+        printf("FAIL %s has %d channel(s), no channel %d\n", path,
+               info.channels, o->channel);
+        sf_close(f);
+        return -1;
+    }
+    double *all = malloc(sizeof(double) * info.frames * info.channels + 1);
+    sf_count_t got = sf_readf_double(f, all, info.frames);
+    sf_close(f);
+    long skip = (long)(o->skip * info.samplerate);
+    if (skip > got)
+        skip = got;
+    s->n = got - skip;
+    s->sr = info.samplerate;
+    s->x = malloc(sizeof(double) * (s->n + 1));
+    for (long i = 0; i < s->n; i++)
+        s->x[i] = all[(i + skip) * info.channels + o->channel];
+    free(all);
+    if (s->n < 16) {
+        printf("FAIL %s: only %ld frames after --skip\n", path, s->n);
+        free(s->x);
+        return -1;
+    }
+    return 0;
+}
+
+static double level_db(const signal_t *s)
+{
+    double sum = 0;
+    for (long i = 0; i < s->n; i++)
+        sum += s->x[i] * s->x[i];
+    double rms = sqrt(sum / s->n);
+    return 20.0 * log10(rms / 20e-6 + 1e-30);
+}
+
+/* Welch power spectrum (Hann window, 75 % overlap); psd has nfft/2+1 bins */
+static double *welch(const signal_t *s, int *nfft_io)
+{
+    int nfft = *nfft_io;
+    while (nfft > s->n && nfft > 64)
+        nfft /= 2;
+    *nfft_io = nfft;
+    double *in = fftw_malloc(sizeof(double) * nfft);
+    fftw_complex *out = fftw_malloc(sizeof(fftw_complex) * (nfft / 2 + 1));
+    fftw_plan plan = fftw_plan_dft_r2c_1d(nfft, in, out, FFTW_ESTIMATE);
+    double *psd = calloc(nfft / 2 + 1, sizeof(double));
+    double *window = malloc(sizeof(double) * nfft);
+    for (int i = 0; i < nfft; i++)
+        window[i] = 0.5 - 0.5 * cos(TWO_PI * i / nfft);
+    int hop = nfft / 4, segments = 0;
+    for (long start = 0; start + nfft <= s->n; start += hop) {
+        for (int i = 0; i < nfft; i++)
+            in[i] = s->x[start + i] * window[i];
+        fftw_execute(plan);
+        for (int k = 0; k <= nfft / 2; k++)
+            psd[k] += out[k][0] * out[k][0] + out[k][1] * out[k][1];
+        segments++;
+    }
+    for (int k = 0; k <= nfft / 2 && segments; k++)
+        psd[k] /= segments;
+    fftw_destroy_plan(plan);
+    fftw_free(in);
+    fftw_free(out);
+    free(window);
+    return psd;
+}
+
+static double peak_hz(const signal_t *s, const options *o)
+{
+    int nfft = o->nfft;
+    double *psd = welch(s, &nfft);
+    double df = s->sr / nfft;
+    /* a moving average over --smooth Hz steadies the peak of a noisy,
+     * broadened line without moving it (the line is symmetric) */
+    int half = (int)(0.5 * o->smooth / df);
+    if (half > 0) {
+        double *avg = calloc(nfft / 2 + 1, sizeof(double));
+        for (int k = 0; k <= nfft / 2; k++) {
+            int a = k - half < 0 ? 0 : k - half;
+            int b = k + half > nfft / 2 ? nfft / 2 : k + half;
+            for (int j = a; j <= b; j++)
+                avg[k] += psd[j];
+            avg[k] /= b - a + 1;
+        }
+        free(psd);
+        psd = avg;
+    }
+    int lo = (int)ceil(o->fmin / df), hi = (int)floor(o->fmax / df);
+    if (lo < 1)
+        lo = 1;
+    if (hi > nfft / 2 - 1)
+        hi = nfft / 2 - 1;
+    int best = lo;
+    for (int k = lo; k <= hi; k++)
+        if (psd[k] > psd[best])
+            best = k;
+    if (half > 0) {
+        /* a broad line: centroid of the contiguous region above half its
+         * maximum, far steadier than the highest bin of a noisy estimate */
+        int a = best, b = best;
+        while (a > lo && psd[a - 1] >= 0.5 * psd[best])
+            a--;
+        while (b < hi && psd[b + 1] >= 0.5 * psd[best])
+            b++;
+        double sum = 0, moment = 0;
+        for (int k = a; k <= b; k++)
+            sum += psd[k], moment += k * psd[k];
+        free(psd);
+        return moment / sum * df;
+    }
+    /* parabolic interpolation of the log spectrum around the maximum */
+    double a = log(psd[best - 1] + 1e-300), b = log(psd[best] + 1e-300),
+           c = log(psd[best + 1] + 1e-300);
+    double denom = a - 2 * b + c, shift = 0;
+    if (denom < 0)
+        shift = 0.5 * (a - c) / denom;
+    free(psd);
+    return (best + shift) * df;
+}
+
+static double band_db(const signal_t *s, const options *o, double f1,
+                      double f2)
+{
+    int nfft = o->nfft;
+    double *psd = welch(s, &nfft);
+    double df = s->sr / nfft, sum = 0, wsum = 0;
+    for (int i = 0; i < nfft; i++) {
+        double w = 0.5 - 0.5 * cos(TWO_PI * i / nfft);
+        wsum += w * w;
+    }
+    for (int k = 1; k < nfft / 2; k++)
+        if (k * df >= f1 && k * df <= f2)
+            sum += 2.0 * psd[k];
+    free(psd);
+    /* Parseval: mean square = sum |X|^2 / (nfft * sum w^2) */
+    double ms = sum / (nfft * wsum);
+    return 10.0 * log10(ms / (20e-6 * 20e-6) + 1e-30);
+}
+
+static double click_ratio(const signal_t *s)
+{
+    long w = (long)(0.002 * s->sr); /* 2 ms windows */
+    if (w < 8)
+        w = 8;
+    long windows = s->n / w;
+    double *peak = calloc(windows + 1, sizeof(double));
+    double global = 0;
+    for (long k = 0; k < windows; k++) {
+        for (long i = k * w; i < (k + 1) * w; i++) {
+            if (i < 2)
+                continue;
+            double d2 = fabs(s->x[i] - 2 * s->x[i - 1] + s->x[i - 2]);
+            if (d2 > peak[k])
+                peak[k] = d2;
+        }
+        if (peak[k] > global)
+            global = peak[k];
+    }
+    double worst = 1.0;
+    for (long k = 3; k + 3 < windows; k++) {
+        double around = 0;
+        for (long j = k - 3; j <= k + 3; j++)
+            if (j != k && peak[j] > around)
+                around = peak[j];
+        if (around < 1e-6 * global)
+            around = 1e-6 * global;
+        if (around <= 0)
+            continue;
+        double r = peak[k] / around;
+        if (r > worst)
+            worst = r;
+    }
+    free(peak);
+    return worst;
+}
+
+/* judge a value against the options; prints the verdict line */
+static int verdict(const char *what, double value, const char *unit,
+                   const options *o, int relative_tol)
+{
+    int ok = value == value;
+    char want[160] = "";
+    if (o->has_expect) {
+        double tol = o->has_tol ? o->tol : 0;
+        double allowed = relative_tol ? tol * fabs(o->expect) : tol;
+        ok = ok && fabs(value - o->expect) <= allowed;
+        if (relative_tol)
+            snprintf(want, sizeof(want), " (want %.4g +- %.3g%%)", o->expect,
+                     100 * tol);
+        else
+            snprintf(want, sizeof(want), " (want %.4g +- %.3g)", o->expect,
+                     tol);
+    }
+    if (o->has_min) {
+        ok = ok && value >= o->min;
+        snprintf(want + strlen(want), sizeof(want) - strlen(want),
+                 " (want >= %.4g)", o->min);
+    }
+    if (o->has_max) {
+        ok = ok && value <= o->max;
+        snprintf(want + strlen(want), sizeof(want) - strlen(want),
+                 " (want <= %.4g)", o->max);
+    }
+    printf("%s %s: %.5g %s%s\n", ok ? "ok" : "FAIL", what, value, unit, want);
+    return ok ? 0 : 1;
+}
+
+static void usage(void)
+{
+    fprintf(stderr, "usage: aero-analyze peak|peakratio|level|leveldiff|band|finite|"
+                    "clicks FILE [FILE2] [F1 F2] [options]\n");
+}
+
+int main(int argc, char **argv)
+{
+    options o = {0, 0.0, 20.0, 1e9, 0.0, 16384, 0, 0, 0, 0, 0, 0, 0, 0};
+    const char *pos[4];
+    int npos = 0;
+    if (argc < 3) {
+        usage();
+        return 2;
+    }
+    const char *cmd = argv[1];
+    for (int i = 2; i < argc; i++) {
+        const char *a = argv[i];
+        int more = i + 1 < argc;
+        if (!strcmp(a, "--ch") && more)
+            o.channel = atoi(argv[++i]);
+        else if (!strcmp(a, "--skip") && more)
+            o.skip = atof(argv[++i]);
+        else if (!strcmp(a, "--fmin") && more)
+            o.fmin = atof(argv[++i]);
+        else if (!strcmp(a, "--fmax") && more)
+            o.fmax = atof(argv[++i]);
+        else if (!strcmp(a, "--smooth") && more)
+            o.smooth = atof(argv[++i]);
+        else if (!strcmp(a, "--nfft") && more)
+            o.nfft = atoi(argv[++i]);
+        else if (!strcmp(a, "--expect") && more)
+            o.has_expect = 1, o.expect = atof(argv[++i]);
+        else if (!strcmp(a, "--tol") && more)
+            o.has_tol = 1, o.tol = atof(argv[++i]);
+        else if (!strcmp(a, "--min") && more)
+            o.has_min = 1, o.min = atof(argv[++i]);
+        else if (!strcmp(a, "--max") && more)
+            o.has_max = 1, o.max = atof(argv[++i]);
+        else if (a[0] == '-' && a[1] == '-') {
+            usage();
+            return 2;
+        } else if (npos < 4)
+            pos[npos++] = a;
+    }
+    if (npos < 1 || o.nfft < 64) {
+        usage();
+        return 2;
+    }
+    signal_t s, s2;
+    if (load(pos[0], &o, &s))
+        return 2;
+    int rc = 2;
+    char what[600];
+    if (!strcmp(cmd, "peak")) {
+        snprintf(what, sizeof(what), "peak of %s", pos[0]);
+        rc = verdict(what, peak_hz(&s, &o), "Hz", &o, 1);
+    } else if (!strcmp(cmd, "peakratio") && npos >= 2) {
+        if (load(pos[1], &o, &s2))
+            return 2;
+        snprintf(what, sizeof(what), "peak of %s over %s", pos[1], pos[0]);
+        rc = verdict(what, peak_hz(&s2, &o) / peak_hz(&s, &o), "", &o, 1);
+        free(s2.x);
+    } else if (!strcmp(cmd, "level")) {
+        snprintf(what, sizeof(what), "level of %s", pos[0]);
+        rc = verdict(what, level_db(&s), "dB SPL", &o, 0);
+    } else if (!strcmp(cmd, "leveldiff") && npos >= 2) {
+        if (load(pos[1], &o, &s2))
+            return 2;
+        snprintf(what, sizeof(what), "level of %s minus %s", pos[1], pos[0]);
+        rc = verdict(what, level_db(&s2) - level_db(&s), "dB", &o, 0);
+        free(s2.x);
+    } else if (!strcmp(cmd, "band") && npos >= 3) {
+        snprintf(what, sizeof(what), "band %s-%s Hz of %s", pos[1], pos[2],
+                 pos[0]);
+        rc = verdict(what, band_db(&s, &o, atof(pos[1]), atof(pos[2])),
+                     "dB SPL", &o, 0);
+    } else if (!strcmp(cmd, "finite")) {
+        long bad = 0;
+        double biggest = 0;
+        for (long i = 0; i < s.n; i++) {
+            /* tests/pdtest.sh marks NaN/Inf as 1e9 ([tabwrite~] zeroes them) */
+            if (!isfinite(s.x[i]) || fabs(s.x[i]) >= 0.999e9)
+                bad++;
+            else if (fabs(s.x[i]) > biggest)
+                biggest = fabs(s.x[i]);
+        }
+        double limit = o.has_max ? o.max : 1e4;
+        rc = bad || biggest > limit;
+        printf("%s finite %s: %ld NaN/Inf samples, max |x| %.4g (limit %.4g)"
+               "\n", rc ? "FAIL" : "ok", pos[0], bad, biggest, limit);
+    } else if (!strcmp(cmd, "clicks")) {
+        snprintf(what, sizeof(what), "click ratio of %s", pos[0]);
+        rc = verdict(what, click_ratio(&s), "", &o, 0);
+    } else
+        usage();
+    free(s.x);
+    return rc;
+}

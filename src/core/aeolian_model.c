@@ -43,20 +43,6 @@ static int is_finite(double v)
     return v == v && v < 1e300 && v > -1e300;
 }
 
-/* sin(2 pi p) for p in [0, 1): reflect into a quarter period, then the
- * Taylor series to t^9 (error < 4e-6, harmonics below -100 dB). */
-static float sin_cycles(float p)
-{
-    const float two_pi = 6.28318530717958647f;
-    float x = p - 0.5f; /* sin(2 pi p) = -sin(2 pi x) */
-    float a = fabsf(x);
-    float b = fminf(a, 0.5f - a);
-    float t = two_pi * b, t2 = t * t;
-    float s = t * (1.0f + t2 * (-1.0f / 6 + t2 * (1.0f / 120 +
-              t2 * (-1.0f / 5040 + t2 * (1.0f / 362880)))));
-    return copysignf(s, -x);
-}
-
 void aero_aeolian_model_init(aero_aeolian_model *m, double sample_rate,
                              int n_ears, uint32_t seed)
 {
@@ -74,7 +60,6 @@ void aero_aeolian_model_init(aero_aeolian_model *m, double sample_rate,
     m->geometry_dirty = 1;
     aero_aeolian_model_set_ramp_ms(m, 20.0);
     aero_aeolian_model_set_seed(m, seed);
-    m->phase = 0.0;
 }
 
 void aero_aeolian_model_set_seed(aero_aeolian_model *m, uint32_t seed)
@@ -84,8 +69,11 @@ void aero_aeolian_model_set_seed(aero_aeolian_model *m, uint32_t seed)
     uint32_t s = seed * 2654435761u + 0x9e3779b9u;
     s ^= s >> 16;
     m->rng = s ? s : 0x12345678u;
-    m->phase = (double)(xorshift32(&m->rng) >> 8) / 16777216.0;
-    m->envelope = 0.0;
+    double phase = (double)(xorshift32(&m->rng) >> 8) / 16777216.0;
+    m->phasor.re = cos(2.0 * AERO_PI * phase);
+    m->phasor.im = sin(2.0 * AERO_PI * phase);
+    m->envelope = m->envelope_lp = 0.0;
+    m->levels_dirty = 1; /* no laws cached yet */
 }
 
 /* Start ramping the controls to their (new) targets. Before the first
@@ -212,67 +200,62 @@ static void update_geometry(aero_aeolian_model *m)
     }
     m->centre_distance = distance_sum / m->n_ears;
     m->geometry_dirty = 0;
+    m->levels_dirty = 1;
 }
 
-static float sanitize_speed(float u, float limit, int *clamped)
-{
-    if (!(u == u))
-        return 0.0f;
-    u = fabsf(u);
-    if (u > limit) {
-        *clamped = 1;
-        return limit;
-    }
-    return u;
-}
-
-/* The per-sample coefficients for the state at the end of a block. */
-typedef struct {
-    double freq, lift[AERO_AEOLIAN_MAX_EARS], drag[AERO_AEOLIAN_MAX_EARS];
-    double jitter, am_alpha, am_scale;
-} block_coefs;
-
-static void compute_coefs(const aero_aeolian_model *m, double speed,
-                          double doppler, block_coefs *c)
+/* Everything that depends on Re, the geometry and the chunk length,
+ * recomputed only when one of them moves (the speed by more than 0.1 %,
+ * which shifts St by far less than that): the per-chunk cost stays a few
+ * multiplications under a gusting wind. */
+static void update_chunk_laws(aero_aeolian_model *m, double speed, int n)
 {
     double d = m->ctl[AERO_CTL_DIAMETER], l = m->ctl[AERO_CTL_LENGTH];
-    double sr = m->sample_rate;
+    if (!m->levels_dirty && n == m->cached_n && d == m->cached_diameter &&
+        fabs(speed - m->cached_speed) <= 1e-3 * m->cached_speed)
+        return;
     double re = aero_reynolds(speed, d);
-    double st = aero_strouhal(re);
+    m->st = aero_strouhal(re);
     double strength = aero_shedding_strength(re);
     double turbulence = aero_wake_turbulence(re);
     double depth = ENVELOPE_DEPTH * turbulence;
-    double segment = fmin(CORRELATION_DIAMETERS * d, l);
 
     /* p_rms per segment = (x_i/r^2) rho U^3 St C' L_seg / (4 c0): Curle with
      * dF/dt = 2 pi f F', F' = 1/2 rho U^2 d L_seg C', f = St U / d. sqrt(2)
-     * turns rms into the sine's amplitude; the envelope's power is removed. */
-    double source = AERO_RHO * st * strength * segment / (4.0 * AERO_C0) *
-                    sqrt(2.0) / sqrt(1.0 + depth * depth) *
-                    m->ctl[AERO_CTL_GAIN];
+     * turns rms into the sine's amplitude; the envelope's power is divided
+     * out. */
+    double segment = fmin(CORRELATION_DIAMETERS * d, l);
+    double source = AERO_RHO * m->st * strength * segment / (4.0 * AERO_C0) *
+                    sqrt(2.0) / sqrt(1.0 + depth * depth) * m->ctl[AERO_CTL_GAIN];
     for (int e = 0; e < m->n_ears; e++) {
-        c->lift[e] = source * LIFT_RMS * m->lift_geometry[e];
+        m->lift_level[e] = source * LIFT_RMS * m->lift_geometry[e];
         /* drag at 2f: twice the rate, C_D' = 0.1 C_L' */
-        c->drag[e] = source * 2.0 * DRAG_TO_LIFT * LIFT_RMS *
-                     m->drag_geometry[e];
+        m->drag_level[e] = source * 2.0 * DRAG_TO_LIFT * LIFT_RMS *
+                           m->drag_geometry[e];
     }
-    c->freq = st / d / sr * doppler;
 
     /* Phase diffusion D (rad^2/s) gives a Lorentzian line of full width
-     * B = D / (2 pi) Hz: per sample a step of variance 2 pi B / sr rad^2,
-     * i.e. B / (2 pi sr) cycles^2, drawn uniform on [-w, w], var w^2/3. */
-    double f = st * speed / d;
+     * B = D / (2 pi) Hz: over n samples the phase wanders by a step of
+     * variance B n / (2 pi sr) cycles^2 (uniform on [-1, 1) has var 1/3). */
+    double sr = m->sample_rate;
     double width = (PEAK_WIDTH_LAMINAR +
                     (PEAK_WIDTH_TURBULENT - PEAK_WIDTH_LAMINAR) * turbulence) *
-                   f;
-    c->jitter = sqrt(width / (2.0 * AERO_PI * sr) / UNIFORM_VARIANCE);
-    /* envelope: one-pole low-passed noise with the same bandwidth */
-    double alpha = 1.0 - exp(-2.0 * AERO_PI * width / sr);
-    if (alpha < 1e-7)
-        alpha = 1e-7;
-    double variance = UNIFORM_VARIANCE * alpha / (2.0 - alpha);
-    c->am_alpha = alpha;
-    c->am_scale = depth / sqrt(variance);
+                   m->st * speed / d;
+    m->phase_jitter = sqrt(3.0 * width * n / (2.0 * AERO_PI * sr));
+    /* envelope: noise through two one-pole low-passes (bandwidth ~ the
+     * line's), so its path is smooth between chunks; scaled by its standard
+     * deviation, var = alpha^4 (1 + p^2) / (1 - p^2)^3 var_in, p = 1 - alpha */
+    double x = 2.0 * AERO_PI * width * n / sr;
+    double alpha = x / (1.0 + x) + 1e-6;
+    double p = 1.0 - alpha, p2 = p * p;
+    double variance = UNIFORM_VARIANCE * alpha * alpha * alpha * alpha *
+                      (1.0 + p2) / ((1.0 - p2) * (1.0 - p2) * (1.0 - p2));
+    m->envelope_alpha = alpha;
+    m->envelope_scale = depth / sqrt(variance);
+
+    m->cached_speed = speed;
+    m->cached_diameter = d;
+    m->cached_n = n;
+    m->levels_dirty = 0;
 }
 
 double aero_aeolian_model_tone_hz(const aero_aeolian_model *m, double speed)
@@ -284,12 +267,136 @@ double aero_aeolian_model_tone_hz(const aero_aeolian_model *m, double speed)
     return aero_strouhal(re) * fabs(speed) / d;
 }
 
-int aero_aeolian_model_process(aero_aeolian_model *m, const float *speed,
-                               float *const *out, int n)
+static double uniform(uint32_t *rng) /* on [-1, 1) */
 {
-    if (n <= 0)
-        return 0;
+    return (double)(int32_t)xorshift32(rng) * (1.0 / 2147483648.0);
+}
+
+typedef aero_cplx cplx;
+
+static cplx cmul(cplx a, cplx b)
+{
+    cplx c = {a.re * b.re - a.im * b.im, a.re * b.im + a.im * b.re};
+    return c;
+}
+
+/* e^{i 2 pi x} */
+static cplx turn(double x)
+{
+    cplx c = {cos(2.0 * AERO_PI * x), sin(2.0 * AERO_PI * x)};
+    return c;
+}
+
+/* e^{i 2 pi x} for a small x (|2 pi x| < 0.05): Taylor series, error
+ * below 1e-12, no libm call */
+static cplx turn_small(double x)
+{
+    double t = 2.0 * AERO_PI * x, t2 = t * t;
+    if (t2 > 0.0025)
+        return turn(x);
+    cplx c = {1.0 - t2 * (0.5 - t2 / 24.0), t * (1.0 - t2 * (1.0 / 6.0 - t2 / 120.0))};
+    return c;
+}
+
+/* The oscillator for one chunk: sin and cos of the shedding phase into
+ * scratch_sin/cos. The phase increment glides linearly from the last
+ * chunk's value to w1 (cycles per sample), so frequency never steps: with
+ * a = w0 + d/2, b = d/2, d = (w1 - w0)/n the phase is p0 + a i + b i^2.
+ * LANES phasors take the samples i = LANES k + j; lane j advances by
+ * r_j = e^{i 2 pi (a L + 2 b L j + b L^2 (2k + 1))}, i.e. r_j itself turns
+ * by e^{i 2 pi 2 b L^2} per step. One libm sincos per chunk; the lanes are
+ * independent, so the inner loop vectorises. */
+static void render_phasors(aero_aeolian_model *m, double w1, int n)
+{
+    enum { L = AERO_AEOLIAN_LANES };
+    if (!m->primed_phase) {
+        m->increment = w1;
+        m->increment_turn = turn(w1);
+        m->primed_phase = 1;
+    }
+    const double w0 = m->increment;
+    const double b = 0.5 * (w1 - w0) / n, a = w0 + b;
+    /* e^{i 2 pi a} from the last increment's turn: no libm call */
+    const cplx ea = cmul(m->increment_turn, turn_small(b));
+    cplx eal = cmul(ea, ea); /* e^{i 2 pi a L}, L = 8, by squaring */
+    eal = cmul(eal, eal);
+    eal = cmul(eal, eal);
+
+    float zr[L], zi[L], rr[L], ri[L];
+    cplx z = m->phasor;
+    cplx u = cmul(ea, turn_small(b)), v = turn_small(2.0 * b);
+    cplx r = cmul(eal, turn_small(b * L * L)), g = turn_small(2.0 * b * L);
+    for (int j = 0; j < L; j++) {
+        zr[j] = (float)z.re, zi[j] = (float)z.im;
+        rr[j] = (float)r.re, ri[j] = (float)r.im;
+        z = cmul(z, u);
+        u = cmul(u, v);
+        r = cmul(r, g);
+    }
+    const cplx q = turn_small(2.0 * b * L * L);
+    const float qr = (float)q.re, qi = (float)q.im;
+    float *restrict sin_out = m->scratch_sin, *restrict cos_out = m->scratch_cos;
+    int i = 0;
+#if defined(__GNUC__) && AERO_AEOLIAN_LANES == 8
+    /* the same recurrence on two 4-float vectors per quantity (GCC's
+     * vector extension; the plain loop below is the portable reference) */
+    typedef float v4 __attribute__((vector_size(16)));
+    v4 zr0, zr1, zi0, zi1, rr0, rr1, ri0, ri1;
+    memcpy(&zr0, zr, 16), memcpy(&zr1, zr + 4, 16);
+    memcpy(&zi0, zi, 16), memcpy(&zi1, zi + 4, 16);
+    memcpy(&rr0, rr, 16), memcpy(&rr1, rr + 4, 16);
+    memcpy(&ri0, ri, 16), memcpy(&ri1, ri + 4, 16);
+    for (; i + L <= n; i += L) {
+        memcpy(sin_out + i, &zi0, 16), memcpy(sin_out + i + 4, &zi1, 16);
+        memcpy(cos_out + i, &zr0, 16), memcpy(cos_out + i + 4, &zr1, 16);
+        v4 t0 = zr0 * rr0 - zi0 * ri0, t1 = zr1 * rr1 - zi1 * ri1;
+        zi0 = zr0 * ri0 + zi0 * rr0, zi1 = zr1 * ri1 + zi1 * rr1;
+        zr0 = t0, zr1 = t1;
+        t0 = rr0 * qr - ri0 * qi, t1 = rr1 * qr - ri1 * qi;
+        ri0 = rr0 * qi + ri0 * qr, ri1 = rr1 * qi + ri1 * qr;
+        rr0 = t0, rr1 = t1;
+    }
+    memcpy(zr, &zr0, 16), memcpy(zr + 4, &zr1, 16);
+    memcpy(zi, &zi0, 16), memcpy(zi + 4, &zi1, 16);
+#else
+    for (; i + L <= n; i += L) {
+        for (int j = 0; j < L; j++) {
+            sin_out[i + j] = zi[j];
+            cos_out[i + j] = zr[j];
+        }
+        for (int j = 0; j < L; j++) {
+            float tr = zr[j] * rr[j] - zi[j] * ri[j];
+            float ti = zr[j] * ri[j] + zi[j] * rr[j];
+            float ur = rr[j] * qr - ri[j] * qi;
+            float ui = rr[j] * qi + ri[j] * qr;
+            zr[j] = tr, zi[j] = ti, rr[j] = ur, ri[j] = ui;
+        }
+    }
+#endif
+    if (i == n) {
+        /* lane 0 now stands at sample n: the next chunk's start */
+        z.re = zr[0], z.im = zi[0];
+    } else {
+        for (int j = 0; i < n; i++, j++) {
+            m->scratch_sin[i] = zi[j];
+            m->scratch_cos[i] = zr[j];
+        }
+        z = cmul(m->phasor, turn(a * n + b * (double)n * n));
+    }
+    double norm = 1.0 / sqrt(z.re * z.re + z.im * z.im); /* no drift */
+    m->phasor.re = z.re * norm, m->phasor.im = z.im * norm;
+    cplx next = cmul(m->increment_turn, turn_small(w1 - w0));
+    norm = 1.0 / sqrt(next.re * next.re + next.im * next.im);
+    m->increment_turn.re = next.re * norm, m->increment_turn.im = next.im * norm;
+    m->increment = w1;
+}
+
+/* One chunk of at most AERO_AEOLIAN_CHUNK samples. */
+static int process_chunk(aero_aeolian_model *m, const float *speed,
+                         float *const *out, int n)
+{
     const float speed_limit = (float)(AERO_MACH_LIMIT * AERO_C0);
+    const double sr = m->sample_rate;
     int clamped = 0;
 
     advance_ramps(m, n);
@@ -299,92 +406,90 @@ int aero_aeolian_model_process(aero_aeolian_model *m, const float *speed,
     /* Doppler of a moving listener: f' = f (1 - (dr/dt) / c0) */
     double doppler = 1.0;
     if (m->primed) {
-        double dr_dt = (m->centre_distance - m->prev_distance) *
-                       m->sample_rate / n;
+        double dr_dt = (m->centre_distance - m->prev_distance) * sr / n;
         doppler = fmin(fmax(1.0 - dr_dt / AERO_C0, 0.5), 1.5);
     }
     m->prev_distance = m->centre_distance;
 
-    block_coefs end;
-    compute_coefs(m, sanitize_speed(speed[n - 1], speed_limit, &clamped),
-                  doppler, &end);
+    /* speeds: sanitised |U| (NaN -> 0, clamped at Mach 0.3) and U^3, the
+     * level law; branch-free and summed in lanes so that it vectorises */
+    float *restrict amp = m->scratch_amp;
+    for (int i = 0; i < n; i++) {
+        float x = speed[i];
+        float u = x == x ? fabsf(x) : 0.0f;
+        amp[i] = u < speed_limit ? u : speed_limit;
+    }
+    float lane_sum[AERO_AEOLIAN_LANES] = {0}, sum = 0;
+    int k = 0;
+    for (; k + AERO_AEOLIAN_LANES <= n; k += AERO_AEOLIAN_LANES)
+        for (int j = 0; j < AERO_AEOLIAN_LANES; j++)
+            lane_sum[j] += amp[k + j];
+    for (; k < n; k++)
+        sum += amp[k];
+    for (int j = 0; j < AERO_AEOLIAN_LANES; j++)
+        sum += lane_sum[j];
+    for (k = 0; k < n; k++)
+        amp[k] = amp[k] * amp[k] * amp[k];
+    for (k = 0; k < n; k++)
+        clamped |= fabsf(speed[k]) >= speed_limit;
+    double mean_speed = sum / n;
+    update_chunk_laws(m, mean_speed, n);
+    double f = m->st * mean_speed / m->ctl[AERO_CTL_DIAMETER] * doppler;
+    double step = f * n / sr + m->phase_jitter * uniform(&m->rng);
+    m->envelope_lp += m->envelope_alpha * (uniform(&m->rng) - m->envelope_lp);
+    m->envelope += m->envelope_alpha * (m->envelope_lp - m->envelope);
+    double gain_end = 1.0 + m->envelope_scale * m->envelope;
+    if (gain_end < 0)
+        gain_end = 0;
+
+    const double *lift_end = m->lift_level, *drag_end = m->drag_level;
     if (!m->primed) {
-        m->freq_coef = end.freq;
         for (int e = 0; e < m->n_ears; e++) {
-            m->lift_coef[e] = end.lift[e];
-            m->drag_coef[e] = end.drag[e];
+            m->lift_coef[e] = lift_end[e];
+            m->drag_coef[e] = drag_end[e];
         }
-        m->jitter = end.jitter;
-        m->am_alpha = end.am_alpha;
-        m->am_scale = end.am_scale;
+        m->envelope_gain = gain_end;
         m->primed = 1;
     }
 
-    /* linear interpolation of every coefficient across the block */
-    const double inv_n = 1.0 / n;
-    const double freq_step = (end.freq - m->freq_coef) * inv_n;
-    double freq = m->freq_coef;
-    double jitter = m->jitter, am_alpha = m->am_alpha;
-    double am_scale = m->am_scale;
-    const double jitter_step = (end.jitter - jitter) * inv_n;
-    const double alpha_step = (end.am_alpha - am_alpha) * inv_n;
-    const double scale_step = (end.am_scale - am_scale) * inv_n;
-    double phase = m->phase, envelope = m->envelope;
-    uint32_t rng = m->rng;
+    /* level per sample: U^3 times the interpolated envelope */
+    const float inv_n = 1.0f / n;
+    const float g0 = (float)m->envelope_gain;
+    const float dg = (float)(gain_end - m->envelope_gain) * inv_n;
+    for (int i = 0; i < n; i++)
+        amp[i] *= g0 + dg * (float)(i + 1);
 
-    for (int start = 0; start < n; start += AERO_AEOLIAN_CHUNK) {
-        int len = n - start < AERO_AEOLIAN_CHUNK ? n - start
-                                                 : AERO_AEOLIAN_CHUNK;
-        /* sequential part: phase with diffusion, envelope, U^3 */
-        for (int i = 0; i < len; i++) {
-            float u = sanitize_speed(speed[start + i], speed_limit, &clamped);
-            uint32_t r = xorshift32(&rng);
-            freq += freq_step;
-            jitter += jitter_step;
-            am_alpha += alpha_step;
-            am_scale += scale_step;
-            phase += freq * u +
-                     jitter * (double)(int16_t)(r >> 16) * (1.0 / 32768.0);
-            phase -= floor(phase);
-            envelope += am_alpha *
-                        ((double)(int16_t)(r & 0xffff) * (1.0 / 32768.0) -
-                         envelope);
-            double a = 1.0 + am_scale * envelope;
-            m->scratch_phase[i] = (float)phase;
-            m->scratch_amp[i] = (float)((a > 0 ? a : 0) * u * u * u);
-        }
-        /* vectorisable part: lift at f, drag at 2f, per ear */
-        for (int e = 0; e < m->n_ears; e++) {
-            const double lift_step = (end.lift[e] - m->lift_coef[e]) * inv_n;
-            const double drag_step = (end.drag[e] - m->drag_coef[e]) * inv_n;
-            float lift = (float)(m->lift_coef[e] + lift_step * start);
-            float drag = (float)(m->drag_coef[e] + drag_step * start);
-            const float lstep = (float)lift_step, dstep = (float)drag_step;
-            float *o = out[e] + start;
-            for (int i = 0; i < len; i++) {
-                float p = m->scratch_phase[i];
-                float p2 = 2.0f * p;
-                p2 -= p2 >= 1.0f ? 1.0f : 0.0f;
-                lift += lstep;
-                drag += dstep;
-                o[i] = m->scratch_amp[i] *
-                       (lift * sin_cycles(p) + drag * sin_cycles(p2));
-            }
-        }
-    }
-
-    m->freq_coef = end.freq;
+    render_phasors(m, step / n, n);
+    /* lift at f, drag at 2f (sin 2x = 2 sin x cos x), per ear */
+    const float *restrict sines = m->scratch_sin, *restrict cosines = m->scratch_cos;
     for (int e = 0; e < m->n_ears; e++) {
-        m->lift_coef[e] = end.lift[e];
-        m->drag_coef[e] = end.drag[e];
+        const float l0 = (float)m->lift_coef[e];
+        const float dl = (float)(lift_end[e] - m->lift_coef[e]) * inv_n;
+        const float k0 = 2.0f * (float)m->drag_coef[e];
+        const float dk = 2.0f * (float)(drag_end[e] - m->drag_coef[e]) * inv_n;
+        float *restrict o = out[e];
+        for (int i = 0; i < n; i++) {
+            float t = (float)(i + 1);
+            o[i] = amp[i] * sines[i] * ((l0 + dl * t) + (k0 + dk * t) * cosines[i]);
+        }
+        m->lift_coef[e] = lift_end[e];
+        m->drag_coef[e] = drag_end[e];
     }
-    m->jitter = end.jitter;
-    m->am_alpha = end.am_alpha;
-    m->am_scale = end.am_scale;
-    m->phase = phase;
-    /* no denormals in the envelope filter */
-    m->envelope = fabs(envelope) < 1e-20 ? 0.0 : envelope;
-    m->rng = rng;
+    m->envelope_gain = gain_end;
+    return clamped;
+}
+
+int aero_aeolian_model_process(aero_aeolian_model *m, const float *speed,
+                               float *const *out, int n)
+{
+    int clamped = 0;
+    for (int start = 0; start < n; start += AERO_AEOLIAN_CHUNK) {
+        int len = n - start < AERO_AEOLIAN_CHUNK ? n - start : AERO_AEOLIAN_CHUNK;
+        float *chunk_out[AERO_AEOLIAN_MAX_EARS];
+        for (int e = 0; e < m->n_ears; e++)
+            chunk_out[e] = out[e] + start;
+        clamped |= process_chunk(m, speed + start, chunk_out, len);
+    }
     m->clamped |= clamped;
     return clamped;
 }

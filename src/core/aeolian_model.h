@@ -12,7 +12,9 @@
  * spanwise correlation length, paper 000): their powers add.
  *
  * The shedding is a narrow-band process: its phase diffuses and its envelope
- * wanders, the peak widening continuously as the wake turns turbulent.
+ * wanders, the peak widening continuously as the wake turns turbulent. The
+ * oscillator is a set of rotating phasors (no per-sample sine), so one
+ * object costs a few ns per sample and a thousand run in real time.
  *
  * Life cycle: init, set_*, process (any block size), no free needed (no
  * allocation). All state is in the struct; no globals. */
@@ -22,7 +24,10 @@
 #include <stdint.h>
 
 #define AERO_AEOLIAN_MAX_EARS 2
-#define AERO_AEOLIAN_CHUNK 256     /* scratch length of the inner loops */
+/* Samples per inner chunk: frequency, phase diffusion and the envelope are
+ * updated per chunk (1.3 ms at 48 kHz), levels interpolated per sample. */
+#define AERO_AEOLIAN_CHUNK 64
+#define AERO_AEOLIAN_LANES 8 /* parallel phasors of the oscillator */
 #define AERO_AEOLIAN_MAX_POINTS 256 /* span integration points (geometry) */
 
 /* Controls that ramp linearly to their targets (no zipper noise). */
@@ -33,6 +38,10 @@ enum {
     AERO_CTL_EAR,  /* 3 * AERO_AEOLIAN_MAX_EARS coordinates follow */
     AERO_CTL_COUNT = AERO_CTL_EAR + 3 * AERO_AEOLIAN_MAX_EARS
 };
+
+typedef struct aero_cplx {
+    double re, im;
+} aero_cplx;
 
 typedef struct aero_aeolian_model {
     double sample_rate;
@@ -52,24 +61,35 @@ typedef struct aero_aeolian_model {
     double centre_distance; /* mean ear distance, for Doppler */
     double prev_distance;   /* the same at the previous block */
 
-    /* per-sample coefficients at the end of the previous block, from which
-     * the next block interpolates */
+    /* coefficients at the end of the previous chunk, from which the next
+     * chunk interpolates */
     int primed;
-    double freq_coef;   /* cycles per sample per (m/s) */
     double lift_coef[AERO_AEOLIAN_MAX_EARS]; /* Pa per (m/s)^3 */
     double drag_coef[AERO_AEOLIAN_MAX_EARS];
-    double jitter;      /* phase diffusion step, cycles (uniform width) */
-    double am_alpha;    /* envelope low-pass coefficient */
-    double am_scale;    /* envelope depth / its std deviation */
+    double envelope_gain;
+
+    /* cache of the speed-dependent laws (recomputed when the speed or the
+     * diameter changes) */
+    double cached_speed, cached_diameter;
+    int cached_n, levels_dirty;
+    double st;
+    double lift_level[AERO_AEOLIAN_MAX_EARS], drag_level[AERO_AEOLIAN_MAX_EARS];
+    double phase_jitter;   /* per chunk, cycles (uniform amplitude) */
+    double envelope_alpha, envelope_scale;
 
     /* oscillator state */
-    double phase;       /* cycles, [0, 1) */
-    double envelope;    /* low-passed noise of the envelope */
+    aero_cplx phasor;   /* e^{i 2 pi phase} at the start of the next chunk */
+    double increment;   /* phase increment at the end of the last chunk,
+                           cycles per sample */
+    aero_cplx increment_turn; /* e^{i 2 pi increment} */
+    int primed_phase;
+    double envelope, envelope_lp; /* low-passed noise of the envelope */
 
     int clamped;        /* set when a speed above Mach 0.3 was clamped */
 
-    float scratch_phase[AERO_AEOLIAN_CHUNK];
     float scratch_amp[AERO_AEOLIAN_CHUNK];
+    float scratch_sin[AERO_AEOLIAN_CHUNK];
+    float scratch_cos[AERO_AEOLIAN_CHUNK];
 } aero_aeolian_model;
 
 /* Defaults: d = 1 cm, l = 0.5 m, one listener 1 m away along +y (across the

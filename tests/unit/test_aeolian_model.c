@@ -1,0 +1,169 @@
+/* Unit tests of src/core/strouhal and src/core/aeolian_model: the published
+ * laws (written here again, independently of the core) and the behaviour at
+ * the edges: silence below onset, bad input, block-size independence. */
+#include "aeolian_model.h"
+#include "strouhal.h"
+#include "unit.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define SR 48000.0
+
+/* Williamson (1996) laminar fit and Roshko's form (paper 001, DESIGN.md) */
+static double williamson(double re) { return -3.3265 / re + 0.1816 + 1.6e-4 * re; }
+static double roshko(double re) { return 0.198 * (1.0 - 19.7 / re); }
+
+static double render_rms(aero_aeolian_model *m, float speed, double seconds,
+                         int block, int *nonfinite)
+{
+    int total = (int)(seconds * SR);
+    float *in = malloc(sizeof(float) * block), *out = malloc(sizeof(float) * block);
+    float *outs[2] = {out, out};
+    double sum = 0;
+    long count = 0;
+    for (int done = 0; done < total; done += block) {
+        for (int i = 0; i < block; i++)
+            in[i] = speed;
+        aero_aeolian_model_process(m, in, outs, block);
+        for (int i = 0; i < block; i++) {
+            if (!isfinite(out[i]))
+                (*nonfinite)++;
+            else if (done > total / 10) { /* skip the first 10 % */
+                sum += (double)out[i] * out[i];
+                count++;
+            }
+        }
+    }
+    free(in);
+    free(out);
+    return count ? sqrt(sum / count) : 0;
+}
+
+static void test_strouhal(void)
+{
+    UNIT_NEAR_REL(aero_reynolds(10, 0.01), 1.225 * 10 * 0.01 / 1.81e-5, 1e-9,
+                  "Re = rho U d / mu");
+    UNIT_NEAR_REL(aero_strouhal(100), williamson(100), 1e-9, "St(100) Williamson");
+    UNIT_NEAR_REL(aero_strouhal(100), 0.1648, 0.01, "St(100) ~ 0.164-0.167 (published)");
+    UNIT_NEAR_REL(aero_strouhal(5000), roshko(5000), 1e-9, "St(5000) Roshko");
+    UNIT_CHECK(aero_shedding_strength(40) == 0 && aero_shedding_strength(46.9) == 0,
+               "no shedding below Re 47");
+    UNIT_CHECK(aero_shedding_strength(60) > 0, "shedding at Re 60");
+    double worst_jump = 0, prev = aero_strouhal(150);
+    for (double re = 151; re <= 300; re += 1) {
+        double st = aero_strouhal(re);
+        if (fabs(st - prev) > worst_jump)
+            worst_jump = fabs(st - prev);
+        prev = st;
+    }
+    UNIT_CHECK(worst_jump < 0.002, "St(Re) continuous across the blend: max "
+               "step %.5f per unit Re", worst_jump);
+}
+
+static void test_onset_and_level(void)
+{
+    aero_aeolian_model m;
+    int bad = 0;
+    /* d = 0.5 mm: 1 m/s is Re 34 (below onset), 2 m/s Re 68 */
+    aero_aeolian_model_init(&m, SR, 1, 1);
+    aero_aeolian_model_set_diameter(&m, 0.0005);
+    double below = render_rms(&m, 1.0f, 0.5, 64, &bad);
+    UNIT_CHECK(below == 0.0, "silent below the shedding onset (rms %g Pa)", below);
+    double above = render_rms(&m, 2.0f, 0.5, 64, &bad);
+    UNIT_CHECK(above > 0.0, "sound above the onset (rms %g Pa)", above);
+
+    /* Curle, incoherent segments: p_rms = rho U^3 St C_L' L_c / (4 c0 r)
+     * for one segment (l = 3 d) across the flow at r = 3 m, C_L' = 0.45
+     * (Norberg 2003) */
+    aero_aeolian_model_init(&m, SR, 1, 2);
+    aero_aeolian_model_set_diameter(&m, 0.01);
+    aero_aeolian_model_set_length(&m, 0.03);
+    aero_aeolian_model_set_ear(&m, 0, 0, 3, 0);
+    double re = aero_reynolds(10, 0.01);
+    double want = 1.225 * 1000 * roshko(re) * 0.45 * 0.03 / (4 * 343 * 3);
+    double got = render_rms(&m, 10.0f, 2.0, 64, &bad);
+    UNIT_CHECK(fabs(20 * log10(got / want)) < 1.0,
+               "absolute level: %.4g Pa, Curle gives %.4g Pa", got, want);
+
+    /* 16 incoherent segments radiate 4x (12 dB) the pressure of one when
+     * far away: the span powers add */
+    aero_aeolian_model_set_length(&m, 0.48);
+    aero_aeolian_model_set_ear(&m, 0, 0, 30, 0);
+    double far16 = render_rms(&m, 10.0f, 2.0, 64, &bad);
+    aero_aeolian_model_set_length(&m, 0.03);
+    double far1 = render_rms(&m, 10.0f, 2.0, 64, &bad);
+    UNIT_CHECK(fabs(20 * log10(far16 / far1) - 12.04) < 1.0,
+               "16 incoherent segments: +%.2f dB (want +12.04)",
+               20 * log10(far16 / far1));
+    UNIT_CHECK(bad == 0, "no NaN/Inf (%d)", bad);
+}
+
+static void test_block_sizes(void)
+{
+    static const int blocks[] = {1, 7, 64, 1000, 4096};
+    double ref = 0;
+    int bad = 0;
+    for (size_t k = 0; k < sizeof(blocks) / sizeof(blocks[0]); k++) {
+        aero_aeolian_model m;
+        aero_aeolian_model_init(&m, SR, 1, 3);
+        double rms = render_rms(&m, 12.0f, 2.0, blocks[k], &bad);
+        if (k == 0)
+            ref = rms;
+        UNIT_CHECK(fabs(20 * log10(rms / ref)) < 0.5,
+                   "block size %d: level %+.2f dB re block 1", blocks[k],
+                   20 * log10(rms / ref));
+    }
+    UNIT_CHECK(bad == 0, "no NaN/Inf at any block size");
+}
+
+static void test_bad_input(void)
+{
+    aero_aeolian_model m;
+    aero_aeolian_model_init(&m, SR, 2, 4);
+    UNIT_CHECK(aero_aeolian_model_set_diameter(&m, 0) < 0 &&
+                   aero_aeolian_model_set_diameter(&m, -1) < 0 &&
+                   aero_aeolian_model_set_diameter(&m, NAN) < 0 &&
+                   aero_aeolian_model_set_diameter(&m, INFINITY) < 0,
+               "diameter 0, negative, NaN, Inf rejected");
+    UNIT_CHECK(m.ctl_target[AERO_CTL_DIAMETER] == 0.01, "default diameter kept");
+    UNIT_CHECK(aero_aeolian_model_set_length(&m, 0) < 0 &&
+                   aero_aeolian_model_set_ear(&m, 0, NAN, 0, 0) < 0 &&
+                   aero_aeolian_model_set_ear(&m, 2, 0, 0, 0) < 0 &&
+                   aero_aeolian_model_set_gain_db(&m, INFINITY) < 0 &&
+                   aero_aeolian_model_set_ramp_ms(&m, -1) < 0 &&
+                   aero_aeolian_model_set_sample_rate(&m, 0) < 0,
+               "bad length, ear, gain, ramp, sample rate rejected");
+
+    float in[256], l[256], r[256];
+    float *outs[2] = {l, r};
+    const float speeds[] = {0.0f, -10.0f, 1e30f, -1e30f, NAN, INFINITY,
+                            -INFINITY, 1e-30f};
+    int bad = 0, clamped = 0;
+    for (size_t k = 0; k < sizeof(speeds) / sizeof(speeds[0]); k++) {
+        for (int i = 0; i < 256; i++)
+            in[i] = speeds[k];
+        clamped |= aero_aeolian_model_process(&m, in, outs, 256);
+        for (int i = 0; i < 256; i++)
+            bad += !isfinite(l[i]) || !isfinite(r[i]) || fabsf(l[i]) > 1e4f;
+    }
+    UNIT_CHECK(bad == 0, "speeds 0, -10, +-1e30, NaN, +-Inf: output finite "
+               "(%d bad samples)", bad);
+    UNIT_CHECK(clamped, "huge speeds report a Mach 0.3 clamp");
+    /* in place: Pd may give the same buffer for input and output */
+    for (int i = 0; i < 256; i++)
+        in[i] = 10.0f;
+    float *inplace[2] = {in, r};
+    aero_aeolian_model_process(&m, in, inplace, 256);
+    UNIT_CHECK(isfinite(in[255]), "in-place processing works");
+}
+
+int main(void)
+{
+    test_strouhal();
+    test_onset_and_level();
+    test_block_sizes();
+    test_bad_input();
+    return unit_summary();
+}

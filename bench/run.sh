@@ -2,7 +2,8 @@
 # make bench: cost per source of [aeolian~] (model mode) against the
 # paper-001 vanilla cylinder (bench/vanilla-cylinder.pd) in the same Pd,
 # batch mode, 48 kHz, plus how many [aeolian~] one core renders in real
-# time. Wall time of each Pd run minus an empty run with the same driver.
+# time, and the cost of [cavity~] beside it. Wall time of each Pd run
+# minus an empty run with the same driver.
 # Not a test: figures go to BENCHMARKS.md.
 ROOT=$(pwd)
 DIR=build/bench
@@ -71,6 +72,7 @@ run() {
 gen_patch empty 0 "aeolian~"
 gen_patch vanilla "$N" "vanilla-cylinder 0.01"
 gen_patch aeolian "$N" "aeolian~ -d 0.01"
+gen_patch cavity "$N" "cavity~ -L 0.02 -D 0.01 -W 0.05"
 
 best() { # the fastest of three runs (least disturbed by the machine)
     b=""
@@ -83,9 +85,10 @@ best() { # the fastest of three runs (least disturbed by the machine)
 t_empty=$(best empty)
 t_vanilla=$(best vanilla)
 t_aeolian=$(best aeolian)
+t_cavity=$(best cavity)
 
 awk -v n="$N" -v s="$SECONDS_RENDERED" -v e="$t_empty" -v v="$t_vanilla" \
-    -v a="$t_aeolian" -v r="$RATE" 'BEGIN {
+    -v a="$t_aeolian" -v c="$t_cavity" -v r="$RATE" 'BEGIN {
     cv = (v - e) / n; ca = (a - e) / n
     printf "[aeolian~] model mode vs the paper-001 vanilla cylinder, %d sources, %d s at %d Hz, Pd batch mode\n", n, s, r
     printf "  empty patch           %8.3f s\n", e
@@ -93,6 +96,8 @@ awk -v n="$N" -v s="$SECONDS_RENDERED" -v e="$t_empty" -v v="$t_vanilla" \
     printf "  %d x [aeolian~]       %8.3f s   %.2f us per source per second of sound\n", n, a, 1e6 * ca / s
     printf "  cost ratio aeolian~/vanilla: %.3f (target <= 0.333)\n", ca / cv
     printf "  real-time [aeolian~] sources on one core at %d Hz: %.0f (target >= 1000)\n", r, s / ca
+    cc = (c - e) / n
+    printf "  %d x [cavity~] (model) %8.3f s   %.2f us per source per second of sound, %.0f real-time sources\n", n, c, 1e6 * cc / s, s / cc
 }' | tee "$DIR/aeolian.txt"
 
 # benchmarks of other parts, each in its own script

@@ -6,13 +6,9 @@
  *   inlet 1 (signal): flow speed across the axis, m/s
  *   outlet(s) (signal): sound pressure at the listener (ears), Pa
  */
-#include "m_pd.h"
-#include "g_canvas.h"
+#include "aero_pd.h"
 
 #include "aeolian_model.h"
-
-#include <stdlib.h>
-#include <string.h>
 
 static t_class *aeolian_tilde_class;
 
@@ -95,23 +91,6 @@ static void aeolian_tilde_seed(t_aeolian_tilde *x, t_floatarg f)
     aero_aeolian_model_set_seed(&x->x_model, (uint32_t)(int64_t)f);
 }
 
-static int floats_from_atoms(t_aeolian_tilde *x, const char *what, int argc,
-                             t_atom *argv, int want, double *v)
-{
-    if (argc != want) {
-        pd_error(x, OBJ ": '%s' takes %d numbers, got %d", what, want, argc);
-        return -1;
-    }
-    for (int i = 0; i < want; i++) {
-        if (argv[i].a_type != A_FLOAT) {
-            pd_error(x, OBJ ": '%s' takes numbers only", what);
-            return -1;
-        }
-        v[i] = atom_getfloat(argv + i);
-    }
-    return 0;
-}
-
 static void aeolian_tilde_listener(t_aeolian_tilde *x, t_symbol *s, int argc,
                                    t_atom *argv)
 {
@@ -120,7 +99,7 @@ static void aeolian_tilde_listener(t_aeolian_tilde *x, t_symbol *s, int argc,
         pd_error(x, OBJ ": created with -stereo: use 'ears lx ly lz rx ry rz'");
         return;
     }
-    if (floats_from_atoms(x, s->s_name, argc, argv, 3, v))
+    if (aero_pd_floats(x, OBJ, s->s_name, argc, argv, 3, v))
         return;
     if (aero_aeolian_model_set_ear(&x->x_model, 0, v[0], v[1], v[2]))
         pd_error(x, OBJ ": listener position must be finite, within 1e5 m");
@@ -134,7 +113,7 @@ static void aeolian_tilde_ears(t_aeolian_tilde *x, t_symbol *s, int argc,
         pd_error(x, OBJ ": 'ears' needs -stereo; use 'listener x y z'");
         return;
     }
-    if (floats_from_atoms(x, s->s_name, argc, argv, 6, v))
+    if (aero_pd_floats(x, OBJ, s->s_name, argc, argv, 6, v))
         return;
     if (aero_aeolian_model_set_ear(&x->x_model, 0, v[0], v[1], v[2]) ||
         aero_aeolian_model_set_ear(&x->x_model, 1, v[3], v[4], v[5]))
@@ -142,21 +121,6 @@ static void aeolian_tilde_ears(t_aeolian_tilde *x, t_symbol *s, int argc,
 }
 
 /* --- creation -------------------------------------------------------------- */
-
-/* A default seed that differs between objects but is the same every time
- * the patch is loaded: from $0 and the object's index in its canvas. */
-static uint32_t aeolian_tilde_default_seed(void)
-{
-    t_glist *canvas = canvas_getcurrent();
-    uint32_t seed = 1;
-    if (canvas) {
-        t_symbol *dollar0 = canvas_realizedollar(canvas, gensym("$0"));
-        seed += (uint32_t)atoi(dollar0->s_name) * 7919u;
-        for (t_gobj *g = canvas->gl_list; g; g = g->g_next)
-            seed += 104729u;
-    }
-    return seed;
-}
 
 /* one flag with its numbers; returns how many atoms it used, 0 if unknown */
 static int aeolian_tilde_flag(t_aeolian_tilde *x, t_symbol *flag, int argc,
@@ -214,7 +178,7 @@ static void *aeolian_tilde_new(t_symbol *s, int argc, t_atom *argv)
             !strcmp(argv[i].a_w.w_symbol->s_name, "-stereo"))
             x->x_stereo = 1;
     aero_aeolian_model_init(&x->x_model, sys_getsr(), x->x_stereo ? 2 : 1,
-                            aeolian_tilde_default_seed());
+                            aero_pd_default_seed());
     x->x_clock = clock_new(x, (t_method)aeolian_tilde_report);
 
     while (argc > 0) {

@@ -4,9 +4,11 @@
 #include "m_pd.h"
 
 void aeolian_tilde_setup(void);
+void cavity_tilde_setup(void);
 
 void aero_setup(void)
 {
     aeolian_tilde_setup();
-    post("aero: aerodynamic sound library loaded ([aeolian~])");
+    cavity_tilde_setup();
+    post("aero: aerodynamic sound library loaded ([aeolian~] [cavity~])");
 }

@@ -6,6 +6,7 @@
  *   aero-analyze level FILE     rms level, dB SPL (1 Pa = 94 dB)
  *   aero-analyze leveldiff A B  level(B) - level(A), dB
  *   aero-analyze band FILE F1 F2  level of the band F1..F2 Hz, dB SPL
+ *   aero-analyze banddiff FILE F1 F2 F3 F4  band F3..F4 minus band F1..F2, dB
  *   aero-analyze finite FILE    no NaN/Inf (nor their 1e9 markers), |x|
  *                               below --max (default 1e4)
  *   aero-analyze clicks FILE    worst local jump of the 2nd difference
@@ -266,7 +267,7 @@ static void usage(void)
 int main(int argc, char **argv)
 {
     options o = {0, 0.0, 20.0, 1e9, 0.0, 16384, 0, 0, 0, 0, 0, 0, 0, 0};
-    const char *pos[4];
+    const char *pos[6];
     int npos = 0;
     if (argc < 3) {
         usage();
@@ -299,7 +300,7 @@ int main(int argc, char **argv)
         else if (a[0] == '-' && a[1] == '-') {
             usage();
             return 2;
-        } else if (npos < 4)
+        } else if (npos < 6)
             pos[npos++] = a;
     }
     if (npos < 1 || o.nfft < 64) {
@@ -334,6 +335,12 @@ int main(int argc, char **argv)
                  pos[0]);
         rc = verdict(what, band_db(&s, &o, atof(pos[1]), atof(pos[2])),
                      "dB SPL", &o, 0);
+    } else if (!strcmp(cmd, "banddiff") && npos >= 5) {
+        snprintf(what, sizeof(what), "band %s-%s Hz over band %s-%s Hz of %s",
+                 pos[3], pos[4], pos[1], pos[2], pos[0]);
+        rc = verdict(what, band_db(&s, &o, atof(pos[3]), atof(pos[4])) -
+                               band_db(&s, &o, atof(pos[1]), atof(pos[2])),
+                     "dB", &o, 0);
     } else if (!strcmp(cmd, "finite")) {
         long bad = 0;
         double biggest = 0;

@@ -1,0 +1,101 @@
+/* aero: cavity tones (a draft through a gap, wind over a hollow, a bottle).
+ *
+ * A rectangular cavity of length L (along the flow), depth D and width W in
+ * a wall, grazed by a flow of speed U (a signal). Two modes:
+ *
+ * Model mode. The shear layer over the opening locks onto the Rossiter
+ * modes (Rossiter 1964, with Heller's compressibility form, DESIGN.md)
+ *     f_m = (U / L) (m - alpha) / (M + 1/kappa),  alpha 0.25, kappa 0.57,
+ * m = 1..4, M = U / c0; the cavity's depth resonance (quarter wave)
+ *     f_n = (2n - 1) c0 / (4 (D + delta)),  delta = 0.82 a  (flanged end
+ * correction, a = sqrt(L W / pi) the radius of the same opening area),
+ * and a Rossiter mode near a depth mode locks in and grows (the whistle of
+ * a bottle or a window gap); the others stay weak. Broadband shear-layer
+ * noise lies under the tones. The pressure amplitude grows as U^n, n = 2 by
+ * default (Dobashi's "amplitude ~ v^4" is an intensity law), and falls as
+ * 1/r.
+ *
+ * Texture mode. A cavity texture from `aerotex cavity` (g = dF/dt per unit
+ * width at the base speed v0) is read at a rate v/v0, scaled by (v/v0)^n
+ * (n = 2; the paper's 4 on request) and radiated as a compact dipole
+ * (Curle): p = (x . g) W / (4 pi c0 r^2).
+ *
+ * Life cycle: init, set_*, process, free (the texture, if any, belongs to
+ * the model after set_texture). No globals. */
+#ifndef AERO_CAVITY_MODEL_H
+#define AERO_CAVITY_MODEL_H
+
+#include "texture.h"
+
+#include <stdint.h>
+
+#define AERO_CAVITY_MODES 4
+#define AERO_CAVITY_DEPTH_MODES 3
+
+enum {
+    AERO_CAV_LENGTH,
+    AERO_CAV_DEPTH,
+    AERO_CAV_WIDTH,
+    AERO_CAV_GAIN, /* linear */
+    AERO_CAV_EAR,  /* x y z */
+    AERO_CAV_COUNT = AERO_CAV_EAR + 3
+};
+
+typedef struct aero_cavity_model {
+    double sample_rate;
+    uint32_t rng;
+    double exponent;         /* amplitude ~ U^exponent */
+
+    double ctl[AERO_CAV_COUNT], ctl_target[AERO_CAV_COUNT];
+    double ramp_samples, ramp_left;
+    int primed;
+
+    /* model mode, per Rossiter mode m */
+    double phase[AERO_CAVITY_MODES];
+    double mode_gain[AERO_CAVITY_MODES]; /* at the end of the last block */
+    double freq_factor[AERO_CAVITY_MODES]; /* f_m / U, Hz per m/s */
+    double noise_state[2];   /* band-pass of the shear-layer noise */
+    double level;            /* Pa per (m/s)^n at the listener */
+
+    /* texture mode */
+    aero_texture *texture;   /* NULL: model mode */
+    double texture_v0;
+    double texture_pos;      /* frames */
+} aero_cavity_model;
+
+/* Defaults: L 2 cm, D 1 cm, W 5 cm, listener 1 m above the opening (+y),
+ * gain 0 dB, ramp 20 ms, exponent 2. */
+void aero_cavity_model_init(aero_cavity_model *m, double sample_rate,
+                            uint32_t seed);
+void aero_cavity_model_free(aero_cavity_model *m);
+
+/* Setters: 0 when accepted, -1 when invalid (the old value stays). */
+int aero_cavity_model_set_sample_rate(aero_cavity_model *m, double sr);
+int aero_cavity_model_set_length(aero_cavity_model *m, double l);
+int aero_cavity_model_set_depth(aero_cavity_model *m, double d);
+int aero_cavity_model_set_width(aero_cavity_model *m, double w);
+int aero_cavity_model_set_gain_db(aero_cavity_model *m, double db);
+int aero_cavity_model_set_ramp_ms(aero_cavity_model *m, double ms);
+int aero_cavity_model_set_exponent(aero_cavity_model *m, double n);
+int aero_cavity_model_set_listener(aero_cavity_model *m, double x, double y,
+                                   double z);
+void aero_cavity_model_set_seed(aero_cavity_model *m, uint32_t seed);
+
+/* Texture mode: takes ownership of a loaded texture (kind=cavity, at least
+ * one direction, v0 > 0); returns -1 (and frees nothing) if it is not
+ * usable. NULL returns to model mode. */
+int aero_cavity_model_set_texture(aero_cavity_model *m, aero_texture *t,
+                                  char *err, size_t errlen);
+
+/* Rossiter frequency of mode m (1..4) at speed U, Hz. */
+double aero_cavity_rossiter_hz(double speed, double length, int mode);
+/* Quarter-wave depth resonance n (1, 2, ...) with the end correction, Hz. */
+double aero_cavity_depth_hz(double depth, double length, double width,
+                            int n);
+
+/* n samples; speed in m/s (NaN -> 0, |U| clamped at Mach 0.3); out in Pa.
+ * Returns 1 if a speed was clamped. */
+int aero_cavity_model_process(aero_cavity_model *m, const float *speed,
+                              float *out, int n);
+
+#endif

@@ -1,0 +1,73 @@
+/* aero: helpers shared by the Pd wrappers (header-only, static: each
+ * external is built from its own source file). */
+#ifndef AERO_PD_H
+#define AERO_PD_H
+
+#include "m_pd.h"
+#include "g_canvas.h"
+
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* A default seed that differs between objects but is the same every time
+ * the patch is loaded: from $0 and the object's index in its canvas. */
+static inline uint32_t aero_pd_default_seed(void)
+{
+    t_glist *canvas = canvas_getcurrent();
+    uint32_t seed = 1;
+    if (canvas) {
+        t_symbol *dollar0 = canvas_realizedollar(canvas, gensym("$0"));
+        seed += (uint32_t)atoi(dollar0->s_name) * 7919u;
+        for (t_gobj *g = canvas->gl_list; g; g = g->g_next)
+            seed += 104729u;
+    }
+    return seed;
+}
+
+/* exactly `want` numbers from a message, else an error naming the object */
+static inline int aero_pd_floats(void *x, const char *obj, const char *what,
+                                 int argc, const t_atom *argv, int want,
+                                 double *v)
+{
+    if (argc != want) {
+        pd_error(x, "%s: '%s' takes %d numbers, got %d", obj, what, want,
+                 argc);
+        return -1;
+    }
+    for (int i = 0; i < want; i++) {
+        if (argv[i].a_type != A_FLOAT) {
+            pd_error(x, "%s: '%s' takes numbers only", obj, what);
+            return -1;
+        }
+        v[i] = argv[i].a_w.w_float;
+    }
+    return 0;
+}
+
+/* Finds a texture as DESIGN.md says: next to the patch and on Pd's search
+ * path (canvas_open), then in the library's own textures/ folder. Writes
+ * the full path; 0 when found. */
+static inline int aero_pd_find_texture(const t_canvas *canvas,
+                                       const t_class *cls, const char *name,
+                                       char *path, size_t len)
+{
+    char dir[MAXPDSTRING], *base;
+    size_t n = strlen(name);
+    const char *ext = n > 4 && !strcmp(name + n - 4, ".wav") ? "" : ".wav";
+    int fd = canvas_open(canvas, name, ext, dir, &base, MAXPDSTRING, 1);
+    if (fd >= 0) {
+        sys_close(fd);
+        return snprintf(path, len, "%s/%s", dir, base) < (int)len ? 0 : -1;
+    }
+    snprintf(path, len, "%s/textures/%s%s", class_gethelpdir(cls), name, ext);
+    FILE *f = fopen(path, "rb");
+    if (f) {
+        fclose(f);
+        return 0;
+    }
+    return -1;
+}
+
+#endif

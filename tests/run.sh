@@ -111,6 +111,12 @@ for case in "10 0.01" "20 0.005" "30 0.003" "2 0.0005" "6 0.0004"; do
         --smooth "$(awk -v f="$f" 'BEGIN{print f*0.04}')"
 done
 
+# the wake noise widens with Re: a nearly pure tone in the laminar wake
+# (Re 68), a band of several percent once turbulent (Re 6800, 6100)
+judge $ANALYZE width "$OUT/peak-u2-d0.0005.wav" --fmin 300 --fmax 900 --max 0.015
+judge $ANALYZE width "$OUT/peak-u10-d0.01.wav" --fmin 100 --fmax 300 --min 0.03
+judge $ANALYZE width "$OUT/peak-u30-d0.003.wav" --fmin 1000 --fmax 3000 --min 0.03
+
 # 2. level: +18 dB per doubling of speed (p ~ U^3), twice
 pd_render lvl-u5 "aeolian~ -d 0.01" 1 3000 "; aero-speed 5"
 pd_render lvl-u10 "aeolian~ -d 0.01" 1 3000 "; aero-speed 10"

@@ -3,6 +3,8 @@
  *
  *   aero-analyze peak FILE      spectral peak (Welch PSD, FFTW), Hz
  *   aero-analyze peakratio A B  peak(B) / peak(A)
+ *   aero-analyze width FILE     full width at half power of the highest
+ *                               peak, relative to its frequency
  *   aero-analyze level FILE     rms level, dB SPL (1 Pa = 94 dB)
  *   aero-analyze leveldiff A B  level(B) - level(A), dB
  *   aero-analyze band FILE F1 F2  level of the band F1..F2 Hz, dB SPL
@@ -190,6 +192,35 @@ static double band_db(const signal_t *s, const options *o, double f1,
     return 10.0 * log10(ms / (20e-6 * 20e-6) + 1e-30);
 }
 
+/* full width at half maximum of the highest peak in [fmin, fmax] of the
+ * (optionally smoothed) power spectrum, divided by its frequency */
+static double relative_width(const signal_t *s, const options *o)
+{
+    int nfft = o->nfft;
+    double *psd = welch(s, &nfft);
+    double df = s->sr / nfft;
+    int lo = (int)ceil(o->fmin / df), hi = (int)floor(o->fmax / df);
+    if (lo < 1)
+        lo = 1;
+    if (hi > nfft / 2 - 1)
+        hi = nfft / 2 - 1;
+    int best = lo;
+    for (int k = lo; k <= hi; k++)
+        if (psd[k] > psd[best])
+            best = k;
+    double half = 0.5 * psd[best];
+    int a = best, b = best;
+    while (a > lo && psd[a - 1] >= half)
+        a--;
+    while (b < hi && psd[b + 1] >= half)
+        b++;
+    /* interpolate the half-power crossings between bins */
+    double left = a - (psd[a] - half) / (psd[a] - psd[a - 1] + 1e-300);
+    double right = b + (psd[b] - half) / (psd[b] - psd[b + 1] + 1e-300);
+    free(psd);
+    return (right - left) / best;
+}
+
 static double click_ratio(const signal_t *s)
 {
     long w = (long)(0.002 * s->sr); /* 2 ms windows */
@@ -260,7 +291,7 @@ static int verdict(const char *what, double value, const char *unit,
 
 static void usage(void)
 {
-    fprintf(stderr, "usage: aero-analyze peak|peakratio|level|leveldiff|band|finite|"
+    fprintf(stderr, "usage: aero-analyze peak|peakratio|width|level|leveldiff|band|finite|"
                     "clicks FILE [FILE2] [F1 F2] [options]\n");
 }
 
@@ -321,6 +352,9 @@ int main(int argc, char **argv)
         snprintf(what, sizeof(what), "peak of %s over %s", pos[1], pos[0]);
         rc = verdict(what, peak_hz(&s2, &o) / peak_hz(&s, &o), "", &o, 1);
         free(s2.x);
+    } else if (!strcmp(cmd, "width")) {
+        snprintf(what, sizeof(what), "relative peak width of %s", pos[0]);
+        rc = verdict(what, relative_width(&s, &o), "", &o, 0);
     } else if (!strcmp(cmd, "level")) {
         snprintf(what, sizeof(what), "level of %s", pos[0]);
         rc = verdict(what, level_db(&s), "dB SPL", &o, 0);

@@ -1,0 +1,84 @@
+/* aero: the aerotex command line: bad arguments and impossible geometry
+ * give a message and a non-zero exit; a tiny texture is made and read
+ * back with `aerotex info`. Runs build/aerotex from the repository root. */
+#include "unit.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+
+#define TOOL "build/aerotex"
+#define OUT "build/tests/aerotex_out.txt"
+
+/* exit status of the command, its stdout + stderr in OUT */
+static int run(const char *args)
+{
+    char cmd[1024];
+    int r;
+    snprintf(cmd, sizeof cmd, "%s %s >%s 2>&1", TOOL, args, OUT);
+    r = system(cmd);
+    return WIFEXITED(r) ? WEXITSTATUS(r) : -1;
+}
+
+/* does OUT contain s? */
+static int said(const char *s)
+{
+    char buf[8192];
+    size_t n;
+    FILE *f = fopen(OUT, "r");
+    if (!f) return 0;
+    n = fread(buf, 1, sizeof buf - 1, f);
+    fclose(f);
+    buf[n] = 0;
+    return strstr(buf, s) != NULL;
+}
+
+static void bad(const char *args, const char *msg)
+{
+    int r = run(args);
+    UNIT_CHECK(r != 0 && said(msg), "'aerotex %s' -> exit %d, says '%s'",
+               args, r, msg);
+}
+
+int main(void)
+{
+    FILE *f = fopen(TOOL, "r");
+    if (!f) {
+        printf("  skip  %s not built\n", TOOL);
+        return unit_summary();
+    }
+    fclose(f);
+    UNIT_CHECK(run("help") == 0 && said("aeolian") && said("cavity"),
+               "help lists the commands");
+    bad("", "usage");
+    bad("bogus", "unknown command");
+    bad("aeolian --shape circle", "no output file");
+    bad("aeolian --speed -3 -o x.wav", "out of range");
+    bad("aeolian --speed fast -o x.wav", "not a number");
+    bad("aeolian --shape triangle -o x.wav", "unknown shape");
+    bad("aeolian --shape polygon /nonexistent.poly -o x.wav", "can't open");
+    bad("aeolian --shape circle --directions 4 -o x.wav", "every direction");
+    bad("aeolian --speed 200 -o x.wav", "Mach");
+    bad("aeolian --diameter 0.5 --speed 50 -o x.wav", "beyond");
+    bad("aeolian --grid 2 -o x.wav", "out of range");
+    bad("aeolian --shape ellipse --aspect 0.02 --grid 16 -o x.wav", "thin");
+    bad("aeolian --frobnicate -o x.wav", "unknown option");
+    bad("cavity --length 0.02 -o x.wav", "--depth");
+    bad("cavity --length 0.02 --depth 1 -o x.wav", "depth/length");
+    bad("info /nonexistent.wav", "can't open");
+    {
+        /* a tiny, coarse texture and its metadata */
+        int r = run("aeolian --shape circle --re 80 --grid 8 --duration 0.01 "
+                    "--settle 5 -q -o build/tests/aerotex_tiny.wav");
+        UNIT_CHECK(r == 0, "tiny texture made (exit %d)", r);
+        r = run("info build/tests/aerotex_tiny.wav");
+        UNIT_CHECK(r == 0 && said("kind=aeolian") && said("re=80") &&
+                       said("directions=1") && said("st=") &&
+                       said("command=aerotex aeolian"),
+                   "info prints kind, Re, directions, St, command");
+        remove("build/tests/aerotex_tiny.wav");
+    }
+    remove(OUT);
+    return unit_summary();
+}

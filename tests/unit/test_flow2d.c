@@ -1,0 +1,266 @@
+/* aero: tests of the 2D flow solver (src/core/flow2d.c, shape2d.c) against
+ * published cylinder data, and of the texture made from its force.
+ *
+ * Reference values:
+ *  - Williamson (1996), Annu. Rev. Fluid Mech. 28: laminar shedding fit
+ *    St = -3.3265/Re + 0.1816 + 1.6e-4 Re (49 < Re < 178; used to 200 as
+ *    2D simulations follow it there), onset of shedding at Re ~ 47-49.
+ *  - mean drag at Re 100: Cd ~ 1.33-1.35 (2D simulations, e.g. Park, Kwon
+ *    & Choi 1998, KSME Int. J. 12: 1.33); accepted window 1.2-1.5.
+ *  - lift at f = St U/d, drag at 2 f (symmetry of the Karman street).
+ * The flow runs are coarse (16 cells per diameter, the tool's default) but
+ * the domain is large (20 d upstream, 24 d downstream, +-16 d across): a
+ * closer far field shifts St by several percent. The four runs go in
+ * parallel on the available cores. */
+#include "unit.h"
+#include "aero_air.h"
+#include "flow2d.h"
+#include "shape2d.h"
+#include "texture.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static double williamson(double re)
+{
+    return -3.3265 / re + 0.1816 + 1.6e-4 * re;
+}
+
+typedef struct {
+    double re, grid, settle, record;
+    double xmin, xmax, ymax;
+    /* results */
+    aero_flowstats st;
+    double *t, *fx, *fy;
+    int n, failed;
+    char err[256];
+} flowcase;
+
+static void run_case(flowcase *c)
+{
+    aero_flow2d_params p;
+    aero_flow2d s;
+    aero_shape2d sh;
+    long nrec;
+    aero_flow2d_defaults(&p, c->re);
+    p.grid = c->grid;
+    p.xmin = c->xmin;
+    p.xmax = c->xmax;
+    p.ymin = -c->ymax;
+    p.ymax = c->ymax;
+    aero_shape2d_circle(&sh, 1.0);
+    if (aero_flow2d_init(&s, &p, c->err, sizeof c->err)) {
+        c->failed = 1;
+        return;
+    }
+    if (aero_flow2d_set_body(&s, &sh, 0.0, c->err, sizeof c->err)) {
+        c->failed = 1;
+        aero_flow2d_free(&s);
+        return;
+    }
+    /* the step varies a little (CFL at the peak speed): a generous size */
+    nrec = (long)(c->record / (0.5 * s.dt)) + 16;
+    c->t = malloc(sizeof(double) * nrec);
+    c->fx = malloc(sizeof(double) * nrec);
+    c->fy = malloc(sizeof(double) * nrec);
+    while (s.t < c->settle + c->record && c->n < nrec) {
+        if (aero_flow2d_step(&s)) {
+            snprintf(c->err, sizeof c->err, "diverged at t = %g", s.t);
+            c->failed = 1;
+            break;
+        }
+        if (s.t >= c->settle) {
+            c->t[c->n] = s.t;
+            c->fx[c->n] = aero_flow2d_cd(&s);
+            c->fy[c->n] = aero_flow2d_cl(&s);
+            c->n++;
+        }
+    }
+    if (!c->failed)
+        aero_flow2d_stats(c->t, c->fx, c->fy, c->n, &c->st);
+    aero_flow2d_free(&s);
+}
+
+/* magnitude of the DFT of x (n samples at rate) at frequency f */
+static double dft_mag(const float *x, int stride, int n, double rate, double f)
+{
+    double re = 0.0, im = 0.0;
+    for (int k = 0; k < n; k++) {
+        double w = 0.5 - 0.5 * cos(2.0 * AERO_PI * k / n); /* Hann */
+        re += w * x[(size_t)k * stride] * cos(2.0 * AERO_PI * f * k / rate);
+        im -= w * x[(size_t)k * stride] * sin(2.0 * AERO_PI * f * k / rate);
+    }
+    return sqrt(re * re + im * im);
+}
+
+/* frequency of the largest spectral peak between f0 and f1 */
+static double dominant(const float *x, int stride, int n, double rate,
+                       double f0, double f1)
+{
+    double best = 0.0, fb = f0;
+    for (double f = f0; f <= f1; f += 0.25) {
+        double m = dft_mag(x, stride, n, rate, f);
+        if (m > best) {
+            best = m;
+            fb = f;
+        }
+    }
+    return fb;
+}
+
+static void test_shapes(void)
+{
+    aero_shape2d s;
+    char err[256];
+    double sx[] = {0, 4, 4, 0}, sy[] = {0, 0, 2, 2};
+    double bx[] = {0, 1, 0, 1}, by[] = {0, 1, 1, 0}; /* bow tie */
+    printf("shapes\n");
+    aero_shape2d_circle(&s, 0.02);
+    UNIT_CHECK(fabs(aero_shape2d_distance(&s, 0.02, 0.0) - 0.01) < 1e-12,
+               "circle distance outside");
+    UNIT_CHECK(fabs(aero_shape2d_distance(&s, 0.0, 0.0) + 0.01) < 1e-12,
+               "circle distance at the centre");
+    aero_shape2d_square(&s, 1.0);
+    UNIT_CHECK(fabs(aero_shape2d_distance(&s, 1.0, 1.0) - sqrt(0.5)) < 1e-12,
+               "square distance from a corner");
+    UNIT_NEAR_REL(aero_shape2d_frontal(&s, AERO_PI / 4), sqrt(2.0), 1e-9,
+                  "square frontal width at 45 deg");
+    UNIT_CHECK(aero_shape2d_polygon(&s, sx, sy, 4, 1.0, err, sizeof err) == 0,
+               "rectangle polygon accepted");
+    UNIT_CHECK(fabs(aero_shape2d_distance(&s, 0.0, 0.0) + 0.25) < 1e-12,
+               "polygon recentred and scaled to x extent 1: centre depth %g",
+               aero_shape2d_distance(&s, 0.0, 0.0));
+    UNIT_CHECK(fabs(aero_shape2d_distance(&s, 0.75, 0.0) - 0.25) < 1e-12,
+               "polygon distance outside");
+    aero_shape2d_free(&s);
+    UNIT_CHECK(aero_shape2d_polygon(&s, bx, by, 4, 1.0, err, sizeof err) != 0 &&
+                   strstr(err, "cross"),
+               "self-crossing polygon rejected: %s", err);
+    UNIT_CHECK(aero_shape2d_polygon(&s, sx, sy, 2, 1.0, err, sizeof err) != 0,
+               "two-vertex polygon rejected: %s", err);
+    UNIT_CHECK(aero_shape2d_load_poly(&s, "/nonexistent/x.poly", 1.0, err,
+                                      sizeof err) != 0 && err[0],
+               "missing polygon file: %s", err);
+    {
+        aero_flow2d_params p;
+        aero_flow2d f;
+        aero_flow2d_defaults(&p, 100.0);
+        p.grid = 0.5;
+        UNIT_CHECK(aero_flow2d_init(&f, &p, err, sizeof err) != 0,
+                   "absurd grid rejected: %s", err);
+        aero_flow2d_defaults(&p, -5.0);
+        UNIT_CHECK(aero_flow2d_init(&f, &p, err, sizeof err) != 0,
+                   "negative Re rejected: %s", err);
+    }
+}
+
+int main(void)
+{
+    /* 0: Re 30 (no shedding), 1: Re 100, 2: Re 200, 3: Re 100 finer grid */
+    flowcase c[4];
+    const double setup[4][7] = {
+        /* Re, grid, settle, record (d/U), xmin, xmax, half-width (d) */
+        {30.0, 12.0, 60.0, 30.0, -10.0, 16.0, 8.0},
+        {100.0, 16.0, 45.0, 36.0, -20.0, 24.0, 16.0},
+        {200.0, 16.0, 40.0, 30.0, -20.0, 24.0, 16.0},
+        {100.0, 22.0, 45.0, 36.0, -20.0, 24.0, 16.0},
+    };
+    const int order[4] = {3, 1, 2, 0}; /* longest first */
+    test_shapes();
+    memset(c, 0, sizeof c);
+    for (int k = 0; k < 4; k++) {
+        c[k].re = setup[k][0];
+        c[k].grid = setup[k][1];
+        c[k].settle = setup[k][2];
+        c[k].record = setup[k][3];
+        c[k].xmin = setup[k][4];
+        c[k].xmax = setup[k][5];
+        c[k].ymax = setup[k][6];
+    }
+
+#pragma omp parallel for schedule(dynamic, 1)
+    for (int k = 0; k < 4; k++)
+        run_case(&c[order[k]]);
+
+    for (int k = 0; k < 4; k++)
+        UNIT_CHECK(!c[k].failed, "Re %g grid %g ran: %s", c[k].re, c[k].grid,
+                   c[k].err);
+    if (c[0].failed || c[1].failed || c[2].failed || c[3].failed)
+        return unit_summary();
+
+    printf("Re 30: steady wake, no shedding\n");
+    UNIT_CHECK(c[0].st.cl_amp < 0.01 && c[0].st.st == 0.0,
+               "Re 30 lift amplitude %g < 0.01, St %g", c[0].st.cl_amp,
+               c[0].st.st);
+    UNIT_CHECK(c[1].st.cl_amp > 0.2, "Re 100 sheds: lift amplitude %g > 0.2",
+               c[1].st.cl_amp);
+
+    printf("Strouhal number against Williamson (1996)\n");
+    UNIT_NEAR_REL(c[1].st.st, williamson(100.0), 0.03, "St at Re 100");
+    UNIT_NEAR_REL(c[2].st.st, williamson(200.0), 0.03, "St at Re 200");
+    printf("mean drag at Re 100 (published 1.33-1.35)\n");
+    UNIT_CHECK(c[1].st.cd > 1.2 && c[1].st.cd < 1.5, "Cd(100) = %.3f in 1.2-1.5",
+               c[1].st.cd);
+    UNIT_CHECK(c[1].st.cl_amp > 0.25 && c[1].st.cl_amp < 0.40,
+               "lift amplitude at Re 100 %.3f (published 0.30-0.34)",
+               c[1].st.cl_amp);
+    printf("grid independence, Re 100: 16 -> 22 cells per diameter\n");
+    UNIT_NEAR_REL(c[3].st.st, c[1].st.st, 0.02, "St on the finer grid");
+    printf("  St %.4f (grid 16), %.4f (grid 22), Williamson %.4f; Cd %.3f, "
+           "%.3f\n", c[1].st.st, c[3].st.st, williamson(100.0), c[1].st.cd,
+           c[3].st.cd);
+
+    {
+        /* the texture of the Re 200 run: d = 1 cm, v0 = 10 m/s */
+        const double d = 0.01, v0 = 10.0, rate = 16000.0;
+        const double tunit = d / v0, scale = AERO_RHO * v0 * v0 * d;
+        const int n = 3200;
+        const double f = c[2].st.st * v0 / d;
+        aero_texture t, back;
+        char err[256];
+        const char *path = "build/tests/test_flow2d_texture.wav";
+        double fy, fx;
+        err[0] = 0;
+        printf("texture from the Re 200 force (f = St v0 / d = %.1f Hz)\n", f);
+        aero_texture_init(&t, n, 1, rate);
+        /* forces are coefficients here: F = (C/2) rho v0^2 d */
+        for (int k = 0; k < c[2].n; k++) {
+            c[2].fx[k] *= 0.5;
+            c[2].fy[k] *= 0.5;
+        }
+        for (int k = 0; k < c[2].n; k++)
+            c[2].t[k] = (c[2].t[k] - c[2].t[0]) * tunit; /* seconds */
+        aero_texture_resample_derivative(c[2].t, c[2].fx, c[2].n, rate, 0.002,
+                                         scale, t.data, 3, n);
+        aero_texture_resample_derivative(c[2].t, c[2].fy, c[2].n, rate, 0.002,
+                                         scale, t.data + 1, 3, n);
+        aero_texture_set(&t, "kind", "aeolian");
+        aero_texture_setd(&t, "directions", 1);
+        aero_texture_setd(&t, "v0", v0);
+        aero_texture_setd(&t, "rate", rate);
+        aero_texture_set(&t, "angles", "0");
+        UNIT_CHECK(aero_texture_save(path, &t, err, sizeof err) == 0,
+                   "texture written: %s", err);
+        UNIT_CHECK(aero_texture_load(path, &back, err, sizeof err) == 0,
+                   "texture read back: %s", err);
+        if (back.data) {
+            fy = dominant(back.data + 1, 3, n, rate, 20.0, 2000.0);
+            fx = dominant(back.data, 3, n, rate, 20.0, 2000.0);
+            UNIT_NEAR_REL(fy, f, 0.02, "lift channel peak (Hz)");
+            UNIT_NEAR_REL(fx, 2.0 * f, 0.02, "drag channel peak at 2 f (Hz)");
+            UNIT_CHECK(dft_mag(back.data + 1, 3, n, rate, f) >
+                           5.0 * dft_mag(back.data, 3, n, rate, 2.0 * f),
+                       "lift tone stronger than the drag tone");
+            aero_texture_free(&back);
+        }
+        aero_texture_free(&t);
+        remove(path);
+    }
+    for (int k = 0; k < 4; k++) {
+        free(c[k].t);
+        free(c[k].fx);
+        free(c[k].fy);
+    }
+    return unit_summary();
+}

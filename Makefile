@@ -96,7 +96,7 @@ pdinstance:
 
 # --- dependencies: Debian packages ------------------------------------------
 DEB_PACKAGES = puredata-core puredata-dev pd-lib-builder libfftw3-dev \
-    libsndfile1-dev libpng-dev sox gcc make
+    libsndfile1-dev libpng-dev sox gcc make valgrind
 deps:
 	@sh tests/deps.sh $(DEB_PACKAGES)
 

@@ -278,12 +278,17 @@ static void process_model(aero_cavity_model *m, const float *u, float *out,
     double exponent = m->exponent;
     for (int i = 0; i < n; i++) {
         double t = (i + 1.0) / n, s = 0;
+        /* one random word gives the four modes' phase steps, a byte each
+         * (uniform on [-1, 1): only the variance of the diffusion matters) */
+        uint32_t word = xorshift32(&m->rng);
         for (int k = 0; k < AERO_CAVITY_MODES; k++) {
             double g = m->mode_gain[k] + (gain_end[k] - m->mode_gain[k]) * t;
-            m->phase[k] += m->freq_factor[k] * u[i] / sr +
-                           jitter[k] * uniform(&m->rng);
-            m->phase[k] -= floor(m->phase[k]);
-            s += g * sin_cycles((float)m->phase[k]);
+            double p = m->phase[k] + m->freq_factor[k] * u[i] / sr +
+                       jitter[k] * (double)(int8_t)(word >> (8 * k)) * (1.0 / 128.0);
+            p += p < 0.0 ? 1.0 : 0.0;
+            p -= p >= 1.0 ? 1.0 : 0.0;
+            m->phase[k] = p;
+            s += g * sin_cycles((float)p);
         }
         double white = uniform(&m->rng);
         m->noise_state[0] += a_hi * (white - m->noise_state[0]);

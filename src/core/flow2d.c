@@ -1,0 +1,745 @@
+/* aero: incompressible 2D flow past a body (see flow2d.h).
+ * Grid: cell (i, j), 0 <= i < nx, 0 <= j < ny, centre (xmin + (i + 1/2) h,
+ * ymin + (j + 1/2) h). u[i][j] sits on the left face of cell (i, j)
+ * (0 <= i <= nx), v[i][j] on its bottom face (0 <= j <= ny). Velocity
+ * arrays carry two ghost layers on every side, indexed by AT(i, j). */
+#include "flow2d.h"
+#include "aero_air.h"
+
+#include <fftw3.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define G 2
+#define AT(i, j) ((size_t)((j) + G) * (size_t)s->sx + (size_t)((i) + G))
+
+void aero_flow2d_defaults(aero_flow2d_params *p, double re)
+{
+    p->re = re;
+    p->grid = 16.0;
+    p->xmin = -10.0;
+    p->xmax = 20.0;
+    p->ymin = -10.0;
+    p->ymax = 10.0;
+    p->cfl = 0.6;
+    p->spin = 0.25;
+    p->spin_time = 3.0;
+}
+
+static float *zalloc(size_t n)
+{
+    float *a = fftwf_malloc(sizeof(float) * (n ? n : 1));
+    if (a) memset(a, 0, sizeof(float) * (n ? n : 1));
+    return a;
+}
+
+/* FFT sizes with small prime factors only */
+static int good_size(int n)
+{
+    for (;; n++) {
+        int m = n;
+        while (m % 2 == 0) m /= 2;
+        while (m % 3 == 0) m /= 3;
+        while (m % 5 == 0) m /= 5;
+        if (m == 1) return n;
+    }
+}
+
+int aero_flow2d_init(aero_flow2d *s, const aero_flow2d_params *p, char *err,
+                     size_t errlen)
+{
+    size_t nv;
+    double lx = p->xmax - p->xmin, ly = p->ymax - p->ymin;
+    memset(s, 0, sizeof *s);
+    s->p = *p;
+    if (!(p->re > 0.0 && p->re < 1e7)) {
+        snprintf(err, errlen, "Reynolds number %g out of range (0, 1e7)", p->re);
+        return -1;
+    }
+    if (!(p->grid >= 4.0 && p->grid <= 400.0)) {
+        snprintf(err, errlen, "grid of %g cells per diameter out of range 4..400",
+                 p->grid);
+        return -1;
+    }
+    if (!(lx > 2.0 && ly > 2.0) || !(p->xmin < 0.0 && p->xmax > 0.0)) {
+        snprintf(err, errlen, "flow domain too small");
+        return -1;
+    }
+    if (!(p->cfl > 0.0 && p->cfl <= 1.0)) {
+        snprintf(err, errlen, "CFL number %g out of range (0, 1]", p->cfl);
+        return -1;
+    }
+    s->h = (float)(1.0 / p->grid);
+    s->nx = good_size((int)ceil(lx * p->grid));
+    s->ny = good_size((int)ceil(ly * p->grid));
+    if ((double)s->nx * s->ny > 5e7) {
+        snprintf(err, errlen, "grid of %d x %d cells is too large", s->nx, s->ny);
+        return -1;
+    }
+    s->nu = (float)(1.0 / p->re);
+    {
+        /* AB2 is stable on the negative real axis down to -1: the
+           diffusion (8 nu / h^2) and the upwind dissipation of the free
+           stream (~2.7 U / h) share that budget (dt_max); advection is
+           held below the CFL number at the measured peak speed
+           (choose_step), starting from 2 U */
+        s->dt_max = (float)(0.9 / (8.0 * s->nu / ((double)s->h * s->h) +
+                                   2.7 / s->h));
+        s->dt = (float)(p->cfl * s->h / 2.0);
+        if (s->dt > s->dt_max) s->dt = s->dt_max;
+        s->dt_prev = s->dt;
+    }
+    s->sx = s->nx + 1 + 2 * G;
+    nv = (size_t)s->sx * (size_t)(s->ny + 1 + 2 * G);
+    s->u = zalloc(nv);
+    s->v = zalloc(nv);
+    s->hu = zalloc(nv);
+    s->hv = zalloc(nv);
+    s->hu0 = zalloc(nv);
+    s->hv0 = zalloc(nv);
+    s->uin = zalloc((size_t)s->ny);
+    s->phi = zalloc((size_t)s->nx * s->ny);
+    s->dphi = zalloc((size_t)s->nx * s->ny);
+    s->ieig = zalloc((size_t)s->nx * s->ny);
+    s->solid = zalloc((size_t)s->nx * s->ny);
+    s->sponge = zalloc((size_t)s->nx + 1);
+    s->work = zalloc(3 * ((size_t)s->nx + 8));
+    if (!s->sponge || !s->work ||
+        !s->u || !s->v || !s->hu || !s->hv || !s->hu0 || !s->hv0 || !s->uin ||
+        !s->phi || !s->dphi || !s->ieig || !s->solid) {
+        aero_flow2d_free(s);
+        snprintf(err, errlen, "out of memory for a %d x %d grid", s->nx, s->ny);
+        return -1;
+    }
+    /* sponge before the outflow: relaxation rate sigma(x) = 2 U/d ((x - x0)
+       / L)^2 over the last L = 4 d (or a fifth of the wake) */
+    {
+        double len = 0.2 * p->xmax < 4.0 ? 0.2 * p->xmax : 4.0;
+        for (int i = 0; i <= s->nx; i++) {
+            double x = p->xmin + i * (double)s->h, q = (x - (p->xmax - len)) / len;
+            double sig = q > 0.0 ? 2.0 * q * q : 0.0;
+            s->sponge[i] = (float)sig;
+        }
+    }
+    /* FFTW's planner is not thread-safe: one plan at a time. Cosine
+       transforms along x, one per row */
+#pragma omp critical(aero_fftw_plan)
+    {
+        int n = s->nx;
+        fftwf_r2r_kind k10 = FFTW_REDFT10, k01 = FFTW_REDFT01;
+        s->plan_fwd = fftwf_plan_many_r2r(1, &n, s->ny, s->dphi, NULL, 1,
+                                          s->nx, s->dphi, NULL, 1, s->nx,
+                                          &k10, FFTW_MEASURE);
+        s->plan_inv = fftwf_plan_many_r2r(1, &n, s->ny, s->dphi, NULL, 1,
+                                          s->nx, s->dphi, NULL, 1, s->nx,
+                                          &k01, FFTW_MEASURE);
+    }
+    if (!s->plan_fwd || !s->plan_inv) {
+        aero_flow2d_free(s);
+        snprintf(err, errlen, "FFTW could not plan a %d x %d transform", s->nx,
+                 s->ny);
+        return -1;
+    }
+    /* per cosine mode k along x the Neumann Laplacian along y is the
+       tridiagonal x[j-1] + b x[j] + x[j+1] = h^2 r[j], b = 2 cos(pi k/nx) - 4
+       (b + 1 at both ends); its Thomas factors 1 / (b_j - c_(j-1)) are also
+       the eliminated upper diagonal c_j (the off-diagonals are 1). Mode 0
+       is singular: its first value is pinned to 0. */
+    for (int k = 0; k < s->nx; k++) {
+        double b = 2.0 * cos(AERO_PI * k / s->nx) - 4.0, c = 0.0;
+        for (int j = 0; j < s->ny; j++) {
+            double bj = b + ((j == 0 || j == s->ny - 1) ? 1.0 : 0.0);
+            float *m = s->ieig + (size_t)j * s->nx + k;
+            if (k == 0 && j == 0) {
+                *m = 0.0f;
+                c = 0.0;
+                continue;
+            }
+            c = 1.0 / (bj - c);
+            *m = (float)c;
+        }
+    }
+    return 0;
+}
+
+void aero_flow2d_free(aero_flow2d *s)
+{
+#pragma omp critical(aero_fftw_plan)
+    {
+        if (s->plan_fwd) fftwf_destroy_plan((fftwf_plan)s->plan_fwd);
+        if (s->plan_inv) fftwf_destroy_plan((fftwf_plan)s->plan_inv);
+    }
+    fftwf_free(s->u);
+    fftwf_free(s->v);
+    fftwf_free(s->hu);
+    fftwf_free(s->hv);
+    fftwf_free(s->hu0);
+    fftwf_free(s->hv0);
+    fftwf_free(s->uin);
+    fftwf_free(s->phi);
+    fftwf_free(s->dphi);
+    fftwf_free(s->ieig);
+    fftwf_free(s->solid);
+    fftwf_free(s->sponge);
+    fftwf_free(s->work);
+    free(s->ib_idx);
+    free(s->ib_chi);
+    free(s->ib_x);
+    free(s->ib_y);
+    free(s->ib_count);
+    memset(s, 0, sizeof *s);
+}
+
+/* solid fraction of a node from the signed distance (in cells):
+   a linear ramp over one cell centred on the surface */
+static float solid_fraction(const aero_shape2d *shape, double d, double alpha,
+                            double x, double y, double h)
+{
+    double ca = cos(alpha), sa = sin(alpha);
+    /* lab -> body frame: rotate by alpha */
+    double xb = (x * ca - y * sa) * d, yb = (x * sa + y * ca) * d;
+    double q = 0.5 - aero_shape2d_distance(shape, xb, yb) / (d * h);
+    return (float)(q < 0.0 ? 0.0 : q > 1.0 ? 1.0 : q);
+}
+
+/* does a node count into the measured force? (a cavity's force is taken
+   from the wall pressure instead, see force_cavity_walls) */
+static int counts_into_force(const aero_shape2d *shape)
+{
+    return shape->kind != AERO_SHAPE_CAVITY;
+}
+
+int aero_flow2d_set_body(aero_flow2d *s, const aero_shape2d *shape,
+                         double alpha, char *err, size_t errlen)
+{
+    const double h = s->h, d = shape->size;
+    int cap = 0, n = 0, pass;
+    if (!(d > 0.0)) {
+        snprintf(err, errlen, "body size must be positive");
+        return -1;
+    }
+    free(s->ib_idx);
+    free(s->ib_chi);
+    free(s->ib_x);
+    free(s->ib_y);
+    free(s->ib_count);
+    s->ib_idx = NULL;
+    s->ib_chi = s->ib_x = s->ib_y = NULL;
+    s->ib_count = NULL;
+    /* two passes: count the forced nodes, then fill the lists */
+    for (pass = 0; pass < 2; pass++) {
+        n = 0;
+        for (int c = 0; c < 2; c++) {
+            int ni = c ? s->nx : s->nx + 1, nj = c ? s->ny + 1 : s->ny;
+            if (pass && c) s->nibu = n;
+            for (int j = 0; j < nj; j++)
+                for (int i = 0; i < ni; i++) {
+                    double x = s->p.xmin + (i + (c ? 0.5 : 0.0)) * h;
+                    double y = s->p.ymin + (j + (c ? 0.0 : 0.5)) * h;
+                    float chi = solid_fraction(shape, d, alpha, x, y, h);
+                    if (chi <= 0.0f) continue;
+                    if (pass) {
+                        s->ib_idx[n] = (int)AT(i, j);
+                        s->ib_chi[n] = chi;
+                        s->ib_x[n] = (float)x;
+                        s->ib_y[n] = (float)y;
+                        s->ib_count[n] =
+                            (unsigned char)counts_into_force(shape);
+                    }
+                    n++;
+                }
+        }
+        if (!pass) {
+            cap = n;
+            s->ib_idx = malloc(sizeof(int) * (cap ? cap : 1));
+            s->ib_chi = malloc(sizeof(float) * (cap ? cap : 1));
+            s->ib_x = malloc(sizeof(float) * (cap ? cap : 1));
+            s->ib_y = malloc(sizeof(float) * (cap ? cap : 1));
+            s->ib_count = malloc(cap ? cap : 1);
+            if (!s->ib_idx || !s->ib_chi || !s->ib_x || !s->ib_y ||
+                !s->ib_count) {
+                snprintf(err, errlen, "out of memory");
+                return -1;
+            }
+        }
+    }
+    s->nib = n;
+    if (n == 0) {
+        snprintf(err, errlen,
+                 "the body is smaller than the grid: use a finer --grid");
+        return -1;
+    }
+    /* cell-centre solid fraction (pictures) and inflow profile */
+    for (int j = 0; j < s->ny; j++) {
+        for (int i = 0; i < s->nx; i++)
+            s->solid[j * s->nx + i] = solid_fraction(
+                shape, d, alpha, s->p.xmin + (i + 0.5) * h,
+                s->p.ymin + (j + 0.5) * h, h);
+        s->uin[j] = 1.0f - solid_fraction(shape, d, alpha, s->p.xmin,
+                                          s->p.ymin + (j + 0.5) * h, h);
+    }
+    {
+        /* reject bodies that touch the domain's edges (other than a wall) */
+        int touch = 0;
+        for (int i = 0; i < s->nx; i++)
+            if (s->solid[(s->ny - 1) * s->nx + i] > 0.0f ||
+                (shape->kind != AERO_SHAPE_CAVITY && s->solid[i] > 0.0f))
+                touch = 1;
+        for (int j = 0; j < s->ny; j++)
+            if (shape->kind != AERO_SHAPE_CAVITY &&
+                (s->solid[j * s->nx] > 0.0f ||
+                 s->solid[j * s->nx + s->nx - 1] > 0.0f))
+                touch = 1;
+        if (touch) {
+            snprintf(err, errlen, "the body does not fit in the flow domain");
+            return -1;
+        }
+    }
+    s->cavity = shape->kind == AERO_SHAPE_CAVITY;
+    if (s->cavity) {
+        /* cells along the cavity's walls: x from 0 to l, y from -depth to 0 */
+        s->cav_i0 = (int)lround((0.0 - s->p.xmin) / h);
+        s->cav_i1 = (int)lround((shape->a / d - s->p.xmin) / h);
+        s->cav_jd = (int)lround((-shape->b / d - s->p.ymin) / h);
+        s->cav_j0 = (int)lround((0.0 - s->p.ymin) / h);
+        if (s->cav_i0 < 1 || s->cav_i1 > s->nx - 1 || s->cav_jd < 1 ||
+            s->cav_i1 - s->cav_i0 < 2 || s->cav_j0 - s->cav_jd < 2) {
+            snprintf(err, errlen, "the cavity does not fit the grid");
+            return -1;
+        }
+    }
+    /* the uniform stream (zero inside the body) */
+    memset(s->v, 0, sizeof(float) * (size_t)s->sx * (s->ny + 1 + 2 * G));
+    for (int j = -G; j < s->ny + 1 + G; j++)
+        for (int i = -G; i <= s->nx + G; i++) {
+            int jj = j < 0 ? 0 : j >= s->ny ? s->ny - 1 : j;
+            s->u[AT(i, j)] = s->uin[jj];
+        }
+    for (int k = 0; k < s->nibu; k++)
+        s->u[s->ib_idx[k]] *= 1.0f - s->ib_chi[k];
+    memset(s->phi, 0, sizeof(float) * (size_t)s->nx * s->ny);
+    s->t = 0.0;
+    s->steps = 0;
+    s->fx = s->fy = 0.0;
+    s->diverged = 0;
+    return 0;
+}
+
+/* ghost layers: uniform inflow, free-slip sides, zero-gradient outflow */
+static void fill_ghosts(aero_flow2d *s)
+{
+    const int nx = s->nx, ny = s->ny;
+    float *u = s->u, *v = s->v;
+    for (int j = 0; j < ny; j++) {
+        u[AT(0, j)] = u[AT(-1, j)] = u[AT(-2, j)] = s->uin[j];
+        u[AT(nx + 1, j)] = u[AT(nx + 2, j)] = u[AT(nx, j)];
+    }
+    for (int i = -G; i <= nx + G; i++) {
+        u[AT(i, -1)] = u[AT(i, 0)];
+        u[AT(i, -2)] = u[AT(i, 1)];
+        u[AT(i, ny)] = u[AT(i, ny - 1)];
+        u[AT(i, ny + 1)] = u[AT(i, ny - 2)];
+    }
+    for (int j = 0; j <= ny; j++) {
+        v[AT(-1, j)] = -v[AT(0, j)];
+        v[AT(-2, j)] = -v[AT(1, j)];
+        v[AT(nx, j)] = v[AT(nx + 1, j)] = v[AT(nx - 1, j)];
+    }
+    for (int i = -G; i < nx + G; i++) {
+        v[AT(i, 0)] = v[AT(i, ny)] = 0.0f;
+        v[AT(i, -1)] = -v[AT(i, 1)];
+        v[AT(i, -2)] = -v[AT(i, 2)];
+        v[AT(i, ny + 1)] = -v[AT(i, ny - 1)];
+        v[AT(i, ny + 2)] = -v[AT(i, ny - 2)];
+    }
+}
+
+/* flux a * q at a face, q interpolated third-order upwind-biased from
+   m, p0 | p1, q1: q = (-m + 7 p0 + 7 p1 - q1)/12
+                       + sign(a) (-m + 3 p0 - 3 p1 + q1)/12 */
+static inline float upwind_flux(float a, float m, float p0, float p1, float q1)
+{
+    return (a * (-m + 7.0f * (p0 + p1) - q1) +
+            fabsf(a) * (-m + 3.0f * (p0 - p1) + q1)) *
+           (1.0f / 12.0f);
+}
+
+/* fluxes of u momentum through the faces of the u control volumes of row
+   j: x faces at the cell centres (i + 1/2, j), fx[i] for -1 <= i < nx, and
+   y faces at the corners (i, j + 1), fy[i] for 0 <= i <= nx */
+static void flux_u_x(const aero_flow2d *s, int j, float *restrict fx)
+{
+    const float *restrict u = s->u + AT(0, j);
+    for (int i = -1; i < s->nx; i++)
+        fx[i] = upwind_flux(0.5f * (u[i] + u[i + 1]), u[i - 1], u[i],
+                            u[i + 1], u[i + 2]);
+}
+
+static void flux_u_y(const aero_flow2d *s, int j, float *restrict fy)
+{
+    const int sx = s->sx;
+    const float *restrict u = s->u + AT(0, j), *restrict v = s->v + AT(0, j);
+    for (int i = 0; i <= s->nx; i++)
+        fy[i] = upwind_flux(0.5f * (v[i - 1 + sx] + v[i + sx]), u[i - sx],
+                            u[i], u[i + sx], u[i + 2 * sx]);
+}
+
+/* H_u = -d(uu)/dx - d(vu)/dy + nu lap u at interior u nodes */
+static void momentum_u(aero_flow2d *s)
+{
+    const int nx = s->nx, ny = s->ny, sx = s->sx;
+    const float ih = 1.0f / s->h, nu_h2 = s->nu / (s->h * s->h);
+    float *fx = s->work + 2, *fs = s->work + (nx + 8) + 2,
+          *fn = s->work + 2 * (nx + 8) + 2;
+    flux_u_y(s, -1, fs);
+    for (int j = 0; j < ny; j++) {
+        const float *restrict u = s->u + AT(0, j);
+        float *restrict hu = s->hu + AT(0, j);
+        float *t;
+        flux_u_x(s, j, fx);
+        flux_u_y(s, j, fn);
+        for (int i = 1; i < nx; i++) {
+            float lap = u[i + 1] + u[i - 1] + u[i + sx] + u[i - sx] - 4.0f * u[i];
+            hu[i] = -(fx[i] - fx[i - 1] + fn[i] - fs[i]) * ih + nu_h2 * lap;
+        }
+        t = fs; fs = fn; fn = t;
+    }
+}
+
+/* fluxes of v momentum of row j: x faces at the corners (i + 1, j),
+   fx[i] for -1 <= i < nx, y faces at the cell centres (i, j + 1/2) */
+static void flux_v_x(const aero_flow2d *s, int j, float *restrict fx)
+{
+    const int sx = s->sx;
+    const float *restrict u = s->u + AT(0, j), *restrict v = s->v + AT(0, j);
+    for (int i = -1; i < s->nx; i++)
+        fx[i] = upwind_flux(0.5f * (u[i + 1 - sx] + u[i + 1]), v[i - 1], v[i],
+                            v[i + 1], v[i + 2]);
+}
+
+static void flux_v_y(const aero_flow2d *s, int j, float *restrict fy)
+{
+    const int sx = s->sx;
+    const float *restrict v = s->v + AT(0, j);
+    for (int i = 0; i < s->nx; i++)
+        fy[i] = upwind_flux(0.5f * (v[i] + v[i + sx]), v[i - sx], v[i],
+                            v[i + sx], v[i + 2 * sx]);
+}
+
+/* H_v = -d(uv)/dx - d(vv)/dy + nu lap v at interior v nodes */
+static void momentum_v(aero_flow2d *s)
+{
+    const int nx = s->nx, ny = s->ny, sx = s->sx;
+    const float ih = 1.0f / s->h, nu_h2 = s->nu / (s->h * s->h);
+    float *fx = s->work + 2, *fs = s->work + (nx + 8) + 2,
+          *fn = s->work + 2 * (nx + 8) + 2;
+    flux_v_y(s, 0, fs);
+    for (int j = 1; j < ny; j++) {
+        const float *restrict v = s->v + AT(0, j);
+        float *restrict hv = s->hv + AT(0, j);
+        float *t;
+        flux_v_x(s, j, fx);
+        flux_v_y(s, j, fn);
+        for (int i = 0; i < nx; i++) {
+            float lap = v[i + 1] + v[i - 1] + v[i + sx] + v[i - sx] - 4.0f * v[i];
+            hv[i] = -(fx[i] - fx[i - 1] + fn[i] - fs[i]) * ih + nu_h2 * lap;
+        }
+        t = fs; fs = fn; fn = t;
+    }
+}
+
+/* u* = u^n + dt ((1 + r/2) H^n - r/2 H^(n-1) - grad p^(n-1/2)),
+   r = dt / dt_prev (Adams-Bashforth 2 with a variable step, Euler at the
+   first step; incremental pressure) */
+static void advance_explicit(aero_flow2d *s)
+{
+    const int nx = s->nx, ny = s->ny;
+    const float r = s->dt / s->dt_prev;
+    const float a = s->steps ? (1.0f + 0.5f * r) * s->dt : s->dt;
+    const float b = s->steps ? -0.5f * r * s->dt : 0.0f;
+    const float dt_h = s->dt / s->h;
+    for (int j = 0; j < ny; j++) {
+        float *u = s->u + AT(0, j), *hu = s->hu + AT(0, j),
+              *h0 = s->hu0 + AT(0, j);
+        const float *p = s->phi + j * nx;
+        for (int i = 1; i < nx; i++)
+            u[i] += a * hu[i] + b * h0[i] - dt_h * (p[i] - p[i - 1]);
+    }
+    for (int j = 1; j < ny; j++) {
+        float *v = s->v + AT(0, j), *hv = s->hv + AT(0, j),
+              *h0 = s->hv0 + AT(0, j);
+        const float *p = s->phi + j * nx, *pm = s->phi + (j - 1) * nx;
+        for (int i = 0; i < nx; i++)
+            v[i] += a * hv[i] + b * h0[i] - dt_h * (p[i] - pm[i]);
+    }
+    {
+        float *t = s->hu0; s->hu0 = s->hu; s->hu = t;
+        t = s->hv0; s->hv0 = s->hv; s->hv = t;
+    }
+}
+
+/* du/dt + U du/dx = 0 at the outflow, then the outflow flux is made equal
+   to the inflow flux so that the Poisson problem is solvable */
+static void convective_outflow(aero_flow2d *s)
+{
+    const int nx = s->nx, ny = s->ny;
+    const float c = s->dt / s->h;
+    double qin = 0.0, qout = 0.0, corr;
+    for (int j = 0; j < ny; j++) {
+        float *u = s->u + AT(nx, j);
+        u[0] -= c * (u[0] - u[-1]);
+        qin += s->uin[j];
+        qout += u[0];
+    }
+    corr = (qin - qout) / ny;
+    for (int j = 0; j < ny; j++)
+        s->u[AT(nx, j)] += (float)corr;
+}
+
+/* sponge layer: u <- U + (u - U)(1 - sigma dt), v <- v (1 - sigma dt),
+   so that vortices leave through the convective outflow without feedback */
+static void damp_outflow(aero_flow2d *s)
+{
+    const int nx = s->nx, ny = s->ny;
+    int i0 = 0;
+    while (i0 < nx && s->sponge[i0] == 0.0f) i0++;
+    for (int j = 0; j < ny; j++) {
+        float *u = s->u + AT(0, j), *v = s->v + AT(0, j);
+        const float ui = s->uin[j];
+        for (int i = i0; i < nx; i++) {
+            float f = 1.0f - s->sponge[i] * s->dt;
+            u[i] = ui + (u[i] - ui) * f;
+            if (j) v[i] *= f;
+        }
+    }
+}
+
+/* direct forcing u* <- (1 - chi) u* + chi u_body; the body takes the
+   opposite of the momentum removed: F = sum chi (u* - u_body) h^2 / dt */
+static void force_body(aero_flow2d *s)
+{
+    const float k = s->h * s->h / s->dt;
+    const double w = s->t < s->p.spin_time ? 2.0 * s->p.spin : 0.0;
+    double fx = 0.0, fy = 0.0;
+    for (int n = 0; n < s->nib; n++) {
+        int isu = n < s->nibu;
+        float *q = isu ? s->u + s->ib_idx[n] : s->v + s->ib_idx[n];
+        /* rigid rotation u_body = w x r (seeding only) */
+        float ub = isu ? (float)(-w * s->ib_y[n]) : (float)(w * s->ib_x[n]);
+        if (s->ib_x[n] * s->ib_x[n] + s->ib_y[n] * s->ib_y[n] > 1.0f)
+            ub = 0.0f; /* a wall (cavity) spins only within d of its origin */
+        float chi = s->ib_chi[n], df = chi * (*q - ub);
+        *q -= df;
+        if (s->ib_count[n]) {
+            if (isu) fx += df; else fy += df;
+        }
+    }
+    s->fx = fx * k;
+    s->fy = fy * k;
+}
+
+/* the y direction of the Poisson problem, all x modes at once (Thomas);
+   the cosine transform pair along x scales by 2 nx */
+static void solve_tridiagonal(aero_flow2d *s)
+{
+    const int nx = s->nx, ny = s->ny;
+    const float sc = s->h * s->h / (2.0f * nx);
+    float *x = s->dphi;
+    const float *m = s->ieig;
+    for (int i = 0; i < nx; i++)
+        x[i] = sc * x[i] * m[i];
+    for (int j = 1; j < ny; j++) {
+        float *r = x + (size_t)j * nx;
+        const float *p = r - nx, *mj = m + (size_t)j * nx;
+        for (int i = 0; i < nx; i++)
+            r[i] = (sc * r[i] - p[i]) * mj[i];
+    }
+    for (int j = ny - 2; j >= 0; j--) {
+        float *r = x + (size_t)j * nx;
+        const float *q = r + nx, *mj = m + (size_t)j * nx;
+        for (int i = 0; i < nx; i++)
+            r[i] -= mj[i] * q[i];
+    }
+}
+
+/* pressure force on a cavity's walls (the fluid pushes each wall along
+   its inward normal): Fx = sum (p_back - p_front) h, Fy = -sum (p_floor -
+   p_ref) h, p_ref the free-stream pressure at the inflow's top corner */
+static void force_cavity_walls(aero_flow2d *s)
+{
+    const int nx = s->nx;
+    const float *p = s->phi;
+    const double pref = p[(size_t)(s->ny - 1) * nx];
+    double fx = 0.0, fy = 0.0;
+    for (int j = s->cav_jd; j < s->cav_j0; j++)
+        fx += p[(size_t)j * nx + s->cav_i1 - 1] - p[(size_t)j * nx + s->cav_i0];
+    for (int i = s->cav_i0; i < s->cav_i1; i++)
+        fy -= p[(size_t)s->cav_jd * nx + i] - pref;
+    s->fx = fx * s->h;
+    s->fy = fy * s->h;
+}
+
+/* lap(dp) = div(u*) / dt, u = u* - dt grad(dp), p += dp */
+static void project(aero_flow2d *s)
+{
+    const int nx = s->nx, ny = s->ny;
+    const float idt_h = 1.0f / (s->dt * s->h), dt_h = s->dt / s->h;
+    float *phi = s->dphi;
+    for (int j = 0; j < ny; j++) {
+        const float *u = s->u + AT(0, j), *v = s->v + AT(0, j);
+        const int sx = s->sx;
+        for (int i = 0; i < nx; i++)
+            phi[j * nx + i] = (u[i + 1] - u[i] + v[i + sx] - v[i]) * idt_h;
+    }
+    fftwf_execute((fftwf_plan)s->plan_fwd);
+    solve_tridiagonal(s);
+    fftwf_execute((fftwf_plan)s->plan_inv);
+    for (int j = 0; j < ny; j++) {
+        float *u = s->u + AT(0, j);
+        const float *p = phi + j * nx;
+        for (int i = 1; i < nx; i++)
+            u[i] -= dt_h * (p[i] - p[i - 1]);
+    }
+    for (int j = 1; j < ny; j++) {
+        float *v = s->v + AT(0, j);
+        const float *p = phi + j * nx, *pm = phi + (j - 1) * nx;
+        for (int i = 0; i < nx; i++)
+            v[i] -= dt_h * (p[i] - pm[i]);
+    }
+    for (int k = 0; k < nx * ny; k++)
+        s->phi[k] += phi[k];
+}
+
+/* a velocity far above the stream's means the scheme has blown up */
+static int check_finite(aero_flow2d *s)
+{
+    float m = 0.0f;
+    if (!isfinite(s->fx) || !isfinite(s->fy))
+        return -1;
+    for (int j = 0; j < s->ny; j += 3) {
+        const float *u = s->u + AT(0, j), *v = s->v + AT(0, j);
+        for (int i = 0; i < s->nx; i++) {
+            float a = fabsf(u[i]) + fabsf(v[i]);
+            m = a > m ? a : m;
+        }
+    }
+    return (m < 20.0f) ? 0 : -1; /* also false for NaN */
+}
+
+/* dt = cfl h / max(|u| + |v|) (at least the free stream's 2 U), capped
+   by the AB2 limit of diffusion and upwinding; measured every 4 steps */
+static void choose_step(aero_flow2d *s)
+{
+    float m = 2.0f;
+    s->dt_prev = s->dt;
+    if (s->steps & 3)
+        return;
+    for (int j = 0; j < s->ny; j++) {
+        const float *u = s->u + AT(0, j), *v = s->v + AT(0, j);
+        for (int i = 0; i < s->nx; i++) {
+            float a = fabsf(u[i]) + fabsf(v[i]);
+            m = a > m ? a : m;
+        }
+    }
+    if (!(m < 1e3f)) /* NaN or blown up: let the check report it */
+        m = 1e3f;
+    s->dt = (float)(s->p.cfl * s->h / m);
+    if (s->dt > s->dt_max) s->dt = s->dt_max;
+}
+
+int aero_flow2d_step(aero_flow2d *s)
+{
+    if (s->diverged)
+        return -1;
+    choose_step(s);
+    fill_ghosts(s);
+    momentum_u(s);
+    momentum_v(s);
+    convective_outflow(s);
+    advance_explicit(s);
+    damp_outflow(s);
+    force_body(s);
+    project(s);
+    if (s->cavity)
+        force_cavity_walls(s);
+    s->t += s->dt;
+    s->steps++;
+    if ((s->steps & 31) == 0 || !isfinite(s->fx + s->fy))
+        if (check_finite(s)) {
+            s->diverged = 1;
+            return -1;
+        }
+    return 0;
+}
+
+double aero_flow2d_cd(const aero_flow2d *s)
+{
+    return 2.0 * s->fx;
+}
+
+double aero_flow2d_cl(const aero_flow2d *s)
+{
+    return 2.0 * s->fy;
+}
+
+void aero_flow2d_vorticity(const aero_flow2d *s, float *out)
+{
+    const float k = 0.25f / s->h;
+    const int sx = s->sx;
+    for (int j = 0; j < s->ny; j++) {
+        const float *u = s->u + AT(0, j), *v = s->v + AT(0, j);
+        for (int i = 0; i < s->nx; i++) {
+            /* w = dv/dx - du/dy at the cell centre */
+            float dvdx = (v[i + 1] + v[i + 1 + sx]) - (v[i - 1] + v[i - 1 + sx]);
+            float dudy = (u[i + sx] + u[i + 1 + sx]) - (u[i - sx] + u[i + 1 - sx]);
+            out[j * s->nx + i] = k * (dvdx - dudy);
+        }
+    }
+}
+
+void aero_flow2d_stats(const double *t, const double *cd, const double *cl,
+                       int n, aero_flowstats *out)
+{
+    double mcd = 0.0, mcl = 0.0, var = 0.0, t0 = 0.0, t1 = 0.0, amp = 0.0;
+    int ncross = 0;
+    memset(out, 0, sizeof *out);
+    if (n < 2)
+        return;
+    for (int k = 0; k < n; k++) {
+        mcd += cd[k];
+        mcl += cl[k];
+    }
+    mcd /= n;
+    mcl /= n;
+    for (int k = 0; k < n; k++) {
+        double a = cl[k] - mcl;
+        var += a * a;
+        if (fabs(a) > amp) amp = fabs(a);
+    }
+    out->cd = mcd;
+    out->cl_rms = sqrt(var / n);
+    out->cl_amp = amp;
+    /* upward zero crossings of the lift, linearly interpolated, each after
+       a dip below -rms/2 (hysteresis: noise makes no extra crossings) */
+    {
+        double thr = 0.5 * out->cl_rms;
+        int armed = 0;
+        for (int k = 1; k < n; k++) {
+            double a = cl[k - 1] - mcl, b = cl[k] - mcl;
+            if (a < -thr) armed = 1;
+            if (armed && a < 0.0 && b >= 0.0) {
+                double tc = t[k - 1] + (t[k] - t[k - 1]) * a / (a - b);
+                if (!ncross) t0 = tc;
+                t1 = tc;
+                ncross++;
+                armed = 0;
+            }
+        }
+    }
+    if (ncross >= 3 && out->cl_rms > 1e-3) {
+        out->periods = ncross - 1;
+        out->st = (ncross - 1) / (t1 - t0);
+    }
+}

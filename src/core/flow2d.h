@@ -1,0 +1,91 @@
+/* aero: incompressible 2D flow past a body, for sound textures (issue 3).
+ *
+ * Projection method on a uniform staggered (MAC) grid, solved in units of
+ * the reference length d, the free-stream speed U and the time d/U, so the
+ * only flow parameter is Re = U d / nu:
+ *  - advection in flux form, third-order upwind-biased interpolation;
+ *    diffusion by the 5-point Laplacian; both stepped by Adams-Bashforth 2
+ *  - the body as an immersed boundary: direct forcing with the solid
+ *    fraction of each velocity node (a smoothed, rotatable rasterisation of
+ *    a signed distance); the force on the body is the sum of that forcing
+ *  - pressure Poisson equation with Neumann walls solved exactly by a
+ *    cosine transform along x (FFTW) and a tridiagonal solve along y
+ *  - uniform inflow, free-slip sides, a sponge layer before a convective
+ *    outflow corrected to conserve mass.
+ * Life cycle: aero_flow2d_defaults, _init, _set_body, _step ..., _free. */
+#ifndef AERO_FLOW2D_H
+#define AERO_FLOW2D_H
+
+#include <stddef.h>
+#include "shape2d.h"
+
+typedef struct {
+    double re;       /* Reynolds number U d / nu */
+    double grid;     /* cells per reference length d */
+    double xmin, xmax, ymin, ymax; /* domain around the body origin, in d */
+    double cfl;      /* time step = cfl * dx / max(|u| + |v|, 2 U) */
+    double spin;     /* seeding: body surface speed / U of a brief spin */
+    double spin_time;/* duration of that spin, in d/U */
+} aero_flow2d_params;
+
+typedef struct {
+    aero_flow2d_params p;
+    int nx, ny;          /* pressure cells */
+    int sx;              /* row stride of the velocity arrays (with ghosts) */
+    float h, dt, nu;     /* cell size, step of the last step (d, d/U), 1/Re */
+    float dt_prev, dt_max; /* the step before it; the stability cap */
+    float *u, *v;        /* face velocities (ghost layers of 2) */
+    float *hu, *hv;      /* explicit right-hand sides, this step */
+    float *hu0, *hv0;    /* ... previous step (Adams-Bashforth) */
+    float *uin;          /* inflow profile, ny */
+    float *phi;          /* pressure (kinematic, units of U^2), nx * ny */
+    float *dphi;         /* pressure increment of a step (FFT work), nx * ny */
+    float *ieig;         /* Thomas factors of the y Laplacian per x mode */
+    float *solid;        /* solid fraction at cell centres, nx * ny */
+    float *sponge;       /* outflow sponge: rate per column (U/d), nx + 1 */
+    float *work;         /* three rows of face fluxes */
+    void *plan_fwd, *plan_inv; /* fftwf_plan */
+    /* immersed boundary nodes: u nodes then v nodes */
+    int nib, nibu;
+    int *ib_idx;         /* index into u (first nibu) or v */
+    float *ib_chi;       /* solid fraction */
+    float *ib_x, *ib_y;  /* node position relative to the body origin (d) */
+    unsigned char *ib_count; /* 1: node counts into the measured force */
+    int cavity;          /* the body is a cavity: force from wall pressure */
+    int cav_i0, cav_i1, cav_jd, cav_j0; /* its walls on the grid */
+    double t;            /* time, d/U */
+    long steps;
+    double fx, fy;       /* force on the body at the last step / (rho U^2 d) */
+    int diverged;
+} aero_flow2d;
+
+/* domain and numerics good for a bluff body of size d at any Re */
+void aero_flow2d_defaults(aero_flow2d_params *p, double re);
+/* allocates the grid; 0, or -1 with a message */
+int aero_flow2d_init(aero_flow2d *s, const aero_flow2d_params *p, char *err,
+                     size_t errlen);
+/* rasterises the shape (size d = shape->size) rotated so that the flow
+ * (+x) arrives at angle alpha (rad) in the body frame; resets the flow to
+ * the uniform stream; for a cavity the force is the pressure on its walls */
+int aero_flow2d_set_body(aero_flow2d *s, const aero_shape2d *shape,
+                         double alpha, char *err, size_t errlen);
+/* one time step; 0, or -1 when the solution diverges */
+int aero_flow2d_step(aero_flow2d *s);
+/* drag and lift coefficient of the last step (2 F / (rho U^2 d)) */
+double aero_flow2d_cd(const aero_flow2d *s);
+double aero_flow2d_cl(const aero_flow2d *s);
+/* vorticity (U/d) and solid fraction at the cell centres, nx * ny each */
+void aero_flow2d_vorticity(const aero_flow2d *s, float *out);
+void aero_flow2d_free(aero_flow2d *s);
+
+/* statistics of a recorded force history, coefficients at the times t
+   (d/U, increasing): Strouhal number from the lift zero crossings (0 when
+   the lift does not oscillate), mean drag, rms and peak lift */
+typedef struct {
+    double st, cd, cl_rms, cl_amp;
+    int periods;
+} aero_flowstats;
+void aero_flow2d_stats(const double *t, const double *cd, const double *cl,
+                       int n, aero_flowstats *out);
+
+#endif

@@ -1,0 +1,358 @@
+/* aero: sound texture files and the signal steps that make them
+ * (see texture.h). */
+#include "texture.h"
+#include "aero_air.h"
+
+#include <math.h>
+#include <sndfile.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+int aero_texture_init(aero_texture *t, int frames, int directions, double rate)
+{
+    memset(t, 0, sizeof *t);
+    if (frames < 1 || directions < 1 || !(rate > 0.0))
+        return -1;
+    t->frames = frames;
+    t->directions = directions;
+    t->channels = 3 * directions;
+    t->rate = rate;
+    t->data = calloc((size_t)frames * t->channels, sizeof(float));
+    t->angles = calloc((size_t)directions, sizeof(double));
+    t->meta = calloc(1, 1);
+    if (!t->data || !t->angles || !t->meta) {
+        aero_texture_free(t);
+        return -1;
+    }
+    return 0;
+}
+
+void aero_texture_free(aero_texture *t)
+{
+    free(t->data);
+    free(t->angles);
+    free(t->meta);
+    memset(t, 0, sizeof *t);
+}
+
+/* start of the line "key=..." in meta, or NULL */
+static const char *find_key(const char *meta, const char *key)
+{
+    size_t kl = strlen(key);
+    const char *p = meta;
+    while (p && *p) {
+        if (strncmp(p, key, kl) == 0 && p[kl] == '=')
+            return p;
+        p = strchr(p, '\n');
+        if (p) p++;
+    }
+    return NULL;
+}
+
+int aero_texture_set(aero_texture *t, const char *key, const char *value)
+{
+    const char *old = find_key(t->meta ? t->meta : "", key);
+    size_t len = t->meta ? strlen(t->meta) : 0;
+    size_t add = strlen(key) + strlen(value) + 2;
+    char *m;
+    if (strchr(key, '=') || strchr(key, '\n') || strchr(value, '\n'))
+        return -1;
+    m = malloc(len + add + 1);
+    if (!m)
+        return -1;
+    if (old) {
+        /* drop the old line */
+        const char *end = strchr(old, '\n');
+        size_t pre = (size_t)(old - t->meta);
+        memcpy(m, t->meta, pre);
+        m[pre] = 0;
+        if (end) strcat(m, end + 1);
+    } else {
+        memcpy(m, t->meta ? t->meta : "", len + 1);
+    }
+    strcat(m, key);
+    strcat(m, "=");
+    strcat(m, value);
+    strcat(m, "\n");
+    free(t->meta);
+    t->meta = m;
+    return 0;
+}
+
+int aero_texture_setd(aero_texture *t, const char *key, double value)
+{
+    char buf[64];
+    snprintf(buf, sizeof buf, "%.9g", value);
+    return aero_texture_set(t, key, buf);
+}
+
+/* the value of key, in place (it ends at '\n'), or NULL */
+static const char *value_of(const aero_texture *t, const char *key)
+{
+    const char *p = t->meta ? find_key(t->meta, key) : NULL;
+    return p ? p + strlen(key) + 1 : NULL;
+}
+
+const char *aero_texture_get(const aero_texture *t, const char *key,
+                             char *buf, size_t len)
+{
+    const char *v = value_of(t, key);
+    size_t n;
+    if (!v || !len)
+        return NULL;
+    n = strcspn(v, "\n");
+    if (n >= len) n = len - 1;
+    memcpy(buf, v, n);
+    buf[n] = 0;
+    return buf;
+}
+
+double aero_texture_getd(const aero_texture *t, const char *key, double def)
+{
+    const char *v = value_of(t, key);
+    char *end;
+    double x;
+    if (!v)
+        return def;
+    x = strtod(v, &end);
+    return (end == v) ? def : x;
+}
+
+float aero_texture_sample(const aero_texture *t, long n, int k, int c)
+{
+    long m = n % t->frames;
+    if (m < 0) m += t->frames;
+    return t->data[(size_t)m * t->channels + 3 * k + c];
+}
+
+int aero_texture_save(const char *path, const aero_texture *t, char *err,
+                      size_t errlen)
+{
+    SF_INFO info;
+    SNDFILE *f;
+    sf_count_t n;
+    aero_texture tmp;
+    int bad;
+    memset(&info, 0, sizeof info);
+    info.samplerate = (int)lrint(t->rate);
+    info.channels = t->channels;
+    info.format = SF_FORMAT_WAV | SF_FORMAT_FLOAT;
+    if (fabs(info.samplerate - t->rate) > 1e-9 * t->rate) {
+        snprintf(err, errlen, "texture rate %g Hz is not an integer", t->rate);
+        return -1;
+    }
+    /* the frame count goes into the metadata too: a reader detects a
+       truncated file by it */
+    memset(&tmp, 0, sizeof tmp);
+    tmp.meta = malloc(strlen(t->meta ? t->meta : "") + 1);
+    if (!tmp.meta) {
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+    strcpy(tmp.meta, t->meta ? t->meta : "");
+    aero_texture_setd(&tmp, "frames", t->frames);
+    f = sf_open(path, SFM_WRITE, &info);
+    if (!f) {
+        snprintf(err, errlen, "can't write %s: %s", path, sf_strerror(NULL));
+        free(tmp.meta);
+        return -1;
+    }
+    bad = sf_set_string(f, SF_STR_COMMENT, tmp.meta);
+    free(tmp.meta);
+    if (bad ||
+        sf_set_string(f, SF_STR_SOFTWARE, "aero aerotex")) {
+        snprintf(err, errlen, "can't store the metadata in %s: %s", path,
+                 sf_strerror(f));
+        sf_close(f);
+        return -1;
+    }
+    n = sf_writef_float(f, t->data, t->frames);
+    if (n != t->frames) {
+        snprintf(err, errlen, "can't write %s: %s", path, sf_strerror(f));
+        sf_close(f);
+        return -1;
+    }
+    if (sf_close(f)) {
+        snprintf(err, errlen, "can't close %s", path);
+        return -1;
+    }
+    return 0;
+}
+
+/* the comma-separated angle list of the metadata */
+static int parse_angles(aero_texture *t)
+{
+    const char *p = value_of(t, "angles");
+    if (!p) {
+        /* start + step form */
+        double a0 = aero_texture_getd(t, "angle_start", 0.0);
+        double da = aero_texture_getd(t, "angle_step", 0.0);
+        for (int k = 0; k < t->directions; k++)
+            t->angles[k] = a0 + k * da;
+        return 0;
+    }
+    for (int k = 0; k < t->directions; k++) {
+        char *end;
+        t->angles[k] = strtod(p, &end);
+        if (end == p || !isfinite(t->angles[k]))
+            return -1;
+        p = end;
+        if (k < t->directions - 1) {
+            if (*p != ',') return -1;
+            p++;
+        }
+    }
+    return (*p == '\n' || *p == 0) ? 0 : -1;
+}
+
+int aero_texture_load(const char *path, aero_texture *t, char *err,
+                      size_t errlen)
+{
+    SF_INFO info;
+    SNDFILE *f;
+    const char *c;
+    int dirs;
+    memset(t, 0, sizeof *t);
+    memset(&info, 0, sizeof info);
+    f = sf_open(path, SFM_READ, &info);
+    if (!f) {
+        snprintf(err, errlen, "can't open texture %s: %s", path,
+                 sf_strerror(NULL));
+        return -1;
+    }
+    c = sf_get_string(f, SF_STR_COMMENT);
+    if (!c || !strstr(c, "kind=")) {
+        snprintf(err, errlen, "%s is not an aero texture (no metadata)", path);
+        sf_close(f);
+        return -1;
+    }
+    if (info.frames < 2 || info.frames > 100000000 || info.samplerate <= 0) {
+        snprintf(err, errlen, "%s: bad texture size (%ld frames at %d Hz)",
+                 path, (long)info.frames, info.samplerate);
+        sf_close(f);
+        return -1;
+    }
+    t->meta = malloc(strlen(c) + 2);
+    if (!t->meta) goto oom;
+    strcpy(t->meta, c);
+    if (t->meta[0] && t->meta[strlen(t->meta) - 1] != '\n')
+        strcat(t->meta, "\n");
+    dirs = (int)aero_texture_getd(t, "directions", 0.0);
+    if (dirs < 1 || info.channels != 3 * dirs) {
+        snprintf(err, errlen,
+                 "%s: %d channels do not match directions=%d (3 per direction)",
+                 path, info.channels, dirs);
+        goto fail;
+    }
+    if (aero_texture_getd(t, "frames", (double)info.frames) != info.frames) {
+        snprintf(err, errlen, "%s is truncated: %ld of %g frames", path,
+                 (long)info.frames, aero_texture_getd(t, "frames", 0.0));
+        goto fail;
+    }
+    t->frames = (int)info.frames;
+    t->channels = info.channels;
+    t->directions = dirs;
+    t->rate = aero_texture_getd(t, "rate", (double)info.samplerate);
+    if (!(t->rate > 0.0) || fabs(t->rate - info.samplerate) > 0.5) {
+        snprintf(err, errlen, "%s: rate=%g does not match the file's %d Hz",
+                 path, t->rate, info.samplerate);
+        goto fail;
+    }
+    t->data = malloc(sizeof(float) * (size_t)t->frames * t->channels);
+    t->angles = malloc(sizeof(double) * dirs);
+    if (!t->data || !t->angles) goto oom;
+    if (sf_readf_float(f, t->data, t->frames) != t->frames) {
+        snprintf(err, errlen, "%s is truncated (expected %d frames)", path,
+                 t->frames);
+        goto fail;
+    }
+    for (size_t k = 0; k < (size_t)t->frames * t->channels; k++)
+        if (!isfinite(t->data[k])) {
+            snprintf(err, errlen, "%s holds a non-finite sample at frame %ld",
+                     path, (long)(k / t->channels));
+            goto fail;
+        }
+    if (parse_angles(t)) {
+        snprintf(err, errlen, "%s: bad angles= list", path);
+        goto fail;
+    }
+    if (!(aero_texture_getd(t, "v0", 0.0) > 0.0)) {
+        snprintf(err, errlen, "%s: missing or bad v0", path);
+        goto fail;
+    }
+    sf_close(f);
+    return 0;
+oom:
+    snprintf(err, errlen, "out of memory reading %s", path);
+fail:
+    sf_close(f);
+    aero_texture_free(t);
+    return -1;
+}
+
+/* Blackman-windowed sinc low-pass of cut-off fc, half-width w (s) */
+static double lowpass_kernel(double t, double fc, double w)
+{
+    double x = 2.0 * fc * t, s, q;
+    if (fabs(t) >= w)
+        return 0.0;
+    s = fabs(x) < 1e-12 ? 1.0 : sin(AERO_PI * x) / (AERO_PI * x);
+    q = AERO_PI * (t / w + 1.0); /* 0 .. 2 pi over the window */
+    return 2.0 * fc * s * (0.42 - 0.5 * cos(q) + 0.08 * cos(2.0 * q));
+}
+
+void aero_texture_resample_derivative(const double *t, const double *f,
+                                      int n, double rate, double t0,
+                                      double scale, float *out, int stride,
+                                      int nout)
+{
+    const double fc = 0.45 * rate, w = 8.0 / fc;
+    int lo = 0;
+    for (int k = 0; k < nout; k++) {
+        double tk = t0 + k / rate, acc = 0.0;
+        while (lo < n - 1 && t[lo + 1] < tk - w)
+            lo++;
+        /* g = dF/dt = (F[m+1] - F[m]) / (t[m+1] - t[m]) at the midpoint,
+           weighted by its interval: the interval cancels */
+        for (int m = lo; m < n - 1 && t[m] <= tk + w; m++)
+            acc += (f[m + 1] - f[m]) *
+                   lowpass_kernel(tk - 0.5 * (t[m] + t[m + 1]), fc, w);
+        out[(size_t)k * stride] = (float)(acc * scale);
+    }
+}
+
+int aero_texture_best_loop(const float *x, int channels, int lmin, int lmax,
+                           int xfade)
+{
+    int best = lmin;
+    double bestc = -2.0;
+    for (int l = lmin; l <= lmax; l++) {
+        double sab = 0.0, saa = 0.0, sbb = 0.0, c;
+        for (int n = 0; n < xfade; n++)
+            for (int ch = 0; ch < channels; ch++) {
+                double a = x[(size_t)n * channels + ch];
+                double b = x[(size_t)(l + n) * channels + ch];
+                sab += a * b;
+                saa += a * a;
+                sbb += b * b;
+            }
+        c = (saa > 0.0 && sbb > 0.0) ? sab / sqrt(saa * sbb) : 0.0;
+        if (c > bestc) {
+            bestc = c;
+            best = l;
+        }
+    }
+    return best;
+}
+
+void aero_texture_crossfade(float *x, int channels, int len, int xfade)
+{
+    for (int n = 0; n < xfade; n++) {
+        float w = (float)n / (float)xfade;
+        for (int ch = 0; ch < channels; ch++) {
+            size_t a = (size_t)n * channels + ch, b = (size_t)(len + n) * channels + ch;
+            x[a] = w * x[a] + (1.0f - w) * x[b];
+        }
+    }
+}

@@ -1,0 +1,63 @@
+/* aero: sound textures (Dobashi 2003) as float WAV files via libsndfile.
+ *
+ * Frames hold the sound source function g = dF/dt (N/(m s) per unit span
+ * for 2D simulations) at the base speed v0, channels x, y, z per sampled
+ * direction (channel 3 k + c is component c of direction k), in the flow
+ * frame: x along the flow (drag), y across it (lift), z along the body axis.
+ * The comment string holds the metadata as "key=value" lines (see
+ * textures/README.md). The file is a seamless loop: its ends are already
+ * cross-faded, a player wraps the texture coordinate modulo `frames`. */
+#ifndef AERO_TEXTURE_H
+#define AERO_TEXTURE_H
+
+#include <stddef.h>
+
+typedef struct {
+    int frames;       /* samples per channel */
+    int channels;     /* 3 * directions */
+    int directions;
+    double rate;      /* texture sample rate, Hz */
+    float *data;      /* frames * channels, interleaved */
+    double *angles;   /* flow angle of each direction in the body frame, deg */
+    char *meta;       /* "key=value\n" lines */
+} aero_texture;
+
+/* an empty texture of frames x (3 * directions) zeros; 0 or -1 */
+int aero_texture_init(aero_texture *t, int frames, int directions, double rate);
+/* reads and validates a texture: 0, or -1 with a message in err */
+int aero_texture_load(const char *path, aero_texture *t, char *err,
+                      size_t errlen);
+/* writes it (float WAV, metadata in the comment): 0, or -1 with a message */
+int aero_texture_save(const char *path, const aero_texture *t, char *err,
+                      size_t errlen);
+void aero_texture_free(aero_texture *t);
+
+/* metadata: set (replaces) a value; get copies a value into buf (NULL
+   when the key is missing); getd reads a number (def when missing) */
+int aero_texture_set(aero_texture *t, const char *key, const char *value);
+int aero_texture_setd(aero_texture *t, const char *key, double value);
+const char *aero_texture_get(const aero_texture *t, const char *key,
+                             char *buf, size_t len);
+double aero_texture_getd(const aero_texture *t, const char *key, double def);
+
+/* component c (0 x, 1 y, 2 z) of direction k at frame n (wrapped) */
+float aero_texture_sample(const aero_texture *t, long n, int k, int c);
+
+/* g = dF/dt from a force F sampled at the times t (s, increasing; the
+   solver's steps), low-passed (Blackman-windowed sinc, cut-off 0.45 rate)
+   and resampled at `rate` for nout samples from time t0; scale multiplies
+   the result; out[k * stride] */
+void aero_texture_resample_derivative(const double *t, const double *f,
+                                      int n, double rate, double t0,
+                                      double scale, float *out, int stride,
+                                      int nout);
+/* loop length in [lmin, lmax] frames whose start and end match best over
+   xfade frames (normalised cross-correlation over all channels); the
+   signal x (frames x channels) must hold lmax + xfade frames */
+int aero_texture_best_loop(const float *x, int channels, int lmin, int lmax,
+                           int xfade);
+/* makes the first len frames a seamless loop: frame n < xfade becomes
+   (n / xfade) x[n] + (1 - n / xfade) x[len + n] */
+void aero_texture_crossfade(float *x, int channels, int len, int xfade);
+
+#endif

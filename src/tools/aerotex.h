@@ -1,0 +1,17 @@
+/* aerotex: shared declarations of the command-line tool. */
+#ifndef AEROTEX_H
+#define AEROTEX_H
+
+/* subcommands: each returns the process exit status */
+int aerotex_aeolian(int argc, char **argv, int cavity);
+int aerotex_info(int argc, char **argv);
+
+/* vorticity picture: w (U/d) on nx x ny cells, solid fraction for the
+   body; writes an RGB PNG (row 0 at the bottom); 0 or -1 */
+int aerotex_png_vorticity(const char *path, const float *w,
+                          const float *solid, int nx, int ny, float wmax);
+
+/* messages on stderr, prefixed "aerotex: " */
+void aerotex_error(const char *fmt, ...);
+
+#endif

@@ -1,0 +1,23 @@
+#!/bin/sh
+# aero: remakes the shipped sound textures (`make textures`).
+# Each command here is also listed in textures/README.md; run from anywhere.
+set -e
+cd "$(dirname "$0")/.."
+T=build/aerotex
+if [ ! -x "$T" ]; then
+    echo "textures/make.sh: $T is missing: run 'make tools' first" >&2
+    exit 1
+fi
+set -x
+# circular cylinder, d = 1 cm at 10 m/s (Re ~ 6800), one direction
+$T aeolian --shape circle --diameter 0.01 --speed 10 -o textures/cylinder.wav
+# square prism, side 1 cm at 10 m/s, 8 directions over 0-45 deg
+$T aeolian --shape square --diameter 0.01 --speed 10 --directions 8 \
+    -o textures/square.wav
+# sword blade (lenticular 40 mm x 5 mm) at 10 m/s, every 5 deg over 0-90 deg
+$T aeolian --shape polygon textures/sword.poly --diameter 0.04 --speed 10 \
+    --symmetry 2 --mirror --directions 19 --grid 20 --settle 20 \
+    -o textures/sword.wav
+# cavity 2 cm long, 1 cm deep in a wall, flow at 10 m/s
+$T cavity --length 0.02 --depth 0.01 --speed 10 --grid 48 \
+    -o textures/cavity.wav

@@ -261,10 +261,13 @@ double aero_shape2d_distance(const aero_shape2d *s, double x, double y)
     case AERO_SHAPE_POLYGON:
         return polygon_distance(s, x, y);
     case AERO_SHAPE_CAVITY: {
-        /* wall y < 0 without the box 0 < x < l, -h < y < 0 */
+        /* wall y < 0 without the box 0 < x < l, -h < y < 0. The box is
+           extended above the wall (to y = h) so that its top side, the
+           open mouth at y = 0, is not a boundary: with the box ending at
+           y = 0 the distance there was 0, the nodes along the mouth were
+           half solid and the forcing damped the shear layer's flapping */
         double wall = y;
-        double hole = box_distance(x - 0.5 * s->a, y + 0.5 * s->b, 0.5 * s->a,
-                                   0.5 * s->b);
+        double hole = box_distance(x - 0.5 * s->a, y, 0.5 * s->a, s->b);
         return wall > -hole ? wall : -hole;
     }
     }

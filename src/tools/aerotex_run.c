@@ -435,7 +435,10 @@ int aerotex_aeolian(int argc, char **argv, int cavity)
     j.v0 = 10.0;
     j.duration = 0.2;
     j.rate = 16000.0;
-    j.grid = cavity ? 32.0 : 16.0;
+    /* a cavity's shear layer starts as the wall's boundary layer, a cell
+       or two thick: below ~48 cells per length the grid damps it and the
+       flow stays steady (no Rossiter tone) */
+    j.grid = cavity ? 48.0 : 16.0;
     j.settle = -1.0;
     j.cfl = 0.5;
     j.directions = 1;
@@ -508,7 +511,9 @@ int aerotex_aeolian(int argc, char **argv, int cavity)
         goto out;
     }
     if (j.settle < 0.0)
-        j.settle = cavity ? 30.0 : (j.re < 300.0 ? 100.0 : 30.0);
+        /* the cavity's oscillation takes ~50-80 L/v0 to grow from the
+           seeding to its saturated level: discard that */
+        j.settle = cavity ? 80.0 : (j.re < 300.0 ? 100.0 : 30.0);
     if (j.duration * j.rate < 64) {
         aerotex_error("--duration %g s at --rate %g Hz is under 64 samples",
                       j.duration, j.rate);
@@ -639,7 +644,8 @@ int aerotex_aeolian(int argc, char **argv, int cavity)
                 if (r[0].st.st == 0.0 && cavity)
                     printf("  no self-sustained oscillation of the cavity "
                            "flow: the texture holds only its weak broadband "
-                           "wall-pressure force\n");
+                           "wall-pressure force (a --grid under 48 damps "
+                           "the shear layer)\n");
                 printf("  %.1f s\n", now() - t_start);
             }
             aero_texture_free(&tex);

@@ -490,6 +490,5 @@ int aero_aeolian_model_process(aero_aeolian_model *m, const float *speed,
             chunk_out[e] = out[e] + start;
         clamped |= process_chunk(m, speed + start, chunk_out, len);
     }
-    m->clamped |= clamped;
     return clamped;
 }

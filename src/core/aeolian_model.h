@@ -85,7 +85,6 @@ typedef struct aero_aeolian_model {
     int primed_phase;
     double envelope, envelope_lp; /* low-passed noise of the envelope */
 
-    int clamped;        /* set when a speed above Mach 0.3 was clamped */
 
     float scratch_amp[AERO_AEOLIAN_CHUNK];
     float scratch_sin[AERO_AEOLIAN_CHUNK];

@@ -55,7 +55,6 @@ typedef struct aero_cavity_model {
     double mode_gain[AERO_CAVITY_MODES]; /* at the end of the last block */
     double freq_factor[AERO_CAVITY_MODES]; /* f_m / U, Hz per m/s */
     double noise_state[2];   /* band-pass of the shear-layer noise */
-    double level;            /* Pa per (m/s)^n at the listener */
 
     /* texture mode */
     aero_texture *texture;   /* NULL: model mode */

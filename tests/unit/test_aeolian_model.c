@@ -51,6 +51,13 @@ static void test_strouhal(void)
     UNIT_CHECK(aero_shedding_strength(40) == 0 && aero_shedding_strength(46.9) == 0,
                "no shedding below Re 47");
     UNIT_CHECK(aero_shedding_strength(60) > 0, "shedding at Re 60");
+    aero_aeolian_model tone;
+    aero_aeolian_model_init(&tone, SR, 1, 1);
+    UNIT_NEAR_REL(aero_aeolian_model_tone_hz(&tone, 10.0),
+                  roshko(1.225 * 10 * 0.01 / 1.81e-5) * 10.0 / 0.01, 1e-9,
+                  "tone f = St U / d for the default 1 cm at 10 m/s");
+    UNIT_CHECK(aero_aeolian_model_tone_hz(&tone, 0.05) == 0.0,
+               "no tone below onset (Re 34)");
     double worst_jump = 0, prev = aero_strouhal(150);
     for (double re = 151; re <= 300; re += 1) {
         double st = aero_strouhal(re);

@@ -42,6 +42,14 @@ log_clean() { # LOG: no creation failure, no error in Pd's log
     fi
 }
 section() { echo; echo "== $*"; }
+reports_at_least() { # LOG OBJECT N: each bad flag/message named the object
+    count=$(grep -c -F "$2" "$1")
+    if [ "$count" -ge "$3" ]; then
+        pass "$2 reports each bad flag and message ($count reports)"
+    else
+        fail "$2: only $count reports of bad input (want >= $3)"; cat "$1"
+    fi
+}
 
 # --- unit tests of src/core ------------------------------------------------
 section "unit tests (src/core)"
@@ -191,12 +199,7 @@ pd_render bad-messages "aeolian~ -d -1 -l 0 -bogus 3" 1 1000 \
     "; aero-speed 10; aero-obj diameter 0; aero-obj listener 1 2; aero-obj gain 1e9; aero-obj ears 1 2 3 4 5 6; aero-obj ramp -5"
 judge $ANALYZE finite "$OUT/bad-messages.wav"
 judge $ANALYZE level "$OUT/bad-messages.wav" --min 20
-errors=$(grep -c "aeolian~" "$OUT/bad-messages.log")
-if [ "$errors" -ge 8 ]; then
-    pass "bad flags and messages are each reported ($errors messages)"
-else
-    fail "bad flags and messages: only $errors reports"; cat "$OUT/bad-messages.log"
-fi
+reports_at_least "$OUT/bad-messages.log" "[aeolian~]" 8
 
 # 10. no clicks: a speed ramp, then diameter, listener and gain changes
 pd_render ramps "aeolian~ -d 0.01" 1 3000 "; aero-speed 5" 0 \
@@ -290,12 +293,7 @@ pd_render cav-bad "cavity~ -L -1 -D 0 -W nan -bogus" 1 2000 "; aero-speed 0" 0 \
     "900 ; aero-obj length 0; aero-obj listener 1; aero-obj exponent 99; aero-obj texture cylinder" \
     "1200 ; aero-speed 10"
 judge $ANALYZE finite "$OUT/cav-bad.wav" --max 1000
-errors=$(grep -c "cavity~" "$OUT/cav-bad.log")
-if [ "$errors" -ge 7 ]; then
-    pass "[cavity~] reports each bad flag and message ($errors messages)"
-else
-    fail "[cavity~] bad input: only $errors reports"; cat "$OUT/cav-bad.log"
-fi
+reports_at_least "$OUT/cav-bad.log" "[cavity~]" 7
 pd_render cav-nan "$nan_expr|cavity~" 1 500 "; aero-speed 1"
 judge $ANALYZE finite "$OUT/cav-nan.wav"
 

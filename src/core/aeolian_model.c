@@ -3,6 +3,7 @@
 #include "aeolian_model.h"
 
 #include "aero_air.h"
+#include "aero_util.h"
 #include "strouhal.h"
 
 #include <math.h>
@@ -28,20 +29,6 @@
 
 static const double default_ears[AERO_AEOLIAN_MAX_EARS][3] = {
     {-0.1, 1.0, 0.0}, {0.1, 1.0, 0.0}};
-
-static uint32_t xorshift32(uint32_t *state)
-{
-    uint32_t x = *state;
-    x ^= x << 13;
-    x ^= x >> 17;
-    x ^= x << 5;
-    return *state = x;
-}
-
-static int is_finite(double v)
-{
-    return v == v && v < 1e300 && v > -1e300;
-}
 
 void aero_aeolian_model_init(aero_aeolian_model *m, double sample_rate,
                              int n_ears, uint32_t seed)
@@ -69,7 +56,7 @@ void aero_aeolian_model_set_seed(aero_aeolian_model *m, uint32_t seed)
     uint32_t s = seed * 2654435761u + 0x9e3779b9u;
     s ^= s >> 16;
     m->rng = s ? s : 0x12345678u;
-    double phase = (double)(xorshift32(&m->rng) >> 8) / 16777216.0;
+    double phase = (double)(aero_xorshift32(&m->rng) >> 8) / 16777216.0;
     m->phasor.re = cos(2.0 * AERO_PI * phase);
     m->phasor.im = sin(2.0 * AERO_PI * phase);
     m->envelope = m->envelope_lp = 0.0;
@@ -90,7 +77,7 @@ static void start_ramp(aero_aeolian_model *m)
 
 int aero_aeolian_model_set_sample_rate(aero_aeolian_model *m, double sr)
 {
-    if (!is_finite(sr) || sr < 1.0 || sr > 1e7)
+    if (!aero_is_finite(sr) || sr < 1.0 || sr > 1e7)
         return -1;
     double ramp_ms = 1000.0 * m->ramp_samples / m->sample_rate;
     m->sample_rate = sr;
@@ -100,7 +87,7 @@ int aero_aeolian_model_set_sample_rate(aero_aeolian_model *m, double sr)
 
 int aero_aeolian_model_set_diameter(aero_aeolian_model *m, double d)
 {
-    if (!is_finite(d) || d < 1e-5 || d > 10.0)
+    if (!aero_is_finite(d) || d < 1e-5 || d > 10.0)
         return -1;
     m->ctl_target[AERO_CTL_DIAMETER] = d;
     start_ramp(m);
@@ -109,7 +96,7 @@ int aero_aeolian_model_set_diameter(aero_aeolian_model *m, double d)
 
 int aero_aeolian_model_set_length(aero_aeolian_model *m, double l)
 {
-    if (!is_finite(l) || l < 1e-5 || l > 1000.0)
+    if (!aero_is_finite(l) || l < 1e-5 || l > 1000.0)
         return -1;
     m->ctl_target[AERO_CTL_LENGTH] = l;
     start_ramp(m);
@@ -118,7 +105,7 @@ int aero_aeolian_model_set_length(aero_aeolian_model *m, double l)
 
 int aero_aeolian_model_set_gain_db(aero_aeolian_model *m, double db)
 {
-    if (!is_finite(db) || db < -200.0 || db > 120.0)
+    if (!aero_is_finite(db) || db < -200.0 || db > 120.0)
         return -1;
     m->ctl_target[AERO_CTL_GAIN] = pow(10.0, db / 20.0);
     start_ramp(m);
@@ -127,7 +114,7 @@ int aero_aeolian_model_set_gain_db(aero_aeolian_model *m, double db)
 
 int aero_aeolian_model_set_ramp_ms(aero_aeolian_model *m, double ms)
 {
-    if (!is_finite(ms) || ms < 0.0 || ms > 600000.0)
+    if (!aero_is_finite(ms) || ms < 0.0 || ms > 600000.0)
         return -1;
     m->ramp_samples = ms * 0.001 * m->sample_rate;
     if (m->ramp_samples < 1.0)
@@ -141,7 +128,7 @@ int aero_aeolian_model_set_ear(aero_aeolian_model *m, int ear, double x,
     const double far = 1e5;
     if (ear < 0 || ear >= m->n_ears)
         return -1;
-    if (!is_finite(x) || !is_finite(y) || !is_finite(z) || fabs(x) > far ||
+    if (!aero_is_finite(x) || !aero_is_finite(y) || !aero_is_finite(z) || fabs(x) > far ||
         fabs(y) > far || fabs(z) > far)
         return -1;
     double *p = m->ctl_target + AERO_CTL_EAR + 3 * ear;
@@ -265,11 +252,6 @@ double aero_aeolian_model_tone_hz(const aero_aeolian_model *m, double speed)
     if (aero_shedding_strength(re) <= 0)
         return 0;
     return aero_strouhal(re) * fabs(speed) / d;
-}
-
-static double uniform(uint32_t *rng) /* on [-1, 1) */
-{
-    return (double)(int32_t)xorshift32(rng) * (1.0 / 2147483648.0);
 }
 
 typedef aero_cplx cplx;
@@ -435,8 +417,8 @@ static int process_chunk(aero_aeolian_model *m, const float *speed,
     double mean_speed = sum / n;
     update_chunk_laws(m, mean_speed, n);
     double f = m->st * mean_speed / m->ctl[AERO_CTL_DIAMETER] * doppler;
-    double step = f * n / sr + m->phase_jitter * uniform(&m->rng);
-    m->envelope_lp += m->envelope_alpha * (uniform(&m->rng) - m->envelope_lp);
+    double step = f * n / sr + m->phase_jitter * aero_uniform(&m->rng);
+    m->envelope_lp += m->envelope_alpha * (aero_uniform(&m->rng) - m->envelope_lp);
     m->envelope += m->envelope_alpha * (m->envelope_lp - m->envelope);
     double gain_end = 1.0 + m->envelope_scale * m->envelope;
     if (gain_end < 0)

@@ -2,6 +2,7 @@
 #include "cavity_model.h"
 
 #include "aero_air.h"
+#include "aero_util.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -30,25 +31,6 @@ static const double mode_weight[AERO_CAVITY_MODES] = {0.6, 1.0, 0.5, 0.25};
 #define REFERENCE_SPEED 10.0
 /* broadband shear-layer noise relative to the tones (rms) */
 #define NOISE_LEVEL 0.3
-
-static uint32_t xorshift32(uint32_t *s)
-{
-    uint32_t x = *s;
-    x ^= x << 13;
-    x ^= x >> 17;
-    x ^= x << 5;
-    return *s = x;
-}
-
-static double uniform(uint32_t *s) /* [-1, 1) */
-{
-    return (double)(int32_t)xorshift32(s) * (1.0 / 2147483648.0);
-}
-
-static int is_finite(double v)
-{
-    return v == v && v < 1e300 && v > -1e300;
-}
 
 /* sin(2 pi p), p in [0, 1): quarter-period reflection, Taylor to t^9 */
 static float sin_cycles(float p)
@@ -106,8 +88,8 @@ void aero_cavity_model_set_seed(aero_cavity_model *m, uint32_t seed)
     s ^= s >> 16;
     m->rng = s ? s : 0x2545f491u;
     for (int k = 0; k < AERO_CAVITY_MODES; k++)
-        m->phase[k] = 0.5 + 0.5 * uniform(&m->rng);
-    m->texture_pos = 0.5 + 0.5 * uniform(&m->rng); /* scaled at use */
+        m->phase[k] = 0.5 + 0.5 * aero_uniform(&m->rng);
+    m->texture_pos = 0.5 + 0.5 * aero_uniform(&m->rng); /* scaled at use */
 }
 
 static int set_ctl(aero_cavity_model *m, int k, double v)
@@ -122,7 +104,7 @@ static int set_ctl(aero_cavity_model *m, int k, double v)
 
 int aero_cavity_model_set_sample_rate(aero_cavity_model *m, double sr)
 {
-    if (!is_finite(sr) || sr < 1.0 || sr > 1e7)
+    if (!aero_is_finite(sr) || sr < 1.0 || sr > 1e7)
         return -1;
     double ms = 1000.0 * m->ramp_samples / m->sample_rate;
     m->sample_rate = sr;
@@ -131,35 +113,35 @@ int aero_cavity_model_set_sample_rate(aero_cavity_model *m, double sr)
 
 int aero_cavity_model_set_length(aero_cavity_model *m, double l)
 {
-    if (!is_finite(l) || l < 1e-4 || l > 100.0)
+    if (!aero_is_finite(l) || l < 1e-4 || l > 100.0)
         return -1;
     return set_ctl(m, AERO_CAV_LENGTH, l);
 }
 
 int aero_cavity_model_set_depth(aero_cavity_model *m, double d)
 {
-    if (!is_finite(d) || d < 1e-4 || d > 100.0)
+    if (!aero_is_finite(d) || d < 1e-4 || d > 100.0)
         return -1;
     return set_ctl(m, AERO_CAV_DEPTH, d);
 }
 
 int aero_cavity_model_set_width(aero_cavity_model *m, double w)
 {
-    if (!is_finite(w) || w < 1e-4 || w > 100.0)
+    if (!aero_is_finite(w) || w < 1e-4 || w > 100.0)
         return -1;
     return set_ctl(m, AERO_CAV_WIDTH, w);
 }
 
 int aero_cavity_model_set_gain_db(aero_cavity_model *m, double db)
 {
-    if (!is_finite(db) || db < -200.0 || db > 120.0)
+    if (!aero_is_finite(db) || db < -200.0 || db > 120.0)
         return -1;
     return set_ctl(m, AERO_CAV_GAIN, pow(10.0, db / 20.0));
 }
 
 int aero_cavity_model_set_ramp_ms(aero_cavity_model *m, double ms)
 {
-    if (!is_finite(ms) || ms < 0.0 || ms > 600000.0)
+    if (!aero_is_finite(ms) || ms < 0.0 || ms > 600000.0)
         return -1;
     m->ramp_samples = fmax(1.0, ms * 0.001 * m->sample_rate);
     return 0;
@@ -167,7 +149,7 @@ int aero_cavity_model_set_ramp_ms(aero_cavity_model *m, double ms)
 
 int aero_cavity_model_set_exponent(aero_cavity_model *m, double n)
 {
-    if (!is_finite(n) || n < 0.0 || n > 8.0)
+    if (!aero_is_finite(n) || n < 0.0 || n > 8.0)
         return -1;
     m->exponent = n;
     return 0;
@@ -177,7 +159,7 @@ int aero_cavity_model_set_listener(aero_cavity_model *m, double x, double y,
                                    double z)
 {
     const double far = 1e5;
-    if (!is_finite(x) || !is_finite(y) || !is_finite(z) || fabs(x) > far ||
+    if (!aero_is_finite(x) || !aero_is_finite(y) || !aero_is_finite(z) || fabs(x) > far ||
         fabs(y) > far || fabs(z) > far)
         return -1;
     set_ctl(m, AERO_CAV_EAR, x);
@@ -280,7 +262,7 @@ static void process_model(aero_cavity_model *m, const float *u, float *out,
         double t = (i + 1.0) / n, s = 0;
         /* one random word gives the four modes' phase steps, a byte each
          * (uniform on [-1, 1): only the variance of the diffusion matters) */
-        uint32_t word = xorshift32(&m->rng);
+        uint32_t word = aero_xorshift32(&m->rng);
         for (int k = 0; k < AERO_CAVITY_MODES; k++) {
             double g = m->mode_gain[k] + (gain_end[k] - m->mode_gain[k]) * t;
             double p = m->phase[k] + m->freq_factor[k] * u[i] / sr +
@@ -290,7 +272,7 @@ static void process_model(aero_cavity_model *m, const float *u, float *out,
             m->phase[k] = p;
             s += g * sin_cycles((float)p);
         }
-        double white = uniform(&m->rng);
+        double white = aero_uniform(&m->rng);
         m->noise_state[0] += a_hi * (white - m->noise_state[0]);
         m->noise_state[1] += a_lo * (m->noise_state[0] - m->noise_state[1]);
         s += noise_scale * (m->noise_state[0] - m->noise_state[1]);

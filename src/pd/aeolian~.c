@@ -123,9 +123,10 @@ static void aeolian_tilde_ears(t_aeolian_tilde *x, t_symbol *s, int argc,
 /* --- creation -------------------------------------------------------------- */
 
 /* one flag with its numbers; returns how many atoms it used, 0 if unknown */
-static int aeolian_tilde_flag(t_aeolian_tilde *x, t_symbol *flag, int argc,
+static int aeolian_tilde_flag(void *obj, t_symbol *flag, int argc,
                               t_atom *argv)
 {
+    t_aeolian_tilde *x = obj;
     static const struct {
         const char *name;
         int count;
@@ -181,23 +182,8 @@ static void *aeolian_tilde_new(t_symbol *s, int argc, t_atom *argv)
                             aero_pd_default_seed());
     x->x_clock = clock_new(x, (t_method)aeolian_tilde_report);
 
-    while (argc > 0) {
-        int used = 0;
-        if (argv->a_type == A_SYMBOL)
-            used = aeolian_tilde_flag(x, argv->a_w.w_symbol, argc - 1,
-                                      argv + 1);
-        if (!used) {
-            char buf[MAXPDSTRING];
-            atom_string(argv, buf, sizeof(buf));
-            pd_error(x, OBJ ": unknown argument '%s' ignored (flags: -d -l "
-                     "-gain -seed -ramp -listener -ears -stereo)", buf);
-            used = 1;
-        }
-        if (used > argc)
-            used = argc;
-        argc -= used;
-        argv += used;
-    }
+    aero_pd_parse_flags(x, OBJ, "-d -l -gain -seed -ramp -listener -ears "
+                        "-stereo", aeolian_tilde_flag, argc, argv);
 
     x->x_out[0] = outlet_new(&x->x_obj, &s_signal);
     if (x->x_stereo)

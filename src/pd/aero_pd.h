@@ -46,6 +46,34 @@ static inline int aero_pd_floats(void *x, const char *obj, const char *what,
     return 0;
 }
 
+/* Reads creation flags: `flag(x, symbol, argc, argv)` handles one flag and
+ * returns how many atoms it used (0: unknown). Anything unknown is reported
+ * with the object's name and the list of its flags, then skipped. */
+typedef int (*aero_pd_flag_fn)(void *x, t_symbol *flag, int argc,
+                               t_atom *argv);
+
+static inline void aero_pd_parse_flags(void *x, const char *obj,
+                                       const char *known, aero_pd_flag_fn flag,
+                                       int argc, t_atom *argv)
+{
+    while (argc > 0) {
+        int used = 0;
+        if (argv->a_type == A_SYMBOL)
+            used = flag(x, argv->a_w.w_symbol, argc - 1, argv + 1);
+        if (!used) {
+            char buf[MAXPDSTRING];
+            atom_string(argv, buf, sizeof(buf));
+            pd_error(x, "%s: unknown argument '%s' ignored (flags: %s)", obj,
+                     buf, known);
+            used = 1;
+        }
+        if (used > argc)
+            used = argc;
+        argc -= used;
+        argv += used;
+    }
+}
+
 /* Finds a texture as DESIGN.md says: next to the patch and on Pd's search
  * path (canvas_open), then in the library's own textures/ folder. Writes
  * the full path; 0 when found. */

@@ -133,9 +133,10 @@ static void cavity_tilde_model(t_cavity_tilde *x)
     aero_cavity_model_set_texture(&x->x_model, NULL, err, sizeof(err));
 }
 
-static int cavity_tilde_flag(t_cavity_tilde *x, t_symbol *flag, int argc,
+static int cavity_tilde_flag(void *obj, t_symbol *flag, int argc,
                              t_atom *argv)
 {
+    t_cavity_tilde *x = obj;
     static const struct {
         const char *name;
         int count;
@@ -194,22 +195,8 @@ static void *cavity_tilde_new(t_symbol *s, int argc, t_atom *argv)
     x->x_canvas = canvas_getcurrent();
     aero_cavity_model_init(&x->x_model, sys_getsr(), aero_pd_default_seed());
     x->x_clock = clock_new(x, (t_method)cavity_tilde_report);
-    while (argc > 0) {
-        int used = 0;
-        if (argv->a_type == A_SYMBOL)
-            used = cavity_tilde_flag(x, argv->a_w.w_symbol, argc - 1, argv + 1);
-        if (!used) {
-            char buf[MAXPDSTRING];
-            atom_string(argv, buf, sizeof(buf));
-            pd_error(x, OBJ ": unknown argument '%s' ignored (flags: -L -D -W "
-                     "-gain -seed -ramp -exponent -listener -texture)", buf);
-            used = 1;
-        }
-        if (used > argc)
-            used = argc;
-        argc -= used;
-        argv += used;
-    }
+    aero_pd_parse_flags(x, OBJ, "-L -D -W -gain -seed -ramp -exponent "
+                        "-listener -texture", cavity_tilde_flag, argc, argv);
     x->x_out = outlet_new(&x->x_obj, &s_signal);
     return x;
 }

@@ -120,6 +120,34 @@ static double *welch(const signal_t *s, int *nfft_io)
     return psd;
 }
 
+/* the bins of [fmin, fmax] (lo, hi) and the highest one among them */
+static int highest_bin(const double *psd, int nfft, double df,
+                       const options *o, int *lo, int *hi)
+{
+    *lo = (int)ceil(o->fmin / df), *hi = (int)floor(o->fmax / df);
+    if (*lo < 1)
+        *lo = 1;
+    if (*hi > nfft / 2 - 1)
+        *hi = nfft / 2 - 1;
+    int best = *lo;
+    for (int k = *lo; k <= *hi; k++)
+        if (psd[k] > psd[best])
+            best = k;
+    return best;
+}
+
+/* the contiguous bins around best whose power is at least half of it */
+static void half_power_region(const double *psd, int lo, int hi, int best,
+                              int *a, int *b)
+{
+    double half = 0.5 * psd[best];
+    *a = best, *b = best;
+    while (*a > lo && psd[*a - 1] >= half)
+        (*a)--;
+    while (*b < hi && psd[*b + 1] >= half)
+        (*b)++;
+}
+
 static double peak_hz(const signal_t *s, const options *o)
 {
     int nfft = o->nfft;
@@ -140,23 +168,12 @@ static double peak_hz(const signal_t *s, const options *o)
         free(psd);
         psd = avg;
     }
-    int lo = (int)ceil(o->fmin / df), hi = (int)floor(o->fmax / df);
-    if (lo < 1)
-        lo = 1;
-    if (hi > nfft / 2 - 1)
-        hi = nfft / 2 - 1;
-    int best = lo;
-    for (int k = lo; k <= hi; k++)
-        if (psd[k] > psd[best])
-            best = k;
+    int lo, hi, best = highest_bin(psd, nfft, df, o, &lo, &hi);
     if (half > 0) {
         /* a broad line: centroid of the contiguous region above half its
          * maximum, far steadier than the highest bin of a noisy estimate */
-        int a = best, b = best;
-        while (a > lo && psd[a - 1] >= 0.5 * psd[best])
-            a--;
-        while (b < hi && psd[b + 1] >= 0.5 * psd[best])
-            b++;
+        int a, b;
+        half_power_region(psd, lo, hi, best, &a, &b);
         double sum = 0, moment = 0;
         for (int k = a; k <= b; k++)
             sum += psd[k], moment += k * psd[k];
@@ -199,21 +216,10 @@ static double relative_width(const signal_t *s, const options *o)
     int nfft = o->nfft;
     double *psd = welch(s, &nfft);
     double df = s->sr / nfft;
-    int lo = (int)ceil(o->fmin / df), hi = (int)floor(o->fmax / df);
-    if (lo < 1)
-        lo = 1;
-    if (hi > nfft / 2 - 1)
-        hi = nfft / 2 - 1;
-    int best = lo;
-    for (int k = lo; k <= hi; k++)
-        if (psd[k] > psd[best])
-            best = k;
+    int lo, hi, best = highest_bin(psd, nfft, df, o, &lo, &hi);
     double half = 0.5 * psd[best];
-    int a = best, b = best;
-    while (a > lo && psd[a - 1] >= half)
-        a--;
-    while (b < hi && psd[b + 1] >= half)
-        b++;
+    int a, b;
+    half_power_region(psd, lo, hi, best, &a, &b);
     /* interpolate the half-power crossings between bins */
     double left = a - (psd[a] - half) / (psd[a] - psd[a - 1] + 1e-300);
     double right = b + (psd[b] - half) / (psd[b] - psd[b + 1] + 1e-300);

@@ -114,3 +114,12 @@ pd_open_log() {
     timeout 120 pd $PD_FLAGS -path "$ROOT" -path "$ROOT/abstractions" \
         -open "$1" -open "$ROOT/tests/pd/run-1s-and-quit.pd" >"$2" 2>&1
 }
+
+# pd_render_sr RATE NAME ...: pd_render at another sample rate
+pd_render_sr() {
+    _saved_flags=$PD_FLAGS
+    PD_FLAGS="$PD_FLAGS -r $1" PD_RATE=$1
+    shift
+    pd_render "$@"
+    PD_FLAGS=$_saved_flags PD_RATE=44100
+}

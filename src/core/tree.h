@@ -1,0 +1,69 @@
+/* aero: a tree of branches and leaves (Matsuyama et al., paper 003), read
+ * from a plain-text .tree file, shared by [treebranch~], [leafwave~] and
+ * `aerotex tree`.
+ *
+ * File format (one record per line, '#' starts a comment, blank lines ok):
+ *   branch <id> <parent> <ax> <ay> <az> <bx> <by> <bz> <d0> <d1>
+ *       an internode from start point a to end point b (metres) with the
+ *       diameters d0 at a and d1 at b (metres); parent is the id of an
+ *       earlier branch, or -1 for a root (the trunk)
+ *   leaf <branch> <sx> <sy> <sz> <ex> <ey> <ez> <length> <width>
+ *       a leaf on branch <branch>: its stalk runs from s (on the branch) to
+ *       e, where the blade of length x width (metres) is attached
+ * Ids are any non-negative integers, unique; a parent must appear before
+ * its children. A bad line (unknown record, wrong field count, non-finite
+ * or non-positive size, unknown parent or branch) is reported with its
+ * line number through the report callback and skipped; the rest loads. */
+#ifndef AERO_TREE_H
+#define AERO_TREE_H
+#include <stddef.h>
+#include <stdint.h>
+
+typedef struct {
+    int id;
+    int parent;       /* index into branches[] (not the id), -1 for a root */
+    double a[3], b[3]; /* start and end point, m */
+    double d0, d1;    /* diameter at a and at b, m */
+} aero_branch;
+
+typedef struct {
+    int branch;       /* index into branches[] */
+    double s[3], e[3]; /* stalk start (on the branch) and end, m */
+    double length, width; /* blade, m */
+    double along;     /* fraction 0..1 of the branch where s projects */
+} aero_leaf;
+
+typedef struct {
+    int nbranches, nleaves;
+    aero_branch *branches;
+    aero_leaf *leaves;
+} aero_tree;
+
+/* called once per skipped line; ctx is passed through */
+typedef void (*aero_tree_report)(void *ctx, int line, const char *message);
+
+/* reads a .tree file: 0, or -1 (file unreadable, or no valid branch) with a
+   message in err; report may be NULL */
+int aero_tree_load(const char *path, aero_tree *t, aero_tree_report report,
+                   void *ctx, char *err, size_t errlen);
+/* the same from a string in memory (tests, fuzzing) */
+int aero_tree_parse(const char *text, aero_tree *t, aero_tree_report report,
+                    void *ctx, char *err, size_t errlen);
+int aero_tree_save(const char *path, const aero_tree *t, char *err,
+                   size_t errlen);
+void aero_tree_free(aero_tree *t);
+
+/* a generated tree (aerotex tree): recursive branching from a vertical
+   trunk of height `height` and base diameter `diameter`, `depth` levels of
+   branching, about `leaves` leaves spread over the outermost branches,
+   reproducible from seed; 0 or -1 */
+typedef struct {
+    int depth;
+    int leaves;
+    double height, diameter;
+    double leaf_length, leaf_width;
+    uint32_t seed;
+} aero_tree_shape;
+int aero_tree_generate(aero_tree *t, const aero_tree_shape *shape);
+
+#endif

@@ -1,0 +1,43 @@
+/* aero: wind-driven branch motion of a tree (paper 003, section 3.1):
+ * each branch is a cantilever spring loaded by the directional wind load
+ * plus 1/f^beta noise; its deflection angle is accumulated from the root,
+ * so a child moves with its parent.
+ *
+ * The motion is a deterministic function of (tree, seed, wind history,
+ * parameters) and of time only: it steps internally at a fixed rate
+ * (AERO_TREE_MOTION_RATE, independent of sample rate and block size) and
+ * interpolates between steps. So [treebranch~] and [leafwave~] loading the
+ * same tree with the same seed and wind stay in step while each runs its
+ * own copy. */
+#ifndef AERO_TREE_MOTION_H
+#define AERO_TREE_MOTION_H
+#include "tree.h"
+
+#define AERO_TREE_MOTION_RATE 200.0 /* steps per second */
+
+typedef struct aero_tree_motion_state aero_tree_motion_state;
+
+typedef struct {
+    const aero_tree *tree;
+    double wind[3];     /* m/s, world frame */
+    double stiffness;   /* scales every branch's spring constant, 1 = default */
+    double beta;        /* exponent of the 1/f^beta noise loads */
+    double time;        /* seconds since init */
+    aero_tree_motion_state *state; /* private */
+} aero_tree_motion;
+
+/* 0 or -1 (allocation); the tree must outlive the motion */
+int aero_tree_motion_init(aero_tree_motion *m, const aero_tree *t,
+                          uint32_t seed);
+void aero_tree_motion_set_wind(aero_tree_motion *m, const double wind[3]);
+void aero_tree_motion_set_stiffness(aero_tree_motion *m, double stiffness);
+void aero_tree_motion_set_beta(aero_tree_motion *m, double beta);
+/* moves time forward by dt seconds (any dt >= 0) */
+void aero_tree_motion_advance(aero_tree_motion *m, double dt);
+/* position and velocity (m, m/s) of the point at fraction u (0 = a,
+   1 = b) along branch i, now */
+void aero_tree_motion_point(const aero_tree_motion *m, int i, double u,
+                            double pos[3], double vel[3]);
+void aero_tree_motion_free(aero_tree_motion *m);
+
+#endif

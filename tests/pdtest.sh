@@ -9,7 +9,9 @@
 #   are recorded. PD_RATE (default 44100) must match Pd's -r. INIT is a message-box body sent at load, before DSP
 #   starts (e.g. "; aero-speed 10; aero-obj diameter 0.02"); each EVENT is
 #   "MS ; receiver message..." sent MS ms after recording starts.
-#   Recording starts after 200 ms of settling and lasts DUR_MS. Object
+#   Recording starts after 200 ms of settling and lasts DUR_MS.
+#   PD_EXTRA="OBJ|OBJ..." adds unconnected object boxes (e.g. a pose
+#   generator from tests/pd that sends to aero-obj). Object
 #   boxes are written as given: escape dollars as \$ (e.g. 'expr~ \$v1*2').
 # The Pd log goes to $OUT/NAME.log. Returns Pd's exit status.
 
@@ -80,6 +82,14 @@ pd_render() {
             echo "#X msg 500 $((_y + 20)) $(pd_escape "${_event#* }");"
             _y=$((_y + 40))
         done
+ if [ -n "${PD_EXTRA:-}" ]; then
+            IFS='|'
+            for _obj in $PD_EXTRA; do
+                echo "#X obj 300 $_y $_obj;"
+                _y=$((_y + 30))
+            done
+            IFS=$_old_ifs
+        fi
         for _c in "0 0 1 0" "1 1 2 0" "1 0 3 0" "1 0 10 0" "1 0 13 0" \
             "10 0 11 0" "10 0 12 0" "10 0 17 0" "13 0 14 0" "14 0 15 0" \
             "15 0 16 0" "4 0 5 0" "5 0 $_first 0" "6 0 $_last $_msginlet"; do

@@ -102,6 +102,18 @@ else
 fi
 
 # --- each object's tests in real Pd: tests/objects/NN-name.sh, in order ----
+# The published laws, written here independently of src/core:
+# Re = rho U d / mu (rho 1.225, mu 1.81e-5); St: Williamson (1996)
+# -3.3265/Re + 0.1816 + 1.6e-4 Re for Re < 178, Roshko 0.198 (1 - 19.7/Re)
+# for Re > 260 (DESIGN.md); f = St U / d.
+tone_hz() {
+    awk -v u="$1" -v d="$2" 'BEGIN {
+        re = 1.225 * u * d / 1.81e-5
+        st = (re < 178) ? -3.3265 / re + 0.1816 + 1.6e-4 * re \
+                        : 0.198 * (1 - 19.7 / re)
+        printf "%.6g\n", st * u / d }'
+}
+
 # A NaN made inside Pd (inf - inf), to feed objects through a signal inlet.
 nan_expr='expr~ \$v1*1e30*1e30 - \$v1*1e30*1e30'
 for object_tests in tests/objects/*.sh; do

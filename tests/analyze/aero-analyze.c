@@ -13,6 +13,11 @@
  *                               below --max (default 1e4)
  *   aero-analyze clicks FILE    worst local jump of the 2nd difference
  *                               against its neighbourhood (a ratio)
+ *   aero-analyze onsetdiff FILE time (ms) at which channel 1 first reaches
+ *                               10 % of its own maximum, minus the same for
+ *                               channel 0 (an interaural delay)
+ *   aero-analyze specdist A B   rms difference of the two log spectra over
+ *                               [fmin, fmax], each smoothed by --smooth, dB
  * options: --ch K (channel, default 0)  --skip S (seconds ignored at the
  * start)  --fmin F --fmax F (peak search range)  --nfft N
  * --smooth HZ (moving average of the spectrum before the peak search)
@@ -265,6 +270,51 @@ static double click_ratio(const signal_t *s)
 }
 
 /* judge a value against the options; prints the verdict line */
+/* first sample reaching frac of the channel's own maximum, seconds */
+static double onset_s(const signal_t *s, double frac)
+{
+    double biggest = 0;
+    for (long i = 0; i < s->n; i++)
+        if (fabs(s->x[i]) > biggest)
+            biggest = fabs(s->x[i]);
+    for (long i = 0; i < s->n; i++)
+        if (fabs(s->x[i]) >= frac * biggest)
+            return (double)i / s->sr;
+    return 0;
+}
+
+/* rms distance of two smoothed log power spectra over [fmin, fmax], dB */
+static double spectral_distance(const signal_t *a, const signal_t *b,
+                                const options *o)
+{
+    int na = o->nfft, nb = o->nfft;
+    double *pa = welch(a, &na), *pb = welch(b, &nb);
+    if (na != nb || a->sr != b->sr) {
+        free(pa);
+        free(pb);
+        return 1e9;
+    }
+    double df = a->sr / na;
+    int half = (int)(o->smooth / df / 2);
+    double sum = 0;
+    int count = 0;
+    for (int k = 1; k < na / 2; k++) {
+        if (k * df < o->fmin || (o->fmax > 0 && k * df > o->fmax))
+            continue;
+        double sa = 0, sb = 0;
+        int m = 0;
+        for (int j = k - half; j <= k + half; j++)
+            if (j >= 1 && j < na / 2)
+                sa += pa[j], sb += pb[j], m++;
+        double d = 10.0 * log10((sb + 1e-300) / (sa + 1e-300));
+        sum += d * d;
+        count++;
+    }
+    free(pa);
+    free(pb);
+    return count ? sqrt(sum / count) : 1e9;
+}
+
 static int verdict(const char *what, double value, const char *unit,
                    const options *o, int relative_tol)
 {
@@ -395,6 +445,23 @@ int main(int argc, char **argv)
         rc = bad || biggest > limit;
         printf("%s finite %s: %ld NaN/Inf samples, max |x| %.4g (limit %.4g)"
                "\n", rc ? "FAIL" : "ok", pos[0], bad, biggest, limit);
+    } else if (!strcmp(cmd, "onsetdiff")) {
+        options o1 = o;
+        o1.channel = 1;
+        if (load(pos[0], &o1, &s2))
+            return 2;
+        snprintf(what, sizeof(what), "onset of channel 1 after channel 0 "
+                 "of %s", pos[0]);
+        rc = verdict(what, 1000.0 * (onset_s(&s2, 0.1) - onset_s(&s, 0.1)),
+                     "ms", &o, 0);
+        free(s2.x);
+    } else if (!strcmp(cmd, "specdist") && npos >= 2) {
+        if (load(pos[1], &o, &s2))
+            return 2;
+        snprintf(what, sizeof(what), "spectral distance of %s from %s",
+                 pos[1], pos[0]);
+        rc = verdict(what, spectral_distance(&s, &s2, &o), "dB", &o, 0);
+        free(s2.x);
     } else if (!strcmp(cmd, "clicks")) {
         snprintf(what, sizeof(what), "click ratio of %s", pos[0]);
         rc = verdict(what, click_ratio(&s), "", &o, 0);

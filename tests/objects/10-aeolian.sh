@@ -1,18 +1,6 @@
 # --- [aeolian~] in real Pd ---------------------------------------------------
 section "[aeolian~]: Strouhal/Reynolds model in Pd"
 
-# The published laws, written here independently of src/core:
-# Re = rho U d / mu (rho 1.225, mu 1.81e-5); St: Williamson (1996)
-# -3.3265/Re + 0.1816 + 1.6e-4 Re for Re < 178, Roshko 0.198 (1 - 19.7/Re)
-# for Re > 260 (DESIGN.md); f = St U / d.
-tone_hz() {
-    awk -v u="$1" -v d="$2" 'BEGIN {
-        re = 1.225 * u * d / 1.81e-5
-        st = (re < 178) ? -3.3265 / re + 0.1816 + 1.6e-4 * re \
-                        : 0.198 * (1 - 19.7 / re)
-        printf "%.6g\n", st * u / d }'
-}
-
 # 1. the peak sits at St(Re) U / d (laminar and subcritical wakes)
 for case in "10 0.01" "20 0.005" "30 0.003" "2 0.0005" "6 0.0004"; do
     set -- $case

@@ -1,0 +1,743 @@
+/* aero: a moving stick played from a sound texture (paper 000); see
+ * stick_texture.h for the model. */
+#include "stick_texture.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "aero_air.h"
+#include "aero_util.h"
+
+#define VELOCITY_TAU_S 0.008 /* smoothing of pose-derived velocities */
+#define MIN_SPEED 1e-6       /* below this the flow direction is unknown */
+
+/* --- small vector and ramp helpers ---------------------------------------- */
+
+static double dot3(const double *a, const double *b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static void cross3(const double *a, const double *b, double *c)
+{
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static double normalise3(double *a)
+{
+    double n = sqrt(dot3(a, a));
+    if (n > 0.0) {
+        a[0] /= n;
+        a[1] /= n;
+        a[2] /= n;
+    }
+    return n;
+}
+
+static void ramp_jump(aero_ramp *r, double v)
+{
+    r->value = r->target = v;
+    r->step = 0.0;
+    r->chunks_left = 0;
+}
+
+/* the ramp reaches its target after ~ramp_samples, in whole chunks */
+static void ramp_to(aero_ramp *r, double v, double ramp_samples)
+{
+    int chunks = (int)ceil(ramp_samples / AERO_STICK_CHUNK);
+    r->target = v;
+    if (chunks < 1) {
+        r->value = v;
+        r->chunks_left = 0;
+        return;
+    }
+    r->chunks_left = chunks;
+    r->step = (v - r->value) / chunks;
+}
+
+static double ramp_advance(aero_ramp *r)
+{
+    if (r->chunks_left > 0) {
+        r->value += r->step;
+        if (--r->chunks_left == 0)
+            r->value = r->target;
+    }
+    return r->value;
+}
+
+static int finite3(const double *v, double limit)
+{
+    for (int i = 0; i < 3; i++)
+        if (!aero_is_finite(v[i]) || fabs(v[i]) > limit)
+            return 0;
+    return 1;
+}
+
+/* --- life cycle ------------------------------------------------------------ */
+
+static int alloc_rings(aero_stick_texture *s, double sr)
+{
+    long need = (long)ceil(sr * AERO_STICK_MAX_DELAY_S) + 4 * AERO_STICK_CHUNK;
+    long len = 1;
+    while (len < need)
+        len <<= 1;
+    float *rings[AERO_STICK_MAX_EARS] = {NULL, NULL};
+    for (int e = 0; e < s->n_ears; e++) {
+        rings[e] = calloc((size_t)len, sizeof(float));
+        if (!rings[e]) {
+            for (int k = 0; k < e; k++)
+                free(rings[k]);
+            return -1;
+        }
+    }
+    for (int e = 0; e < AERO_STICK_MAX_EARS; e++) {
+        free(s->ring[e]);
+        s->ring[e] = rings[e];
+    }
+    s->ring_mask = len - 1;
+    s->ring_head = 0;
+    return 0;
+}
+
+static void default_pose(aero_stick_texture *s)
+{
+    double half = 0.5 * s->length;
+    double p[6] = {0.0, 0.0, -half, 0.0, 0.0, half};
+    memcpy(s->pose, p, sizeof(p));
+    memcpy(s->pose_from, p, sizeof(p));
+    memcpy(s->pose_to, p, sizeof(p));
+    s->pose_elapsed = s->pose_duration = 0.0;
+}
+
+static double current_diameter(const aero_stick_texture *s)
+{
+    if (s->diameter > 0.0)
+        return s->diameter;
+    return s->tex_diameter > 0.0 ? s->tex_diameter : 0.01;
+}
+
+static double stick_length(const double *pose)
+{
+    double d[3] = {pose[3] - pose[0], pose[4] - pose[1], pose[5] - pose[2]};
+    return sqrt(dot3(d, d));
+}
+
+/* n from the pose's length and the correlation length 3 d (paper 000) */
+static void update_source_count(aero_stick_texture *s)
+{
+    int n = s->sources_wanted;
+    if (n <= 0) {
+        double len = stick_length(s->pose_to);
+        n = (int)floor(len / (3.0 * current_diameter(s)) + 0.5);
+    }
+    if (n < 1)
+        n = 1;
+    if (n > AERO_STICK_MAX_SOURCES)
+        n = AERO_STICK_MAX_SOURCES;
+    for (int i = s->n_sources; i < n; i++) { /* new ones fade in */
+        memset(&s->src[i], 0, sizeof(s->src[i]));
+        s->src[i].pos = 0.5 * (aero_uniform(&s->rng) + 1.0) *
+                        (s->texture ? s->texture->frames : 1);
+    }
+    s->n_sources = n;
+}
+
+int aero_stick_texture_init(aero_stick_texture *s, double sample_rate,
+                            int n_ears, uint32_t seed)
+{
+    memset(s, 0, sizeof(*s));
+    s->n_ears = n_ears < 1 ? 1 : n_ears > 2 ? 2 : n_ears;
+    s->sample_rate = sample_rate > 0.0 && aero_is_finite(sample_rate)
+                         ? sample_rate : 44100.0;
+    s->rng = seed ? seed : 1;
+    s->length = 0.5;
+    s->exponent = 3.0;
+    s->ramp_samples = 0.020 * s->sample_rate;
+    default_pose(s);
+    s->reference[0] = 1.0;
+    ramp_jump(&s->gain, 1.0);
+    for (int e = 0; e < AERO_STICK_MAX_EARS; e++) {
+        ramp_jump(&s->ear[3 * e + 0], e == 0 ? 0.0 : 0.2);
+        ramp_jump(&s->ear[3 * e + 1], 1.0);
+        ramp_jump(&s->ear[3 * e + 2], 0.0);
+    }
+    if (s->n_ears == 2) { /* ears 20 cm apart, the head facing -y */
+        ramp_jump(&s->ear[0], -0.1);
+        ramp_jump(&s->ear[3], 0.1);
+    }
+    update_source_count(s);
+    return alloc_rings(s, s->sample_rate);
+}
+
+void aero_stick_texture_free(aero_stick_texture *s)
+{
+    for (int e = 0; e < AERO_STICK_MAX_EARS; e++) {
+        free(s->ring[e]);
+        s->ring[e] = NULL;
+    }
+    if (s->texture) {
+        aero_texture_free(s->texture);
+        free(s->texture);
+        s->texture = NULL;
+    }
+}
+
+int aero_stick_texture_set_texture(aero_stick_texture *s, aero_texture *t,
+                                   char *err, size_t errlen)
+{
+    if (t) {
+        char kind[32];
+        if (!aero_texture_get(t, "kind", kind, sizeof(kind)) ||
+            strcmp(kind, "aeolian")) {
+            snprintf(err, errlen, "not an aeolian texture (kind=%s)",
+                     aero_texture_get(t, "kind", kind, sizeof(kind))
+                         ? kind : "missing");
+            return -1;
+        }
+        double v0 = aero_texture_getd(t, "v0", 0.0);
+        double d = aero_texture_getd(t, "diameter", 0.0);
+        int symmetry = (int)aero_texture_getd(t, "symmetry", 0.0);
+        if (!(v0 > 0.0 && v0 < 1e3) || !(d > 0.0 && d < 100.0) ||
+            !(t->rate > 0.0) || t->frames < 2 || t->directions < 1 ||
+            symmetry < 0 || symmetry > 360) {
+            snprintf(err, errlen, "bad metadata (v0 %g, diameter %g, "
+                     "symmetry %d, %d frames)", v0, d, symmetry, t->frames);
+            return -1;
+        }
+        for (int k = 1; k < t->directions; k++)
+            if (!(t->angles[k] > t->angles[k - 1])) {
+                snprintf(err, errlen, "angles are not increasing");
+                return -1;
+            }
+        s->v0 = v0;
+        s->tex_diameter = d;
+        s->tex_rate = t->rate;
+        s->st = aero_texture_getd(t, "st", 0.0);
+        s->period = symmetry > 0 && t->directions > 1 ? 360.0 / symmetry
+                                                       : 0.0;
+        s->mirror = (int)aero_texture_getd(t, "mirror", 0.0) != 0;
+    }
+    if (s->texture) {
+        aero_texture_free(s->texture);
+        free(s->texture);
+    }
+    s->texture = t;
+    /* sources restart from random offsets of the new texture */
+    for (int i = 0; i < AERO_STICK_MAX_SOURCES; i++) {
+        memset(&s->src[i], 0, sizeof(s->src[i]));
+        if (t)
+            s->src[i].pos = 0.5 * (aero_uniform(&s->rng) + 1.0) * t->frames;
+    }
+    update_source_count(s);
+    return 0;
+}
+
+/* --- setters ---------------------------------------------------------------- */
+
+int aero_stick_texture_set_sample_rate(aero_stick_texture *s, double sr)
+{
+    if (!(sr >= 1000.0 && sr <= 1536000.0))
+        return -1;
+    if (sr != s->sample_rate || !s->ring[0]) {
+        double ms = s->ramp_samples / s->sample_rate * 1000.0;
+        if (alloc_rings(s, sr))
+            return -1;
+        s->sample_rate = sr;
+        s->ramp_samples = ms * 0.001 * sr;
+        for (int i = 0; i < AERO_STICK_MAX_SOURCES; i++)
+            s->src[i].primed = 0;
+    }
+    return 0;
+}
+
+int aero_stick_texture_set_diameter(aero_stick_texture *s, double d)
+{
+    if (!(d == 0.0 || (d >= 1e-5 && d <= 10.0)))
+        return -1;
+    s->diameter = d;
+    update_source_count(s);
+    return 0;
+}
+
+int aero_stick_texture_set_length(aero_stick_texture *s, double l)
+{
+    if (!(l >= 1e-5 && l <= 1000.0))
+        return -1;
+    s->length = l;
+    if (!s->pose_set) {
+        default_pose(s);
+        update_source_count(s);
+    }
+    return 0;
+}
+
+int aero_stick_texture_set_sources(aero_stick_texture *s, int n)
+{
+    if (n < 0 || n > AERO_STICK_MAX_SOURCES)
+        return -1;
+    s->sources_wanted = n;
+    if (n > 0 && n < s->n_sources)
+        s->n_sources = n;
+    update_source_count(s);
+    return 0;
+}
+
+int aero_stick_texture_set_exponent(aero_stick_texture *s, double e)
+{
+    if (!(e >= 0.0 && e <= 12.0))
+        return -1;
+    s->exponent = e;
+    return 0;
+}
+
+int aero_stick_texture_set_gain_db(aero_stick_texture *s, double db)
+{
+    if (!(db >= -200.0 && db <= 120.0))
+        return -1;
+    ramp_to(&s->gain, pow(10.0, db / 20.0), s->ramp_samples);
+    return 0;
+}
+
+int aero_stick_texture_set_ramp_ms(aero_stick_texture *s, double ms)
+{
+    if (!(ms >= 0.0 && ms <= 600000.0))
+        return -1;
+    s->ramp_samples = ms * 0.001 * s->sample_rate;
+    return 0;
+}
+
+void aero_stick_texture_set_seed(aero_stick_texture *s, uint32_t seed)
+{
+    s->rng = seed ? seed : 1;
+    for (int i = 0; i < AERO_STICK_MAX_SOURCES; i++)
+        if (s->texture)
+            s->src[i].pos =
+                0.5 * (aero_uniform(&s->rng) + 1.0) * s->texture->frames;
+}
+
+int aero_stick_texture_set_pose(aero_stick_texture *s, const double a[3],
+                                const double b[3], double interval_s)
+{
+    double p[6] = {a[0], a[1], a[2], b[0], b[1], b[2]};
+    if (!finite3(a, 1e5) || !finite3(b, 1e5) || stick_length(p) < 1e-6)
+        return -1;
+    if (!s->pose_set) { /* the first pose jumps: nothing to move from */
+        memcpy(s->pose, p, sizeof(p));
+        memcpy(s->pose_from, p, sizeof(p));
+        memcpy(s->pose_to, p, sizeof(p));
+        s->pose_elapsed = s->pose_duration = 0.0;
+        s->pose_set = 1;
+        update_source_count(s);
+        return 0;
+    }
+    if (!(interval_s >= 0.001))
+        interval_s = 0.001;
+    if (interval_s > 0.5)
+        interval_s = 0.5;
+    /* the velocity of the stream itself (its time stamps are exact, while
+     * the arrivals are quantised to DSP blocks): what the air sees */
+    for (int i = 0; i < 6; i++)
+        s->pose_velocity[i] = (p[i] - s->pose_to[i]) / interval_s;
+    memcpy(s->pose_from, s->pose, sizeof(p));
+    memcpy(s->pose_to, p, sizeof(p));
+    s->pose_elapsed = 0.0;
+    s->pose_duration = interval_s * s->sample_rate;
+    if (s->sources_wanted <= 0) {
+        /* keep n unless the length changed a lot (a new object) */
+        double was = stick_length(s->pose_from), now = stick_length(p);
+        if (now > 1.5 * was || now < was / 1.5)
+            update_source_count(s);
+    }
+    return 0;
+}
+
+int aero_stick_texture_set_reference(aero_stick_texture *s,
+                                     const double x[3])
+{
+    double v[3] = {x[0], x[1], x[2]};
+    if (!finite3(v, 1e5) || normalise3(v) < 1e-9)
+        return -1;
+    memcpy(s->reference, v, sizeof(v));
+    return 0;
+}
+
+int aero_stick_texture_set_roll_deg(aero_stick_texture *s, double deg)
+{
+    if (!aero_is_finite(deg) || fabs(deg) > 1e6)
+        return -1;
+    ramp_to(&s->roll, deg, s->ramp_samples);
+    return 0;
+}
+
+int aero_stick_texture_set_wind(aero_stick_texture *s, const double w[3])
+{
+    if (!finite3(w, AERO_MACH_LIMIT * AERO_C0 * 10.0))
+        return -1;
+    for (int i = 0; i < 3; i++)
+        ramp_to(&s->wind[i], w[i], s->ramp_samples);
+    return 0;
+}
+
+int aero_stick_texture_set_ear(aero_stick_texture *s, int ear, double x,
+                               double y, double z)
+{
+    double v[3] = {x, y, z};
+    if (ear < 0 || ear >= s->n_ears || !finite3(v, 1e5))
+        return -1;
+    for (int i = 0; i < 3; i++)
+        ramp_to(&s->ear[3 * ear + i], v[i], s->ramp_samples);
+    return 0;
+}
+
+double aero_stick_texture_tone_hz(const aero_stick_texture *s, double v)
+{
+    return s->st * v / current_diameter(s);
+}
+
+int aero_stick_texture_source_count(const aero_stick_texture *s)
+{
+    return s->n_sources;
+}
+
+/* --- directions ------------------------------------------------------------ */
+
+/* the sampled directions around body angle a (deg): k0, k1, the weight of
+ * k1 (linear, extrapolated when a lies outside [angle k0, angle k1]) and
+ * the sign of the texture's y (lift) component (-1 on the mirrored half) */
+typedef struct {
+    int k0, k1;
+    double a0, a1; /* angles of k0 and k1 (a1 may be period + angle 0) */
+    double sign;
+} dir_pair;
+
+static double fold_angle(const aero_stick_texture *s, double a, double *sign)
+{
+    *sign = 1.0;
+    if (s->period <= 0.0)
+        return 0.0;
+    a = fmod(a, s->period);
+    if (a < 0.0)
+        a += s->period;
+    if (s->mirror && a > 0.5 * s->period) {
+        a = s->period - a;
+        *sign = -1.0;
+    }
+    return a;
+}
+
+static dir_pair find_pair(const aero_stick_texture *s, double folded,
+                          double sign)
+{
+    const aero_texture *t = s->texture;
+    int n = t->directions;
+    dir_pair p = {0, 0, 0.0, 1.0, sign};
+    if (n < 2 || s->period <= 0.0)
+        return p;
+    int k = 0;
+    while (k + 1 < n && t->angles[k + 1] <= folded)
+        k++;
+    if (k == n - 1) {
+        if (s->mirror) { /* the last sampled angle is the fold itself */
+            k = n - 2;
+        } else {         /* between the last angle and period + angle 0 */
+            p.k0 = n - 1;
+            p.k1 = 0;
+            p.a0 = t->angles[n - 1];
+            p.a1 = s->period + t->angles[0];
+            return p;
+        }
+    }
+    p.k0 = k;
+    p.k1 = k + 1;
+    p.a0 = t->angles[k];
+    p.a1 = t->angles[k + 1];
+    return p;
+}
+
+static double pair_weight(const dir_pair *p, double folded, double period)
+{
+    if (p->k0 == p->k1)
+        return 0.0;
+    double span = p->a1 - p->a0;
+    double off = folded - p->a0;
+    if (period > 0.0) { /* the nearest image of the angle */
+        if (off > 0.5 * period)
+            off -= period;
+        else if (off < -0.5 * period)
+            off += period;
+    }
+    double w = off / span;
+    return w < -0.5 ? -0.5 : w > 1.5 ? 1.5 : w;
+}
+
+/* --- processing ------------------------------------------------------------ */
+
+/* Geometry of source at fraction u along the stick for the pose now. */
+typedef struct {
+    double inc, angle, amp;
+    double fx[AERO_STICK_MAX_EARS], fy[AERO_STICK_MAX_EARS];
+    double delay[AERO_STICK_MAX_EARS];
+} source_geometry;
+
+typedef struct {
+    double a[3], axis[3], len;
+    double va[3], vb[3];
+    double xb[3], yb[3]; /* body frame, normal to the axis */
+    double wind[3];
+    double ears[AERO_STICK_MAX_EARS][3];
+    double seg_len, gain;
+} stick_frame;
+
+static int source_at(aero_stick_texture *s, const stick_frame *f, double u,
+                     source_geometry *g)
+{
+    int clamped = 0;
+    double pos[3], rel[3];
+    for (int i = 0; i < 3; i++) {
+        pos[i] = f->a[i] + u * f->len * f->axis[i];
+        double vel = f->va[i] + u * (f->vb[i] - f->va[i]);
+        rel[i] = f->wind[i] - vel;
+    }
+    /* property 3: only the component normal to the axis sheds */
+    double along = dot3(rel, f->axis);
+    double perp[3] = {rel[0] - along * f->axis[0], rel[1] - along * f->axis[1],
+                      rel[2] - along * f->axis[2]};
+    double v = normalise3(perp);
+    double vmax = AERO_MACH_LIMIT * AERO_C0;
+    if (v > vmax) {
+        v = vmax;
+        clamped = 1;
+    }
+    double d = current_diameter(s);
+    double ratio = v / s->v0;
+    g->inc = ratio * (s->tex_diameter / d) * s->tex_rate / s->sample_rate;
+    if (v > MIN_SPEED) {
+        g->angle = atan2(dot3(perp, f->yb), dot3(perp, f->xb)) * 180.0 / AERO_PI;
+        g->amp = pow(ratio, s->exponent) * f->seg_len * f->gain;
+    } else { /* no flow: silent, keep the direction */
+        perp[0] = f->xb[0];
+        perp[1] = f->xb[1];
+        perp[2] = f->xb[2];
+        g->angle = 0.0;
+        g->amp = 0.0;
+    }
+    double across[3];
+    cross3(f->axis, perp, across); /* y of the flow frame */
+    for (int e = 0; e < s->n_ears; e++) {
+        double r[3] = {f->ears[e][0] - pos[0], f->ears[e][1] - pos[1],
+                       f->ears[e][2] - pos[2]};
+        double dist = sqrt(dot3(r, r));
+        if (dist < 0.5 * d) /* inside the body: the far field does not hold */
+            dist = 0.5 * d;
+        /* Curle: (q - o).g / (4 pi c0 r^2), r = |q - o|: falls as 1/r */
+        double k = 1.0 / (4.0 * AERO_PI * AERO_C0 * dist * dist);
+        g->fx[e] = dot3(r, perp) * k;
+        g->fy[e] = dot3(r, across) * k;
+        double delay = dist / AERO_C0 * s->sample_rate;
+        double dmax = AERO_STICK_MAX_DELAY_S * s->sample_rate;
+        g->delay[e] = delay < dmax ? delay : dmax;
+    }
+    return clamped;
+}
+
+/* moves pose, velocities and ramps by m samples; fills the frame at the
+ * chunk's end */
+static void advance_frame(aero_stick_texture *s, int m, double speed,
+                          stick_frame *f)
+{
+    s->pose_elapsed += m;
+    double frac = s->pose_duration > 0.0 ? s->pose_elapsed / s->pose_duration
+                                         : 1.0;
+    if (frac > 1.0)
+        frac = 1.0;
+    for (int i = 0; i < 6; i++)
+        s->pose[i] = s->pose_from[i] + frac * (s->pose_to[i] - s->pose_from[i]);
+    /* the stream's velocity, smoothed; zero once the stream has stopped
+     * (no pose for 1.5 intervals) */
+    int stopped = s->pose_elapsed > 1.5 * s->pose_duration + m;
+    double alpha = 1.0 - exp(-m / (VELOCITY_TAU_S * s->sample_rate));
+    for (int i = 0; i < 6; i++) {
+        double v = stopped ? 0.0 : s->pose_velocity[i];
+        s->velocity[i] += alpha * (v - s->velocity[i]);
+    }
+    for (int i = 0; i < 3; i++) {
+        f->a[i] = s->pose[i];
+        f->axis[i] = s->pose[3 + i] - s->pose[i];
+        f->va[i] = s->velocity[i];
+        f->vb[i] = s->velocity[3 + i];
+    }
+    f->len = normalise3(f->axis);
+    /* carry the body's x axis along: project it onto the normal plane */
+    double along = dot3(s->reference, f->axis);
+    double xb[3] = {s->reference[0] - along * f->axis[0],
+                    s->reference[1] - along * f->axis[1],
+                    s->reference[2] - along * f->axis[2]};
+    if (normalise3(xb) < 1e-6) { /* the axis turned onto it: any normal */
+        double t[3] = {fabs(f->axis[0]) < 0.9 ? 1.0 : 0.0,
+                       fabs(f->axis[0]) < 0.9 ? 0.0 : 1.0, 0.0};
+        cross3(f->axis, t, xb);
+        normalise3(xb);
+    }
+    memcpy(s->reference, xb, sizeof(xb));
+    double roll = ramp_advance(&s->roll) * AERO_PI / 180.0;
+    double yb[3];
+    cross3(f->axis, xb, yb);
+    for (int i = 0; i < 3; i++) {
+        f->xb[i] = cos(roll) * xb[i] + sin(roll) * yb[i];
+        f->yb[i] = cos(roll) * yb[i] - sin(roll) * xb[i];
+    }
+    for (int i = 0; i < 3; i++)
+        f->wind[i] = ramp_advance(&s->wind[i]);
+    f->wind[0] += speed;
+    for (int e = 0; e < s->n_ears; e++)
+        for (int i = 0; i < 3; i++)
+            f->ears[e][i] = ramp_advance(&s->ear[3 * e + i]);
+    f->seg_len = f->len / s->n_sources;
+    f->gain = ramp_advance(&s->gain);
+}
+
+/* coefficients of one ear for a direction pair, from a geometry */
+static void pair_coefs(const source_geometry *g, int e, double w, double sign,
+                       double *c)
+{
+    double ax = g->amp * g->fx[e], ay = g->amp * g->fy[e] * sign;
+    c[0] = (1.0 - w) * ax;
+    c[1] = (1.0 - w) * ay;
+    c[2] = w * ax;
+    c[3] = w * ay;
+}
+
+/* one source over a chunk of m samples: texture read, Curle projection,
+ * added into each ear's ring at its arrival time */
+static void render_source(aero_stick_texture *s, aero_stick_source *src,
+                          const source_geometry *g, int m)
+{
+    const aero_texture *t = s->texture;
+    const int ch = t->channels;
+    const long frames = t->frames;
+    double sign_now, sign_then;
+    double folded = fold_angle(s, g->angle, &sign_now);
+    dir_pair p = find_pair(s, folded, sign_now);
+    double w1 = pair_weight(&p, folded, s->mirror ? 0.0 : s->period);
+    source_geometry then;
+    if (!src->primed) { /* first chunk: start where it ends, amplitude 0 */
+        then = *g;
+        then.amp = 0.0;
+        sign_then = sign_now;
+        src->primed = 1;
+    } else {
+        then.inc = src->inc;
+        then.angle = src->angle;
+        then.amp = src->amp;
+        for (int e = 0; e < s->n_ears; e++) {
+            then.fx[e] = src->fx[e];
+            then.fy[e] = src->fy[e];
+            then.delay[e] = src->delay[e];
+        }
+    }
+    double folded_then = fold_angle(s, then.angle, &sign_then);
+    double w0 = pair_weight(&p, folded_then, s->mirror ? 0.0 : s->period);
+    const double inv_m = 1.0 / m;
+    double pos = src->pos;
+    double inc = then.inc, dinc = (g->inc - then.inc) * inv_m;
+
+    for (int e = 0; e < s->n_ears; e++) {
+        double c[4], cend[4], dc[4];
+        pair_coefs(&then, e, w0, sign_then, c);
+        pair_coefs(g, e, w1, sign_now, cend);
+        for (int k = 0; k < 4; k++)
+            dc[k] = (cend[k] - c[k]) * inv_m;
+        double delay = then.delay[e];
+        double ddelay = (g->delay[e] - delay) * inv_m;
+        float *ring = s->ring[e];
+        const long mask = s->ring_mask;
+        double at = (double)s->ring_head + delay;
+        double tpos = pos, tinc = inc;
+        for (int j = 0; j < m; j++) {
+            long i0 = (long)tpos;
+            float fr = (float)(tpos - (double)i0);
+            long i1 = i0 + 1 == frames ? 0 : i0 + 1;
+            const float *r0 = t->data + i0 * ch, *r1 = t->data + i1 * ch;
+            float x0 = r0[3 * p.k0] + fr * (r1[3 * p.k0] - r0[3 * p.k0]);
+            float y0 = r0[3 * p.k0 + 1] + fr * (r1[3 * p.k0 + 1] - r0[3 * p.k0 + 1]);
+            float x1 = r0[3 * p.k1] + fr * (r1[3 * p.k1] - r0[3 * p.k1]);
+            float y1 = r0[3 * p.k1 + 1] + fr * (r1[3 * p.k1 + 1] - r0[3 * p.k1 + 1]);
+            float v = (float)(c[0] * x0 + c[1] * y0 + c[2] * x1 + c[3] * y1);
+            long ia = (long)at;
+            float fa = (float)(at - (double)ia);
+            ring[ia & mask] += v * (1.0f - fa);
+            ring[(ia + 1) & mask] += v * fa;
+            for (int k = 0; k < 4; k++)
+                c[k] += dc[k];
+            at += 1.0 + ddelay;
+            tinc += dinc;
+            tpos += tinc;
+            if (tpos >= frames)
+                tpos -= frames;
+        }
+    }
+    /* advance the texture coordinate once (the same for every ear) */
+    for (int j = 0; j < m; j++) {
+        inc += dinc;
+        pos += inc;
+        if (pos >= frames)
+            pos -= frames;
+    }
+    if (!(pos >= 0.0 && pos < frames))
+        pos = 0.0;
+    src->pos = pos;
+    src->inc = g->inc;
+    src->angle = g->angle;
+    src->amp = g->amp;
+    for (int e = 0; e < s->n_ears; e++) {
+        src->fx[e] = g->fx[e];
+        src->fy[e] = g->fy[e];
+        src->delay[e] = g->delay[e];
+    }
+}
+
+int aero_stick_texture_process(aero_stick_texture *s, const float *speed,
+                               float *const *out, int n)
+{
+    s->clamped = 0;
+    for (int done = 0; done < n;) {
+        int m = n - done < AERO_STICK_CHUNK ? n - done : AERO_STICK_CHUNK;
+        /* the inlet's mean speed over the chunk (NaN counts as 0) */
+        double sp = 0.0;
+        if (speed) {
+            for (int j = 0; j < m; j++) {
+                float v = speed[done + j];
+                sp += v == v && v < 1e30f && v > -1e30f ? v : 0.0f;
+            }
+            sp /= m;
+        }
+        stick_frame f;
+        advance_frame(s, m, sp, &f);
+        if (s->texture) {
+            for (int i = 0; i < s->n_sources; i++) {
+                source_geometry g;
+                double u = (i + 0.5) / s->n_sources;
+                s->clamped |= source_at(s, &f, u, &g);
+                render_source(s, &s->src[i], &g, m);
+            }
+        }
+        /* read the arrivals of this chunk and clear them for reuse */
+        for (int e = 0; e < s->n_ears; e++) {
+            float *ring = s->ring[e];
+            float *o = out[e] + done;
+            for (int j = 0; j < m; j++) {
+                long i = (s->ring_head + j) & s->ring_mask;
+                float v = ring[i];
+                ring[i] = 0.0f;
+                o[j] = v == v && v < 1e30f && v > -1e30f ? v : 0.0f;
+            }
+        }
+        s->ring_head = (s->ring_head + m) & s->ring_mask;
+        done += m;
+    }
+    return s->clamped;
+}

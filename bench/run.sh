@@ -73,6 +73,8 @@ gen_patch empty 0 "aeolian~"
 gen_patch vanilla "$N" "vanilla-cylinder 0.01"
 gen_patch aeolian "$N" "aeolian~ -d 0.01"
 gen_patch cavity "$N" "cavity~ -L 0.02 -D 0.01 -W 0.05"
+# texture mode: N point sources as N/10 sticks of 10 sources each
+gen_patch texture "$((N / 10))" "aeolian~ -texture cylinder -n 10 -l 0.3"
 
 best() { # the fastest of three runs (least disturbed by the machine)
     b=""
@@ -86,9 +88,10 @@ t_empty=$(best empty)
 t_vanilla=$(best vanilla)
 t_aeolian=$(best aeolian)
 t_cavity=$(best cavity)
+t_texture=$(best texture)
 
 awk -v n="$N" -v s="$SECONDS_RENDERED" -v e="$t_empty" -v v="$t_vanilla" \
-    -v a="$t_aeolian" -v c="$t_cavity" -v r="$RATE" 'BEGIN {
+    -v a="$t_aeolian" -v c="$t_cavity" -v t="$t_texture" -v r="$RATE" 'BEGIN {
     cv = (v - e) / n; ca = (a - e) / n
     printf "[aeolian~] model mode vs the paper-001 vanilla cylinder, %d sources, %d s at %d Hz, Pd batch mode\n", n, s, r
     printf "  empty patch           %8.3f s\n", e
@@ -98,6 +101,8 @@ awk -v n="$N" -v s="$SECONDS_RENDERED" -v e="$t_empty" -v v="$t_vanilla" \
     printf "  real-time [aeolian~] sources on one core at %d Hz: %.0f (target >= 1000)\n", r, s / ca
     cc = (c - e) / n
     printf "  %d x [cavity~] (model) %8.3f s   %.2f us per source per second of sound, %.0f real-time sources\n", n, c, 1e6 * cc / s, s / cc
+    ct = (t - e) / (10 * int(n / 10))
+    printf "  %d x [aeolian~ -texture cylinder -n 10] (%d point sources) %8.3f s   %.2f us per point source per second of sound, %.0f real-time point sources (target >= 1000); %.2f x the model mode per source\n", int(n / 10), 10 * int(n / 10), t, 1e6 * ct / s, s / ct, ct / ca
 }' | tee "$DIR/aeolian.txt"
 
 # benchmarks of other parts, each in its own script

@@ -414,18 +414,31 @@ typedef struct {
     double sign;
 } dir_pair;
 
+#define FOLD_HYSTERESIS_DEG 2.0
+
+/* Folds body angle a (deg) into the sampled range. On the mirrored half
+ * the texture's y (lift) is negated. Right at a fold line (0 and P/2) both
+ * halves are the same flow but their lift has opposite signs, so within
+ * FOLD_HYSTERESIS_DEG of one the previous side (*sign on entry) is kept:
+ * a stick hovering there does not flip its lift back and forth. */
 static double fold_angle(const aero_stick_texture *s, double a, double *sign)
 {
+    double previous = *sign < 0.0 ? -1.0 : 1.0;
     *sign = 1.0;
     if (s->period <= 0.0)
         return 0.0;
     a = fmod(a, s->period);
     if (a < 0.0)
         a += s->period;
-    if (s->mirror && a > 0.5 * s->period) {
+    if (!s->mirror)
+        return a;
+    double half = 0.5 * s->period;
+    double to_fold = fmin(fmin(a, s->period - a), fabs(a - half));
+    int mirrored = to_fold < FOLD_HYSTERESIS_DEG ? previous < 0.0 : a > half;
+    if (a > half)
         a = s->period - a;
+    if (mirrored)
         *sign = -1.0;
-    }
     return a;
 }
 
@@ -619,7 +632,7 @@ static void render_source(aero_stick_texture *s, aero_stick_source *src,
     const aero_texture *t = s->texture;
     const int ch = t->channels;
     const long frames = t->frames;
-    double sign_now, sign_then;
+    double sign_then = src->sign, sign_now = src->sign;
     double folded = fold_angle(s, g->angle, &sign_now);
     dir_pair p = find_pair(s, folded, sign_now);
     double w1 = pair_weight(&p, folded, s->mirror ? 0.0 : s->period);
@@ -627,7 +640,6 @@ static void render_source(aero_stick_texture *s, aero_stick_source *src,
     if (!src->primed) { /* first chunk: start where it ends, amplitude 0 */
         then = *g;
         then.amp = 0.0;
-        sign_then = sign_now;
         src->primed = 1;
     } else {
         then.inc = src->inc;
@@ -640,56 +652,63 @@ static void render_source(aero_stick_texture *s, aero_stick_source *src,
         }
     }
     double folded_then = fold_angle(s, then.angle, &sign_then);
+    src->sign = sign_now;
     double w0 = pair_weight(&p, folded_then, s->mirror ? 0.0 : s->period);
     const double inv_m = 1.0 / m;
-    double pos = src->pos;
-    double inc = then.inc, dinc = (g->inc - then.inc) * inv_m;
+
+    /* the texture once for all ears: x, y of both directions */
+    float tex[4][AERO_STICK_CHUNK];
+    {
+        double pos = src->pos, inc = then.inc;
+        const double dinc = (g->inc - then.inc) * inv_m;
+        const int c0 = 3 * p.k0, c1 = 3 * p.k1;
+        for (int j = 0; j < m; j++) {
+            long i0 = (long)pos;
+            float fr = (float)(pos - (double)i0);
+            long i1 = i0 + 1 == frames ? 0 : i0 + 1;
+            const float *r0 = t->data + i0 * ch, *r1 = t->data + i1 * ch;
+            tex[0][j] = r0[c0] + fr * (r1[c0] - r0[c0]);
+            tex[1][j] = r0[c0 + 1] + fr * (r1[c0 + 1] - r0[c0 + 1]);
+            tex[2][j] = r0[c1] + fr * (r1[c1] - r0[c1]);
+            tex[3][j] = r0[c1 + 1] + fr * (r1[c1 + 1] - r0[c1 + 1]);
+            inc += dinc;
+            pos += inc;
+            if (pos >= frames)
+                pos -= frames;
+        }
+        if (!(pos >= 0.0 && pos < frames))
+            pos = 0.0;
+        src->pos = pos;
+    }
 
     for (int e = 0; e < s->n_ears; e++) {
-        double c[4], cend[4], dc[4];
+        double c[4], cend[4];
+        float cf[4], dcf[4];
         pair_coefs(&then, e, w0, sign_then, c);
         pair_coefs(g, e, w1, sign_now, cend);
-        for (int k = 0; k < 4; k++)
-            dc[k] = (cend[k] - c[k]) * inv_m;
-        double delay = then.delay[e];
-        double ddelay = (g->delay[e] - delay) * inv_m;
+        for (int k = 0; k < 4; k++) {
+            cf[k] = (float)c[k];
+            dcf[k] = (float)((cend[k] - c[k]) * inv_m);
+        }
+        const double delay = then.delay[e];
+        const double ddelay = (g->delay[e] - delay) * inv_m;
         float *ring = s->ring[e];
         const long mask = s->ring_mask;
         double at = (double)s->ring_head + delay;
-        double tpos = pos, tinc = inc;
         for (int j = 0; j < m; j++) {
-            long i0 = (long)tpos;
-            float fr = (float)(tpos - (double)i0);
-            long i1 = i0 + 1 == frames ? 0 : i0 + 1;
-            const float *r0 = t->data + i0 * ch, *r1 = t->data + i1 * ch;
-            float x0 = r0[3 * p.k0] + fr * (r1[3 * p.k0] - r0[3 * p.k0]);
-            float y0 = r0[3 * p.k0 + 1] + fr * (r1[3 * p.k0 + 1] - r0[3 * p.k0 + 1]);
-            float x1 = r0[3 * p.k1] + fr * (r1[3 * p.k1] - r0[3 * p.k1]);
-            float y1 = r0[3 * p.k1 + 1] + fr * (r1[3 * p.k1 + 1] - r0[3 * p.k1 + 1]);
-            float v = (float)(c[0] * x0 + c[1] * y0 + c[2] * x1 + c[3] * y1);
+            float v = cf[0] * tex[0][j] + cf[1] * tex[1][j] +
+                      cf[2] * tex[2][j] + cf[3] * tex[3][j];
             long ia = (long)at;
             float fa = (float)(at - (double)ia);
             ring[ia & mask] += v * (1.0f - fa);
             ring[(ia + 1) & mask] += v * fa;
-            for (int k = 0; k < 4; k++)
-                c[k] += dc[k];
+            cf[0] += dcf[0];
+            cf[1] += dcf[1];
+            cf[2] += dcf[2];
+            cf[3] += dcf[3];
             at += 1.0 + ddelay;
-            tinc += dinc;
-            tpos += tinc;
-            if (tpos >= frames)
-                tpos -= frames;
         }
     }
-    /* advance the texture coordinate once (the same for every ear) */
-    for (int j = 0; j < m; j++) {
-        inc += dinc;
-        pos += inc;
-        if (pos >= frames)
-            pos -= frames;
-    }
-    if (!(pos >= 0.0 && pos < frames))
-        pos = 0.0;
-    src->pos = pos;
     src->inc = g->inc;
     src->angle = g->angle;
     src->amp = g->amp;

@@ -34,7 +34,7 @@
 
 #define AERO_STICK_MAX_EARS 2
 #define AERO_STICK_MAX_SOURCES 256
-#define AERO_STICK_CHUNK 16          /* samples per geometry update */
+#define AERO_STICK_CHUNK 32          /* samples per geometry update */
 #define AERO_STICK_MAX_DELAY_S 1.0   /* sound travel time kept: 343 m */
 
 /* a value that moves linearly to its target over the ramp time */
@@ -50,6 +50,7 @@ typedef struct {
     double amp;          /* amplitude factor at that end */
     double fx[AERO_STICK_MAX_EARS], fy[AERO_STICK_MAX_EARS]; /* Curle, 1/m */
     double delay[AERO_STICK_MAX_EARS]; /* samples */
+    double sign;         /* side of the mirror fold (-1: mirrored) */
     int primed;
 } aero_stick_source;
 

@@ -325,19 +325,21 @@ int aero_stick_texture_set_pose(aero_stick_texture *s, const double a[3],
     double p[6] = {a[0], a[1], a[2], b[0], b[1], b[2]};
     if (!finite3(a, 1e5) || !finite3(b, 1e5) || stick_length(p) < 1e-6)
         return -1;
-    if (!s->pose_set) { /* the first pose jumps: nothing to move from */
+    /* the first pose, one after a pause (a new gesture) or a placement
+     * (interval < 0) jumps: there is nothing to move from */
+    if (!s->pose_set || interval_s < 0.0 || interval_s > 0.5) {
         memcpy(s->pose, p, sizeof(p));
         memcpy(s->pose_from, p, sizeof(p));
         memcpy(s->pose_to, p, sizeof(p));
+        memset(s->pose_velocity, 0, sizeof(s->pose_velocity));
         s->pose_elapsed = s->pose_duration = 0.0;
+        if (!s->pose_set)
+            update_source_count(s);
         s->pose_set = 1;
-        update_source_count(s);
         return 0;
     }
     if (!(interval_s >= 0.001))
         interval_s = 0.001;
-    if (interval_s > 0.5)
-        interval_s = 0.5;
     /* the velocity of the stream itself (its time stamps are exact, while
      * the arrivals are quantised to DSP blocks): what the air sees */
     for (int i = 0; i < 6; i++)

@@ -116,8 +116,10 @@ int aero_stick_texture_set_exponent(aero_stick_texture *s, double e);
 int aero_stick_texture_set_gain_db(aero_stick_texture *s, double db);
 int aero_stick_texture_set_ramp_ms(aero_stick_texture *s, double ms);
 void aero_stick_texture_set_seed(aero_stick_texture *s, uint32_t seed);
-/* ends A and B; interval_s is the time since the previous pose (the motion
- * is interpolated over it, clamped to 1..500 ms; the first pose jumps) */
+/* ends A and B; interval_s is the time since the previous pose: the motion
+ * is interpolated over it (at least 1 ms). The first pose, a pose more than
+ * 0.5 s after the previous one (a new gesture) and interval_s < 0 (a
+ * placement) jump there without motion. */
 int aero_stick_texture_set_pose(aero_stick_texture *s, const double a[3],
                                 const double b[3], double interval_s);
 /* the body's x axis (angle 0 of the texture's directions); projected onto

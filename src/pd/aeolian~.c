@@ -197,8 +197,8 @@ static void aeolian_tilde_pose(t_aeolian_tilde *x, t_symbol *s, int argc,
 {
     double v[9];
     if (argc != 6 && argc != 9) {
-        pd_error(x, OBJ ": 'pose' takes ax ay az bx by bz [ux uy uz] "
-                 "(6 or 9 numbers), got %d", argc);
+        pd_error(x, OBJ ": '%s' takes ax ay az bx by bz [ux uy uz] "
+                 "(6 or 9 numbers), got %d", s->s_name, argc);
         return;
     }
     if (aero_pd_floats(x, OBJ, s->s_name, argc, argv, argc, v))
@@ -209,6 +209,8 @@ static void aeolian_tilde_pose(t_aeolian_tilde *x, t_symbol *s, int argc,
     double now = clock_getlogicaltime();
     double interval = clock_gettimesince(x->x_pose_time) * 0.001;
     x->x_pose_time = now;
+    if (!strcmp(s->s_name, "place")) /* a jump, no motion */
+        interval = -1.0;
     if (aero_stick_texture_set_pose(st, v, v + 3, interval))
         pd_error(x, OBJ ": pose needs two distinct finite ends within 1e5 m");
     else if (argc == 9 && aero_stick_texture_set_reference(st, v + 6))
@@ -428,6 +430,8 @@ void aeolian_tilde_setup(void)
                     gensym("model"), 0);
     class_addmethod(aeolian_tilde_class, (t_method)aeolian_tilde_pose,
                     gensym("pose"), A_GIMME, 0);
+    class_addmethod(aeolian_tilde_class, (t_method)aeolian_tilde_pose,
+                    gensym("place"), A_GIMME, 0);
     class_addmethod(aeolian_tilde_class, (t_method)aeolian_tilde_wind,
                     gensym("wind"), A_GIMME, 0);
     class_addmethod(aeolian_tilde_class, (t_method)aeolian_tilde_roll,

@@ -76,7 +76,7 @@ $(BUILD)/tests/%: tests/unit/%.c tests/unit/unit.h $(core.lib)
 	@mkdir -p $(dir $@)
 	$(CORE_CC) $(CORE_CFLAGS) $< -o $@ $(TOOL_LIBS)
 
-.PHONY: tools lib pdinstance deps check check-only demo bench textures
+.PHONY: tools lib pdinstance deps check check-only demo bench textures deken libpd-example
 
 all: tools
 tools: $(BUILD)/aerotex $(BUILD)/aero-analyze $(unit.binaries)
@@ -96,7 +96,7 @@ pdinstance:
 
 # --- dependencies: Debian packages ------------------------------------------
 DEB_PACKAGES = puredata-core puredata-dev pd-lib-builder libfftw3-dev \
-    libsndfile1-dev libpng-dev sox gcc make valgrind
+    libsndfile1-dev libpng-dev sox gcc make valgrind zip git
 deps:
 	@sh tests/deps.sh $(DEB_PACKAGES)
 
@@ -120,6 +120,38 @@ bench:
 textures:
 	@$(MAKE) --no-print-directory -s tools
 	@sh textures/make.sh
+
+# --- packaging: deken packages (the Pd package manager's format) ----------
+# A deken package is a zip archive of the library folder named
+# NAME[vVERSION](OS-ARCH-FLOATSIZE).dek, plus a (Sources) package; the
+# .dek.txt lists the objects, the .sha256 files the checksums. (Debian's
+# `deken` tool cannot run offline: it fetches its hy runtime from PyPI, so
+# the archives are made here with zip, in the same format.)
+AERO_VERSION = $(shell sed -n 's/.*VERSION \([0-9.]*\);/\1/p' help/aero-meta.pd)
+DEKEN_DIR = $(BUILD)/deken
+DEKEN_ARCH = $(shell uname -s)-$(shell uname -m | sed 's/x86_64/amd64/; s/aarch64/arm64/')-32
+deken: all
+	rm -rf $(DEKEN_DIR)
+	$(MAKE) --no-print-directory -s install PDLIBDIR=$(CURDIR)/$(DEKEN_DIR)/stage
+	cd $(DEKEN_DIR)/stage && zip -q -r "../aero[v$(AERO_VERSION)]($(DEKEN_ARCH)).dek" aero
+	git archive --format=zip --prefix=aero/ -o "$(DEKEN_DIR)/aero[v$(AERO_VERSION)](Sources).dek" HEAD
+	for c in $(class.sources:src/pd/%.c=%) $(patsubst abstractions/%.pd,%,$(wildcard abstractions/*.pd)); do \
+	    printf '%s\t%s\n' "$$c" "aero: physically based aerodynamic sound"; \
+	done >"$(DEKEN_DIR)/aero[v$(AERO_VERSION)]($(DEKEN_ARCH)).dek.txt"
+	cd $(DEKEN_DIR) && for f in *.dek; do sha256sum "$$f" >"$$f.sha256"; done
+	@ls -1 $(DEKEN_DIR)/*.dek*
+
+# --- the libpd example: aero linked statically into a host program --------
+# make libpd-example LIBPD_DIR=/path/to/libpd (a libpd checkout built with
+# -DPDINSTANCE); `make check` only compiles the host against Pd's headers.
+LIBPD_DIR ?=
+libpd-example: all
+	@test -n "$(LIBPD_DIR)" || { echo "set LIBPD_DIR to a built libpd" >&2; exit 1; }
+	$(CC) -std=c99 -O2 -DPDINSTANCE -DHAVE_LIBPD -I$(LIBPD_DIR)/libpd_wrapper \
+	    -I$(LIBPD_DIR)/pure-data/src -Isrc/core examples/libpd-host.c \
+	    $(class.sources) $(lib.setup.sources) -L$(LIBPD_DIR)/libs -lpd \
+	    $(core.lib) -lsndfile -lfftw3f -lm -lpthread -o $(BUILD)/libpd-host
+	@echo "run: $(BUILD)/libpd-host examples"
 
 clean: clean-aero
 clean-aero:

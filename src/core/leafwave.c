@@ -24,6 +24,7 @@
 #define RELEASE_S 0.06        /* key off: slow decay (paper fig. 13) */
 #define SILENT_PA 1e-7        /* a voice below this at 1 m is done */
 #define DRY_CHUNK 256
+#define BAND_OCTAVES_FACTOR 8.0 /* tables roll off above 8 f_i */
 #define MIN_DISTANCE 0.1      /* m: 1/r is held below this */
 
 /* ---- small vector helpers (float storage, double arithmetic) ----------- */
@@ -121,9 +122,10 @@ const float *aero_leafwave_table(const aero_leafwave *lw, int i)
 }
 
 /* Table i: one loop of AERO_LEAF_TABLE_LEN samples at TABLE_RATE, its
-   spectrum pink (power ~ 1/f) from the basic frequency f_i up to
-   0.45 TABLE_RATE / RATE_MAX and nothing below f_i, random phases; unit
-   rms. The sample after the end repeats the first (interpolation). */
+   spectrum pink (power ~ 1/f) from the basic frequency f_i over about
+   three octaves, rolling off as f^-4 in power above 8 f_i, cut at
+   0.45 TABLE_RATE / RATE_MAX (no aliasing when friction plays it at up to
+   RATE_MAX) and nothing below f_i; random phases; unit rms. The sample after the end repeats the first (interpolation). */
 static int make_tables(aero_leafwave *lw)
 {
     const int n = AERO_LEAF_TABLE_LEN;
@@ -152,7 +154,11 @@ static int make_tables(aero_leafwave *lw)
             double f = k * df;
             if (f < f_i || f > f_top)
                 continue;
-            double amp = 1.0 / sqrt(f), ph = AERO_PI * aero_uniform(&rng);
+            /* pink over about three octaves, then a second-order
+               roll-off: the table's colour scales with f_i */
+            double over = f / (BAND_OCTAVES_FACTOR * f_i);
+            double amp = 1.0 / (sqrt(f) * (1.0 + over * over));
+            double ph = AERO_PI * aero_uniform(&rng);
             re[k] = amp * cos(ph);
             im[k] = amp * sin(ph);
             re[n - k] = re[k]; /* Hermitian: a real signal */
@@ -734,6 +740,13 @@ static void render_voices(aero_leafwave *lw, float *dry, int n)
 
 /* ---- life cycle and setters ---------------------------------------------- */
 
+static void clear_line(aero_leafwave *lw)
+{
+    if (lw->line)
+        memset(lw->line, 0, sizeof(float) * lw->line_len);
+    lw->line_pos = 0;
+}
+
 static int alloc_line(aero_leafwave *lw, double sr)
 {
     int len = (int)(AERO_LEAF_MAX_DISTANCE / AERO_C0 * sr) + 2 * DRY_CHUNK +
@@ -801,6 +814,7 @@ void aero_leafwave_clear_tree(aero_leafwave *lw)
     lw->has_tree = 0;
     free_leaves(lw);
     reset_voices(lw);
+    clear_line(lw);
 }
 
 void aero_leafwave_free(aero_leafwave *lw)
@@ -825,6 +839,8 @@ static int restart(aero_leafwave *lw, char *err, size_t errlen)
     lw->frames = 0;
     lw->keyons_total = 0;
     lw->to_next_frame = lw->frame_samples;
+    clear_line(lw);
+    reset_voices(lw);
     if (!lw->has_tree)
         return 0;
     if (aero_tree_motion_init(&lw->motion, &lw->tree, lw->seed) == 0) {

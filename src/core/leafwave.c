@@ -791,8 +791,8 @@ int aero_leafwave_init(aero_leafwave *lw, double sample_rate, int n_ears,
     for (int e = 0; e < lw->n_ears; e++) {
         double x = lw->n_ears == 2 ? (e ? 0.1 : -0.1) : 0.0;
         lw->ear[e][0] = lw->ear_target[e][0] = x;
-        lw->ear[e][1] = lw->ear_target[e][1] = -5.0;
-        lw->ear[e][2] = lw->ear_target[e][2] = 1.5;
+        lw->ear[e][1] = lw->ear_target[e][1] = -10.0;
+        lw->ear[e][2] = lw->ear_target[e][2] = 1.7;
     }
     lw->ramp_samples = 0.02 * sample_rate;
     lw->voices = malloc(sizeof(aero_leaf_voice) * lw->nvoices);
@@ -848,6 +848,12 @@ static int restart(aero_leafwave *lw, char *err, size_t errlen)
         aero_tree_motion_set_stiffness(&lw->motion, lw->stiffness);
         aero_tree_motion_set_beta(&lw->motion, lw->beta);
     }
+    /* distances are measured to the trunk, as [treebranch~] does (the
+       midpoint of the first root branch): both objects' sounds arrive
+       together */
+    for (int k = 0; k < 3; k++)
+        lw->source[k] = 0.5 * (lw->tree.branches[0].a[k] +
+                               lw->tree.branches[0].b[k]);
     lw->nleaves = lw->tree.nleaves;
     if (lw->nleaves > 0) {
         lw->leaves = calloc((size_t)lw->nleaves, sizeof(aero_leaf_state));
@@ -1114,12 +1120,12 @@ void aero_leafwave_count_states(const aero_leafwave *lw, int counts[5])
 /* ---- process -------------------------------------------------------------- */
 
 /* cardioid of the microphone (eq. 16, C = 0): mu between its axis and the
-   direction from the ear to the crown; no axis: facing the crown */
+   direction from the ear to the trunk; no axis: facing the tree */
 static double mic_factor(const aero_leafwave *lw, const double ear[3])
 {
     double to[3], axis[3] = {lw->mic[0], lw->mic[1], lw->mic[2]};
     for (int k = 0; k < 3; k++)
-        to[k] = lw->crown[k] - ear[k];
+        to[k] = lw->source[k] - ear[k];
     if (normalize3d(axis) <= 0.0 || normalize3d(to) <= 0.0 || lw->mic_k == 0.0)
         return 1.0;
     double c = 0.5 * (1.0 + dot3d(axis, to));
@@ -1206,7 +1212,8 @@ int aero_leafwave_process(aero_leafwave *lw, const float *speed,
     for (int e = 0; e < lw->n_ears; e++) {
         double r = 0.0;
         for (int k = 0; k < 3; k++)
-            r += (lw->ear[e][k] - lw->crown[k]) * (lw->ear[e][k] - lw->crown[k]);
+            r += (lw->ear[e][k] - lw->source[k]) *
+                 (lw->ear[e][k] - lw->source[k]);
         r = sqrt(r);
         double delay = clampd(r / AERO_C0 * lw->sample_rate, 1.0, max_delay);
         double amp = lw->gain * mic_factor(lw, lw->ear[e]) /

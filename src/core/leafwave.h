@@ -40,12 +40,13 @@
  * sounding pairs share a fixed pool of voices (the quietest is replaced).
  *
  * Rendering (paper section 5, DESIGN.md): the leaves' sound, as pressure
- * at 1 m, is delayed by the distance from the crown (the centroid of the
- * blades) to each ear, read with a moving stylus (Doppler for free),
+ * at 1 m, is delayed by the distance from the trunk (the midpoint of the
+ * first root branch, the paper's approximation and [treebranch~]'s) to each
+ * ear, read with a moving stylus (Doppler for free),
  * scaled by 1/r (DESIGN.md: amplitude, not the paper's 1/r^2 intensity
  * law) and by the cardioid microphone S(mu) = ((1 + cos mu)/2)^k, mu the
  * angle between the microphone's axis and the direction from the ear to
- * the crown (paper eq. 16, C = 0).
+ * the trunk (paper eq. 16, C = 0).
  *
  * Life cycle: init, set_tree (takes the tree), set_*, process, free.
  * No globals; everything allocated outside process. */
@@ -127,6 +128,7 @@ typedef struct aero_leafwave {
     aero_leaf_state *leaves;
     aero_leaf_pair *pairs;
     double crown[3];     /* centroid of the blade centres at rest */
+    double source[3];    /* where distances are measured from: the trunk */
 
     /* wave tables */
     int tables_per_octave, octaves, ntables;
@@ -147,7 +149,7 @@ typedef struct aero_leafwave {
     double reach;        /* neighbour search factor */
     double hit_pa, rub_pa; /* Pa at 1 m per m/s of collision / sliding */
     double gain;         /* linear */
-    double mic[3];       /* microphone axis (0 0 0: facing the crown) */
+    double mic[3];       /* microphone axis (0 0 0: facing the trunk) */
     double mic_k;
 
     /* frame clock */
@@ -168,11 +170,11 @@ typedef struct aero_leafwave {
     int render_primed;
 } aero_leafwave;
 
-/* Defaults: no tree (silent), listener 5 m from the origin along -y at
- * 1.5 m height (ears 0.1 m apart with two), wind 0, stiffness 1, beta 5/3,
+/* Defaults: no tree (silent), listener at (0, -10, 1.7) (ears at x = -0.1
+ * and 0.1 with two), wind 0, stiffness 1, beta 5/3,
  * sway 0.6 rad, coupling 0.5, flutter 2 Hz, reach 1.5, fm 200 Hz, 12
  * tables per octave over 4 octaves, 256 voices, hit 0.01 Pa, rub 0.003
- * Pa, gain 0 dB, microphone facing the crown, k 1, ramp 20 ms.
+ * Pa, gain 0 dB, microphone facing the trunk, k 1, ramp 20 ms.
  * 0, or -1 when out of memory. */
 int aero_leafwave_init(aero_leafwave *lw, double sample_rate, int n_ears,
                        uint32_t seed);

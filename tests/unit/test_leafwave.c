@@ -280,7 +280,7 @@ static void test_wind(void)
         double rms = render(&lw, 2.0, NULL);
         keyons[w] = (lw.keyons_total - k0) / 2.0;
         level[w] = 20.0 * log10(rms / 2e-5);
-        printf("  wind %4.1f m/s: %6.1f key ons/s, %5.1f dB SPL at 5 m\n",
+        printf("  wind %4.1f m/s: %6.1f key ons/s, %5.1f dB SPL at 10 m\n",
                winds[w], keyons[w], level[w]);
         aero_leafwave_free(&lw);
     }
@@ -494,8 +494,8 @@ static void test_rendering(void)
         aero_leafwave lw;
         make(&lw, 1.0, 31);
         aero_leafwave_set_wind(&lw, 8.0, 0.0, 0.0);
-        aero_leafwave_set_ear(&lw, 0, lw.crown[0], lw.crown[1] - dist[k],
-                              lw.crown[2]);
+        aero_leafwave_set_ear(&lw, 0, lw.source[0], lw.source[1] - dist[k],
+                              lw.source[2]);
         render(&lw, 0.1, NULL); /* past the longest delay */
         rms[k] = render(&lw, 2.0, NULL);
         aero_leafwave_free(&lw);
@@ -513,15 +513,15 @@ static void test_rendering(void)
         aero_leafwave lw;
         make(&lw, 1.0, 31);
         aero_leafwave_set_wind(&lw, 8.0, 0.0, 0.0);
-        aero_leafwave_set_ear(&lw, 0, lw.crown[0], lw.crown[1] - 5.0,
-                              lw.crown[2]);
+        aero_leafwave_set_ear(&lw, 0, lw.source[0], lw.source[1] - 5.0,
+                              lw.source[2]);
         aero_leafwave_set_mic(&lw, axis[k][0], axis[k][1], axis[k][2]);
         aero_leafwave_set_mic_k(&lw, 1.0);
         level[k] = render(&lw, 1.0, NULL);
         aero_leafwave_free(&lw);
     }
     UNIT_NEAR_REL(level[1] / level[0], 0.5, 1e-3,
-                  "microphone sideways / facing the crown (k = 1)");
+                  "microphone sideways / facing the trunk (k = 1)");
     UNIT_CHECK(level[2] == 0.0 && level[0] > 0.0,
                "microphone turned away: %g Pa (facing %g Pa)", level[2],
                level[0]);

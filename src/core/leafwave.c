@@ -24,6 +24,7 @@
 #define RELEASE_S 0.06        /* key off: slow decay (paper fig. 13) */
 #define SILENT_PA 1e-7        /* a voice below this at 1 m is done */
 #define DRY_CHUNK 256
+#define STEAL_LOOK 8          /* voices looked at when all are busy */
 #define BAND_OCTAVES_FACTOR 8.0 /* tables roll off above 8 f_i */
 #define MIN_DISTANCE 0.1      /* m: 1/r is held below this */
 
@@ -176,10 +177,69 @@ static int make_tables(aero_leafwave *lw)
     }
     free(re);
     free(im);
+    /* each table's zero crossings: of the two samples around a sign
+       change, the one nearer zero; notes start there */
+    int total = 0;
+    for (int pass = 0; pass < 2; pass++) {
+        int c = 0;
+        for (int t = 0; t < count; t++) {
+            const float *tab = tables + (size_t)t * (n + 1);
+            if (pass)
+                lw->crossing_start[t] = c;
+            for (int s = 0; s < n; s++) {
+                if ((tab[s] < 0.0f) == (tab[s + 1] < 0.0f))
+                    continue;
+                if (pass)
+                    lw->crossings[c] = fabsf(tab[s]) <= fabsf(tab[s + 1])
+                                           ? s
+                                           : (s + 1) % n;
+                c++;
+            }
+        }
+        if (pass)
+            lw->crossing_start[count] = c;
+        else {
+            total = c;
+            int *cr = malloc(sizeof(int) * (total + 1));
+            int *st = malloc(sizeof(int) * (count + 1));
+            if (!cr || !st) {
+                free(cr);
+                free(st);
+                return -1;
+            }
+            free(lw->crossings);
+            free(lw->crossing_start);
+            lw->crossings = cr;
+            lw->crossing_start = st;
+        }
+    }
     return 0;
 }
 
 /* ---- leaves ------------------------------------------------------------- */
+
+/* sine and cosine on [-pi/2, pi/2] by their Taylor series (errors 1.6e-4
+   and 2.4e-5 at the ends: far below what a leaf's angle means); the leaf
+   angles are limited to that range (a blade does not swing or twist
+   beyond a right angle about its stalk). Three per leaf per frame were a
+   sixth of the cost with libm. */
+static double limit_angle(double x)
+{
+    return x < -1.5707963 ? -1.5707963 : x > 1.5707963 ? 1.5707963 : x;
+}
+
+static double sin_small(double x)
+{
+    double x2 = x * x;
+    return x * (1.0 - x2 / 6.0 * (1.0 - x2 / 20.0 * (1.0 - x2 / 42.0)));
+}
+
+static double cos_small(double x)
+{
+    double x2 = x * x;
+    return 1.0 - x2 / 2.0 * (1.0 - x2 / 12.0 * (1.0 - x2 / 30.0 *
+                                                  (1.0 - x2 / 56.0)));
+}
 
 /* AR(2) resonator x[n] = c1 x[n-1] + c2 x[n-2] + g w[n] at frequency f,
    damping zeta, frame rate fr; g makes x unit-rms for w uniform on [-1,1)
@@ -439,7 +499,10 @@ static void reset_voices(aero_leafwave *lw)
         memset(&lw->voices[v], 0, sizeof(aero_leaf_voice));
         lw->voices[v].pair = -1;
         lw->voices[v].table = -1;
+        lw->free_voices[v] = lw->nvoices - 1 - v;
     }
+    lw->nfree = lw->nvoices;
+    lw->steal_cursor = 0;
     for (int p = 0; p < lw->npairs; p++)
         lw->pairs[p].voice = -1;
 }
@@ -450,21 +513,25 @@ static double voice_level(const aero_leaf_voice *v)
 }
 
 /* a voice for pair p, starting `wait` samples into the next frame at a
-   zero crossing of its table (paper: no pulse at the start); a free one,
-   else the quietest if it is quieter than `level`; -1 if none */
+   zero crossing of its table (paper: no pulse at the start): a free one,
+   else the quietest of the next STEAL_LOOK voices (a rotating cursor: O(1)
+   per key on, where a search of the whole pool cost O(voices)) if it is
+   quieter than `level`; -1 if none */
 static int start_voice(aero_leafwave *lw, int p, int wait, double level)
 {
     int best = -1;
-    double quietest = level;
-    for (int v = 0; v < lw->nvoices; v++) {
-        if (lw->voices[v].table < 0) {
-            best = v;
-            break;
-        }
-        double l = voice_level(&lw->voices[v]);
-        if (l < quietest) {
-            quietest = l;
-            best = v;
+    if (lw->nfree > 0)
+        best = lw->free_voices[--lw->nfree];
+    else {
+        double quietest = level;
+        for (int k = 0; k < STEAL_LOOK; k++) {
+            int c = lw->steal_cursor;
+            lw->steal_cursor = c + 1 == lw->nvoices ? 0 : c + 1;
+            double l = voice_level(&lw->voices[c]);
+            if (l < quietest) {
+                quietest = l;
+                best = c;
+            }
         }
     }
     if (best < 0)
@@ -475,21 +542,18 @@ static int start_voice(aero_leafwave *lw, int p, int wait, double level)
     aero_leaf_pair *pr = &lw->pairs[p];
     int table = lw->leaves[pr->i].table;
     const float *tab = aero_leafwave_table(lw, table);
-    int pos = (int)(aero_xorshift32(&lw->rng) % AERO_LEAF_TABLE_LEN);
-    for (int k = 0; k < AERO_LEAF_TABLE_LEN; k++) {
-        int nx = pos + 1 == AERO_LEAF_TABLE_LEN ? 0 : pos + 1;
-        if ((tab[pos] <= 0.0f && tab[nx] > 0.0f) ||
-            (tab[pos] >= 0.0f && tab[nx] < 0.0f))
-            break;
-        pos = nx;
-    }
+    /* a random one of the table's zero crossings (listed at init) */
+    int first = lw->crossing_start[table];
+    int count = lw->crossing_start[table + 1] - first;
+    int pos = count > 0 ? lw->crossings[first + (int)(aero_xorshift32(&lw->rng) %
+                                                     (uint32_t)count)]
+                        : 0;
+    (void)tab;
     memset(v, 0, sizeof(*v));
     v->pair = p;
     v->table = table;
     v->wait = wait;
-    /* the sample nearer zero of the two around the crossing */
-    int nx = pos + 1 == AERO_LEAF_TABLE_LEN ? 0 : pos + 1;
-    v->pos = fabsf(tab[pos]) <= fabsf(tab[nx]) ? pos : nx;
+    v->pos = pos;
     v->inc = AERO_LEAF_TABLE_RATE / lw->sample_rate;
     v->hit_decay = (float)exp(-1.0 / (HIT_DECAY_S * lw->sample_rate));
     v->rel_decay = (float)exp(-1.0 / (RELEASE_S * lw->sample_rate));
@@ -571,9 +635,10 @@ static void leaf_frame(aero_leafwave *lw, double sway)
         s->ny[0] = (float)ny;
         s->nr[1] = s->nr[0];
         s->nr[0] = (float)nr;
-        double tx = wx * nx, ty = wy * ny;
-        double tr = wr * nr + lw->coupling * tx; /* eqs. 12-13 */
-        double sx = sin(tx), sy = sin(ty), cz = cos(tx) * cos(ty);
+        double tx = limit_angle(wx * nx), ty = limit_angle(wy * ny);
+        double tr = limit_angle(wr * nr + lw->coupling * tx); /* eqs. 12-13 */
+        double sx = sin_small(tx), sy = sin_small(ty);
+        double cz = cos_small(tx) * cos_small(ty);
         double d[3], base[3], u[3], nn[3];
         double bp[3] = {0.0, 0.0, 0.0}, bv[3];
         int bi = lw->tree.leaves[i].branch;
@@ -594,7 +659,7 @@ static void leaf_frame(aero_leafwave *lw, double sway)
             u[k] = s->x[k] - xd * d[k];
         normalize3d(u);
         cross3d(d, u, nn);
-        double cr = cos(tr), sr = sin(tr);
+        double cr = cos_small(tr), sr = sin_small(tr);
         for (int k = 0; k < 3; k++) {
             s->p[k] = (float)(base[k] + s->reach * d[k]);
             s->t[k] = (float)d[k];
@@ -684,9 +749,38 @@ static void leaf_frame(aero_leafwave *lw, double sway)
                 lw->pairs[vo->pair].voice = -1;
             vo->pair = -1;
             vo->table = -1;
+            lw->free_voices[lw->nfree++] = v;
         }
     }
     lw->frames++;
+}
+
+/* samples s..e of one voice, branch-free: the envelopes follow
+   hit = hit * hit_mul + hit_add and rub = rub * rub_mul + rub_add (a
+   linear ramp or an exponential decay); the read position runs on
+   unwrapped and is masked into the table (a power of two) */
+static void play(const float *tab, float *restrict dry, int s, int e,
+                 double *pos, double *inc, double inc_step, float *hit,
+                 float hit_mul, float hit_add, float *rubv, float rub_mul,
+                 float rub_add)
+{
+    double p = *pos, d = *inc;
+    float h = *hit, r = *rubv;
+    for (int k = s; k < e; k++) {
+        long ip = (long)p;
+        float frac = (float)(p - (double)ip);
+        int idx = (int)(ip & (AERO_LEAF_TABLE_LEN - 1));
+        float x = tab[idx] + frac * (tab[idx + 1] - tab[idx]);
+        dry[k] += x * (h + r);
+        p += d;
+        d += inc_step;
+        h = h * hit_mul + hit_add;
+        r = r * rub_mul + rub_add;
+    }
+    *pos = fmod(p, AERO_LEAF_TABLE_LEN);
+    *inc = d;
+    *hit = h;
+    *rubv = r;
 }
 
 /* voices -> dry pressure at 1 m, n samples */
@@ -704,30 +798,20 @@ static void render_voices(aero_leafwave *lw, float *dry, int n)
             s = v->wait < n ? v->wait : n;
             v->wait -= s;
         }
-        double pos = v->pos, inc = v->inc, inc_step = v->inc_step;
+        double pos = v->pos, inc = v->inc;
         float hit = v->hit, rubv = v->rub;
-        for (; s < n; s++) {
-            int idx = (int)pos;
-            float frac = (float)(pos - idx);
-            float x = tab[idx] + frac * (tab[idx + 1] - tab[idx]);
-            dry[s] += x * (hit + rubv);
-            pos += inc;
-            if (pos >= AERO_LEAF_TABLE_LEN)
-                pos -= AERO_LEAF_TABLE_LEN;
-            inc += inc_step;
-            if (v->attack_left > 0) {
-                hit += v->hit_step;
-                v->attack_left--;
-            } else
-                hit *= v->hit_decay;
-            if (v->releasing)
-                rubv *= v->rel_decay;
-            else {
-                rubv += v->rub_step;
-                if (rubv < 0.0f)
-                    rubv = 0.0f;
-            }
+        float rub_mul = v->releasing ? v->rel_decay : 1.0f;
+        float rub_add = v->releasing ? 0.0f : v->rub_step;
+        if (s < n && v->attack_left > 0) {
+            int e = s + v->attack_left < n ? s + v->attack_left : n;
+            v->attack_left -= e - s;
+            play(tab, dry, s, e, &pos, &inc, v->inc_step, &hit, 1.0f,
+                 v->hit_step, &rubv, rub_mul, rub_add);
+            s = e;
         }
+        if (s < n)
+            play(tab, dry, s, n, &pos, &inc, v->inc_step, &hit,
+                 v->hit_decay, 0.0f, &rubv, rub_mul, rub_add);
         /* keep the ramps within their frame's targets */
         if (inc < 0.1 * AERO_LEAF_TABLE_RATE / lw->sample_rate)
             inc = 0.1 * AERO_LEAF_TABLE_RATE / lw->sample_rate;
@@ -796,7 +880,8 @@ int aero_leafwave_init(aero_leafwave *lw, double sample_rate, int n_ears,
     }
     lw->ramp_samples = 0.02 * sample_rate;
     lw->voices = malloc(sizeof(aero_leaf_voice) * lw->nvoices);
-    if (!lw->voices || alloc_line(lw, sample_rate) || make_tables(lw)) {
+    lw->free_voices = malloc(sizeof(int) * lw->nvoices);
+    if (!lw->voices || !lw->free_voices || alloc_line(lw, sample_rate) || make_tables(lw)) {
         aero_leafwave_free(lw);
         return -1;
     }
@@ -821,9 +906,14 @@ void aero_leafwave_free(aero_leafwave *lw)
 {
     aero_leafwave_clear_tree(lw);
     free(lw->voices);
+    free(lw->free_voices);
     free(lw->tables);
+    free(lw->crossings);
+    free(lw->crossing_start);
+    lw->crossings = lw->crossing_start = NULL;
     free(lw->line);
     lw->voices = NULL;
+    lw->free_voices = NULL;
     lw->tables = NULL;
     lw->line = NULL;
     lw->nvoices = 0;
@@ -1091,10 +1181,16 @@ int aero_leafwave_set_voices(aero_leafwave *lw, int n)
     if (n < 1 || n > 65536)
         return -1;
     aero_leaf_voice *v = malloc(sizeof(aero_leaf_voice) * n);
-    if (!v)
+    int *f = malloc(sizeof(int) * n);
+    if (!v || !f) {
+        free(v);
+        free(f);
         return -1;
+    }
     free(lw->voices);
+    free(lw->free_voices);
     lw->voices = v;
+    lw->free_voices = f;
     lw->nvoices = n;
     reset_voices(lw);
     return 0;

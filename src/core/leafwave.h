@@ -134,10 +134,14 @@ typedef struct aero_leafwave {
     int tables_per_octave, octaves, ntables;
     double fm;
     float *tables;       /* ntables x (AERO_LEAF_TABLE_LEN + 1) */
+    int *crossings;      /* zero crossings of every table, in order */
+    int *crossing_start; /* table i's are crossings[start[i]..start[i+1]) */
 
     /* voices */
     int nvoices;
     aero_leaf_voice *voices;
+    int *free_voices, nfree; /* stack of free voice indices */
+    int steal_cursor;
 
     /* parameters */
     double wind[3];      /* from the `wind` message */

@@ -20,6 +20,7 @@ lib.setup.sources = src/pd/aero.c
 datafiles = $(wildcard help/*.pd) $(wildcard abstractions/*.pd) \
     README.md LICENSE
 datadirs = $(if $(wildcard textures/*.wav),textures)
+datadirs += $(if $(wildcard trees/*.tree),trees)
 
 # No -ffast-math: the core relies on NaN checks (x != x) to sanitise input.
 CFLAGS = -Wall -Wextra -Wshadow -O3 -funroll-loops -fomit-frame-pointer

@@ -130,4 +130,6 @@ fi
 for b in bench/texture.sh; do
     [ -f "$b" ] && sh "$b"
 done
+# [treebranch~] on the shipped trees against paper 003's Table I
+sh bench/treebranch.sh
 exit 0

@@ -5,6 +5,7 @@
 
 void aeolian_tilde_setup(void);
 void cavity_tilde_setup(void);
+void treebranch_tilde_setup(void);
 /* [leafwave~] (issue 7) */
 void leafwave_tilde_setup(void);
 
@@ -12,6 +13,7 @@ void aero_setup(void)
 {
     aeolian_tilde_setup();
     cavity_tilde_setup();
+    treebranch_tilde_setup();
     leafwave_tilde_setup(); /* issue 7 */
-    post("aero: aerodynamic sound library loaded ([aeolian~] [cavity~])");
+    post("aero: aerodynamic sound library loaded ([aeolian~] [cavity~] [treebranch~] [leafwave~])");
 }

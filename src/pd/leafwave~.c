@@ -3,14 +3,17 @@
  * Pd wrapper around src/core/leafwave.
  *
  *   [leafwave~ trees/small.tree -stereo -seed 1 -gain 0 ...]
- *   inlet 1 (signal): wind speed added along the wind's direction (+x when
- *                     no `wind` was given), m/s; messages
+ *   inlet 1 (signal or float): wind speed along the wind's direction (+x
+ *                     until a `wind` message), m/s, the block's mean;
+ *                     messages
  *   outlet(s) (signal): sound pressure at the listener (ears), Pa
  */
 #include "aero_pd.h"
 
 #include "leafwave.h"
 #include "aero_util.h"
+
+#include <math.h>
 
 static t_class *leafwave_tilde_class;
 
@@ -21,6 +24,8 @@ typedef struct _leafwave_tilde {
     int x_ok;             /* the core is initialised */
     int x_stereo;
     t_canvas *x_canvas;
+    double x_dir[3];      /* unit wind direction */
+    double x_speed;       /* the last block's speed, m/s */
     int x_clamped, x_warned_clamp;
     t_clock *x_clock;
     t_outlet *x_out[2];
@@ -37,6 +42,19 @@ static void leafwave_tilde_report(t_leafwave_tilde *x)
     }
 }
 
+static void leafwave_tilde_apply_wind(t_leafwave_tilde *x, double speed)
+{
+    if (!(speed == speed) || fabs(speed) > 1e30)
+        speed = 0.0;
+    x->x_speed = speed;
+    if (aero_leafwave_set_wind(&x->x_model, x->x_dir[0] * speed,
+                               x->x_dir[1] * speed, x->x_dir[2] * speed) &&
+        !x->x_clamped) {
+        x->x_clamped = 1;
+        clock_delay(x->x_clock, 0);
+    }
+}
+
 static t_int *leafwave_tilde_perform(t_int *w)
 {
     t_leafwave_tilde *x = (t_leafwave_tilde *)(w[1]);
@@ -48,13 +66,15 @@ static t_int *leafwave_tilde_perform(t_int *w)
             outs[0][i] = outs[1][i] = 0;
         return w + 6;
     }
-    /* the core reads the whole speed block before writing the outputs,
-       so in and out may share a buffer */
-    if (aero_leafwave_process(&x->x_model, speed, outs, n) &&
-        !x->x_clamped) {
-        x->x_clamped = 1;
-        clock_delay(x->x_clock, 0);
-    }
+    /* the wind, as [treebranch~] takes it: the inlet is the speed along
+       the wind's direction, the block's mean; read before writing (in and
+       out may share a buffer) */
+    double sum = 0.0;
+    for (int i = 0; i < n; i++)
+        sum += speed[i];
+    if (n > 0 && sum / n != x->x_speed)
+        leafwave_tilde_apply_wind(x, sum / n);
+    aero_leafwave_process(&x->x_model, NULL, outs, n);
     return w + 6;
 }
 
@@ -79,33 +99,14 @@ static void leafwave_tilde_bad_line(void *ctx, int line, const char *message)
     pd_error(c->x, OBJ ": %s:%d: %s (line skipped)", c->path, line, message);
 }
 
-/* next to the patch or on Pd's path (canvas_open), then aero's trees/ */
-static int leafwave_tilde_find(t_leafwave_tilde *x, const char *name,
-                               char *path, size_t len)
-{
-    char dir[MAXPDSTRING], *base;
-    int fd = canvas_open(x->x_canvas, name, "", dir, &base, MAXPDSTRING, 1);
-    if (fd >= 0) {
-        sys_close(fd);
-        return snprintf(path, len, "%s/%s", dir, base) < (int)len ? 0 : -1;
-    }
-    snprintf(path, len, "%s/trees/%s", class_gethelpdir(leafwave_tilde_class),
-             name);
-    FILE *f = fopen(path, "rb");
-    if (f) {
-        fclose(f);
-        return 0;
-    }
-    return -1;
-}
-
 /* file I/O and the neighbour search here, in the message domain */
 static void leafwave_tilde_open(t_leafwave_tilde *x, t_symbol *name)
 {
     char path[MAXPDSTRING], err[256];
     if (!x->x_ok)
         return;
-    if (leafwave_tilde_find(x, name->s_name, path, sizeof(path))) {
+    if (aero_pd_find_tree(x->x_canvas, leafwave_tilde_class, name->s_name,
+                          path, sizeof(path))) {
         pd_error(x, OBJ ": can't find tree file '%s': silent until 'open'",
                  name->s_name);
         aero_leafwave_clear_tree(&x->x_model);
@@ -208,9 +209,14 @@ static void leafwave_tilde_wind(t_leafwave_tilde *x, t_symbol *s, int argc,
         pd_error(x, OBJ ": wind must be finite");
         return;
     }
-    if (aero_leafwave_set_wind(&x->x_model, v[0], v[1], v[2]))
-        pd_error(x, OBJ ": wind %g %g %g above Mach 0.3: clamped to %g m/s",
-                 v[0], v[1], v[2], 0.3 * 343.0);
+    double speed = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (speed > 0.0)
+        for (int k = 0; k < 3; k++)
+            x->x_dir[k] = v[k] / speed;
+    /* the inlet's float is the speed along the direction (a connected
+       signal overrides it), as in [treebranch~] */
+    x->x_f = (t_float)speed;
+    leafwave_tilde_apply_wind(x, speed);
 }
 
 static void leafwave_tilde_mic(t_leafwave_tilde *x, t_symbol *s, int argc,
@@ -335,6 +341,7 @@ static void *leafwave_tilde_new(t_symbol *s, int argc, t_atom *argv)
     (void)s;
     t_leafwave_tilde *x = (t_leafwave_tilde *)pd_new(leafwave_tilde_class);
     x->x_canvas = canvas_getcurrent();
+    x->x_dir[0] = 1.0; /* +x until a `wind` message */
     /* -stereo decides the outlets, so look for it first */
     for (int i = 0; i < argc; i++)
         if (argv[i].a_type == A_SYMBOL &&

@@ -561,6 +561,58 @@ static void test_bad_input(void)
     aero_leafwave_free(&lw);
 }
 
+/* in step with [treebranch~]: the branch motion inside leafwave is the
+   tree motion of the same tree, seed and wind, whatever the block size
+   (tree_motion steps at a fixed rate): an independent aero_tree_motion
+   advanced in other steps gives the same branch points */
+static void test_in_step(void)
+{
+    aero_leafwave lw;
+    aero_tree t;
+    aero_tree_motion m;
+    make(&lw, 1.0, 123);
+    small_tree(&t, 1.0);
+    aero_tree_motion_init(&m, &t, 123);
+    double wind[3] = {9.0, 3.0, 0.0};
+    aero_leafwave_set_wind(&lw, wind[0], wind[1], wind[2]);
+    aero_tree_motion_set_wind(&m, wind);
+    render(&lw, 1.5, NULL);               /* 64-sample blocks */
+    for (int k = 0; k < 150; k++)         /* 10 ms steps */
+        aero_tree_motion_advance(&m, 0.01);
+    double worst = 0.0, moved = 0.0;
+    for (int i = 0; i < t.nbranches; i++) {
+        double p1[3], v1[3], p2[3], v2[3];
+        aero_tree_motion_point(&lw.motion, i, 1.0, p1, v1);
+        aero_tree_motion_point(&m, i, 1.0, p2, v2);
+        for (int k = 0; k < 3; k++) {
+            worst = fmax(worst, fabs(p1[k] - p2[k]));
+            moved = fmax(moved, fabs(p1[k] - t.branches[i].b[k]));
+        }
+    }
+    UNIT_CHECK(worst < 1e-9 && moved > 1e-3, "same tree, seed and wind: "
+               "branch tips agree within %.2g m (they moved up to %.3g m)",
+               worst, moved);
+    /* negative control: another seed sways otherwise */
+    aero_tree_motion m2;
+    aero_tree_motion_init(&m2, &t, 124);
+    aero_tree_motion_set_wind(&m2, wind);
+    for (int k = 0; k < 150; k++)
+        aero_tree_motion_advance(&m2, 0.01);
+    double other = 0.0;
+    for (int i = 0; i < t.nbranches; i++) {
+        double p1[3], v1[3], p2[3], v2[3];
+        aero_tree_motion_point(&m, i, 1.0, p1, v1);
+        aero_tree_motion_point(&m2, i, 1.0, p2, v2);
+        for (int k = 0; k < 3; k++)
+            other = fmax(other, fabs(p1[k] - p2[k]));
+    }
+    UNIT_CHECK(other > 1e-4, "control: seed 124 differs by %.3g m", other);
+    aero_tree_motion_free(&m);
+    aero_tree_motion_free(&m2);
+    aero_tree_free(&t);
+    aero_leafwave_free(&lw);
+}
+
 int main(void)
 {
     printf("leafwave: wave tables\n");
@@ -572,6 +624,7 @@ int main(void)
     printf("leafwave: wind\n");
     test_wind();
     test_seed();
+    test_in_step();
     test_centroid_follows_size();
     printf("leafwave: neighbours, rendering, bad input\n");
     test_neighbours();

@@ -5,7 +5,8 @@
 # Pentium 4). One Pd in batch mode at 48 kHz renders BENCH_SECONDS (10) of
 # a tree in gusting wind (8 +- 4 m/s from a 10 ms metro into [line~]);
 # the cost is the wall time minus an empty patch with the same driver, the
-# fastest of three runs. Pd runs on one core. Not a test: figures go to
+# fastest of three runs. Pd runs on one core. Also both objects of the
+# tree together ([treebranch~] beside [leafwave~]), the issue's target. Not a test: figures go to
 # BENCHMARKS.md.
 ROOT=$(pwd)
 DIR=build/bench
@@ -41,6 +42,12 @@ leaf_patch() {
             "10 0 11 0"; do
             echo "#X connect $c;"
         done
+        if [ -n "$4" ]; then # a second object beside the first
+            echo "#X obj 400 150 $4;"                               # 12
+            echo "#X obj 400 200 env~ 16384;"                       # 13
+            echo "#X connect 9 0 12 0;"
+            echo "#X connect 12 0 13 0;"
+        fi
     } >"$DIR/$1.pd"
 }
 
@@ -65,17 +72,23 @@ leaf_patch leaf-load "leafwave~ $TREE" 0
 leaf_patch leaf-empty0 "+~ 0" 0
 leaf_patch leaf-256 "leafwave~ $TREE" "$SECONDS_RENDERED"
 leaf_patch leaf-1024 "leafwave~ $TREE -voices 1024" "$SECONDS_RENDERED"
+# the whole tree: [treebranch~] and [leafwave~] in one Pd (one core)
+leaf_patch tree-both "leafwave~ $TREE -seed 1" "$SECONDS_RENDERED" \
+    "treebranch~ $TREE -seed 1"
 te=$(best leaf-empty)
 t0=$(best leaf-empty0)
 tl=$(best leaf-load)
 t256=$(best leaf-256)
 t1024=$(best leaf-1024)
+tboth=$(best tree-both)
 size=$(build/aerotex tree --check "$TREE" 2>/dev/null | tr '\n' ' ')
 awk -v s="$SECONDS_RENDERED" -v e="$te" -v e0="$t0" -v l="$tl" \
-    -v a="$t256" -v b="$t1024" -v r=$RATE -v size="$size" -v tree="$TREE" 'BEGIN {
+    -v a="$t256" -v b="$t1024" -v c="$tboth" -v r=$RATE -v size="$size" -v tree="$TREE" 'BEGIN {
     printf "[leafwave~] on the paper'"'"'s large tree (%s: %s), %d s at %d Hz, Pd batch mode, one core\n", tree, size, s, r
     printf "  load (tree file, leaf frames, neighbour lists, 48 wave tables): %.3f s\n", l - e0
     fa = (a - e) / s; fb = (b - e) / s
     printf "  256 voices (default): %.3f s per second of sound, real-time factor %.2f (paper: 645.5 s, %.0fx faster)\n", fa, fa, 645.524 / fa
     printf "  1024 voices:          %.3f s per second of sound, real-time factor %.2f (paper: 645.5 s, %.0fx faster)\n", fb, fb, 645.524 / fb
+    fc = (c - e) / s
+    printf "  [treebranch~] + [leafwave~] in one Pd: %.3f s per second of sound, real-time factor %.2f (paper: 578.2 + 645.5 s)\n", fc, fc
 }' | tee "$DIR/leafwave.txt"

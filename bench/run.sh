@@ -132,4 +132,6 @@ for b in bench/texture.sh; do
 done
 # [treebranch~] on the shipped trees against paper 003's Table I
 sh bench/treebranch.sh
+# [leafwave~] on the paper's large tree, and both tree objects together
+sh bench/leafwave.sh
 exit 0

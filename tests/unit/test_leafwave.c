@@ -314,6 +314,43 @@ static void test_wind(void)
     aero_leafwave_free(&b);
 }
 
+/* friction plays the table at a speed set by the sliding speed: in more
+   wind the blades in contact slide faster, so the contact voices' mean
+   playback rate rises (a collision plays at rate 1) */
+static double mean_contact_rate(double wind)
+{
+    aero_leafwave lw;
+    make(&lw, 1.0, 13);
+    aero_leafwave_set_wind(&lw, wind, 0.0, 0.0);
+    float buf[480];
+    float *outs[1] = {buf};
+    double sum = 0.0;
+    long n = 0;
+    for (int f = 0; f < 300; f++) {
+        aero_leafwave_process(&lw, NULL, outs, (int)lw.frame_samples);
+        for (int v = 0; v < lw.nvoices; v++) {
+            const aero_leaf_voice *vo = &lw.voices[v];
+            if (vo->table < 0 || vo->pair < 0 ||
+                lw.pairs[vo->pair].state != AERO_PAIR_CONTACT)
+                continue;
+            /* the rate this voice reaches at the end of the frame */
+            sum += (vo->inc + vo->inc_step * lw.frame_samples) * SR /
+                   AERO_LEAF_TABLE_RATE;
+            n++;
+        }
+    }
+    aero_leafwave_free(&lw);
+    return n ? sum / n : 0.0;
+}
+
+static void test_friction_rate(void)
+{
+    double slow = mean_contact_rate(3.0), fast = mean_contact_rate(12.0);
+    UNIT_CHECK(fast > 1.2 * slow && slow >= 0.25 && fast <= 2.0,
+               "friction playback rate follows the sliding speed: %.3f x at "
+               "3 m/s, %.3f x at 12 m/s (clamped to 0.25..2)", slow, fast);
+}
+
 /* determinism: the same seed gives the same samples, another seed not */
 static void test_seed(void)
 {
@@ -623,6 +660,7 @@ int main(void)
     test_collision_onset();
     printf("leafwave: wind\n");
     test_wind();
+    test_friction_rate();
     test_seed();
     test_in_step();
     test_centroid_follows_size();

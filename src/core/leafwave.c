@@ -616,10 +616,57 @@ static void key_off(aero_leafwave *lw, aero_leaf_pair *pr)
 
 /* ---- one leaf frame ------------------------------------------------------- */
 
+/* each branch's rotation now: the smallest rotation taking its rest axis
+   to its moved axis (from the moved end points; the twist about the axis
+   is not in the motion's interface). Leaves turn with it. */
+static void branch_rotations(aero_leafwave *lw)
+{
+    const aero_tree *t = &lw->tree;
+    for (int b = 0; b < t->nbranches; b++) {
+        double *r = lw->branch_rot + 9 * b;
+        double pa[3], pb[3], v[3], rest[3], now[3], axis[3];
+        aero_tree_motion_point(&lw->motion, b, 0.0, pa, v);
+        aero_tree_motion_point(&lw->motion, b, 1.0, pb, v);
+        for (int k = 0; k < 3; k++) {
+            rest[k] = t->branches[b].b[k] - t->branches[b].a[k];
+            now[k] = pb[k] - pa[k];
+        }
+        normalize3d(rest);
+        normalize3d(now);
+        cross3d(rest, now, axis);
+        double sn = normalize3d(axis), cs = dot3d(rest, now);
+        if (!(sn > 1e-12)) {
+            for (int k = 0; k < 9; k++)
+                r[k] = k % 4 == 0 ? 1.0 : 0.0;
+            continue;
+        }
+        /* Rodrigues: R = c I + s [a]x + (1 - c) a a^T */
+        double c1 = 1.0 - cs;
+        r[0] = cs + c1 * axis[0] * axis[0];
+        r[1] = c1 * axis[0] * axis[1] - sn * axis[2];
+        r[2] = c1 * axis[0] * axis[2] + sn * axis[1];
+        r[3] = c1 * axis[1] * axis[0] + sn * axis[2];
+        r[4] = cs + c1 * axis[1] * axis[1];
+        r[5] = c1 * axis[1] * axis[2] - sn * axis[0];
+        r[6] = c1 * axis[2] * axis[0] - sn * axis[1];
+        r[7] = c1 * axis[2] * axis[1] + sn * axis[0];
+        r[8] = cs + c1 * axis[2] * axis[2];
+    }
+}
+
+static void rotate(const double *r, const double v[3], double out[3])
+{
+    out[0] = r[0] * v[0] + r[1] * v[1] + r[2] * v[2];
+    out[1] = r[3] * v[0] + r[4] * v[1] + r[5] * v[2];
+    out[2] = r[6] * v[0] + r[7] * v[1] + r[8] * v[2];
+}
+
 static void leaf_frame(aero_leafwave *lw, double sway)
 {
     const aero_tree_motion *m = &lw->motion;
     double wx = sway, wy = SWAY_Y * sway, wr = SWAY_R * sway;
+    if (lw->has_motion)
+        branch_rotations(lw);
     for (int i = 0; i < lw->nleaves; i++) {
         aero_leaf_state *s = &lw->leaves[i];
         const double *c = lw->flutter_coef[s->flutter_class];
@@ -639,7 +686,7 @@ static void leaf_frame(aero_leafwave *lw, double sway)
         double tr = limit_angle(wr * nr + lw->coupling * tx); /* eqs. 12-13 */
         double sx = sin_small(tx), sy = sin_small(ty);
         double cz = cos_small(tx) * cos_small(ty);
-        double d[3], base[3], u[3], nn[3];
+        double d[3], base[3], u[3], nn[3], local[3], off[3], xr[3];
         double bp[3] = {0.0, 0.0, 0.0}, bv[3];
         int bi = lw->tree.leaves[i].branch;
         if (lw->has_motion)
@@ -648,15 +695,33 @@ static void leaf_frame(aero_leafwave *lw, double sway)
             for (int k = 0; k < 3; k++)
                 bp[k] = s->branch_rest[k];
         for (int k = 0; k < 3; k++) {
-            d[k] = s->z[k] * cz + s->x[k] * sx + s->y[k] * sy;
-            base[k] = s->base[k] + (bp[k] - s->branch_rest[k]);
+            local[k] = s->z[k] * cz + s->x[k] * sx + s->y[k] * sy;
+            off[k] = (double)s->base[k] - s->branch_rest[k];
+            xr[k] = s->x[k];
         }
-        normalize3d(d);
-        /* blade frame: along d, across = the rest x made perpendicular to
-           d, normal = d x across, then the torsion about d */
-        double xd = s->x[0] * d[0] + s->x[1] * d[1] + s->x[2] * d[2];
+        /* the leaf's own swing, turned with its branch, from the branch
+           point it rides on */
+        if (lw->has_motion) {
+            const double *r = lw->branch_rot + 9 * bi;
+            double tmp[3];
+            rotate(r, local, d);
+            rotate(r, off, tmp);
+            for (int k = 0; k < 3; k++)
+                off[k] = tmp[k];
+            rotate(r, xr, tmp);
+            for (int k = 0; k < 3; k++)
+                xr[k] = tmp[k];
+        } else
+            for (int k = 0; k < 3; k++)
+                d[k] = local[k];
         for (int k = 0; k < 3; k++)
-            u[k] = s->x[k] - xd * d[k];
+            base[k] = bp[k] + off[k];
+        normalize3d(d);
+        /* blade frame: along d, across = the (turned) rest x made
+           perpendicular to d, normal = d x across, then the torsion */
+        double xd = xr[0] * d[0] + xr[1] * d[1] + xr[2] * d[2];
+        for (int k = 0; k < 3; k++)
+            u[k] = xr[k] - xd * d[k];
         normalize3d(u);
         cross3d(d, u, nn);
         double cr = cos_small(tr), sr = sin_small(tr);
@@ -911,6 +976,8 @@ void aero_leafwave_free(aero_leafwave *lw)
     free(lw->crossings);
     free(lw->crossing_start);
     lw->crossings = lw->crossing_start = NULL;
+    free(lw->branch_rot);
+    lw->branch_rot = NULL;
     free(lw->line);
     lw->voices = NULL;
     lw->free_voices = NULL;
@@ -933,7 +1000,10 @@ static int restart(aero_leafwave *lw, char *err, size_t errlen)
     reset_voices(lw);
     if (!lw->has_tree)
         return 0;
-    if (aero_tree_motion_init(&lw->motion, &lw->tree, lw->seed) == 0) {
+    free(lw->branch_rot);
+    lw->branch_rot = malloc(sizeof(double) * 9 * lw->tree.nbranches);
+    if (lw->branch_rot &&
+        aero_tree_motion_init(&lw->motion, &lw->tree, lw->seed) == 0) {
         lw->has_motion = 1;
         aero_tree_motion_set_stiffness(&lw->motion, lw->stiffness);
         aero_tree_motion_set_beta(&lw->motion, lw->beta);

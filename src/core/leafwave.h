@@ -12,7 +12,9 @@
  * at the leaf frame rate. The amplitudes follow the wind's drag load,
  * W ~ sway * tanh((U/U0)^2 / stiffness): no wind, no motion. The stalk
  * base rides on the branch: it moves with aero_tree_motion_point() at the
- * leaf's `along` fraction, so the leaves follow the branch motion of
+ * leaf's `along` fraction, and the leaf turns with the branch (the
+ * smallest rotation from the branch's rest axis to its moved axis), so
+ * the leaves follow the branch motion of
  * [treebranch~] exactly when both load the same tree with the same seed
  * and wind (tree_motion.h is deterministic in time).
  *
@@ -123,6 +125,7 @@ typedef struct aero_leafwave {
     int has_tree;
     aero_tree_motion motion;
     int has_motion;
+    double *branch_rot;  /* per branch, its rotation now (row-major 3x3) */
 
     int nleaves, npairs;
     aero_leaf_state *leaves;

@@ -439,8 +439,8 @@ static double uniform01(uint32_t *rng)
    at 30..60 deg, spread around the axis by the golden angle; each child is
    0.72..0.82 as long as its parent; diameters follow the pipe model
    (Leonardo's rule: the squared diameters of the children add up to the
-   parent's squared end diameter) and taper by 0.85 along each internode. */
-#define GEN_TAPER 0.85
+   parent's squared end diameter) and taper by 0.92 along each internode. */
+#define GEN_TAPER 0.92
 #define GEN_GOLDEN 2.39996322972865332 /* rad, pi (3 - sqrt 5) */
 
 int aero_tree_generate(aero_tree *t, const aero_tree_shape *shape)

@@ -11,9 +11,10 @@
  * is the equilibrium of a damped spring
  *   theta'' = omega^2 (P / k - theta) - 2 zeta omega theta',
  * with the cantilever's flexibility 1/k = l^2 / (2 E I) (tip rotation under
- * a tip load) and omega^2 = 3 E I / (l^3 M) (tip stiffness over the mass it
- * carries), so branches sway at their own rate instead of following the
- * noise instantly. Deflections are soft-limited to 0.5 rad (tanh), since a
+ * a tip load) and omega^2 = (E I / l) / J (the rotational spring of a
+ * cantilever over the inertia J of everything it carries about its start;
+ * 3 E I / (m l^3) for a bare rod), so branches sway at their own rate
+ * instead of following the noise instantly. Deflections are soft-limited to 0.3 rad (tanh), since a
  * real crown reconfigures (streamlines) instead of bending further.
  * Rotation vectors are accumulated from the root (Fig. 6) and every branch
  * is moved rigidly by its accumulated rotation about its own start point,
@@ -32,10 +33,14 @@
 #define WOOD_RHO 800.0         /* kg/m^3, green wood */
 #define LEAF_MASS_AREA 0.2     /* kg/m^2, fresh leaf blade with stalk */
 #define CD_BRANCH 1.2          /* drag coefficient of a cylinder, Re 1e3-1e5 */
-#define CD_LEAF 0.5            /* a leaf reconfigures in the wind */
+#define CD_LEAF 0.5            /* a flat leaf broadside, at low speed */
+/* Above ~3 m/s broad leaves roll up and streamline: their drag grows about
+   as U instead of U^2 (Vogel 1989, "Drag and reconfiguration of broad
+   leaves in high winds", Vogel number ~ -1) */
+#define LEAF_RECONFIGURE_SPEED 3.0
 #define GUST_INTENSITY 0.3     /* rms load fluctuation / mean load */
 #define DAMPING 0.15           /* zeta: structural + aerodynamic damping */
-#define MAX_ANGLE 0.5          /* rad, soft limit of a branch's deflection */
+#define MAX_ANGLE 0.3          /* rad, soft limit of a branch's deflection */
 #define OMEGA_MIN (2.0 * AERO_PI * 0.2) /* rad/s, slowest sway */
 
 typedef struct {
@@ -168,6 +173,8 @@ static void motion_step(aero_tree_motion *m)
     const double *u = m->wind;
     double speed2 = dot3(u, u), speed = sqrt(speed2);
     double sqrt_stiff = sqrt(m->stiffness);
+    double cd_leaf = speed > LEAF_RECONFIGURE_SPEED
+        ? CD_LEAF * LEAF_RECONFIGURE_SPEED / speed : CD_LEAF;
     int i, j, k;
 
     /* own loads: mean drag plus noise (eqs. 3-4) */
@@ -181,7 +188,7 @@ static void motion_step(aero_tree_motion *m)
         q = 0.5 * AERO_RHO;
         for (k = 0; k < 3; k++)
             f[k] = q * (CD_BRANCH * mb->area_branch * nperp * uperp[k]
-                        + CD_LEAF * mb->area_leaf * speed * u[k]);
+                        + cd_leaf * mb->area_leaf * speed * u[k]);
         for (j = 0; j < NOISE_POLES; j++) {
             double w0 = 1.7320508075688772 * aero_uniform(&mb->rng);
             double w1 = 1.7320508075688772 * aero_uniform(&mb->rng);
@@ -193,7 +200,7 @@ static void motion_step(aero_tree_motion *m)
             ny += st->weight[j] * mb->noise[1][j];
         }
         pb = GUST_INTENSITY * q
-            * (CD_BRANCH * mb->area_branch + CD_LEAF * mb->area_leaf) * speed2;
+            * (CD_BRANCH * mb->area_branch + cd_leaf * mb->area_leaf) * speed2;
         for (k = 0; k < 3; k++)
             f[k] += pb * (nx * mb->x[k] + ny * mb->y[k]);
     }
@@ -239,7 +246,7 @@ int aero_tree_motion_init(aero_tree_motion *m, const aero_tree *t,
 {
     aero_tree_motion_state *st;
     int n = t ? t->nbranches : 0, i, j, k;
-    double *mass;
+    double *mass, *inertia;
     memset(m, 0, sizeof *m);
     m->tree = t;
     m->stiffness = 1.0;
@@ -300,8 +307,8 @@ int aero_tree_motion_init(aero_tree_motion *m, const aero_tree *t,
         mass[i] += WOOD_RHO * AERO_PI * len
             * (b->d0 * b->d0 + b->d0 * b->d1 + b->d1 * b->d1) / 12.0;
         {
-            double inertia = AERO_PI * pow(b->d0, 4.0) / 64.0; /* I, m^4 */
-            mb->flex = len * len / (2.0 * WOOD_E * inertia);
+            double area_moment = AERO_PI * pow(b->d0, 4.0) / 64.0; /* m^4 */
+            mb->flex = len * len / (2.0 * WOOD_E * area_moment);
         }
         /* per-branch random stream from (seed, index) */
         rng = (seed * 2654435761u) ^ ((uint32_t)(i + 1) * 0x85ebca6bu);
@@ -323,20 +330,45 @@ int aero_tree_motion_init(aero_tree_motion *m, const aero_tree *t,
             mass[bi] += LEAF_MASS_AREA * area;
         }
     }
-    for (i = n - 1; i > 0; i--)
-        if (t->branches[i].parent >= 0)
-            mass[t->branches[i].parent] += mass[i];
+    /* rotational inertia of everything a branch carries about its start:
+       own mass as a rod about its end, m l^2 / 3, and each descendant's
+       mass at its midpoint, m |c - a|^2 */
+    inertia = calloc((size_t)n, sizeof(double));
+    if (!inertia) {
+        free(mass);
+        aero_tree_motion_free(m);
+        return -1;
+    }
+    for (j = 0; j < n; j++) {
+        const aero_branch *b = &t->branches[j];
+        double c[3], l2 = 0.0;
+        for (k = 0; k < 3; k++) {
+            c[k] = 0.5 * (b->a[k] + b->b[k]);
+            l2 += (b->b[k] - b->a[k]) * (b->b[k] - b->a[k]);
+        }
+        inertia[j] += mass[j] * l2 / 3.0;
+        for (i = b->parent; i >= 0; i = t->branches[i].parent) {
+            const double *a = t->branches[i].a;
+            double r2 = (c[0] - a[0]) * (c[0] - a[0])
+                + (c[1] - a[1]) * (c[1] - a[1])
+                + (c[2] - a[2]) * (c[2] - a[2]);
+            inertia[i] += mass[j] * r2;
+        }
+    }
     for (i = 0; i < n; i++) {
         const aero_branch *b = &t->branches[i];
         double len = sqrt((b->b[0] - b->a[0]) * (b->b[0] - b->a[0])
                           + (b->b[1] - b->a[1]) * (b->b[1] - b->a[1])
                           + (b->b[2] - b->a[2]) * (b->b[2] - b->a[2]));
         double ei = WOOD_E * AERO_PI * pow(b->d0, 4.0) / 64.0;
-        double omega = sqrt(3.0 * ei / (len * len * len * mass[i]));
+        /* rotational spring of a cantilever bent by a tip moment,
+           E I / l, over the inertia it swings */
+        double omega = sqrt(ei / (len * inertia[i]));
         if (!(omega > OMEGA_MIN))
             omega = OMEGA_MIN;
         st->br[i].omega = omega;
     }
+    free(inertia);
     free(mass);
     place_branches(m, 0);
     place_branches(m, 1); /* the tree stands still until wind arrives */

@@ -92,3 +92,22 @@ awk -v s="$SECONDS_RENDERED" -v e="$te" -v e0="$t0" -v l="$tl" \
     fc = (c - e) / s
     printf "  [treebranch~] + [leafwave~] in one Pd: %.3f s per second of sound, real-time factor %.2f (paper: 578.2 + 645.5 s)\n", fc, fc
 }' | tee "$DIR/leafwave.txt"
+
+# Instruction counts (callgrind) of 1 s of sound, minus the empty patch:
+# unlike wall time they do not move with the machine's load (the tree's
+# load is included: it happens once)
+if command -v valgrind >/dev/null 2>&1; then
+    count_ir() {
+        valgrind --tool=callgrind --callgrind-out-file="$DIR/$1.callgrind" \
+            pd -batch -nogui -noaudio -noprefs -stderr -nostdpath -r $RATE \
+            -path "$ROOT" -open "$DIR/$1.pd" >/dev/null 2>&1
+        sed -n 's/^summary: //p' "$DIR/$1.callgrind"
+    }
+    leaf_patch leaf-ir-empty "+~ 0" 1
+    leaf_patch leaf-ir "leafwave~ $TREE" 1
+    ie=$(count_ir leaf-ir-empty)
+    il=$(count_ir leaf-ir)
+    awk -v e="$ie" -v l="$il" 'BEGIN {
+        printf "  instructions (callgrind) for 1 s of sound, loading included: %.3g\n", l - e }' |
+        tee -a "$DIR/leafwave.txt"
+fi

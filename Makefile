@@ -20,11 +20,12 @@ lib.setup.sources = src/pd/aero.c
 datafiles = $(wildcard help/*.pd) $(wildcard abstractions/*.pd) \
     README.md LICENSE
 datadirs = $(if $(wildcard textures/*.wav),textures)
+datadirs += $(if $(wildcard trees/*.tree),trees)
 
 # No -ffast-math: the core relies on NaN checks (x != x) to sanitise input.
 CFLAGS = -Wall -Wextra -Wshadow -O3 -funroll-loops -fomit-frame-pointer
 cflags = -std=c99 -D_POSIX_C_SOURCE=200809L -Isrc/core
-ldlibs = build/libaero_core.a -lsndfile -lm
+ldlibs = build/libaero_core.a -lsndfile -lfftw3f -lm
 
 PDLIBBUILDER_DIR ?= $(if $(wildcard pd-lib-builder/Makefile.pdlibbuilder),\
     pd-lib-builder,/usr/share/pd-lib-builder)

@@ -135,4 +135,8 @@ fi
 for b in bench/texture.sh; do
     [ -f "$b" ] && sh "$b"
 done
+# [treebranch~] on the shipped trees against paper 003's Table I
+sh bench/treebranch.sh
+# [leafwave~] on the paper's large tree, and both tree objects together
+sh bench/leafwave.sh
 exit 0

@@ -98,4 +98,28 @@ static inline int aero_pd_find_texture(const t_canvas *canvas,
     return -1;
 }
 
+/* Finds a tree file (.tree) the same way: next to the patch and on Pd's
+ * search path, then in the library's own trees/ folder ([treebranch~],
+ * [leafwave~]). Writes the full path; 0 when found. */
+static inline int aero_pd_find_tree(const t_canvas *canvas,
+                                    const t_class *cls, const char *name,
+                                    char *path, size_t len)
+{
+    char dir[MAXPDSTRING], *base;
+    size_t n = strlen(name);
+    const char *ext = n > 5 && !strcmp(name + n - 5, ".tree") ? "" : ".tree";
+    int fd = canvas_open(canvas, name, ext, dir, &base, MAXPDSTRING, 1);
+    if (fd >= 0) {
+        sys_close(fd);
+        return snprintf(path, len, "%s/%s", dir, base) < (int)len ? 0 : -1;
+    }
+    snprintf(path, len, "%s/trees/%s%s", class_gethelpdir(cls), name, ext);
+    FILE *f = fopen(path, "rb");
+    if (f) {
+        fclose(f);
+        return 0;
+    }
+    return -1;
+}
+
 #endif

@@ -57,6 +57,15 @@ static void usage(FILE *f)
 "  aerotex info FILE.wav\n"
 "      prints a texture's metadata and flow statistics\n"
 "\n"
+"  aerotex tree -o FILE.tree [--depth N] [--leaves N] [--seed N]\n"
+"      a tree for [treebranch~] and [leafwave~]: a vertical trunk forking\n"
+"      2-4 ways for N levels (depth 6: ~1160 branches), leaves spread over\n"
+"      the outermost branches. Also --height <m> (trunk, default 2),\n"
+"      --diameter <m> (trunk, default 0.2), --leaf-length <m> (0.08),\n"
+"      --leaf-width <m> (0.05); defaults depth 4, 2000 leaves, seed 1\n"
+"  aerotex tree --check FILE.tree\n"
+"      reads a tree, reports bad lines with their numbers, prints its size\n"
+"\n"
 "  aerotex help\n"
 "      this text\n");
 }
@@ -106,6 +115,8 @@ int main(int argc, char **argv)
         return aerotex_aeolian(argc - 1, argv + 1, 1);
     if (!strcmp(argv[1], "info"))
         return aerotex_info(argc - 1, argv + 1);
+    if (!strcmp(argv[1], "tree"))
+        return aerotex_tree(argc - 1, argv + 1);
     aerotex_error("unknown command '%s' (try 'aerotex help')", argv[1]);
     return 2;
 }

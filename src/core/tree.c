@@ -1,0 +1,550 @@
+/* aero: .tree files (parser, writer) and the tree generator of
+ * `aerotex tree` (see tree.h). */
+#include "tree.h"
+#include "aero_air.h"
+#include "aero_util.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define TREE_MAX_FIELDS 12
+#define TREE_MAX_FILE (256L * 1024 * 1024) /* refuse absurd files */
+
+static void set_err(char *err, size_t errlen, const char *msg, const char *arg)
+{
+    if (err && errlen)
+        snprintf(err, errlen, msg, arg ? arg : "");
+}
+
+/* ---- growing arrays ---------------------------------------------------- */
+
+static int grow(void **p, int *cap, int need, size_t elem)
+{
+    void *q;
+    int n = *cap;
+    if (need <= n)
+        return 0;
+    while (n < need)
+        n = n ? 2 * n : 64;
+    q = realloc(*p, (size_t)n * elem);
+    if (!q)
+        return -1;
+    *p = q;
+    *cap = n;
+    return 0;
+}
+
+/* index of the branch with this id, or -1. Ids written by aerotex are the
+   indices themselves, so that is tried first; otherwise a linear search
+   (load time only). */
+static int find_branch(const aero_tree *t, long id)
+{
+    int i;
+    if (id >= 0 && id < t->nbranches && t->branches[id].id == id)
+        return (int)id;
+    for (i = 0; i < t->nbranches; i++)
+        if (t->branches[i].id == id)
+            return i;
+    return -1;
+}
+
+/* ---- parsing ------------------------------------------------------------ */
+
+static int parse_double(const char *s, double *v)
+{
+    char *end;
+    errno = 0;
+    *v = strtod(s, &end);
+    return end != s && *end == '\0' && aero_is_finite(*v) && errno != ERANGE
+        ? 0 : -1;
+}
+
+static int parse_long(const char *s, long *v)
+{
+    char *end;
+    errno = 0;
+    *v = strtol(s, &end, 10);
+    return end != s && *end == '\0' && errno != ERANGE ? 0 : -1;
+}
+
+static void report_line(aero_tree_report report, void *ctx, int line,
+                        const char *fmt, const char *arg)
+{
+    char msg[256];
+    if (!report)
+        return;
+    snprintf(msg, sizeof msg, fmt, arg);
+    report(ctx, line, msg);
+}
+
+static double dist3(const double p[3], const double q[3])
+{
+    double dx = p[0] - q[0], dy = p[1] - q[1], dz = p[2] - q[2];
+    return sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+/* fraction 0..1 of segment a-b where p projects */
+static double project_along(const double a[3], const double b[3],
+                            const double p[3])
+{
+    double ab[3], ap[3], l2 = 0.0, dot = 0.0, u;
+    int k;
+    for (k = 0; k < 3; k++) {
+        ab[k] = b[k] - a[k];
+        ap[k] = p[k] - a[k];
+        l2 += ab[k] * ab[k];
+        dot += ab[k] * ap[k];
+    }
+    u = l2 > 0.0 ? dot / l2 : 0.0;
+    return u < 0.0 ? 0.0 : u > 1.0 ? 1.0 : u;
+}
+
+typedef struct {
+    aero_tree *t;
+    int bcap, lcap;
+    aero_tree_report report;
+    void *ctx;
+} parser;
+
+/* one record; 0 accepted, -1 reported and skipped, -2 out of memory */
+static int parse_record(parser *p, int line, char **f, int nf)
+{
+    aero_tree *t = p->t;
+    double v[8];
+    long id, ref;
+    int k;
+    if (strcmp(f[0], "branch") == 0) {
+        aero_branch *b;
+        int parent = -1;
+        if (nf != 11) {
+            report_line(p->report, p->ctx, line,
+                        "branch needs 10 numbers (id parent ax ay az bx by bz "
+                        "d0 d1)%s", "");
+            return -1;
+        }
+        if (parse_long(f[1], &id) || id < 0 || id > 2147483647L) {
+            report_line(p->report, p->ctx, line,
+                        "bad branch id '%s' (a non-negative integer)", f[1]);
+            return -1;
+        }
+        if (parse_long(f[2], &ref) || ref < -1 || ref > 2147483647L) {
+            report_line(p->report, p->ctx, line,
+                        "bad parent '%s' (an earlier branch id, or -1)", f[2]);
+            return -1;
+        }
+        for (k = 0; k < 8; k++)
+            if (parse_double(f[3 + k], &v[k])) {
+                report_line(p->report, p->ctx, line,
+                            "'%s' is not a finite number", f[3 + k]);
+                return -1;
+            }
+        if (!(v[6] > 0.0) || !(v[7] > 0.0)) {
+            report_line(p->report, p->ctx, line,
+                        "branch diameters must be positive%s", "");
+            return -1;
+        }
+        if (!(dist3(v, v + 3) > 0.0)) {
+            report_line(p->report, p->ctx, line,
+                        "branch has zero length (start = end)%s", "");
+            return -1;
+        }
+        if (find_branch(t, id) >= 0) {
+            report_line(p->report, p->ctx, line, "branch id %s used twice",
+                        f[1]);
+            return -1;
+        }
+        if (ref >= 0 && (parent = find_branch(t, ref)) < 0) {
+            report_line(p->report, p->ctx, line,
+                        "parent %s is not an earlier branch", f[2]);
+            return -1;
+        }
+        if (grow((void **)&t->branches, &p->bcap, t->nbranches + 1,
+                 sizeof *t->branches))
+            return -2;
+        b = &t->branches[t->nbranches++];
+        b->id = (int)id;
+        b->parent = parent;
+        for (k = 0; k < 3; k++) {
+            b->a[k] = v[k];
+            b->b[k] = v[3 + k];
+        }
+        b->d0 = v[6];
+        b->d1 = v[7];
+        return 0;
+    }
+    if (strcmp(f[0], "leaf") == 0) {
+        aero_leaf *l;
+        int bi;
+        if (nf != 10) {
+            report_line(p->report, p->ctx, line,
+                        "leaf needs 9 numbers (branch sx sy sz ex ey ez length "
+                        "width)%s", "");
+            return -1;
+        }
+        if (parse_long(f[1], &ref) || ref < 0 || ref > 2147483647L
+            || (bi = find_branch(t, ref)) < 0) {
+            report_line(p->report, p->ctx, line,
+                        "leaf on unknown branch '%s' (a branch id given above)",
+                        f[1]);
+            return -1;
+        }
+        for (k = 0; k < 8; k++)
+            if (parse_double(f[2 + k], &v[k])) {
+                report_line(p->report, p->ctx, line,
+                            "'%s' is not a finite number", f[2 + k]);
+                return -1;
+            }
+        if (!(v[6] > 0.0) || !(v[7] > 0.0)) {
+            report_line(p->report, p->ctx, line,
+                        "leaf length and width must be positive%s", "");
+            return -1;
+        }
+        if (!(dist3(v, v + 3) > 0.0)) {
+            report_line(p->report, p->ctx, line,
+                        "leaf stalk has zero length (start = end)%s", "");
+            return -1;
+        }
+        if (grow((void **)&t->leaves, &p->lcap, t->nleaves + 1,
+                 sizeof *t->leaves))
+            return -2;
+        l = &t->leaves[t->nleaves++];
+        l->branch = bi;
+        for (k = 0; k < 3; k++) {
+            l->s[k] = v[k];
+            l->e[k] = v[3 + k];
+        }
+        l->length = v[6];
+        l->width = v[7];
+        l->along = project_along(t->branches[bi].a, t->branches[bi].b, l->s);
+        return 0;
+    }
+    report_line(p->report, p->ctx, line,
+                "unknown record '%s' (branch or leaf)", f[0]);
+    return -1;
+}
+
+int aero_tree_parse(const char *text, aero_tree *t, aero_tree_report report,
+                    void *ctx, char *err, size_t errlen)
+{
+    parser p;
+    char linebuf[1024];
+    const char *s = text ? text : "";
+    int line = 0;
+    memset(t, 0, sizeof *t);
+    memset(&p, 0, sizeof p);
+    p.t = t;
+    p.report = report;
+    p.ctx = ctx;
+    while (*s) {
+        const char *eol = s;
+        size_t len;
+        char *f[TREE_MAX_FIELDS + 1], *c, *hash;
+        int nf = 0, toolong = 0;
+        while (*eol && *eol != '\n')
+            eol++;
+        line++;
+        len = (size_t)(eol - s);
+        if (len >= sizeof linebuf) {
+            toolong = 1;
+            len = sizeof linebuf - 1;
+        }
+        memcpy(linebuf, s, len);
+        linebuf[len] = '\0';
+        s = *eol ? eol + 1 : eol;
+        if ((hash = strchr(linebuf, '#')))
+            *hash = '\0';
+        for (c = linebuf; *c;) {
+            while (*c == ' ' || *c == '\t' || *c == '\r')
+                *c++ = '\0';
+            if (!*c)
+                break;
+            if (nf <= TREE_MAX_FIELDS)
+                f[nf++] = c;
+            while (*c && *c != ' ' && *c != '\t' && *c != '\r')
+                c++;
+        }
+        if (nf == 0 && !toolong)
+            continue;
+        if (toolong) {
+            report_line(report, ctx, line, "line longer than %s characters",
+                        "1023");
+            continue;
+        }
+        if (nf > TREE_MAX_FIELDS) {
+            report_line(report, ctx, line, "too many fields%s", "");
+            continue;
+        }
+        if (parse_record(&p, line, f, nf) == -2) {
+            aero_tree_free(t);
+            set_err(err, errlen, "out of memory%s", NULL);
+            return -1;
+        }
+    }
+    if (t->nbranches == 0) {
+        aero_tree_free(t);
+        set_err(err, errlen, "no valid branch in the tree%s", NULL);
+        return -1;
+    }
+    return 0;
+}
+
+int aero_tree_load(const char *path, aero_tree *t, aero_tree_report report,
+                   void *ctx, char *err, size_t errlen)
+{
+    FILE *fp;
+    char *text;
+    long size;
+    size_t got;
+    int r;
+    memset(t, 0, sizeof *t);
+    fp = fopen(path, "rb");
+    if (!fp) {
+        if (err && errlen)
+            snprintf(err, errlen, "can't open tree %s: %s", path,
+                     strerror(errno));
+        return -1;
+    }
+    if (fseek(fp, 0, SEEK_END) || (size = ftell(fp)) < 0
+        || size > TREE_MAX_FILE || fseek(fp, 0, SEEK_SET)) {
+        fclose(fp);
+        set_err(err, errlen, "can't read tree %s (not a regular file, or "
+                "too large)", path);
+        return -1;
+    }
+    text = malloc((size_t)size + 1);
+    if (!text) {
+        fclose(fp);
+        set_err(err, errlen, "out of memory reading %s", path);
+        return -1;
+    }
+    got = fread(text, 1, (size_t)size, fp);
+    fclose(fp);
+    text[got] = '\0';
+    if (memchr(text, '\0', got)) {
+        free(text);
+        set_err(err, errlen, "%s is not a text file", path);
+        return -1;
+    }
+    r = aero_tree_parse(text, t, report, ctx, err, errlen);
+    free(text);
+    if (r && err && errlen) {
+        char inner[200];
+        snprintf(inner, sizeof inner, "%s", err);
+        snprintf(err, errlen, "%s: %s", path, inner);
+    }
+    return r;
+}
+
+int aero_tree_save(const char *path, const aero_tree *t, char *err,
+                   size_t errlen)
+{
+    FILE *fp = fopen(path, "w");
+    int i, ok;
+    if (!fp) {
+        if (err && errlen)
+            snprintf(err, errlen, "can't write %s: %s", path, strerror(errno));
+        return -1;
+    }
+    fprintf(fp, "# aero tree: %d branches, %d leaves (metres)\n",
+            t->nbranches, t->nleaves);
+    fprintf(fp, "# branch <id> <parent id or -1> <ax ay az> <bx by bz> "
+            "<d0> <d1>\n");
+    fprintf(fp, "# leaf <branch id> <stalk start sx sy sz> <stalk end ex ey "
+            "ez> <length> <width>\n");
+    for (i = 0; i < t->nbranches; i++) {
+        const aero_branch *b = &t->branches[i];
+        fprintf(fp, "branch %d %d %.7g %.7g %.7g %.7g %.7g %.7g %.7g %.7g\n",
+                b->id, b->parent >= 0 ? t->branches[b->parent].id : -1,
+                b->a[0], b->a[1], b->a[2], b->b[0], b->b[1], b->b[2], b->d0,
+                b->d1);
+    }
+    for (i = 0; i < t->nleaves; i++) {
+        const aero_leaf *l = &t->leaves[i];
+        fprintf(fp, "leaf %d %.7g %.7g %.7g %.7g %.7g %.7g %.7g %.7g\n",
+                t->branches[l->branch].id, l->s[0], l->s[1], l->s[2], l->e[0],
+                l->e[1], l->e[2], l->length, l->width);
+    }
+    ok = !ferror(fp);
+    if (fclose(fp) || !ok) {
+        set_err(err, errlen, "error writing %s", path);
+        return -1;
+    }
+    return 0;
+}
+
+void aero_tree_free(aero_tree *t)
+{
+    free(t->branches);
+    free(t->leaves);
+    memset(t, 0, sizeof *t);
+}
+
+/* ---- the generator ------------------------------------------------------ */
+
+static void normalize(double v[3])
+{
+    double n = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (n > 0.0) {
+        v[0] /= n;
+        v[1] /= n;
+        v[2] /= n;
+    }
+}
+
+static void cross(const double a[3], const double b[3], double c[3])
+{
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* two unit vectors perpendicular to the unit vector e (and to each other) */
+static void perpendiculars(const double e[3], double x[3], double y[3])
+{
+    double up[3] = {0.0, 0.0, 1.0};
+    if (fabs(e[2]) > 0.9) {
+        up[0] = 1.0;
+        up[2] = 0.0;
+    }
+    cross(e, up, x);
+    normalize(x);
+    cross(e, x, y);
+}
+
+/* unit direction at polar angle `tilt` from axis e, azimuth `azim` */
+static void tilted(const double e[3], double tilt, double azim, double d[3])
+{
+    double x[3], y[3];
+    int k;
+    perpendiculars(e, x, y);
+    for (k = 0; k < 3; k++)
+        d[k] = cos(tilt) * e[k]
+            + sin(tilt) * (cos(azim) * x[k] + sin(azim) * y[k]);
+    normalize(d);
+}
+
+static double uniform01(uint32_t *rng)
+{
+    return 0.5 * (aero_uniform(rng) + 1.0);
+}
+
+/* Growth rules (a simple self-similar tree; the numbers are the choices of
+   this generator, not measurements): every branch above the last level
+   forks into 2, 3 or 4 children (probabilities 0.2, 0.55, 0.25: mean 3.05,
+   so depth 6 gives about 1160 internodes, the paper's large tree); one
+   child continues the parent's direction within 15 deg, the others leave
+   at 30..60 deg, spread around the axis by the golden angle; each child is
+   0.72..0.82 as long as its parent; diameters follow the pipe model
+   (Leonardo's rule: the squared diameters of the children add up to the
+   parent's squared end diameter) and taper by 0.92 along each internode. */
+#define GEN_TAPER 0.92
+#define GEN_GOLDEN 2.39996322972865332 /* rad, pi (3 - sqrt 5) */
+
+int aero_tree_generate(aero_tree *t, const aero_tree_shape *shape)
+{
+    aero_tree_shape sh = *shape;
+    uint32_t rng = shape->seed ? shape->seed : 0x9e3779b9u;
+    int bcap = 0, lcap = 0, level_start = 0, level_end, level, i, k;
+    int nterminal, first_terminal;
+    memset(t, 0, sizeof *t);
+    if (sh.depth < 0 || sh.depth > 12 || sh.leaves < 0
+        || sh.leaves > 10000000 || !(sh.height > 0.0)
+        || !(sh.diameter > 0.0) || !(sh.leaf_length > 0.0)
+        || !(sh.leaf_width > 0.0) || !aero_is_finite(sh.height)
+        || !aero_is_finite(sh.diameter) || !aero_is_finite(sh.leaf_length)
+        || !aero_is_finite(sh.leaf_width))
+        return -1;
+    for (i = 0; i < 4; i++) /* decorrelate nearby seeds */
+        aero_xorshift32(&rng);
+
+    if (grow((void **)&t->branches, &bcap, 1, sizeof *t->branches))
+        return -1;
+    t->nbranches = 1;
+    t->branches[0].id = 0;
+    t->branches[0].parent = -1;
+    memset(t->branches[0].a, 0, sizeof t->branches[0].a);
+    t->branches[0].b[0] = 0.0;
+    t->branches[0].b[1] = 0.0;
+    t->branches[0].b[2] = sh.height;
+    t->branches[0].d0 = sh.diameter;
+    t->branches[0].d1 = sh.diameter * GEN_TAPER;
+
+    for (level = 0; level < sh.depth; level++) {
+        level_end = t->nbranches;
+        for (i = level_start; i < level_end; i++) {
+            double r = uniform01(&rng), e[3], len;
+            int nchild = r < 0.2 ? 2 : r < 0.75 ? 3 : 4, c;
+            double azim0 = 2.0 * AERO_PI * uniform01(&rng);
+            aero_branch par = t->branches[i]; /* copy: realloc below */
+            for (k = 0; k < 3; k++)
+                e[k] = par.b[k] - par.a[k];
+            len = dist3(par.a, par.b);
+            normalize(e);
+            if (grow((void **)&t->branches, &bcap, t->nbranches + nchild,
+                     sizeof *t->branches))
+                goto oom;
+            for (c = 0; c < nchild; c++) {
+                aero_branch *b = &t->branches[t->nbranches];
+                double dir[3], tilt, clen, share;
+                if (c == 0) { /* the leader */
+                    tilt = (15.0 * AERO_PI / 180.0) * uniform01(&rng);
+                    share = 1.6;
+                } else {
+                    tilt = (30.0 + 30.0 * uniform01(&rng)) * AERO_PI / 180.0;
+                    share = 1.0;
+                }
+                tilted(e, tilt, azim0 + c * GEN_GOLDEN, dir);
+                clen = len * (0.72 + 0.10 * uniform01(&rng));
+                b->id = t->nbranches;
+                b->parent = i;
+                for (k = 0; k < 3; k++) {
+                    b->a[k] = par.b[k];
+                    b->b[k] = par.b[k] + clen * dir[k];
+                }
+                /* pipe model: sum of d^2 over children = parent's d1^2,
+                   the leader taking a larger share */
+                b->d0 = par.d1 * sqrt(share / (nchild - 1 + 1.6));
+                b->d1 = b->d0 * GEN_TAPER;
+                t->nbranches++;
+            }
+        }
+        level_start = level_end;
+    }
+
+    /* leaves on the outermost level, spread evenly, stalks leaving the
+       twig by the golden angle and pointing somewhat outward/upward */
+    first_terminal = level_start;
+    nterminal = t->nbranches - first_terminal;
+    if (sh.leaves > 0
+        && grow((void **)&t->leaves, &lcap, sh.leaves, sizeof *t->leaves))
+        goto oom;
+    for (i = 0; i < sh.leaves; i++) {
+        int bi = first_terminal + (int)((long long)i * nterminal / sh.leaves);
+        const aero_branch *b = &t->branches[bi];
+        aero_leaf *l = &t->leaves[t->nleaves++];
+        double e[3], dir[3], u, size, stalk;
+        for (k = 0; k < 3; k++)
+            e[k] = b->b[k] - b->a[k];
+        normalize(e);
+        u = 0.15 + 0.85 * uniform01(&rng);
+        tilted(e, (40.0 + 30.0 * uniform01(&rng)) * AERO_PI / 180.0,
+               i * GEN_GOLDEN + 0.3 * aero_uniform(&rng), dir);
+        size = 0.8 + 0.4 * uniform01(&rng); /* +-20 % leaf size */
+        stalk = 0.3 * sh.leaf_length * size; /* blade ~ stalk (paper) */
+        l->branch = bi;
+        for (k = 0; k < 3; k++) {
+            l->s[k] = b->a[k] + u * (b->b[k] - b->a[k]);
+            l->e[k] = l->s[k] + stalk * dir[k];
+        }
+        l->length = sh.leaf_length * size;
+        l->width = sh.leaf_width * size;
+        l->along = u;
+    }
+    return 0;
+oom:
+    aero_tree_free(t);
+    return -1;
+}

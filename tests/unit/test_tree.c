@@ -1,0 +1,315 @@
+/* unit tests of src/core/tree.c: the .tree parser (bad lines reported with
+ * their numbers and skipped), save/load round trip, the generator. */
+#include "../../src/core/tree.h"
+#include "unit.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+typedef struct {
+    int count;
+    int lines[32];
+    char last[256];
+} reports;
+
+static void collect(void *ctx, int line, const char *message)
+{
+    reports *r = ctx;
+    if (r->count < 32)
+        r->lines[r->count] = line;
+    r->count++;
+    snprintf(r->last, sizeof r->last, "%s", message);
+}
+
+static int reported(const reports *r, int line)
+{
+    int i;
+    for (i = 0; i < r->count && i < 32; i++)
+        if (r->lines[i] == line)
+            return 1;
+    return 0;
+}
+
+static void test_parse_good(void)
+{
+    const char *text =
+        "# a trunk and two branches\n"
+        "\n"
+        "branch 10 -1  0 0 0  0 0 2  0.2 0.15   # trunk\n"
+        "branch 11 10  0 0 2  1 0 3  0.05 0.04\n"
+        "\tbranch 12 10 0 0 2 -1 0 3 0.05 0.04\r\n"
+        "leaf 11  0.5 0 2.5  0.5 0.05 2.55  0.08 0.05\n"
+        "leaf 12 -1 0 3 -1 0 3.05 0.1 0.06";
+    aero_tree t;
+    reports r = {0};
+    char err[256] = "";
+    int rc = aero_tree_parse(text, &t, collect, &r, err, sizeof err);
+    UNIT_CHECK(rc == 0, "a good tree parses (rc %d, %s)", rc, err);
+    UNIT_CHECK(r.count == 0, "no line reported (%d)", r.count);
+    UNIT_CHECK(t.nbranches == 3 && t.nleaves == 2,
+               "3 branches, 2 leaves (got %d, %d)", t.nbranches, t.nleaves);
+    UNIT_CHECK(t.branches[0].parent == -1 && t.branches[1].parent == 0
+                   && t.branches[2].parent == 0,
+               "parents are indices (%d %d %d)", t.branches[0].parent,
+               t.branches[1].parent, t.branches[2].parent);
+    UNIT_CHECK(t.branches[2].id == 12 && t.branches[2].b[0] == -1.0
+                   && t.branches[2].d1 == 0.04,
+               "fields of branch 12 (id %d, bx %g, d1 %g)", t.branches[2].id,
+               t.branches[2].b[0], t.branches[2].d1);
+    UNIT_CHECK(t.leaves[0].branch == 1 && t.leaves[1].branch == 2,
+               "leaves refer to branch indices (%d %d)", t.leaves[0].branch,
+               t.leaves[1].branch);
+    UNIT_NEAR_REL(t.leaves[0].along, 0.5, 1e-9, "leaf 0 along its branch");
+    UNIT_NEAR_REL(t.leaves[1].along, 1.0, 1e-9, "leaf 1 at its branch tip");
+    UNIT_CHECK(t.leaves[1].length == 0.1 && t.leaves[1].width == 0.06,
+               "leaf blade size (%g x %g)", t.leaves[1].length,
+               t.leaves[1].width);
+    aero_tree_free(&t);
+}
+
+static void test_parse_bad_lines(void)
+{
+    /* every line from 3 on is wrong in its own way, except 4, 13 and 17 */
+    const char *text =
+        "# bad lines\n"                                          /* 1 */
+        "branch 0 -1 0 0 0 0 0 1 0.1 0.1\n"                      /* 2 ok */
+        "branch 1 0 0 0 1 1 0 1\n"                               /* 3 fields */
+        "branch 2 0 0 0 1 0 1 2 0.02 0.02\n"                     /* 4 ok */
+        "branch 3 7 0 0 1 0 1 2 0.02 0.02\n"                     /* 5 parent */
+        "branch 2 0 0 0 1 0 1 2 0.02 0.02\n"                     /* 6 dup id */
+        "branch 4 0 0 0 1 0 1 2 0 0.02\n"                        /* 7 d0 = 0 */
+        "branch 5 0 0 0 1 0 nan 2 0.02 0.02\n"                   /* 8 NaN */
+        "branch 6 0 0 0 1 0 0 1 0.02 0.02\n"                     /* 9 length 0 */
+        "twig 7 0 0 0 1 0 1 2 0.02 0.02\n"                       /* 10 record */
+        "leaf 9 0 0 1 0 0.1 1 0.05 0.03\n"                       /* 11 branch */
+        "leaf 2 0 0 1 0 0.1 1 -0.05 0.03\n"                      /* 12 size */
+        "leaf 2 0 0.5 1.5 0 0.6 1.5 0.05 0.03\n"                 /* 13 ok */
+        "leaf 2 0 0 1 0 0 1 0.05 0.03\n"                         /* 14 stalk 0 */
+        "branch x 0 0 0 1 0 1 2 0.02 0.02\n"                     /* 15 id */
+        "branch 8 0 0 0 1 0 1 2 0.02 0.02 9\n"                   /* 16 fields */
+        "branch 9 2 0 1 2 0 1 3 1e-3 1e-3\n"                     /* 17 ok */
+        "branch 10 0 0 0 1 0 1 2 0.02 inf\n"                     /* 18 inf */
+        "branch 11 0 0 0 1 0 1 2 0.02 0.02x\n";                  /* 19 junk */
+    int bad[] = {3, 5, 6, 7, 8, 9, 10, 11, 12, 14, 15, 16, 18, 19};
+    int good[] = {1, 2, 4, 13, 17};
+    int nbad = (int)(sizeof bad / sizeof bad[0]), i, all = 1, none = 1;
+    aero_tree t;
+    reports r = {0};
+    char err[256] = "";
+    int rc = aero_tree_parse(text, &t, collect, &r, err, sizeof err);
+    UNIT_CHECK(rc == 0, "a file with bad lines still loads (rc %d)", rc);
+    UNIT_CHECK(r.count == nbad, "%d bad lines reported (got %d)", nbad,
+               r.count);
+    for (i = 0; i < nbad; i++)
+        if (!reported(&r, bad[i])) {
+            all = 0;
+            printf("        line %d not reported\n", bad[i]);
+        }
+    UNIT_CHECK(all, "each bad line reported with its own line number");
+    for (i = 0; i < (int)(sizeof good / sizeof good[0]); i++)
+        if (reported(&r, good[i]))
+            none = 0;
+    UNIT_CHECK(none, "no good line reported (negative control)");
+    UNIT_CHECK(t.nbranches == 3 && t.nleaves == 1,
+               "the good records are kept: 3 branches, 1 leaf (got %d, %d)",
+               t.nbranches, t.nleaves);
+    UNIT_CHECK(t.branches[2].id == 9 && t.branches[2].parent == 1,
+               "branch 9's parent is branch 2 at index 1 (got %d)",
+               t.branches[2].parent);
+    aero_tree_free(&t);
+
+    /* no report callback: must not crash either */
+    rc = aero_tree_parse(text, &t, NULL, NULL, NULL, 0);
+    UNIT_CHECK(rc == 0 && t.nbranches == 3, "parsing without a callback");
+    aero_tree_free(&t);
+}
+
+static void test_parse_empty(void)
+{
+    aero_tree t;
+    char err[256] = "";
+    reports r = {0};
+    int rc = aero_tree_parse("# nothing\nleaf 0 0 0 0 0 0 1 1 1\n", &t,
+                             collect, &r, err, sizeof err);
+    UNIT_CHECK(rc == -1 && err[0], "no valid branch: -1 with a message (%s)",
+               err);
+    UNIT_CHECK(t.nbranches == 0 && t.branches == NULL,
+               "and an empty tree (%d)", t.nbranches);
+    UNIT_CHECK(r.count == 1 && r.lines[0] == 2,
+               "the orphan leaf is reported on line 2");
+    rc = aero_tree_parse("", &t, NULL, NULL, err, sizeof err);
+    UNIT_CHECK(rc == -1, "an empty text is refused");
+    rc = aero_tree_load("/nonexistent/dir/x.tree", &t, NULL, NULL, err,
+                        sizeof err);
+    UNIT_CHECK(rc == -1 && strstr(err, "x.tree"),
+               "a missing file: -1 naming it (%s)", err);
+    {
+        /* a binary file is not a tree */
+        char path[] = "/tmp/aero-tree-binXXXXXX";
+        int fd = mkstemp(path);
+        const char bin[] = "branch 0 -1 0 0 0 0 0 1 1 1\n\0\1\2";
+        if (fd >= 0) {
+            if (write(fd, bin, sizeof bin) < 0)
+                perror("write");
+            close(fd);
+        }
+        rc = aero_tree_load(path, &t, NULL, NULL, err, sizeof err);
+        UNIT_CHECK(rc == -1, "a file with NUL bytes is refused (%s)", err);
+        unlink(path);
+    }
+}
+
+static void test_long_line(void)
+{
+    size_t n = 5000;
+    char *text = malloc(n + 100);
+    aero_tree t;
+    reports r = {0};
+    int rc;
+    size_t head;
+    strcpy(text, "branch 0 -1 0 0 0 0 0 1 0.1 0.1\nbranch 1 0 ");
+    head = strlen(text);
+    memset(text + head, '1', n);
+    strcpy(text + head + n, "\nbranch 2 0 0 0 1 0 1 2 0.01 0.01\n");
+    rc = aero_tree_parse(text, &t, collect, &r, NULL, 0);
+    UNIT_CHECK(rc == 0 && t.nbranches == 2 && r.count == 1
+                   && r.lines[0] == 2,
+               "an over-long line is reported (line %d) and skipped, the "
+               "next line still read (%d branches)",
+               r.count ? r.lines[0] : -1, t.nbranches);
+    aero_tree_free(&t);
+    free(text);
+}
+
+/* field by field: the struct has padding after `branch` */
+static int same_leaves(const aero_tree *a, const aero_tree *b)
+{
+    int i, k;
+    if (a->nleaves != b->nleaves)
+        return 0;
+    for (i = 0; i < a->nleaves; i++) {
+        const aero_leaf *p = &a->leaves[i], *q = &b->leaves[i];
+        if (p->branch != q->branch || p->length != q->length
+            || p->width != q->width || p->along != q->along)
+            return 0;
+        for (k = 0; k < 3; k++)
+            if (p->s[k] != q->s[k] || p->e[k] != q->e[k])
+                return 0;
+    }
+    return 1;
+}
+
+static void test_round_trip_and_generator(void)
+{
+    aero_tree_shape shape = {6, 16380, 3.0, 0.3, 0.08, 0.05, 7};
+    aero_tree t, u, v;
+    char path[] = "/tmp/aero-tree-XXXXXX";
+    char err[256] = "";
+    int fd, rc, i, worst_parent = 1, connected = 1, ids = 1;
+    double maxdiff = 0.0, mind = 1e9, maxd = 0.0;
+    rc = aero_tree_generate(&t, &shape);
+    UNIT_CHECK(rc == 0, "generate depth 6, 16380 leaves");
+    /* mean 3.05 children per fork: sum_{L=0..6} 3.05^L = 1196 on
+       average; the first forks multiply everything after them, so one
+       seed may land some 25 % off; accept 900..1700 */
+    UNIT_CHECK(t.nbranches > 900 && t.nbranches < 1700,
+               "about 1160 branches (paper's large tree): %d", t.nbranches);
+    UNIT_CHECK(t.nleaves == 16380, "16380 leaves: %d", t.nleaves);
+    for (i = 0; i < t.nbranches; i++) {
+        const aero_branch *b = &t.branches[i];
+        if (b->parent >= i)
+            worst_parent = 0;
+        if (b->parent >= 0) {
+            const aero_branch *p = &t.branches[b->parent];
+            double d = fabs(p->b[0] - b->a[0]) + fabs(p->b[1] - b->a[1])
+                + fabs(p->b[2] - b->a[2]);
+            if (d > 1e-9)
+                connected = 0;
+        }
+        if (b->id != i)
+            ids = 0;
+        if (b->d1 < mind)
+            mind = b->d1;
+        if (b->d0 > maxd)
+            maxd = b->d0;
+    }
+    UNIT_CHECK(worst_parent, "every parent comes before its children");
+    UNIT_CHECK(connected, "every child starts at its parent's end");
+    UNIT_CHECK(ids, "ids are the indices");
+    UNIT_CHECK(maxd == 0.3 && mind > 0.001 && mind < 0.01,
+               "diameters from the 0.3 m trunk down to twigs of a few mm "
+               "(thinnest %g m)", mind);
+    rc = aero_tree_generate(&u, &shape);
+    UNIT_CHECK(rc == 0 && u.nbranches == t.nbranches
+                   && memcmp(u.branches, t.branches,
+                             sizeof *t.branches * t.nbranches) == 0
+                   && same_leaves(&u, &t),
+               "the same seed gives the same tree");
+    aero_tree_free(&u);
+    shape.seed = 8;
+    rc = aero_tree_generate(&u, &shape);
+    UNIT_CHECK(rc == 0 && (u.nbranches != t.nbranches
+                           || memcmp(u.branches, t.branches,
+                                     sizeof *t.branches * t.nbranches)),
+               "another seed gives another tree (negative control)");
+    aero_tree_free(&u);
+
+    fd = mkstemp(path);
+    if (fd >= 0)
+        close(fd);
+    rc = aero_tree_save(path, &t, err, sizeof err);
+    UNIT_CHECK(rc == 0, "save (%s)", err);
+    rc = aero_tree_load(path, &v, NULL, NULL, err, sizeof err);
+    UNIT_CHECK(rc == 0 && v.nbranches == t.nbranches
+                   && v.nleaves == t.nleaves,
+               "load it back (%d branches, %d leaves)", v.nbranches,
+               v.nleaves);
+    if (rc == 0) {
+        for (i = 0; i < t.nbranches; i++) {
+            int k;
+            for (k = 0; k < 3; k++) {
+                double d = fabs(v.branches[i].b[k] - t.branches[i].b[k]);
+                if (d > maxdiff)
+                    maxdiff = d;
+            }
+            if (v.branches[i].parent != t.branches[i].parent)
+                maxdiff = 1.0;
+        }
+        for (i = 0; i < t.nleaves; i++)
+            if (v.leaves[i].branch != t.leaves[i].branch
+                || fabs(v.leaves[i].width - t.leaves[i].width) > 1e-6)
+                maxdiff = 1.0;
+        /* %.7g keeps 7 significant digits: < 1e-5 m on a ~10 m tree */
+        UNIT_CHECK(maxdiff < 1e-5, "round trip within 7 digits (%g m)",
+                   maxdiff);
+        aero_tree_free(&v);
+    }
+    unlink(path);
+    aero_tree_free(&t);
+
+    {
+        aero_tree_shape bad = {3, 10, -1.0, 0.1, 0.05, 0.03, 1};
+        UNIT_CHECK(aero_tree_generate(&u, &bad) == -1 && u.nbranches == 0,
+                   "a negative height is refused");
+        bad.height = 2.0;
+        bad.depth = 0;
+        bad.leaves = 5;
+        rc = aero_tree_generate(&u, &bad);
+        UNIT_CHECK(rc == 0 && u.nbranches == 1 && u.nleaves == 5
+                       && u.leaves[0].branch == 0,
+                   "depth 0: a trunk carrying the leaves");
+        aero_tree_free(&u);
+    }
+}
+
+int main(void)
+{
+    printf("test_tree\n");
+    test_parse_good();
+    test_parse_bad_lines();
+    test_parse_empty();
+    test_long_line();
+    test_round_trip_and_generator();
+    return unit_summary();
+}

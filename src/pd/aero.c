@@ -5,10 +5,12 @@
 
 void aeolian_tilde_setup(void);
 void cavity_tilde_setup(void);
+void vortex_tilde_setup(void); /* issue 6 */
 
 void aero_setup(void)
 {
     aeolian_tilde_setup();
     cavity_tilde_setup();
-    post("aero: aerodynamic sound library loaded ([aeolian~] [cavity~])");
+    vortex_tilde_setup();
+    post("aero: aerodynamic sound library loaded ([aeolian~] [cavity~] [vortex~])");
 }

@@ -158,30 +158,48 @@ double aero_vortex_cells(const aero_flow3d *s, const double x[3],
 
 void aero_vortex_d3_kernel(double *h, int K, double nu1, double nu2)
 {
-    const int nq = 8192;
-    /* h[n] = 2 INT_0^1/2 (2 pi nu)^3 T(nu) sin(2 pi nu n) dnu: the inverse
-       DTFT of (i 2 pi nu)^3 T(nu), odd in n; then a Blackman window */
-    for (int n = 0; n <= 2 * K; n++)
-        h[n] = 0.0;
+    /* h = D^3 * l: D^3 is the cube of the central difference
+       (x[m+1] - x[m-1]) / 2, response -i sin^3(2 pi nu), exact in relative
+       terms at low frequency; l is an even low-pass that turns it into
+       (i 2 pi nu)^3 T(nu): L = T (2 pi nu / sin(2 pi nu))^3, a windowed
+       cosine series (its truncation error is relative to L ~ 1, not to
+       the f^3 response, so low frequencies stay accurate) */
+    const int nq = 4096, L = K - 3;
+    double l[2 * 512 + 1];
+    static const double d3[7] = {0.125, 0.0, -0.375, 0.0, 0.375, 0.0, -0.125};
+    if (L < 1 || L > 512) {
+        for (int n = 0; n <= 2 * K; n++) h[n] = 0.0;
+        return;
+    }
+    for (int n = 0; n <= 2 * L; n++)
+        l[n] = 0.0;
     for (int q = 0; q < nq; q++) {
-        double nu = (q + 0.5) * nu2 / nq, T, w3;
+        double nu = (q + 0.5) * nu2 / nq, T, r, g;
         if (nu <= nu1)
             T = 1.0;
         else
             T = 0.5 * (1.0 + cos(AERO_PI * (nu - nu1) / (nu2 - nu1)));
-        w3 = pow(2.0 * AERO_PI * nu, 3.0) * T * 2.0 * (nu2 / nq);
-        for (int n = 1; n <= K; n++) {
-            double v = w3 * sin(2.0 * AERO_PI * nu * n);
-            h[K + n] += v;
-            h[K - n] -= v;
+        r = 2.0 * AERO_PI * nu / sin(2.0 * AERO_PI * nu);
+        g = T * r * r * r * 2.0 * (nu2 / nq); /* both signs of nu */
+        l[L] += g;
+        for (int n = 1; n <= L; n++) {
+            double v = g * cos(2.0 * AERO_PI * nu * n);
+            l[L + n] += v;
+            l[L - n] += v;
         }
     }
-    for (int n = 1; n <= K; n++) {
-        double a = AERO_PI * (double)n / (K + 1);
+    for (int n = 1; n <= L; n++) {
+        double a = AERO_PI * (double)n / (L + 1);
         double bw = 0.42 + 0.5 * cos(a) + 0.08 * cos(2.0 * a);
-        h[K + n] *= bw;
-        h[K - n] *= bw;
+        l[L + n] *= bw;
+        l[L - n] *= bw;
     }
+    /* d3 holds taps n = -3..3 (y[m] = sum h[n] x[m - n]) */
+    for (int n = 0; n <= 2 * K; n++)
+        h[n] = 0.0;
+    for (int a = 0; a < 7; a++)
+        for (int b = 0; b <= 2 * L; b++)
+            h[a + b] += d3[a] * l[b];
 }
 
 void aero_vortex_resample(const double *x, int n, double rate_in, double t0,

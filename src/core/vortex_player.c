@@ -53,6 +53,7 @@ void aero_vortex_player_free(aero_vortex_player *m)
     free(m->xyz);
     free(m->xyz_target);
     free(m->dist);
+    free(m->rd);
     memset(m, 0, sizeof *m);
 }
 
@@ -90,7 +91,8 @@ int aero_vortex_player_set_count(aero_vortex_player *m, int n)
             grow(&m->speed_target, old, n, 0.0) ||
             grow(&m->xyz, 3 * old, 3 * n, 0.0) ||
             grow(&m->xyz_target, 3 * old, 3 * n, 0.0) ||
-            grow(&m->dist, 2 * old, 2 * n, -1.0))
+            grow(&m->dist, 2 * old, 2 * n, -1.0) ||
+            grow(&m->rd, 2 * old, 2 * n, 0.0))
             return -1;
         m->n = n;
         randomise_offsets(m, old);
@@ -189,6 +191,8 @@ void aero_vortex_player_set_seed(aero_vortex_player *m, uint32_t seed)
 {
     m->rng = seed ? seed : 1;
     randomise_offsets(m, 0);
+    for (int i = 0; i < 2 * m->n; i++)
+        m->dist[i] = -1.0; /* read positions restart from the offsets */
 }
 
 int aero_vortex_player_set_texture(aero_vortex_player *m, aero_texture *t,
@@ -234,6 +238,8 @@ int aero_vortex_player_set_texture(aero_vortex_player *m, aero_texture *t,
         double old = m->frames > 0 ? m->frames : 1.0;
         for (int i = 0; i < m->n; i++)
             m->pos[i] = fmod(fabs(m->pos[i]) / old, 1.0) * t->frames;
+        for (int i = 0; i < 2 * m->n; i++)
+            m->rd[i] = fmod(fabs(m->rd[i]) / old, 1.0) * t->frames;
         m->frames = t->frames;
         m->nspeeds = t->channels;
         m->speeds = t->speeds;
@@ -333,10 +339,9 @@ int aero_vortex_player_process(aero_vortex_player *m, const float *speed,
     frac = m->ramp_left > 0.0 ? (n >= m->ramp_left ? 1.0 : n / m->ramp_left)
                               : 1.0;
     m->ramp_left = m->ramp_left > n ? m->ramp_left - n : 0.0;
-    for (int k = 0; k < 6; k++)
-        m->ear[k] += (m->ear_target[k] - m->ear[k]) * frac;
-
     if (!m->tab) {
+        for (int k = 0; k < 6; k++)
+            m->ear[k] += (m->ear_target[k] - m->ear[k]) * frac;
         for (int i = 0; i < m->n; i++) {
             m->speed[i] += (m->speed_target[i] - m->speed[i]) * frac;
             for (int k = 0; k < 3; k++)
@@ -349,7 +354,12 @@ int aero_vortex_player_process(aero_vortex_player *m, const float *speed,
         const int F = m->frames, stride = F + PAD_BEFORE + PAD_AFTER;
         const double step = m->rate / m->sample_rate;   /* frames/sample */
         const double delay = m->rate / AERO_C0;         /* frames per m */
+        const double sound = m->sample_rate / AERO_C0;  /* 1 / (m/sample of c0) */
         const double inv_n = 1.0 / n;
+        double ear0[6];
+        memcpy(ear0, m->ear, sizeof ear0);
+        for (int k = 0; k < 6; k++)
+            m->ear[k] += (m->ear_target[k] - m->ear[k]) * frac;
         for (int i = 0; i < m->n; i++) {
             double u0 = u_in0 + m->speed[i], u1, wa0, wb0, wa1, wb1;
             int c;
@@ -360,52 +370,66 @@ int aero_vortex_player_process(aero_vortex_player *m, const float *speed,
             c = speed_pair(m, u1);
             speed_weights(m, u0, c, &wa0, &wb0);
             speed_weights(m, u1, c, &wa1, &wb1);
-            for (int k = 0; k < 3; k++)
-                m->xyz[3 * i + k] += (m->xyz_target[3 * i + k] - m->xyz[3 * i + k]) * frac;
-            for (int e = 0; e < nout; e++) {
-                double r1 = distance(m->xyz + 3 * i, m->ear + 3 * e);
-                double r0 = m->dist[2 * i + e];
-                double g0, g1, s0, ds;
-                const float *qa = m->tab + (size_t)c * stride;
-                const float *qb = m->nspeeds > 1 ? qa + stride : qa;
-                float *o = out[e];
-                if (r1 < m->r_min) r1 = m->r_min;
-                if (r0 < 0.0) r0 = r1; /* first block: no jump */
-                m->dist[2 * i + e] = r1;
-                if ((wa0 == 0.0 && wb0 == 0.0 && wa1 == 0.0 && wb1 == 0.0))
-                    continue;
-                g0 = 1.0 / r0;
-                g1 = 1.0 / r1;
-                /* read position: the source's clock minus the travel
-                   time, both linear over the block */
-                s0 = m->pos[i] - r0 * delay;
-                ds = step - (r1 - r0) * delay * inv_n;
-                /* a jump of the source or the listener (ramp of one
-                   sample): keep the read inside the loop */
-                if (ds > 0.5 * F) ds = 0.5 * F;
-                if (ds < -0.5 * F) ds = -0.5 * F;
-                s0 = fmod(s0, (double)F);
-                if (s0 < 0.0) s0 += F;
-                {
-                    const float dwa = (float)((wa1 - wa0) * inv_n),
-                                dwb = (float)((wb1 - wb0) * inv_n),
-                                dg = (float)((g1 - g0) * inv_n);
-                    float wa = (float)wa0, wb = (float)wb0, g = (float)g0;
-                    double s = s0;
-                    for (int k = 0; k < n; k++) {
-                        int idx;
-                        float f;
-                        if (s >= F) s -= F;
-                        else if (s < 0.0) s += F;
-                        idx = (int)s;
-                        if (idx >= F) idx = F - 1; /* rounding */
-                        f = (float)(s - idx);
-                        o[k] += g * (wa * cubic(qa + idx, f) +
-                                     wb * cubic(qb + idx, f));
-                        s += ds;
-                        wa += dwa;
-                        wb += dwb;
-                        g += dg;
+            {
+                for (int k = 0; k < 3; k++)
+                    m->xyz[3 * i + k] += (m->xyz_target[3 * i + k] - m->xyz[3 * i + k]) * frac;
+                for (int e = 0; e < nout; e++) {
+                    /* r1 now; rs: had only the source moved (the ear where it
+                       was at the block's start) */
+                    double r1 = distance(m->xyz + 3 * i, m->ear + 3 * e);
+                    double rs = distance(m->xyz + 3 * i, ear0 + 3 * e);
+                    double r0 = m->dist[2 * i + e];
+                    double g0, g1, s0, ds, vs, vl;
+                    const float *qa = m->tab + (size_t)c * stride;
+                    const float *qb = m->nspeeds > 1 ? qa + stride : qa;
+                    float *o = out[e];
+                    if (r1 < m->r_min) r1 = m->r_min;
+                    if (rs < m->r_min) rs = m->r_min;
+                    if (r0 < 0.0) {
+                        /* first block: start at the source's offset, delayed
+                           by the distance, with no jump */
+                        r0 = r1;
+                        rs = r1;
+                        m->rd[2 * i + e] = m->pos[i] - r1 * delay;
+                    }
+                    m->dist[2 * i + e] = r1;
+                    /* the rates of change of r from each motion, in units
+                       of c0 (m per sample / (c0 / sr)) */
+                    vs = (rs - r0) * inv_n * sound;
+                    vl = (r1 - rs) * inv_n * sound;
+                    if (vs < -0.9) vs = -0.9; /* a jump, not a motion */
+                    if (vs > 10.0) vs = 10.0;
+                    if (vl > 0.9) vl = 0.9;
+                    if (vl < -10.0) vl = -10.0;
+                    ds = step * (1.0 - vl) / (1.0 + vs);
+                    s0 = fmod(m->rd[2 * i + e], (double)F);
+                    if (s0 < 0.0) s0 += F;
+                    m->rd[2 * i + e] = fmod(s0 + n * ds, (double)F);
+                    if ((wa0 == 0.0 && wb0 == 0.0 && wa1 == 0.0 && wb1 == 0.0))
+                        continue;
+                    g0 = 1.0 / r0;
+                    g1 = 1.0 / r1;
+                    {
+                        const float dwa = (float)((wa1 - wa0) * inv_n),
+                                    dwb = (float)((wb1 - wb0) * inv_n),
+                                    dg = (float)((g1 - g0) * inv_n);
+                        float wa = (float)wa0, wb = (float)wb0, g = (float)g0;
+                        double s = s0;
+                        for (int k = 0; k < n; k++) {
+                            int idx;
+                            float f;
+                            if (s >= F) s -= F;
+                            else if (s < 0.0) s += F;
+                            idx = (int)s;
+                            if (idx >= F) idx = F - 1; /* rounding */
+                            f = (float)(s - idx);
+                            o[k] += g * (wa * cubic(qa + idx, f) +
+                                         wb * cubic(qb + idx, f));
+                            s += ds;
+                            wa += dwa;
+                            wb += dwb;
+                            g += dg;
+                        }
                     }
                 }
             }

@@ -14,8 +14,10 @@
  *    (seeded), so n equal sources add in power (+10 log10 n dB), not in
  *    amplitude;
  *  - the retarded time t - r_i/c0 is a fractional read position (4-point
- *    cubic interpolation) that follows r_i sample by sample: a moving
- *    source or listener is heard with its Doppler shift;
+ *    cubic interpolation) that advances at (1 - v_l/c0) / (1 + v_s/c0)
+ *    frames per frame, v_s and v_l the rates at which the source's and
+ *    the listener's own motion change r (the exact Doppler factor of a
+ *    source moving through still air, heard by a moving listener);
  *  - the texture is a seamless loop (aerotex cross-fades its ends), read
  *    modulo its length;
  *  - `clip` limits |p| at the microphone (the paper's treatment of
@@ -57,6 +59,7 @@ typedef struct aero_vortex_player {
     double *xyz, *xyz_target;   /* 3 n */
     double *dist;               /* 2 n: distance to each ear at the end of
                                    the last block (<0: not yet known) */
+    double *rd;                 /* 2 n: read position for each ear, frames */
     double ear[6], ear_target[6]; /* mono uses ear 0 */
 } aero_vortex_player;
 

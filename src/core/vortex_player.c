@@ -29,7 +29,7 @@ int aero_vortex_player_init(aero_vortex_player *m, double sample_rate,
     m->sample_rate = sample_rate > 0.0 ? sample_rate : 44100.0;
     m->stereo = stereo ? 1 : 0;
     m->rng = seed ? seed : 1;
-    m->gain = 1.0;
+    m->gain = m->gain_target = 1.0;
     m->clip = 0.0;
     m->r_min = 0.05;
     aero_vortex_player_set_ramp_ms(m, 20.0);
@@ -165,7 +165,8 @@ int aero_vortex_player_set_gain_db(aero_vortex_player *m, double db)
 {
     if (!(db >= -200.0 && db <= 200.0))
         return -1;
-    m->gain = pow(10.0, db / 20.0);
+    m->gain_target = pow(10.0, db / 20.0);
+    start_ramp(m);
     return 0;
 }
 
@@ -348,6 +349,7 @@ int aero_vortex_player_process(aero_vortex_player *m, const float *speed,
                 m->xyz[3 * i + k] += (m->xyz_target[3 * i + k] - m->xyz[3 * i + k]) * frac;
             m->dist[2 * i] = m->dist[2 * i + 1] = -1.0;
         }
+        m->gain += (m->gain_target - m->gain) * frac;
         return clamped;
     }
     {
@@ -439,21 +441,27 @@ int aero_vortex_player_process(aero_vortex_player *m, const float *speed,
         }
     }
     /* microphone limit (on the pressure), then the gain; no NaN leaves */
-    for (int e = 0; e < nout; e++) {
-        float *o = out[e];
-        const float g = (float)m->gain, lim = (float)m->clip;
-        for (int k = 0; k < n; k++) {
-            float v = o[k];
-            if (!(v == v)) v = 0.0f;
-            if (lim > 0.0f) {
-                if (v > lim) v = lim;
-                if (v < -lim) v = -lim;
+    {
+        double g1 = m->gain + (m->gain_target - m->gain) * frac;
+        const float dg = (float)((g1 - m->gain) / n);
+        for (int e = 0; e < nout; e++) {
+            float *o = out[e];
+            const float lim = (float)m->clip;
+            float g = (float)m->gain;
+            for (int k = 0; k < n; k++, g += dg) {
+                float v = o[k];
+                if (!(v == v)) v = 0.0f;
+                if (lim > 0.0f) {
+                    if (v > lim) v = lim;
+                    if (v < -lim) v = -lim;
+                }
+                v *= g;
+                if (v > 1e30f) v = 1e30f;
+                if (v < -1e30f) v = -1e30f;
+                o[k] = v;
             }
-            v *= g;
-            if (v > 1e30f) v = 1e30f;
-            if (v < -1e30f) v = -1e30f;
-            o[k] = v;
         }
+        m->gain = g1;
     }
     return clamped;
 }

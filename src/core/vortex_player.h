@@ -22,7 +22,8 @@
  *    modulo its length;
  *  - `clip` limits |p| at the microphone (the paper's treatment of
  *    explosions), then `gain` scales the result.
- * Speeds, positions and the listener glide linearly over `ramp` ms.
+ * Speeds, positions, the listener and the gain glide linearly over
+ * `ramp` ms.
  *
  * Life cycle: init, set_*, process, free. No globals; no allocation in
  * process (set_count and set_texture allocate). */
@@ -40,7 +41,8 @@ typedef struct aero_vortex_player {
     double sample_rate;
     int stereo;
     uint32_t rng;
-    double gain, clip;          /* linear; clip 0 = off */
+    double gain, gain_target;   /* linear, glides like the others */
+    double clip;                /* Pa; 0 = off */
     double ramp_samples, ramp_left;
     double r_min;               /* distances below are clamped, m */
 

@@ -130,4 +130,6 @@ fi
 for b in bench/texture.sh; do
     [ -f "$b" ] && sh "$b"
 done
+# vortex sound (issue 6): texture set and [vortex~] per volume
+[ -f bench/vortex.sh ] && sh bench/vortex.sh
 exit 0

@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #define MAX_SPEEDS 64
+#define PNG_ZOOM 4
 
 typedef struct {
     aero_vortex_params vp;
@@ -98,14 +99,16 @@ static void hook(void *ctx, const aero_flow3d *s, long step, int recording)
         int j = s->ny / 2;
         float scale = (float)(c->job->vp.box / c->job->speeds[c->index]);
         c->snap = step / c->snap_every + 1;
-        for (int k = 0; k < s->nz; k++)
-            for (int i = 0; i < s->nx; i++)
-                c->slice[(size_t)k * s->nx + i] =
-                    s->omag[AERO_F3_C(s, i, j, k)] * scale;
+        /* PNG_ZOOM x PNG_ZOOM pixels per cell, so a 32-cell box is
+           visible */
+        for (int k = 0; k < s->nz * PNG_ZOOM; k++)
+            for (int i = 0; i < s->nx * PNG_ZOOM; i++)
+                c->slice[(size_t)k * s->nx * PNG_ZOOM + i] =
+                    s->omag[AERO_F3_C(s, i / PNG_ZOOM, j, k / PNG_ZOOM)] * scale;
         snprintf(path, sizeof path, "%s/u%02d_%04ld.png", c->job->png_dir,
                  c->index, step);
-        if (aerotex_png_vorticity(path, c->slice, c->zero, s->nx, s->nz,
-                                  60.0f))
+        if (aerotex_png_vorticity(path, c->slice, c->zero, s->nx * PNG_ZOOM,
+                                  s->nz * PNG_ZOOM, 60.0f))
             snprintf(c->err, sizeof c->err, "can't write %.200s", path);
     }
 }
@@ -357,8 +360,10 @@ int aerotex_vortex(int argc, char **argv)
         steps = aero_vortex_steps(&p, j.rate, avail);
         c->snap_every = steps / 24 + 1;
         if (j.png_dir) {
-            c->slice = malloc(sizeof(float) * (size_t)p.n * p.nz);
-            c->zero = calloc((size_t)p.n * p.nz, sizeof(float));
+            c->slice = malloc(sizeof(float) * (size_t)p.n * p.nz * PNG_ZOOM *
+                              PNG_ZOOM);
+            c->zero = calloc((size_t)p.n * p.nz * PNG_ZOOM * PNG_ZOOM,
+                             sizeof(float));
         }
         if (aero_vortex_simulate(&p, j.rate, raw + k, ns, avail, &st[k], hook,
                                  64, c, c->err, sizeof c->err) == 0) {

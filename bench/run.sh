@@ -139,4 +139,6 @@ done
 sh bench/treebranch.sh
 # [leafwave~] on the paper's large tree, and both tree objects together
 sh bench/leafwave.sh
+# vortex sound (issue 6): texture set and [vortex~] per volume
+[ -f bench/vortex.sh ] && sh bench/vortex.sh
 exit 0

@@ -21,3 +21,7 @@ $T aeolian --shape polygon textures/sword.poly --diameter 0.04 --speed 10 \
 # cavity 2 cm long, 1 cm deep in a wall, flow at 10 m/s
 $T cavity --length 0.02 --depth 0.01 --speed 10 --grid 48 \
     -o textures/cavity.wav
+# fire / jet vortex sound (paper 004): a 10 cm box of turbulent air, 8
+# average speeds 1..16 m/s, Howe's vortex sound at 1 m, one channel each
+$T vortex --speeds 1,2,3,4,6,8,12,16 --box 0.1 --grid 32 --duration 0.5 \
+    -o textures/fire.wav

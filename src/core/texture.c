@@ -28,9 +28,54 @@ int aero_texture_init(aero_texture *t, int frames, int directions, double rate)
     return 0;
 }
 
+int aero_texture_init_speeds(aero_texture *t, int frames, int nspeeds,
+                             const double *speeds, double rate)
+{
+    char buf[64];
+    memset(t, 0, sizeof *t);
+    if (frames < 1 || nspeeds < 1 || !(rate > 0.0))
+        return -1;
+    for (int k = 0; k < nspeeds; k++)
+        if (!(speeds[k] > 0.0) || (k && !(speeds[k] > speeds[k - 1])))
+            return -1;
+    t->frames = frames;
+    t->channels = nspeeds;
+    t->rate = rate;
+    t->data = calloc((size_t)frames * nspeeds, sizeof(float));
+    t->speeds = malloc(sizeof(double) * nspeeds);
+    t->meta = calloc(1, 1);
+    if (!t->data || !t->speeds || !t->meta) {
+        aero_texture_free(t);
+        return -1;
+    }
+    memcpy(t->speeds, speeds, sizeof(double) * nspeeds);
+    aero_texture_set(t, "kind", "vortex");
+    {
+        /* the list, comma-separated */
+        size_t len = 1;
+        char *list;
+        for (int k = 0; k < nspeeds; k++)
+            len += (size_t)snprintf(buf, sizeof buf, "%.9g,", speeds[k]);
+        list = malloc(len);
+        if (!list) {
+            aero_texture_free(t);
+            return -1;
+        }
+        list[0] = 0;
+        for (int k = 0; k < nspeeds; k++) {
+            snprintf(buf, sizeof buf, "%s%.9g", k ? "," : "", speeds[k]);
+            strcat(list, buf);
+        }
+        aero_texture_set(t, "speeds", list);
+        free(list);
+    }
+    return 0;
+}
+
 void aero_texture_free(aero_texture *t)
 {
     free(t->data);
+    free(t->speeds);
     free(t->angles);
     free(t->meta);
     memset(t, 0, sizeof *t);
@@ -206,6 +251,79 @@ static int parse_angles(aero_texture *t)
     return (*p == '\n' || *p == 0) ? 0 : -1;
 }
 
+/* the rest of a vortex texture's load (meta read; the file is reopened):
+   one channel per speed, speeds= increasing and positive */
+static int load_vortex(const char *path, aero_texture *t, const SF_INFO *in,
+                       char *err, size_t errlen)
+{
+    SF_INFO info = *in;
+    SNDFILE *f;
+    const char *p = value_of(t, "speeds");
+    int n = info.channels;
+    memset(&info, 0, sizeof info);
+    t->speeds = malloc(sizeof(double) * (n > 0 ? n : 1));
+    if (!t->speeds) {
+        snprintf(err, errlen, "out of memory reading %s", path);
+        aero_texture_free(t);
+        return -1;
+    }
+    for (int k = 0; k < n; k++) {
+        char *end;
+        t->speeds[k] = p ? strtod(p, &end) : 0.0;
+        if (!p || end == p || !(t->speeds[k] > 0.0) ||
+            !isfinite(t->speeds[k]) ||
+            (k && !(t->speeds[k] > t->speeds[k - 1])) ||
+            (k < n - 1 && *end != ',') ||
+            (k == n - 1 && *end != '\n' && *end)) {
+            snprintf(err, errlen, "%s: speeds= must list %d increasing "
+                     "positive speeds, one per channel", path, n);
+            aero_texture_free(t);
+            return -1;
+        }
+        p = end + 1;
+    }
+    if (aero_texture_getd(t, "frames", (double)in->frames) != in->frames) {
+        snprintf(err, errlen, "%s is truncated: %ld of %g frames", path,
+                 (long)in->frames, aero_texture_getd(t, "frames", 0.0));
+        aero_texture_free(t);
+        return -1;
+    }
+    t->frames = (int)in->frames;
+    t->channels = n;
+    t->directions = 0;
+    t->rate = aero_texture_getd(t, "rate", (double)in->samplerate);
+    if (!(t->rate > 0.0) || fabs(t->rate - in->samplerate) > 0.5) {
+        snprintf(err, errlen, "%s: rate=%g does not match the file's %d Hz",
+                 path, t->rate, in->samplerate);
+        aero_texture_free(t);
+        return -1;
+    }
+    t->data = malloc(sizeof(float) * (size_t)t->frames * n);
+    f = sf_open(path, SFM_READ, &info);
+    if (!t->data || !f) {
+        snprintf(err, errlen, "can't read %s", path);
+        if (f) sf_close(f);
+        aero_texture_free(t);
+        return -1;
+    }
+    if (sf_readf_float(f, t->data, t->frames) != t->frames) {
+        snprintf(err, errlen, "%s is truncated (expected %d frames)", path,
+                 t->frames);
+        sf_close(f);
+        aero_texture_free(t);
+        return -1;
+    }
+    sf_close(f);
+    for (size_t k = 0; k < (size_t)t->frames * n; k++)
+        if (!isfinite(t->data[k])) {
+            snprintf(err, errlen, "%s holds a non-finite sample at frame %ld",
+                     path, (long)(k / n));
+            aero_texture_free(t);
+            return -1;
+        }
+    return 0;
+}
+
 int aero_texture_load(const char *path, aero_texture *t, char *err,
                       size_t errlen)
 {
@@ -238,6 +356,14 @@ int aero_texture_load(const char *path, aero_texture *t, char *err,
     strcpy(t->meta, c);
     if (t->meta[0] && t->meta[strlen(t->meta) - 1] != '\n')
         strcat(t->meta, "\n");
+    {
+        char kind[32];
+        if (aero_texture_get(t, "kind", kind, sizeof kind) &&
+            !strcmp(kind, "vortex")) {
+            sf_close(f);
+            return load_vortex(path, t, &info, err, errlen);
+        }
+    }
     dirs = (int)aero_texture_getd(t, "directions", 0.0);
     if (dirs < 1 || info.channels != 3 * dirs) {
         snprintf(err, errlen,

@@ -4,6 +4,9 @@
  * for 2D simulations) at the base speed v0, channels x, y, z per sampled
  * direction (channel 3 k + c is component c of direction k), in the flow
  * frame: x along the flow (drag), y across it (lift), z along the body axis.
+ * A vortex texture (kind=vortex, paper 004) instead holds one channel per
+ * average flow speed: Q(u_k, t), the sound pressure at 1 m (Pa m), with
+ * the speeds in the metadata `speeds=u1,u2,...` (increasing).
  * The comment string holds the metadata as "key=value" lines (see
  * textures/README.md). The file is a seamless loop: its ends are already
  * cross-faded, a player wraps the texture coordinate modulo `frames`. */
@@ -15,15 +18,22 @@
 typedef struct {
     int frames;       /* samples per channel */
     int channels;     /* 3 * directions */
-    int directions;
+    int directions;   /* 0 for a vortex texture */
     double rate;      /* texture sample rate, Hz */
     float *data;      /* frames * channels, interleaved */
     double *angles;   /* flow angle of each direction in the body frame, deg */
     char *meta;       /* "key=value\n" lines */
+    double *speeds;   /* vortex textures: the speed of each channel, m/s
+                         (NULL otherwise) */
 } aero_texture;
 
 /* an empty texture of frames x (3 * directions) zeros; 0 or -1 */
 int aero_texture_init(aero_texture *t, int frames, int directions, double rate);
+/* an empty vortex texture: frames x nspeeds zeros, speeds copied (they
+   must increase and be > 0; the `speeds` metadata is written from them);
+   0 or -1 */
+int aero_texture_init_speeds(aero_texture *t, int frames, int nspeeds,
+                             const double *speeds, double rate);
 /* reads and validates a texture: 0, or -1 with a message in err */
 int aero_texture_load(const char *path, aero_texture *t, char *err,
                       size_t errlen);

@@ -6,14 +6,16 @@
 void aeolian_tilde_setup(void);
 void cavity_tilde_setup(void);
 void treebranch_tilde_setup(void);
-/* [leafwave~] (issue 7) */
 void leafwave_tilde_setup(void);
+void vortex_tilde_setup(void);
 
 void aero_setup(void)
 {
     aeolian_tilde_setup();
     cavity_tilde_setup();
     treebranch_tilde_setup();
-    leafwave_tilde_setup(); /* issue 7 */
-    post("aero: aerodynamic sound library loaded ([aeolian~] [cavity~] [treebranch~] [leafwave~])");
+    leafwave_tilde_setup();
+    vortex_tilde_setup();
+    post("aero: aerodynamic sound library loaded ([aeolian~] [cavity~] "
+         "[treebranch~] [leafwave~] [vortex~])");
 }

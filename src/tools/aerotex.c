@@ -54,6 +54,31 @@ static void usage(FILE *f)
 "      the shear layer and give no tone), --settle (default 80 L/v0), --png,\n"
 "      -q\n"
 "\n"
+"  aerotex vortex --speeds <u1,...,uN> -o FILE.wav\n"
+"      vortex-sound texture Q(u, t) of a turbulent box of air (fire, jets;\n"
+"      paper 004): 3D incompressible flow with a randomly perturbed inflow\n"
+"      at the bottom, periodic sides, open top; Howe's vortex sound at 1 m,\n"
+"      one channel per speed (p = Q / r)\n"
+"      --speeds <list>      increasing average speeds, m/s (default\n"
+"                           1,2,3,4,6,8,12,16)\n"
+"      --box <m>            box width, the source volume's size (default 0.1)\n"
+"      --grid <n>           cells across the box, even (default 32)\n"
+"      --height <n>         cells along the flow (default 1.5 grid)\n"
+"      --duration <s>       texture length (default 0.5)\n"
+"      --rate <Hz>          texture sample rate (default 16000)\n"
+"      --turbulence <i>     rms inflow perturbation / u (default 0.3)\n"
+"      --confinement <eps>  vorticity confinement (default 0.3)\n"
+"      --cfl <c>            step = c h / u (default 0.5)\n"
+"      --settle <n>         start-up discarded, flow-through times (default 3)\n"
+"      --receivers <n>      virtual receivers on a ring (default 8)\n"
+"      --elevation <deg>    of the ring (default 0)\n"
+"      --source <window|cells>  Howe integral with a smooth window (default)\n"
+"                           or the paper's integral cells (eq. 3-4)\n"
+"      --seed <n>           turbulence seed (default 1)\n"
+"      --threads <n>        speeds run in parallel (default: all cores)\n"
+"      --png DIR            |vorticity| slices DIR/uKK_STEP.png\n"
+"      -q                   no progress bar\n"
+"\n"
 "  aerotex info FILE.wav\n"
 "      prints a texture's metadata and flow statistics\n"
 "\n"
@@ -113,6 +138,8 @@ int main(int argc, char **argv)
         return aerotex_aeolian(argc - 1, argv + 1, 0);
     if (!strcmp(argv[1], "cavity"))
         return aerotex_aeolian(argc - 1, argv + 1, 1);
+    if (!strcmp(argv[1], "vortex"))
+        return aerotex_vortex(argc - 1, argv + 1);
     if (!strcmp(argv[1], "info"))
         return aerotex_info(argc - 1, argv + 1);
     if (!strcmp(argv[1], "tree"))

@@ -6,6 +6,7 @@
 int aerotex_aeolian(int argc, char **argv, int cavity);
 int aerotex_info(int argc, char **argv);
 int aerotex_tree(int argc, char **argv); /* aerotex_tree.c */
+int aerotex_vortex(int argc, char **argv); /* aerotex_vortex.c */
 
 /* vorticity picture: w (U/d) on nx x ny cells, solid fraction for the
    body; writes an RGB PNG (row 0 at the bottom); 0 or -1 */

@@ -11,6 +11,10 @@
  *   aero-analyze banddiff FILE F1 F2 F3 F4  band F3..F4 minus band F1..F2, dB
  *   aero-analyze finite FILE    no NaN/Inf (nor their 1e9 markers), |x|
  *                               below --max (default 1e4)
+ *   aero-analyze centroid FILE  spectral centroid (power-weighted mean
+ *                               frequency within --fmin..--fmax), Hz
+ *   aero-analyze centroidratio A B  centroid(B) / centroid(A) (a Doppler
+ *                               shift of a broadband sound)
  *   aero-analyze clicks FILE    worst local jump of the 2nd difference
  *                               against its neighbourhood (a ratio)
  *   aero-analyze onsetdiff FILE time (ms) at which channel 1 first reaches
@@ -214,6 +218,21 @@ static double band_db(const signal_t *s, const options *o, double f1,
     return 10.0 * log10(ms / (20e-6 * 20e-6) + 1e-30);
 }
 
+/* power-weighted mean frequency of the Welch spectrum in fmin..fmax */
+static double centroid_hz(const signal_t *s, const options *o)
+{
+    int nfft = o->nfft;
+    double *psd = welch(s, &nfft);
+    double df = s->sr / nfft, sw = 0, sf = 0;
+    for (int k = 1; k < nfft / 2; k++)
+        if (k * df >= o->fmin && k * df <= o->fmax) {
+            sw += psd[k];
+            sf += psd[k] * k * df;
+        }
+    free(psd);
+    return sw > 0 ? sf / sw : 0.0;
+}
+
 /* full width at half maximum of the highest peak in [fmin, fmax] of the
  * (optionally smoothed) power spectrum, divided by its frequency */
 static double relative_width(const signal_t *s, const options *o)
@@ -348,7 +367,7 @@ static int verdict(const char *what, double value, const char *unit,
 static void usage(void)
 {
     fprintf(stderr, "usage: aero-analyze peak|peakratio|width|level|leveldiff|band|finite|"
-                    "clicks FILE [FILE2] [F1 F2] [options]\n");
+                    "centroid|centroidratio|clicks FILE [FILE2] [F1 F2] [options]\n");
 }
 
 int main(int argc, char **argv)
@@ -461,6 +480,17 @@ int main(int argc, char **argv)
         snprintf(what, sizeof(what), "spectral distance of %s from %s",
                  pos[1], pos[0]);
         rc = verdict(what, spectral_distance(&s, &s2, &o), "dB", &o, 0);
+        free(s2.x);
+    } else if (!strcmp(cmd, "centroid")) {
+        snprintf(what, sizeof(what), "spectral centroid of %s", pos[0]);
+        rc = verdict(what, centroid_hz(&s, &o), "Hz", &o, 1);
+    } else if (!strcmp(cmd, "centroidratio") && npos >= 2) {
+        if (load(pos[1], &o, &s2))
+            return 2;
+        snprintf(what, sizeof(what), "spectral centroid of %s over %s",
+                 pos[1], pos[0]);
+        rc = verdict(what, centroid_hz(&s2, &o) / centroid_hz(&s, &o), "",
+                     &o, 1);
         free(s2.x);
     } else if (!strcmp(cmd, "clicks")) {
         snprintf(what, sizeof(what), "click ratio of %s", pos[0]);

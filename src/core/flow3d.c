@@ -1,0 +1,605 @@
+/* aero: 3D incompressible flow in a box (see flow3d.h). */
+#include "flow3d.h"
+#include "aero_air.h"
+
+#include <fftw3.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* i modulo n for any int (the common case is one step out of range) */
+static inline int wrap(int i, int n)
+{
+    if (i < 0) {
+        i += n;
+        if (i < 0) i = ((i % n) + n) % n;
+    } else if (i >= n) {
+        i -= n;
+        if (i >= n) i %= n;
+    }
+    return i;
+}
+
+int aero_flow3d_init(aero_flow3d *s, const aero_flow3d_params *p, char *err,
+                     size_t errlen)
+{
+    size_t cells, uvn, wn, specn;
+    int nxh;
+    memset(s, 0, sizeof *s);
+    if (p->nx < 4 || p->ny < 4 || p->nz < 3 || (p->nx & 1) || (p->ny & 1) ||
+        p->nx > 1024 || p->ny > 1024 || p->nz > 1024) {
+        snprintf(err, errlen, "grid %d x %d x %d: nx, ny even and >= 4, "
+                 "nz >= 3, each <= 1024", p->nx, p->ny, p->nz);
+        return -1;
+    }
+    if (!(p->h > 0.0) || !(p->nu >= 0.0) || !(p->confinement >= 0.0) ||
+        !(p->u_ref >= 0.0) || !(p->sponge >= 0.0 && p->sponge < 1.0)) {
+        snprintf(err, errlen, "bad cell size, viscosity or confinement");
+        return -1;
+    }
+    s->p = *p;
+    s->nx = p->nx;
+    s->ny = p->ny;
+    s->nz = p->nz;
+    s->plane = (size_t)p->nx * p->ny;
+    cells = s->plane * p->nz;
+    uvn = s->plane * (p->nz + 2);
+    wn = s->plane * (p->nz + 1);
+    nxh = p->nx / 2 + 1;
+    specn = (size_t)nxh * p->ny * p->nz;
+    s->u = calloc(uvn, sizeof(float));
+    s->v = calloc(uvn, sizeof(float));
+    s->w = calloc(wn, sizeof(float));
+    s->u1 = calloc(uvn, sizeof(float));
+    s->v1 = calloc(uvn, sizeof(float));
+    s->w1 = calloc(wn, sizeof(float));
+    s->cx = calloc(cells, sizeof(float));
+    s->cy = calloc(cells, sizeof(float));
+    s->cz = calloc(cells, sizeof(float));
+    s->ox = calloc(cells, sizeof(float));
+    s->oy = calloc(cells, sizeof(float));
+    s->oz = calloc(cells, sizeof(float));
+    s->omag = calloc(cells, sizeof(float));
+    s->phi = fftwf_malloc(sizeof(float) * cells);
+    s->spec = fftwf_malloc(sizeof(fftwf_complex) * specn);
+    s->in_u = calloc(s->plane, sizeof(float));
+    s->in_v = calloc(s->plane, sizeof(float));
+    s->in_w = calloc(s->plane, sizeof(float));
+    s->tri_m = malloc(sizeof(float) * specn);
+    if (!s->u || !s->v || !s->w || !s->u1 || !s->v1 || !s->w1 || !s->cx ||
+        !s->cy || !s->cz || !s->ox || !s->oy || !s->oz || !s->omag ||
+        !s->phi || !s->spec || !s->in_u || !s->in_v || !s->in_w ||
+        !s->tri_m) {
+        aero_flow3d_free(s);
+        snprintf(err, errlen, "out of memory for a %d x %d x %d grid", p->nx,
+                 p->ny, p->nz);
+        return -1;
+    }
+    {
+        int n[2] = {p->ny, p->nx};
+        s->fwd = fftwf_plan_many_dft_r2c(2, n, p->nz, s->phi, NULL, 1,
+                                         (int)s->plane, s->spec, NULL, 1,
+                                         nxh * p->ny, FFTW_ESTIMATE);
+        s->inv = fftwf_plan_many_dft_c2r(2, n, p->nz, s->spec, NULL, 1,
+                                         nxh * p->ny, s->phi, NULL, 1,
+                                         (int)s->plane, FFTW_ESTIMATE);
+    }
+    if (!s->fwd || !s->inv) {
+        aero_flow3d_free(s);
+        snprintf(err, errlen, "FFTW could not plan the pressure solve");
+        return -1;
+    }
+    /* Thomas factors of (phi[k-1] + (mu - 2) phi[k] + phi[k+1]) per mode,
+       mu = 2 cos(2 pi kx / nx) + 2 cos(2 pi ky / ny) - 4 (the eigenvalue of
+       the periodic 5-point Laplacian times h^2); rows 0 (Neumann: the
+       inflow is prescribed) and nz-1 (phi = 0 on the top face) differ */
+    for (int ky = 0; ky < p->ny; ky++)
+        for (int kx = 0; kx < nxh; kx++) {
+            double mu = 2.0 * cos(2.0 * AERO_PI * kx / p->nx) +
+                        2.0 * cos(2.0 * AERO_PI * ky / p->ny) - 4.0;
+            double cprev = 0.0;
+            for (int k = 0; k < p->nz; k++) {
+                double b = mu - 2.0;
+                if (k == 0) b = mu - 1.0;
+                if (k == p->nz - 1) b = mu - 3.0;
+                double m = 1.0 / (b - (k ? cprev : 0.0));
+                s->tri_m[((size_t)k * p->ny + ky) * nxh + kx] = (float)m;
+                cprev = m;
+            }
+        }
+    s->solid = NULL;
+    s->t = 0.0;
+    return 0;
+}
+
+void aero_flow3d_free(aero_flow3d *s)
+{
+    if (s->fwd) fftwf_destroy_plan(s->fwd);
+    if (s->inv) fftwf_destroy_plan(s->inv);
+    free(s->u);
+    free(s->v);
+    free(s->w);
+    free(s->u1);
+    free(s->v1);
+    free(s->w1);
+    free(s->cx);
+    free(s->cy);
+    free(s->cz);
+    free(s->ox);
+    free(s->oy);
+    free(s->oz);
+    free(s->omag);
+    if (s->phi) fftwf_free(s->phi);
+    if (s->spec) fftwf_free(s->spec);
+    free(s->in_u);
+    free(s->in_v);
+    free(s->in_w);
+    free(s->tri_m);
+    memset(s, 0, sizeof *s);
+}
+
+/* boundary layers: inflow below (tangential u, v in the ghost layer, w on
+   the bottom face), zero gradient above */
+static void apply_boundaries(aero_flow3d *s)
+{
+    const size_t pl = s->plane;
+    memcpy(s->u, s->in_u, sizeof(float) * pl);
+    memcpy(s->v, s->in_v, sizeof(float) * pl);
+    memcpy(s->w, s->in_w, sizeof(float) * pl);
+    memcpy(s->u + (size_t)(s->nz + 1) * pl, s->u + (size_t)s->nz * pl,
+           sizeof(float) * pl);
+    memcpy(s->v + (size_t)(s->nz + 1) * pl, s->v + (size_t)s->nz * pl,
+           sizeof(float) * pl);
+}
+
+/* trilinear sample of a u- or v-type field (layers -1..nz) at grid
+   coordinates (fi, fj, fk) of its own lattice; periodic in i, j */
+static inline float sample_uv(const aero_flow3d *s, const float *f, float fi,
+                              float fj, float fk)
+{
+    int i0, j0, k0, i1, j1;
+    float tx, ty, tz;
+    if (fk < -1.0f) fk = -1.0f;
+    if (fk > (float)s->nz) fk = (float)s->nz;
+    i0 = (int)floorf(fi);
+    j0 = (int)floorf(fj);
+    k0 = (int)floorf(fk);
+    tx = fi - i0;
+    ty = fj - j0;
+    tz = fk - k0;
+    if (k0 >= s->nz) {
+        k0 = s->nz - 1;
+        tz = 1.0f;
+    }
+    i0 = wrap(i0, s->nx);
+    j0 = wrap(j0, s->ny);
+    i1 = i0 + 1 == s->nx ? 0 : i0 + 1;
+    j1 = j0 + 1 == s->ny ? 0 : j0 + 1;
+    {
+        const float *a = f + AERO_F3_UV(s, 0, 0, k0);
+        const float *b = a + s->plane;
+        const int nx = s->nx;
+        float a00 = a[j0 * nx + i0] + tx * (a[j0 * nx + i1] - a[j0 * nx + i0]);
+        float a10 = a[j1 * nx + i0] + tx * (a[j1 * nx + i1] - a[j1 * nx + i0]);
+        float b00 = b[j0 * nx + i0] + tx * (b[j0 * nx + i1] - b[j0 * nx + i0]);
+        float b10 = b[j1 * nx + i0] + tx * (b[j1 * nx + i1] - b[j1 * nx + i0]);
+        float a0 = a00 + ty * (a10 - a00), b0 = b00 + ty * (b10 - b00);
+        return a0 + tz * (b0 - a0);
+    }
+}
+
+/* the same for w (layers 0..nz) */
+static inline float sample_w(const aero_flow3d *s, const float *f, float fi,
+                             float fj, float fk)
+{
+    int i0, j0, k0, i1, j1;
+    float tx, ty, tz;
+    if (fk < 0.0f) fk = 0.0f;
+    if (fk > (float)s->nz) fk = (float)s->nz;
+    i0 = (int)floorf(fi);
+    j0 = (int)floorf(fj);
+    k0 = (int)floorf(fk);
+    tx = fi - i0;
+    ty = fj - j0;
+    tz = fk - k0;
+    if (k0 >= s->nz) {
+        k0 = s->nz - 1;
+        tz = 1.0f;
+    }
+    i0 = wrap(i0, s->nx);
+    j0 = wrap(j0, s->ny);
+    i1 = i0 + 1 == s->nx ? 0 : i0 + 1;
+    j1 = j0 + 1 == s->ny ? 0 : j0 + 1;
+    {
+        const float *a = f + AERO_F3_C(s, 0, 0, k0);
+        const float *b = a + s->plane;
+        const int nx = s->nx;
+        float a00 = a[j0 * nx + i0] + tx * (a[j0 * nx + i1] - a[j0 * nx + i0]);
+        float a10 = a[j1 * nx + i0] + tx * (a[j1 * nx + i1] - a[j1 * nx + i0]);
+        float b00 = b[j0 * nx + i0] + tx * (b[j0 * nx + i1] - b[j0 * nx + i0]);
+        float b10 = b[j1 * nx + i0] + tx * (b[j1 * nx + i1] - b[j1 * nx + i0]);
+        float a0 = a00 + ty * (a10 - a00), b0 = b00 + ty * (b10 - b00);
+        return a0 + tz * (b0 - a0);
+    }
+}
+
+/* semi-Lagrangian advection (FSJ01 sec. 3): each face value is the old
+   field at the point its velocity came from one step ago */
+static void advect(aero_flow3d *s, double dt)
+{
+    const int nx = s->nx, ny = s->ny, nz = s->nz;
+    const float c = (float)(dt / s->p.h), lim = (float)nx;
+    const float *u = s->u, *v = s->v, *w = s->w;
+    for (int k = 0; k < nz; k++)
+        for (int j = 0; j < ny; j++) {
+            int jm = j ? j - 1 : ny - 1, jp = j + 1 == ny ? 0 : j + 1;
+            for (int i = 0; i < nx; i++) {
+                int im = i ? i - 1 : nx - 1, ip = i + 1 == nx ? 0 : i + 1;
+                /* u face (i, j+1/2, k+1/2) */
+                float U = u[AERO_F3_UV(s, i, j, k)];
+                float V = 0.25f * (v[AERO_F3_UV(s, im, j, k)] +
+                                   v[AERO_F3_UV(s, i, j, k)] +
+                                   v[AERO_F3_UV(s, im, jp, k)] +
+                                   v[AERO_F3_UV(s, i, jp, k)]);
+                float W = 0.25f * (w[AERO_F3_C(s, im, j, k)] +
+                                   w[AERO_F3_C(s, i, j, k)] +
+                                   w[AERO_F3_C(s, im, j, k + 1)] +
+                                   w[AERO_F3_C(s, i, j, k + 1)]);
+                float dx = fmaxf(-lim, fminf(lim, U * c));
+                float dy = fmaxf(-lim, fminf(lim, V * c));
+                float dz = W * c;
+                s->u1[AERO_F3_UV(s, i, j, k)] =
+                    sample_uv(s, u, i - dx, j - dy, k - dz);
+                /* v face (i+1/2, j, k+1/2) */
+                U = 0.25f * (u[AERO_F3_UV(s, i, jm, k)] +
+                             u[AERO_F3_UV(s, ip, jm, k)] +
+                             u[AERO_F3_UV(s, i, j, k)] +
+                             u[AERO_F3_UV(s, ip, j, k)]);
+                V = v[AERO_F3_UV(s, i, j, k)];
+                W = 0.25f * (w[AERO_F3_C(s, i, jm, k)] +
+                             w[AERO_F3_C(s, i, j, k)] +
+                             w[AERO_F3_C(s, i, jm, k + 1)] +
+                             w[AERO_F3_C(s, i, j, k + 1)]);
+                dx = fmaxf(-lim, fminf(lim, U * c));
+                dy = fmaxf(-lim, fminf(lim, V * c));
+                dz = W * c;
+                s->v1[AERO_F3_UV(s, i, j, k)] =
+                    sample_uv(s, v, i - dx, j - dy, k - dz);
+                /* w face (i+1/2, j+1/2, k+1), k+1 = 1..nz */
+                U = 0.25f * (u[AERO_F3_UV(s, i, j, k)] +
+                             u[AERO_F3_UV(s, ip, j, k)] +
+                             u[AERO_F3_UV(s, i, j, k + 1)] +
+                             u[AERO_F3_UV(s, ip, j, k + 1)]);
+                V = 0.25f * (v[AERO_F3_UV(s, i, j, k)] +
+                             v[AERO_F3_UV(s, i, jp, k)] +
+                             v[AERO_F3_UV(s, i, j, k + 1)] +
+                             v[AERO_F3_UV(s, i, jp, k + 1)]);
+                W = w[AERO_F3_C(s, i, j, k + 1)];
+                dx = fmaxf(-lim, fminf(lim, U * c));
+                dy = fmaxf(-lim, fminf(lim, V * c));
+                dz = W * c;
+                s->w1[AERO_F3_C(s, i, j, k + 1)] =
+                    sample_w(s, w, i - dx, j - dy, (k + 1) - dz);
+            }
+        }
+    /* swap in the advected field (boundary layers are set again later) */
+    {
+        float *t = s->u;
+        s->u = s->u1;
+        s->u1 = t;
+        t = s->v;
+        s->v = s->v1;
+        s->v1 = t;
+        t = s->w;
+        s->w = s->w1;
+        s->w1 = t;
+    }
+}
+
+/* cell-centred velocity into cx, cy, cz */
+static void centre_velocity(aero_flow3d *s)
+{
+    const int nx = s->nx, ny = s->ny, nz = s->nz;
+    for (int k = 0; k < nz; k++)
+        for (int j = 0; j < ny; j++) {
+            int jp = j + 1 == ny ? 0 : j + 1;
+            for (int i = 0; i < nx; i++) {
+                int ip = i + 1 == nx ? 0 : i + 1;
+                size_t c = AERO_F3_C(s, i, j, k);
+                s->cx[c] = 0.5f * (s->u[AERO_F3_UV(s, i, j, k)] +
+                                   s->u[AERO_F3_UV(s, ip, j, k)]);
+                s->cy[c] = 0.5f * (s->v[AERO_F3_UV(s, i, j, k)] +
+                                   s->v[AERO_F3_UV(s, i, jp, k)]);
+                s->cz[c] = 0.5f * (s->w[AERO_F3_C(s, i, j, k)] +
+                                   s->w[AERO_F3_C(s, i, j, k + 1)]);
+            }
+        }
+}
+
+/* d/dz of a cell-centred field at (i, j, k): central inside, one-sided at
+   the bottom and top layers; returns the difference and its span (cells) */
+static inline float ddz(const aero_flow3d *s, const float *f, size_t c,
+                        int k)
+{
+    const size_t pl = s->plane;
+    if (k == 0) return f[c + pl] - f[c];
+    if (k == s->nz - 1) return f[c] - f[c - pl];
+    return 0.5f * (f[c + pl] - f[c - pl]);
+}
+
+void aero_flow3d_vorticity(aero_flow3d *s)
+{
+    const int nx = s->nx, ny = s->ny, nz = s->nz;
+    const float ih = (float)(1.0 / s->p.h);
+    centre_velocity(s);
+    for (int k = 0; k < nz; k++)
+        for (int j = 0; j < ny; j++) {
+            int jm = j ? j - 1 : ny - 1, jp = j + 1 == ny ? 0 : j + 1;
+            for (int i = 0; i < nx; i++) {
+                int im = i ? i - 1 : nx - 1, ip = i + 1 == nx ? 0 : i + 1;
+                size_t c = AERO_F3_C(s, i, j, k);
+                size_t xm = AERO_F3_C(s, im, j, k), xp = AERO_F3_C(s, ip, j, k);
+                size_t ym = AERO_F3_C(s, i, jm, k), yp = AERO_F3_C(s, i, jp, k);
+                float dwdy = 0.5f * (s->cz[yp] - s->cz[ym]);
+                float dvdz = ddz(s, s->cy, c, k);
+                float dudz = ddz(s, s->cx, c, k);
+                float dwdx = 0.5f * (s->cz[xp] - s->cz[xm]);
+                float dvdx = 0.5f * (s->cy[xp] - s->cy[xm]);
+                float dudy = 0.5f * (s->cx[yp] - s->cx[ym]);
+                float ox = (dwdy - dvdz) * ih, oy = (dudz - dwdx) * ih,
+                      oz = (dvdx - dudy) * ih;
+                s->ox[c] = ox;
+                s->oy[c] = oy;
+                s->oz[c] = oz;
+                s->omag[c] = sqrtf(ox * ox + oy * oy + oz * oz);
+            }
+        }
+}
+
+/* vorticity confinement (FSJ01 eq. 11-12): a = eps U_ref (N x omega) at
+   the cell centres, averaged onto the faces */
+static void confine(aero_flow3d *s, double dt)
+{
+    const int nx = s->nx, ny = s->ny, nz = s->nz;
+    const float a = (float)(s->p.confinement * s->p.u_ref * dt);
+    const size_t pl = s->plane;
+    aero_flow3d_vorticity(s);
+    /* the force goes into cx, cy, cz (the centred velocity is not needed
+       any more) */
+    for (int k = 0; k < nz; k++)
+        for (int j = 0; j < ny; j++) {
+            int jm = j ? j - 1 : ny - 1, jp = j + 1 == ny ? 0 : j + 1;
+            for (int i = 0; i < nx; i++) {
+                int im = i ? i - 1 : nx - 1, ip = i + 1 == nx ? 0 : i + 1;
+                size_t c = AERO_F3_C(s, i, j, k);
+                float gx = 0.5f * (s->omag[AERO_F3_C(s, ip, j, k)] -
+                                   s->omag[AERO_F3_C(s, im, j, k)]);
+                float gy = 0.5f * (s->omag[AERO_F3_C(s, i, jp, k)] -
+                                   s->omag[AERO_F3_C(s, i, jm, k)]);
+                float gz = ddz(s, s->omag, c, k);
+                float g = sqrtf(gx * gx + gy * gy + gz * gz);
+                float inv = g > 1e-20f ? a / g : 0.0f;
+                float Nx = gx * inv, Ny = gy * inv, Nz = gz * inv;
+                s->cx[c] = Ny * s->oz[c] - Nz * s->oy[c];
+                s->cy[c] = Nz * s->ox[c] - Nx * s->oz[c];
+                s->cz[c] = Nx * s->oy[c] - Ny * s->ox[c];
+            }
+        }
+    for (int k = 0; k < nz; k++)
+        for (int j = 0; j < ny; j++) {
+            int jm = j ? j - 1 : ny - 1;
+            for (int i = 0; i < nx; i++) {
+                int im = i ? i - 1 : nx - 1;
+                size_t c = AERO_F3_C(s, i, j, k);
+                s->u[AERO_F3_UV(s, i, j, k)] +=
+                    0.5f * (s->cx[c] + s->cx[AERO_F3_C(s, im, j, k)]);
+                s->v[AERO_F3_UV(s, i, j, k)] +=
+                    0.5f * (s->cy[c] + s->cy[AERO_F3_C(s, i, jm, k)]);
+                if (k > 0)
+                    s->w[c] += 0.5f * (s->cz[c] + s->cz[c - pl]);
+            }
+        }
+    for (size_t c = 0; c < pl; c++) /* the top face: its one cell */
+        s->w[(size_t)nz * pl + c] += s->cz[(size_t)(nz - 1) * pl + c];
+}
+
+/* explicit nu lap(u) on one face field (layers k0..k1 updated); src has
+   valid neighbours one layer beyond */
+static void diffuse_field(const aero_flow3d *s, const float *src, float *dst,
+                          int k0, int k1, int uv, float r)
+{
+    const int nx = s->nx, ny = s->ny;
+    for (int k = k0; k <= k1; k++)
+        for (int j = 0; j < ny; j++) {
+            int jm = j ? j - 1 : ny - 1, jp = j + 1 == ny ? 0 : j + 1;
+            for (int i = 0; i < nx; i++) {
+                int im = i ? i - 1 : nx - 1, ip = i + 1 == nx ? 0 : i + 1;
+                size_t c = uv ? AERO_F3_UV(s, i, j, k) : AERO_F3_C(s, i, j, k);
+                size_t o = c - (size_t)j * nx - i;
+                float lap = src[o + j * nx + im] + src[o + j * nx + ip] +
+                            src[o + jm * nx + i] + src[o + jp * nx + i] +
+                            src[c - s->plane] + src[c + s->plane] -
+                            6.0f * src[c];
+                dst[c] = src[c] + r * lap;
+            }
+        }
+}
+
+static void diffuse(aero_flow3d *s, double dt)
+{
+    const float r = (float)(s->p.nu * dt / (s->p.h * s->p.h));
+    const size_t uvn = s->plane * (s->nz + 2), wn = s->plane * (s->nz + 1);
+    float *t;
+    apply_boundaries(s);
+    memcpy(s->u1, s->u, sizeof(float) * uvn);
+    memcpy(s->v1, s->v, sizeof(float) * uvn);
+    memcpy(s->w1, s->w, sizeof(float) * wn);
+    diffuse_field(s, s->u, s->u1, 0, s->nz - 1, 1, r);
+    diffuse_field(s, s->v, s->v1, 0, s->nz - 1, 1, r);
+    /* w: faces 1..nz-1 (the top face keeps its advected value) */
+    diffuse_field(s, s->w, s->w1, 1, s->nz - 1, 0, r);
+    t = s->u; s->u = s->u1; s->u1 = t;
+    t = s->v; s->v = s->v1; s->v1 = t;
+    t = s->w; s->w = s->w1; s->w1 = t;
+}
+
+void aero_flow3d_project(aero_flow3d *s)
+{
+    const int nx = s->nx, ny = s->ny, nz = s->nz, nxh = nx / 2 + 1;
+    const size_t pl = s->plane;
+    const float h = (float)s->p.h, ih = 1.0f / h;
+    const float norm = 1.0f / (float)(nx * ny);
+    fftwf_complex *sp = s->spec;
+    apply_boundaries(s);
+    /* h^2 div u, the right-hand side (h^2 lap phi = h^2 div u) */
+    for (int k = 0; k < nz; k++)
+        for (int j = 0; j < ny; j++) {
+            int jp = j + 1 == ny ? 0 : j + 1;
+            for (int i = 0; i < nx; i++) {
+                int ip = i + 1 == nx ? 0 : i + 1;
+                size_t c = AERO_F3_C(s, i, j, k);
+                s->phi[c] = h * (s->u[AERO_F3_UV(s, ip, j, k)] -
+                                 s->u[AERO_F3_UV(s, i, j, k)] +
+                                 s->v[AERO_F3_UV(s, i, jp, k)] -
+                                 s->v[AERO_F3_UV(s, i, j, k)] +
+                                 s->w[c + pl] - s->w[c]);
+            }
+        }
+    fftwf_execute(s->fwd);
+    /* tridiagonal along z per (kx, ky) (sub- and super-diagonal 1) */
+    {
+        const size_t stride = (size_t)nxh * ny;
+        for (size_t m = 0; m < stride; m++) {
+            const float *tm = s->tri_m + m;
+            fftwf_complex *d = sp + m;
+            d[0][0] *= tm[0];
+            d[0][1] *= tm[0];
+            for (int k = 1; k < nz; k++) {
+                float q = tm[k * stride];
+                d[k * stride][0] = (d[k * stride][0] - d[(k - 1) * stride][0]) * q;
+                d[k * stride][1] = (d[k * stride][1] - d[(k - 1) * stride][1]) * q;
+            }
+            for (int k = nz - 2; k >= 0; k--) {
+                float q = tm[k * stride];
+                d[k * stride][0] -= q * d[(k + 1) * stride][0];
+                d[k * stride][1] -= q * d[(k + 1) * stride][1];
+            }
+        }
+    }
+    fftwf_execute(s->inv);
+    /* u -= grad phi (phi scaled by the unnormalised inverse FFT) */
+    {
+        const float g = norm * ih;
+        for (int k = 0; k < nz; k++)
+            for (int j = 0; j < ny; j++) {
+                int jm = j ? j - 1 : ny - 1;
+                for (int i = 0; i < nx; i++) {
+                    int im = i ? i - 1 : nx - 1;
+                    size_t c = AERO_F3_C(s, i, j, k);
+                    float p = s->phi[c];
+                    s->u[AERO_F3_UV(s, i, j, k)] -=
+                        g * (p - s->phi[AERO_F3_C(s, im, j, k)]);
+                    s->v[AERO_F3_UV(s, i, j, k)] -=
+                        g * (p - s->phi[AERO_F3_C(s, i, jm, k)]);
+                    if (k > 0)
+                        s->w[c] -= g * (p - s->phi[c - pl]);
+                }
+            }
+        /* top face: phi = 0 there, so the ghost value is -phi[nz-1] */
+        for (size_t c = 0; c < pl; c++)
+            s->w[(size_t)nz * pl + c] += 2.0f * g * s->phi[(size_t)(nz - 1) * pl + c];
+    }
+    apply_boundaries(s);
+}
+
+double aero_flow3d_max_divergence(const aero_flow3d *s)
+{
+    const int nx = s->nx, ny = s->ny, nz = s->nz;
+    double worst = 0.0;
+    for (int k = 0; k < nz; k++)
+        for (int j = 0; j < ny; j++)
+            for (int i = 0; i < nx; i++) {
+                int ip = i + 1 == nx ? 0 : i + 1, jp = j + 1 == ny ? 0 : j + 1;
+                size_t c = AERO_F3_C(s, i, j, k);
+                double d = (double)s->u[AERO_F3_UV(s, ip, j, k)] -
+                           s->u[AERO_F3_UV(s, i, j, k)] +
+                           s->v[AERO_F3_UV(s, i, jp, k)] -
+                           s->v[AERO_F3_UV(s, i, j, k)] +
+                           s->w[c + s->plane] - s->w[c];
+                if (fabs(d) > worst) worst = fabs(d);
+            }
+    return worst;
+}
+
+double aero_flow3d_energy(const aero_flow3d *s)
+{
+    double e = 0.0, h3 = s->p.h * s->p.h * s->p.h;
+    for (int k = 0; k < s->nz; k++)
+        for (size_t c = 0; c < s->plane; c++) {
+            double a = s->u[(size_t)(k + 1) * s->plane + c];
+            double b = s->v[(size_t)(k + 1) * s->plane + c];
+            double d = s->w[(size_t)k * s->plane + c];
+            e += a * a + b * b + d * d;
+        }
+    return 0.5 * e * h3;
+}
+
+/* absorbing layer: relax towards (0, 0, u_ref) at a rate growing as the
+   square of the depth into the layer, up to u_ref / h at the top */
+static void sponge(aero_flow3d *s, double dt)
+{
+    const int nz = s->nz;
+    const double z0 = (1.0 - s->p.sponge) * nz, rate = s->p.u_ref / s->p.h;
+    const float target = (float)s->p.u_ref;
+    for (int k = 0; k <= nz; k++) {
+        double zc = k + 0.5, zf = k, qc, qf;
+        float ac, af;
+        qc = zc > z0 ? (zc - z0) / (nz - z0) : 0.0;
+        qf = zf > z0 ? (zf - z0) / (nz - z0) : 0.0;
+        if (qf <= 0.0 && qc <= 0.0)
+            continue;
+        ac = (float)exp(-dt * rate * qc * qc);
+        af = (float)exp(-dt * rate * qf * qf);
+        if (k < nz) {
+            float *u = s->u + AERO_F3_UV(s, 0, 0, k);
+            float *v = s->v + AERO_F3_UV(s, 0, 0, k);
+            for (size_t c = 0; c < s->plane; c++) {
+                u[c] *= ac;
+                v[c] *= ac;
+            }
+        }
+        if (k > 0) {
+            float *w = s->w + AERO_F3_C(s, 0, 0, k);
+            for (size_t c = 0; c < s->plane; c++)
+                w[c] = target + (w[c] - target) * af;
+        }
+    }
+}
+
+int aero_flow3d_step(aero_flow3d *s, double dt)
+{
+    apply_boundaries(s);
+    advect(s, dt);
+    apply_boundaries(s);
+    if (s->p.confinement > 0.0 && s->p.u_ref > 0.0) {
+        confine(s, dt);
+        apply_boundaries(s);
+    }
+    if (s->p.nu > 0.0)
+        diffuse(s, dt);
+    if (s->p.sponge > 0.0 && s->p.u_ref > 0.0)
+        sponge(s, dt);
+    aero_flow3d_project(s);
+    s->t += dt;
+    /* a cheap finiteness check on one layer per step */
+    {
+        const float *w = s->w + (size_t)(s->nz / 2) * s->plane;
+        float acc = 0.0f;
+        for (size_t c = 0; c < s->plane; c++)
+            acc += w[c];
+        if (!(acc == acc) || fabsf(acc) > 1e30f)
+            return -1;
+    }
+    return 0;
+}

@@ -1,0 +1,95 @@
+/* aero: a small 3D incompressible flow solver (a box of turbulent air).
+ *
+ * Uniform staggered (MAC) grid of nx x ny x nz cubic cells of size h,
+ * periodic across x and y, an inflow face at the bottom (z = 0: the
+ * velocity there is given by the caller every step, in `in_u/in_v/in_w`)
+ * and an open top (z = nz h: pressure 0, zero-gradient velocity).
+ * One step (Fedkiw, Stam and Jensen 2001, "Visual simulation of smoke",
+ * the solver paper 004 uses):
+ *   1. semi-Lagrangian advection of the face velocities (stable at any
+ *      step; its numerical diffusion is what step 2 compensates),
+ *   2. vorticity confinement, a = eps U_ref (N x omega), N = grad|omega| /
+ *      |grad|omega|| (FSJ01 eq. 11-12, with a velocity scale U_ref so the
+ *      force scales as U^2/h like the flow's own accelerations),
+ *   3. explicit viscous diffusion nu lap(u) (when nu > 0),
+ *      and an absorbing layer under the open top (`sponge`): eddies are
+ *      damped before they reach it, since backflow through an open
+ *      boundary feeds itself and blows up (seen at 32^3 without it),
+ *   4. projection: lap(phi) = div(u), u -= grad(phi). The Poisson equation
+ *      is solved exactly for the discrete operator: FFTW across x and y,
+ *      a tridiagonal (Thomas) solve along z (Neumann at the inflow,
+ *      Dirichlet phi = 0 at the open top). After it the discrete
+ *      divergence is zero to rounding.
+ *
+ * Solid hook: `solid` (NULL here) is reserved for a cell mask of a body
+ * (Brinkman penalisation, issue 11); nothing reads it yet.
+ *
+ * Layout: index (k * ny + j) * nx + i. u[i] lies on the face x = i h of
+ * cell i, v[j] on y = j h, w[k] on z = k h (k = 0..nz, nz + 1 layers; w[0]
+ * is the inflow). u and v carry one ghost layer below (k = -1, the inflow
+ * tangential velocity) and one above (k = nz, a copy of nz - 1): their
+ * arrays start one layer early (use AERO_F3_UV(s, i, j, k)).
+ *
+ * Life cycle: init, (set the inflow, step)..., free. init and free create
+ * and destroy FFTW plans: call them from one thread at a time. step is
+ * thread-safe for distinct solvers. No globals. */
+#ifndef AERO_FLOW3D_H
+#define AERO_FLOW3D_H
+
+#include <stddef.h>
+
+typedef struct {
+    int nx, ny, nz;       /* cells (nx, ny even, >= 4; nz >= 3) */
+    double h;             /* cell size, m */
+    double nu;            /* kinematic viscosity, m^2/s (0: none) */
+    double confinement;   /* vorticity confinement eps (0: none) */
+    double u_ref;         /* velocity scale of the confinement, m/s */
+    double sponge;        /* fraction of the height under the open top
+                             where the velocity is relaxed towards
+                             (0, 0, u_ref) (0: none) */
+} aero_flow3d_params;
+
+typedef struct aero_flow3d {
+    aero_flow3d_params p;
+    int nx, ny, nz;
+    size_t plane;         /* nx * ny */
+    float *u, *v, *w;     /* face velocities (u, v from ghost layer -1) */
+    float *u1, *v1, *w1;  /* advection targets */
+    float *cx, *cy, *cz;  /* cell-centred velocity, then force scratch */
+    float *ox, *oy, *oz, *omag; /* cell-centred vorticity and |omega| */
+    float *phi;           /* pressure-like potential, nx*ny*nz */
+    float *in_u, *in_v, *in_w; /* inflow at the bottom face, nx*ny each */
+    const float *solid;   /* reserved: body mask for issue 11 (unused) */
+    /* Poisson solver */
+    void *fwd, *inv;      /* fftwf plans */
+    void *spec;           /* fftwf_complex, nz * ny * (nx/2+1) */
+    float *tri_c, *tri_m; /* Thomas coefficients per (kx, ky, k) */
+    double t;             /* simulated time, s */
+} aero_flow3d;
+
+/* 0, or -1 with a message in err */
+int aero_flow3d_init(aero_flow3d *s, const aero_flow3d_params *p, char *err,
+                     size_t errlen);
+void aero_flow3d_free(aero_flow3d *s);
+
+/* index of u or v (including the ghost layers k = -1 and k = nz) */
+#define AERO_F3_UV(s, i, j, k) \
+    ((size_t)((k) + 1) * (s)->plane + (size_t)(j) * (s)->nx + (size_t)(i))
+/* index of w (k = 0..nz) or of a cell-centred value (k = 0..nz-1) */
+#define AERO_F3_C(s, i, j, k) \
+    ((size_t)(k) * (s)->plane + (size_t)(j) * (s)->nx + (size_t)(i))
+
+/* one step of dt seconds (the inflow arrays are read at its start);
+   returns -1 if a velocity became non-finite */
+int aero_flow3d_step(aero_flow3d *s, double dt);
+/* the projection alone (makes the current field divergence-free) */
+void aero_flow3d_project(aero_flow3d *s);
+/* largest |div u| h over the cells, m/s (0 after a projection) */
+double aero_flow3d_max_divergence(const aero_flow3d *s);
+/* cell-centred vorticity into s->ox, oy, oz and |omega| into s->omag
+   (central differences of the cell-centred velocity), 1/s */
+void aero_flow3d_vorticity(aero_flow3d *s);
+/* kinetic energy per unit density, 0.5 sum |u|^2 h^3, m^5/s^2 */
+double aero_flow3d_energy(const aero_flow3d *s);
+
+#endif

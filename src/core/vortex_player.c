@@ -1,0 +1,467 @@
+/* aero: real-time vortex sound from a texture Q(u, t) (see
+ * vortex_player.h). */
+#include "vortex_player.h"
+#include "aero_air.h"
+#include "aero_util.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define PAD_BEFORE 1
+#define PAD_AFTER 3
+
+static void randomise_offsets(aero_vortex_player *m, int from)
+{
+    for (int i = from; i < m->n; i++)
+        /* uniform over the loop; scaled to frames when a texture arrives */
+        m->pos[i] = 0.5 + 0.5 * aero_uniform(&m->rng);
+    if (m->frames > 0)
+        for (int i = from; i < m->n; i++)
+            m->pos[i] *= m->frames;
+}
+
+int aero_vortex_player_init(aero_vortex_player *m, double sample_rate,
+                            int stereo, uint32_t seed)
+{
+    memset(m, 0, sizeof *m);
+    m->sample_rate = sample_rate > 0.0 ? sample_rate : 44100.0;
+    m->stereo = stereo ? 1 : 0;
+    m->rng = seed ? seed : 1;
+    m->gain = m->gain_target = 1.0;
+    m->clip = 0.0;
+    m->r_min = 0.05;
+    aero_vortex_player_set_ramp_ms(m, 20.0);
+    m->ear[0] = m->ear_target[0] = stereo ? -0.1 : 0.0;
+    m->ear[1] = m->ear_target[1] = 1.0;
+    m->ear[3] = m->ear_target[3] = 0.1;
+    m->ear[4] = m->ear_target[4] = 1.0;
+    return aero_vortex_player_set_count(m, 1);
+}
+
+void aero_vortex_player_free(aero_vortex_player *m)
+{
+    if (m->texture) {
+        aero_texture_free(m->texture);
+        free(m->texture);
+    }
+    free(m->tab);
+    free(m->pos);
+    free(m->speed);
+    free(m->speed_target);
+    free(m->xyz);
+    free(m->xyz_target);
+    free(m->dist);
+    free(m->rd);
+    memset(m, 0, sizeof *m);
+}
+
+int aero_vortex_player_set_sample_rate(aero_vortex_player *m, double sr)
+{
+    if (!(sr >= 1000.0 && sr <= 1e6))
+        return -1;
+    if (sr != m->sample_rate) {
+        double ms = m->ramp_samples / m->sample_rate * 1000.0;
+        m->sample_rate = sr;
+        aero_vortex_player_set_ramp_ms(m, ms);
+    }
+    return 0;
+}
+
+/* grows a double array to n entries, keeping the first `old` */
+static int grow(double **a, int old, int n, double fill)
+{
+    double *b = realloc(*a, sizeof(double) * (size_t)n);
+    if (!b)
+        return -1;
+    for (int i = old; i < n; i++)
+        b[i] = fill;
+    *a = b;
+    return 0;
+}
+
+int aero_vortex_player_set_count(aero_vortex_player *m, int n)
+{
+    int old = m->n;
+    if (n < 1 || n > AERO_VORTEX_MAX_SOURCES)
+        return -1;
+    if (n > old) {
+        if (grow(&m->pos, old, n, 0.0) || grow(&m->speed, old, n, 0.0) ||
+            grow(&m->speed_target, old, n, 0.0) ||
+            grow(&m->xyz, 3 * old, 3 * n, 0.0) ||
+            grow(&m->xyz_target, 3 * old, 3 * n, 0.0) ||
+            grow(&m->dist, 2 * old, 2 * n, -1.0) ||
+            grow(&m->rd, 2 * old, 2 * n, 0.0))
+            return -1;
+        m->n = n;
+        randomise_offsets(m, old);
+    } else {
+        m->n = n;
+    }
+    return 0;
+}
+
+static void start_ramp(aero_vortex_player *m)
+{
+    m->ramp_left = m->ramp_samples;
+}
+
+int aero_vortex_player_set_speeds(aero_vortex_player *m, const double *u,
+                                  int count)
+{
+    if (count < 1 || count > m->n)
+        return -1;
+    for (int i = 0; i < count; i++)
+        if (!(u[i] >= 0.0 && u[i] <= AERO_MACH_LIMIT * AERO_C0))
+            return -1;
+    for (int i = 0; i < count; i++)
+        m->speed_target[i] = u[i];
+    start_ramp(m);
+    return 0;
+}
+
+static int position_ok(double v)
+{
+    return aero_is_finite(v) && fabs(v) <= 1e5;
+}
+
+int aero_vortex_player_set_positions(aero_vortex_player *m,
+                                     const double *xyz, int count)
+{
+    if (count < 1 || count > m->n)
+        return -1;
+    for (int i = 0; i < 3 * count; i++)
+        if (!position_ok(xyz[i]))
+            return -1;
+    memcpy(m->xyz_target, xyz, sizeof(double) * 3 * (size_t)count);
+    start_ramp(m);
+    return 0;
+}
+
+int aero_vortex_player_set_listener(aero_vortex_player *m, double x,
+                                    double y, double z)
+{
+    if (!position_ok(x) || !position_ok(y) || !position_ok(z))
+        return -1;
+    m->ear_target[0] = m->ear_target[3] = x;
+    m->ear_target[1] = m->ear_target[4] = y;
+    m->ear_target[2] = m->ear_target[5] = z;
+    start_ramp(m);
+    return 0;
+}
+
+int aero_vortex_player_set_ears(aero_vortex_player *m, const double e[6])
+{
+    for (int k = 0; k < 6; k++)
+        if (!position_ok(e[k]))
+            return -1;
+    memcpy(m->ear_target, e, sizeof m->ear_target);
+    start_ramp(m);
+    return 0;
+}
+
+int aero_vortex_player_set_gain_db(aero_vortex_player *m, double db)
+{
+    if (!(db >= -200.0 && db <= 200.0))
+        return -1;
+    m->gain_target = pow(10.0, db / 20.0);
+    start_ramp(m);
+    return 0;
+}
+
+int aero_vortex_player_set_clip(aero_vortex_player *m, double pa)
+{
+    if (!(pa >= 0.0 && pa <= 1e6))
+        return -1;
+    m->clip = pa;
+    return 0;
+}
+
+int aero_vortex_player_set_ramp_ms(aero_vortex_player *m, double ms)
+{
+    if (!(ms >= 0.0 && ms <= 600000.0))
+        return -1;
+    m->ramp_samples = ms * 0.001 * m->sample_rate;
+    if (m->ramp_samples < 1.0)
+        m->ramp_samples = 1.0;
+    return 0;
+}
+
+void aero_vortex_player_set_seed(aero_vortex_player *m, uint32_t seed)
+{
+    m->rng = seed ? seed : 1;
+    randomise_offsets(m, 0);
+    for (int i = 0; i < 2 * m->n; i++)
+        m->dist[i] = -1.0; /* read positions restart from the offsets */
+}
+
+int aero_vortex_player_set_texture(aero_vortex_player *m, aero_texture *t,
+                                   char *err, size_t errlen)
+{
+    float *tab = NULL;
+    if (t) {
+        char kind[32];
+        int F = t->frames, ns = t->channels;
+        if (!aero_texture_get(t, "kind", kind, sizeof kind) ||
+            strcmp(kind, "vortex") || !t->speeds) {
+            snprintf(err, errlen, "not a vortex texture (kind=%s)",
+                     aero_texture_get(t, "kind", kind, sizeof kind) ? kind
+                                                                    : "?");
+            return -1;
+        }
+        if (F < 4 || ns < 1 || !(t->rate > 0.0)) {
+            snprintf(err, errlen, "texture too short or without a rate");
+            return -1;
+        }
+        tab = malloc(sizeof(float) * (size_t)ns * (F + PAD_BEFORE + PAD_AFTER));
+        if (!tab) {
+            snprintf(err, errlen, "out of memory");
+            return -1;
+        }
+        for (int c = 0; c < ns; c++) {
+            float *d = tab + (size_t)c * (F + PAD_BEFORE + PAD_AFTER);
+            for (int k = -PAD_BEFORE; k < F + PAD_AFTER; k++) {
+                int src = ((k % F) + F) % F;
+                d[k + PAD_BEFORE] = t->data[(size_t)src * ns + c];
+            }
+        }
+    }
+    if (m->texture) {
+        aero_texture_free(m->texture);
+        free(m->texture);
+    }
+    free(m->tab);
+    m->texture = t;
+    m->tab = tab;
+    if (t) {
+        /* keep each source's phase within the loop */
+        double old = m->frames > 0 ? m->frames : 1.0;
+        for (int i = 0; i < m->n; i++)
+            m->pos[i] = fmod(fabs(m->pos[i]) / old, 1.0) * t->frames;
+        for (int i = 0; i < 2 * m->n; i++)
+            m->rd[i] = fmod(fabs(m->rd[i]) / old, 1.0) * t->frames;
+        m->frames = t->frames;
+        m->nspeeds = t->channels;
+        m->speeds = t->speeds;
+        m->rate = t->rate;
+    } else {
+        for (int i = 0; i < m->n; i++)
+            m->pos[i] = m->frames > 0 ? m->pos[i] / m->frames : m->pos[i];
+        m->frames = 0;
+        m->nspeeds = 0;
+        m->speeds = NULL;
+        m->rate = 0.0;
+    }
+    return 0;
+}
+
+/* the channel pair and weights of speed u: value = wa Q_c + wb Q_c+1 */
+static void speed_weights(const aero_vortex_player *m, double u, int c,
+                          double *wa, double *wb)
+{
+    const double *s = m->speeds;
+    const int ns = m->nspeeds;
+    if (u <= s[0] && c == 0) {
+        double q = u / s[0];
+        q *= q;
+        *wa = q * q; /* quadrupole: p ~ u^4 */
+        *wb = 0.0;
+        return;
+    }
+    if (ns == 1) {
+        *wa = 1.0;
+        *wb = 0.0;
+        return;
+    }
+    {
+        double f = (u - s[c]) / (s[c + 1] - s[c]);
+        if (f < 0.0) f = 0.0;
+        if (f > 1.0) f = 1.0;
+        *wa = 1.0 - f;
+        *wb = f;
+    }
+}
+
+/* index c of the pair (c, c+1) holding u (0 below, ns-2 above) */
+static int speed_pair(const aero_vortex_player *m, double u)
+{
+    int c = 0;
+    if (m->nspeeds < 2)
+        return 0;
+    while (c < m->nspeeds - 2 && u >= m->speeds[c + 1])
+        c++;
+    return c;
+}
+
+static double clean_speed(double u, int *clamped)
+{
+    if (!(u == u)) return 0.0;
+    u = fabs(u);
+    if (u > AERO_MACH_LIMIT * AERO_C0) {
+        *clamped = 1;
+        u = AERO_MACH_LIMIT * AERO_C0;
+    }
+    return u;
+}
+
+static double distance(const double *a, const double *b)
+{
+    double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+    return sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+/* Catmull-Rom through p[0..3], between p[1] and p[2] */
+static inline float cubic(const float *p, float f)
+{
+    return p[1] + 0.5f * f * (p[2] - p[0] +
+                  f * (2.0f * p[0] - 5.0f * p[1] + 4.0f * p[2] - p[3] +
+                  f * (3.0f * (p[1] - p[2]) + p[3] - p[0])));
+}
+
+int aero_vortex_player_process(aero_vortex_player *m, const float *speed,
+                               float *const *out, int n)
+{
+    const int nout = m->stereo ? 2 : 1;
+    int clamped = 0;
+    double u_in0, u_in1, frac;
+    if (n <= 0)
+        return 0;
+    /* read the inlet before writing (the buffers may be shared) */
+    u_in0 = speed ? clean_speed(speed[0], &clamped) : 0.0;
+    u_in1 = speed ? clean_speed(speed[n - 1], &clamped) : 0.0;
+    if (speed)
+        for (int k = 1; k < n - 1; k++)
+            if (fabs(speed[k]) > AERO_MACH_LIMIT * AERO_C0) clamped = 1;
+    for (int e = 0; e < nout; e++)
+        memset(out[e], 0, sizeof(float) * (size_t)n);
+
+    /* the controls at the end of this block */
+    frac = m->ramp_left > 0.0 ? (n >= m->ramp_left ? 1.0 : n / m->ramp_left)
+                              : 1.0;
+    m->ramp_left = m->ramp_left > n ? m->ramp_left - n : 0.0;
+    if (!m->tab) {
+        for (int k = 0; k < 6; k++)
+            m->ear[k] += (m->ear_target[k] - m->ear[k]) * frac;
+        for (int i = 0; i < m->n; i++) {
+            m->speed[i] += (m->speed_target[i] - m->speed[i]) * frac;
+            for (int k = 0; k < 3; k++)
+                m->xyz[3 * i + k] += (m->xyz_target[3 * i + k] - m->xyz[3 * i + k]) * frac;
+            m->dist[2 * i] = m->dist[2 * i + 1] = -1.0;
+        }
+        m->gain += (m->gain_target - m->gain) * frac;
+        return clamped;
+    }
+    {
+        const int F = m->frames, stride = F + PAD_BEFORE + PAD_AFTER;
+        const double step = m->rate / m->sample_rate;   /* frames/sample */
+        const double delay = m->rate / AERO_C0;         /* frames per m */
+        const double sound = m->sample_rate / AERO_C0;  /* 1 / (m/sample of c0) */
+        const double inv_n = 1.0 / n;
+        double ear0[6];
+        memcpy(ear0, m->ear, sizeof ear0);
+        for (int k = 0; k < 6; k++)
+            m->ear[k] += (m->ear_target[k] - m->ear[k]) * frac;
+        for (int i = 0; i < m->n; i++) {
+            double u0 = u_in0 + m->speed[i], u1, wa0, wb0, wa1, wb1;
+            int c;
+            m->speed[i] += (m->speed_target[i] - m->speed[i]) * frac;
+            u1 = u_in1 + m->speed[i];
+            if (u1 > AERO_MACH_LIMIT * AERO_C0) u1 = AERO_MACH_LIMIT * AERO_C0;
+            if (u0 > AERO_MACH_LIMIT * AERO_C0) u0 = AERO_MACH_LIMIT * AERO_C0;
+            c = speed_pair(m, u1);
+            speed_weights(m, u0, c, &wa0, &wb0);
+            speed_weights(m, u1, c, &wa1, &wb1);
+            {
+                for (int k = 0; k < 3; k++)
+                    m->xyz[3 * i + k] += (m->xyz_target[3 * i + k] - m->xyz[3 * i + k]) * frac;
+                for (int e = 0; e < nout; e++) {
+                    /* r1 now; rs: had only the source moved (the ear where it
+                       was at the block's start) */
+                    double r1 = distance(m->xyz + 3 * i, m->ear + 3 * e);
+                    double rs = distance(m->xyz + 3 * i, ear0 + 3 * e);
+                    double r0 = m->dist[2 * i + e];
+                    double g0, g1, s0, ds, vs, vl;
+                    const float *qa = m->tab + (size_t)c * stride;
+                    const float *qb = m->nspeeds > 1 ? qa + stride : qa;
+                    float *o = out[e];
+                    if (r1 < m->r_min) r1 = m->r_min;
+                    if (rs < m->r_min) rs = m->r_min;
+                    if (r0 < 0.0) {
+                        /* first block: start at the source's offset, delayed
+                           by the distance, with no jump */
+                        r0 = r1;
+                        rs = r1;
+                        m->rd[2 * i + e] = m->pos[i] - r1 * delay;
+                    }
+                    m->dist[2 * i + e] = r1;
+                    /* the rates of change of r from each motion, in units
+                       of c0 (m per sample / (c0 / sr)) */
+                    vs = (rs - r0) * inv_n * sound;
+                    vl = (r1 - rs) * inv_n * sound;
+                    if (vs < -0.9) vs = -0.9; /* a jump, not a motion */
+                    if (vs > 10.0) vs = 10.0;
+                    if (vl > 0.9) vl = 0.9;
+                    if (vl < -10.0) vl = -10.0;
+                    ds = step * (1.0 - vl) / (1.0 + vs);
+                    s0 = fmod(m->rd[2 * i + e], (double)F);
+                    if (s0 < 0.0) s0 += F;
+                    m->rd[2 * i + e] = fmod(s0 + n * ds, (double)F);
+                    if ((wa0 == 0.0 && wb0 == 0.0 && wa1 == 0.0 && wb1 == 0.0))
+                        continue;
+                    g0 = 1.0 / r0;
+                    g1 = 1.0 / r1;
+                    {
+                        const float dwa = (float)((wa1 - wa0) * inv_n),
+                                    dwb = (float)((wb1 - wb0) * inv_n),
+                                    dg = (float)((g1 - g0) * inv_n);
+                        float wa = (float)wa0, wb = (float)wb0, g = (float)g0;
+                        double s = s0;
+                        for (int k = 0; k < n; k++) {
+                            int idx;
+                            float f;
+                            if (s >= F) s -= F;
+                            else if (s < 0.0) s += F;
+                            idx = (int)s;
+                            if (idx >= F) idx = F - 1; /* rounding */
+                            f = (float)(s - idx);
+                            o[k] += g * (wa * cubic(qa + idx, f) +
+                                         wb * cubic(qb + idx, f));
+                            s += ds;
+                            wa += dwa;
+                            wb += dwb;
+                            g += dg;
+                        }
+                    }
+                }
+            }
+            m->pos[i] += n * step;
+            if (m->pos[i] >= F)
+                m->pos[i] = fmod(m->pos[i], (double)F);
+        }
+    }
+    /* microphone limit (on the pressure), then the gain; no NaN leaves */
+    {
+        double g1 = m->gain + (m->gain_target - m->gain) * frac;
+        const float dg = (float)((g1 - m->gain) / n);
+        for (int e = 0; e < nout; e++) {
+            float *o = out[e];
+            const float lim = (float)m->clip;
+            float g = (float)m->gain;
+            for (int k = 0; k < n; k++, g += dg) {
+                float v = o[k];
+                if (!(v == v)) v = 0.0f;
+                if (lim > 0.0f) {
+                    if (v > lim) v = lim;
+                    if (v < -lim) v = -lim;
+                }
+                v *= g;
+                if (v > 1e30f) v = 1e30f;
+                if (v < -1e30f) v = -1e30f;
+                o[k] = v;
+            }
+        }
+        m->gain = g1;
+    }
+    return clamped;
+}

@@ -1,0 +1,106 @@
+/* aero: real-time vortex sound from a vortex texture Q(u, t) (paper 004,
+ * section 6), the core of [vortex~].
+ *
+ * n source volumes, each with an average flow speed u_i and a position;
+ * the listener (mono) or two ears (stereo) hear
+ *     p(t) = SUM_i Q(u_i, t - r_i / c0) / r_i          (DESIGN.md: 1/r;
+ * the paper's 1/r^3 of eq. 5 is its misprinted eq. 1). Details:
+ *  - u_i = |speed inlet| + the source's own speed (`speeds`); Q is
+ *    interpolated linearly between the stored speeds, clamped at the
+ *    largest (as the paper truncates u at U), and below the smallest it
+ *    is the smallest's channel scaled by (u / u_1)^4 (the quadrupole law,
+ *    pressure ~ u^4), so silence at u = 0;
+ *  - each source reads the looped texture from its own random offset
+ *    (seeded), so n equal sources add in power (+10 log10 n dB), not in
+ *    amplitude;
+ *  - the retarded time t - r_i/c0 is a fractional read position (4-point
+ *    cubic interpolation) that advances at (1 - v_l/c0) / (1 + v_s/c0)
+ *    frames per frame, v_s and v_l the rates at which the source's and
+ *    the listener's own motion change r (the exact Doppler factor of a
+ *    source moving through still air, heard by a moving listener);
+ *  - the texture is a seamless loop (aerotex cross-fades its ends), read
+ *    modulo its length;
+ *  - `clip` limits |p| at the microphone (the paper's treatment of
+ *    explosions), then `gain` scales the result.
+ * Speeds, positions, the listener and the gain glide linearly over
+ * `ramp` ms.
+ *
+ * Life cycle: init, set_*, process, free. No globals; no allocation in
+ * process (set_count and set_texture allocate). */
+#ifndef AERO_VORTEX_PLAYER_H
+#define AERO_VORTEX_PLAYER_H
+
+#include "texture.h"
+
+#include <stddef.h>
+#include <stdint.h>
+
+#define AERO_VORTEX_MAX_SOURCES 4096
+
+typedef struct aero_vortex_player {
+    double sample_rate;
+    int stereo;
+    uint32_t rng;
+    double gain, gain_target;   /* linear, glides like the others */
+    double clip;                /* Pa; 0 = off */
+    double ramp_samples, ramp_left;
+    double r_min;               /* distances below are clamped, m */
+
+    /* texture, channel-major, each channel padded by one frame before and
+       three after (wrapped) for the cubic read */
+    aero_texture *texture;
+    float *tab;
+    int frames, nspeeds;
+    double *speeds;             /* points into the texture */
+    double rate;
+
+    /* sources */
+    int n;
+    double *pos;                /* texture read position, frames */
+    double *speed, *speed_target;
+    double *xyz, *xyz_target;   /* 3 n */
+    double *dist;               /* 2 n: distance to each ear at the end of
+                                   the last block (<0: not yet known) */
+    double *rd;                 /* 2 n: read position for each ear, frames */
+    double ear[6], ear_target[6]; /* mono uses ear 0 */
+} aero_vortex_player;
+
+/* Defaults: 1 source at the origin, listener at (0, 1, 0), ears at
+   (-0.1, 1, 0) and (0.1, 1, 0), gain 1, no clip, ramp 20 ms, no texture
+   (silence). 0, or -1 when out of memory. */
+int aero_vortex_player_init(aero_vortex_player *m, double sample_rate,
+                            int stereo, uint32_t seed);
+void aero_vortex_player_free(aero_vortex_player *m);
+
+/* Setters: 0 when accepted, -1 when invalid (the old value stays). */
+int aero_vortex_player_set_sample_rate(aero_vortex_player *m, double sr);
+/* number of source volumes 1..AERO_VORTEX_MAX_SOURCES (allocates; new
+   sources start at the origin, speed 0, with fresh random offsets) */
+int aero_vortex_player_set_count(aero_vortex_player *m, int n);
+/* per-source speeds (m/s, >= 0), count values for sources 0..count-1 */
+int aero_vortex_player_set_speeds(aero_vortex_player *m, const double *u,
+                                  int count);
+/* per-source positions x y z (m), count sources */
+int aero_vortex_player_set_positions(aero_vortex_player *m,
+                                     const double *xyz, int count);
+int aero_vortex_player_set_listener(aero_vortex_player *m, double x,
+                                    double y, double z);
+int aero_vortex_player_set_ears(aero_vortex_player *m, const double e[6]);
+int aero_vortex_player_set_gain_db(aero_vortex_player *m, double db);
+/* microphone limit, Pa (0: off) */
+int aero_vortex_player_set_clip(aero_vortex_player *m, double pa);
+int aero_vortex_player_set_ramp_ms(aero_vortex_player *m, double ms);
+/* new random texture offsets from this seed */
+void aero_vortex_player_set_seed(aero_vortex_player *m, uint32_t seed);
+/* takes ownership of a loaded kind=vortex texture (returns -1 and frees
+   nothing when it is not usable); NULL: silence */
+int aero_vortex_player_set_texture(aero_vortex_player *m, aero_texture *t,
+                                   char *err, size_t errlen);
+
+/* n samples; speed in m/s (NaN -> 0, |u| clamped at Mach 0.3; may be
+   NULL: 0); out[0] (and out[1] in stereo) in Pa. Returns 1 if a speed was
+   clamped. The outputs may alias the speed input. */
+int aero_vortex_player_process(aero_vortex_player *m, const float *speed,
+                               float *const *out, int n);
+
+#endif

@@ -1,0 +1,239 @@
+/* aero: tests of the 3D box flow solver (src/core/flow3d.c) on tiny grids:
+ * the projection is exact for its discrete operator (a random field
+ * becomes divergence-free, a divergence-free field is left alone, a pure
+ * gradient is removed), a uniform inflow stays uniform (no spurious
+ * vorticity), a perturbed inflow stays finite and bounded with the
+ * absorbing top layer, the vorticity of a known shear flow. */
+#include "unit.h"
+#include "aero_air.h"
+#include "aero_util.h"
+#include "flow3d.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+static int make(aero_flow3d *s, int nx, int ny, int nz, double conf)
+{
+    aero_flow3d_params p;
+    char err[256];
+    memset(&p, 0, sizeof p);
+    p.nx = nx;
+    p.ny = ny;
+    p.nz = nz;
+    p.h = 0.01;
+    p.nu = 0.0;
+    p.confinement = conf;
+    p.u_ref = 2.0;
+    p.sponge = 0.15;
+    if (aero_flow3d_init(s, &p, err, sizeof err)) {
+        printf("  init failed: %s\n", err);
+        return -1;
+    }
+    return 0;
+}
+
+static double max_abs(const float *a, size_t n)
+{
+    double m = 0.0;
+    for (size_t k = 0; k < n; k++)
+        if (fabs(a[k]) > m) m = fabs(a[k]);
+    return m;
+}
+
+static void test_projection(void)
+{
+    aero_flow3d s;
+    uint32_t rng = 12345;
+    size_t uvn, wn;
+    double before, after;
+    printf("projection (8 x 6 x 10)\n");
+    if (make(&s, 8, 6, 10, 0.0)) return;
+    uvn = s.plane * (s.nz + 2);
+    wn = s.plane * (s.nz + 1);
+    for (size_t k = 0; k < uvn; k++) {
+        s.u[k] = (float)aero_uniform(&rng);
+        s.v[k] = (float)aero_uniform(&rng);
+    }
+    for (size_t k = 0; k < wn; k++)
+        s.w[k] = (float)(2.0 + aero_uniform(&rng));
+    for (size_t k = 0; k < s.plane; k++) {
+        s.in_u[k] = s.u[k];
+        s.in_v[k] = s.v[k];
+        s.in_w[k] = s.w[k];
+    }
+    before = aero_flow3d_max_divergence(&s);
+    aero_flow3d_project(&s);
+    after = aero_flow3d_max_divergence(&s);
+    /* negative control: the random field is far from divergence-free */
+    UNIT_CHECK(before > 0.5, "a random field has |div u| h up to %.3g m/s",
+               before);
+    /* float rounding of O(1) values: ~1e-6 */
+    UNIT_CHECK(after < 1e-5, "after the projection |div u| h <= %.2g m/s",
+               after);
+    /* projecting again changes nothing (a projection is idempotent) */
+    {
+        float *copy = malloc(sizeof(float) * uvn);
+        double change = 0.0;
+        memcpy(copy, s.u, sizeof(float) * uvn);
+        aero_flow3d_project(&s);
+        for (size_t k = 0; k < uvn; k++)
+            if (fabs(copy[k] - s.u[k]) > change) change = fabs(copy[k] - s.u[k]);
+        UNIT_CHECK(change < 1e-5, "a divergence-free field is left alone "
+                   "(largest change %.2g m/s)", change);
+        free(copy);
+    }
+    aero_flow3d_free(&s);
+}
+
+/* a discrete gradient (Neumann at the inflow, phi = 0 on the top face)
+   is removed entirely: the Poisson solve is exact for its operator */
+static void test_gradient_removed(void)
+{
+    aero_flow3d s;
+    double *phi;
+    uint32_t rng = 777;
+    double size = 0.0, left;
+    printf("a pure gradient is removed\n");
+    if (make(&s, 6, 8, 7, 0.0)) return;
+    phi = malloc(sizeof(double) * s.plane * s.nz);
+    for (size_t c = 0; c < s.plane * s.nz; c++)
+        phi[c] = aero_uniform(&rng);
+    memset(s.u, 0, sizeof(float) * s.plane * (s.nz + 2));
+    memset(s.v, 0, sizeof(float) * s.plane * (s.nz + 2));
+    memset(s.w, 0, sizeof(float) * s.plane * (s.nz + 1));
+    for (int k = 0; k < s.nz; k++)
+        for (int j = 0; j < s.ny; j++)
+            for (int i = 0; i < s.nx; i++) {
+                int im = i ? i - 1 : s.nx - 1, jm = j ? j - 1 : s.ny - 1;
+                size_t c = AERO_F3_C(&s, i, j, k);
+                s.u[AERO_F3_UV(&s, i, j, k)] =
+                    (float)(phi[c] - phi[AERO_F3_C(&s, im, j, k)]);
+                s.v[AERO_F3_UV(&s, i, j, k)] =
+                    (float)(phi[c] - phi[AERO_F3_C(&s, i, jm, k)]);
+                if (k > 0)
+                    s.w[c] = (float)(phi[c] - phi[c - s.plane]);
+            }
+    for (size_t c = 0; c < s.plane; c++)
+        s.w[(size_t)s.nz * s.plane + c] =
+            (float)(-2.0 * phi[(size_t)(s.nz - 1) * s.plane + c]);
+    size = max_abs(s.u + s.plane, s.plane * s.nz);
+    aero_flow3d_project(&s);
+    left = max_abs(s.u + s.plane, s.plane * s.nz);
+    left = fmax(left, max_abs(s.v + s.plane, s.plane * s.nz));
+    left = fmax(left, max_abs(s.w, s.plane * (s.nz + 1)));
+    UNIT_CHECK(size > 0.5 && left < 1e-5 * size,
+               "gradient of size %.3g reduced to %.2g", size, left);
+    free(phi);
+    aero_flow3d_free(&s);
+}
+
+static void test_uniform_flow(void)
+{
+    aero_flow3d s;
+    const double U = 2.0;
+    double dev = 0.0;
+    printf("uniform inflow\n");
+    if (make(&s, 8, 8, 12, 0.3)) return;
+    for (size_t c = 0; c < s.plane * (s.nz + 1); c++)
+        s.w[c] = (float)U;
+    for (size_t c = 0; c < s.plane; c++)
+        s.in_w[c] = (float)U;
+    for (int n = 0; n < 50; n++)
+        aero_flow3d_step(&s, 0.5 * 0.01 / U);
+    aero_flow3d_vorticity(&s);
+    for (size_t c = 0; c < s.plane * (s.nz + 1); c++)
+        if (fabs(s.w[c] - U) > dev) dev = fabs(s.w[c] - U);
+    UNIT_CHECK(dev < 1e-4 * U, "stays uniform: largest |w - U| = %.2g m/s",
+               dev);
+    UNIT_CHECK(max_abs(s.omag, s.plane * s.nz) < 1e-3 * U / 0.01,
+               "no spurious vorticity: max |omega| %.2g 1/s",
+               max_abs(s.omag, s.plane * s.nz));
+    aero_flow3d_free(&s);
+}
+
+/* a shear u = A sin(2 pi j / ny) (divergence-free) has omega_z =
+   -du/dy = -A (2 pi / L) cos(...), within the central difference's
+   sin(k h)/(k h) */
+static void test_vorticity(void)
+{
+    aero_flow3d s;
+    const double A = 1.0;
+    double kk, want, got;
+    printf("vorticity of a shear flow\n");
+    if (make(&s, 8, 16, 6, 0.0)) return;
+    kk = 2.0 * AERO_PI / (16 * 0.01);
+    for (int k = -1; k <= s.nz; k++)
+        for (int j = 0; j < s.ny; j++)
+            for (int i = 0; i < s.nx; i++)
+                s.u[AERO_F3_UV(&s, i, j, k)] =
+                    (float)(A * sin(kk * (j + 0.5) * 0.01));
+    aero_flow3d_vorticity(&s);
+    got = s.oz[AERO_F3_C(&s, 3, 0, 2)];
+    want = -A * kk * cos(kk * 0.5 * 0.01) * sin(kk * 0.01) / (kk * 0.01);
+    UNIT_NEAR_REL(got, want, 1e-4, "omega_z at y = h/2 (1/s)");
+    UNIT_CHECK(max_abs(s.ox, s.plane * s.nz) < 1e-6 &&
+                   max_abs(s.oy, s.plane * s.nz) < 1e-6,
+               "omega_x, omega_y zero");
+    aero_flow3d_free(&s);
+}
+
+/* a strongly perturbed inflow for many steps: finite and bounded */
+static void test_turbulent_stays_bounded(void)
+{
+    aero_flow3d s;
+    const double U = 2.0, dt = 0.5 * 0.01 / U;
+    uint32_t rng = 99;
+    double worst = 0.0;
+    int ok = 1;
+    printf("perturbed inflow, 1500 steps (12 x 12 x 18)\n");
+    if (make(&s, 12, 12, 18, 0.3)) return;
+    for (size_t c = 0; c < s.plane * (s.nz + 1); c++)
+        s.w[c] = (float)U;
+    for (int n = 0; n < 1500 && ok; n++) {
+        /* a new random inflow every 10 steps */
+        if (n % 10 == 0)
+            for (size_t c = 0; c < s.plane; c++) {
+                s.in_u[c] = (float)(0.5 * U * aero_uniform(&rng));
+                s.in_v[c] = (float)(0.5 * U * aero_uniform(&rng));
+                s.in_w[c] = (float)(U * (1.0 + 0.5 * aero_uniform(&rng)));
+            }
+        if (aero_flow3d_step(&s, dt)) ok = 0;
+        worst = fmax(worst, max_abs(s.w, s.plane * (s.nz + 1)));
+    }
+    UNIT_CHECK(ok && worst < 6.0 * U, "finite, max |w| %.3g m/s (U = %g)",
+               worst, U);
+    UNIT_CHECK(aero_flow3d_max_divergence(&s) < 1e-5,
+               "divergence-free after every step (%.2g m/s)",
+               aero_flow3d_max_divergence(&s));
+    aero_flow3d_free(&s);
+}
+
+static void test_bad_params(void)
+{
+    aero_flow3d s;
+    aero_flow3d_params p;
+    char err[256];
+    printf("bad parameters\n");
+    memset(&p, 0, sizeof p);
+    p.nx = 7;
+    p.ny = 8;
+    p.nz = 8;
+    p.h = 0.01;
+    UNIT_CHECK(aero_flow3d_init(&s, &p, err, sizeof err) == -1,
+               "odd nx refused: %s", err);
+    p.nx = 8;
+    p.h = -1.0;
+    UNIT_CHECK(aero_flow3d_init(&s, &p, err, sizeof err) == -1,
+               "negative cell size refused: %s", err);
+}
+
+int main(void)
+{
+    test_projection();
+    test_gradient_removed();
+    test_uniform_flow();
+    test_vorticity();
+    test_turbulent_stays_bounded();
+    test_bad_params();
+    return unit_summary();
+}

@@ -5,6 +5,9 @@
 /* subcommands: each returns the process exit status */
 int aerotex_aeolian(int argc, char **argv, int cavity);
 int aerotex_info(int argc, char **argv);
+/* field auralization (paper 002): aerotex_field.c */
+int aerotex_field_demo(int argc, char **argv);
+int aerotex_auralize(int argc, char **argv);
 
 /* vorticity picture: w (U/d) on nx x ny cells, solid fraction for the
    body; writes an RGB PNG (row 0 at the bottom); 0 or -1 */

@@ -5,10 +5,12 @@
 
 void aeolian_tilde_setup(void);
 void cavity_tilde_setup(void);
+void fieldsound_tilde_setup(void);
 
 void aero_setup(void)
 {
     aeolian_tilde_setup();
     cavity_tilde_setup();
-    post("aero: aerodynamic sound library loaded ([aeolian~] [cavity~])");
+    fieldsound_tilde_setup();
+    post("aero: aerodynamic sound library loaded ([aeolian~] [cavity~] [fieldsound~])");
 }

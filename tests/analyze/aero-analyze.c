@@ -13,6 +13,8 @@
  *                               below --max (default 1e4)
  *   aero-analyze clicks FILE    worst local jump of the 2nd difference
  *                               against its neighbourhood (a ratio)
+ *   aero-analyze onset FILE     time of the first sample with |x| > 1e-3
+ *                               of the file's peak, seconds (after --skip)
  * options: --ch K (channel, default 0)  --skip S (seconds ignored at the
  * start)  --fmin F --fmax F (peak search range)  --nfft N
  * --smooth HZ (moving average of the spectrum before the peak search)
@@ -298,7 +300,7 @@ static int verdict(const char *what, double value, const char *unit,
 static void usage(void)
 {
     fprintf(stderr, "usage: aero-analyze peak|peakratio|width|level|leveldiff|band|finite|"
-                    "clicks FILE [FILE2] [F1 F2] [options]\n");
+                    "clicks|onset FILE [FILE2] [F1 F2] [options]\n");
 }
 
 int main(int argc, char **argv)
@@ -395,6 +397,20 @@ int main(int argc, char **argv)
         rc = bad || biggest > limit;
         printf("%s finite %s: %ld NaN/Inf samples, max |x| %.4g (limit %.4g)"
                "\n", rc ? "FAIL" : "ok", pos[0], bad, biggest, limit);
+    } else if (!strcmp(cmd, "onset")) {
+        /* first sound: arrival times (field auralization, retarded time) */
+        double top = 0;
+        long first = -1;
+        for (long i = 0; i < s.n; i++)
+            if (fabs(s.x[i]) > top)
+                top = fabs(s.x[i]);
+        for (long i = 0; i < s.n && top > 0; i++)
+            if (fabs(s.x[i]) > 1e-3 * top) {
+                first = i;
+                break;
+            }
+        snprintf(what, sizeof(what), "onset of %s", pos[0]);
+        rc = verdict(what, first < 0 ? NAN : first / s.sr, "s", &o, 0);
     } else if (!strcmp(cmd, "clicks")) {
         snprintf(what, sizeof(what), "click ratio of %s", pos[0]);
         rc = verdict(what, click_ratio(&s), "", &o, 0);

@@ -132,7 +132,7 @@ if command -v valgrind >/dev/null 2>&1; then
 fi
 
 [ -n "$BENCH_ONLY_AEOLIAN" ] && exit 0
-for b in bench/texture.sh; do
+for b in bench/texture.sh bench/field.sh; do
     [ -f "$b" ] && sh "$b"
 done
 # [treebranch~] on the shipped trees against paper 003's Table I

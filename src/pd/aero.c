@@ -8,6 +8,7 @@ void cavity_tilde_setup(void);
 void treebranch_tilde_setup(void);
 void leafwave_tilde_setup(void);
 void vortex_tilde_setup(void);
+void fieldsound_tilde_setup(void);
 
 void aero_setup(void)
 {
@@ -16,6 +17,7 @@ void aero_setup(void)
     treebranch_tilde_setup();
     leafwave_tilde_setup();
     vortex_tilde_setup();
+    fieldsound_tilde_setup();
     post("aero: aerodynamic sound library loaded ([aeolian~] [cavity~] "
-         "[treebranch~] [leafwave~] [vortex~])");
+         "[treebranch~] [leafwave~] [vortex~] [fieldsound~])");
 }

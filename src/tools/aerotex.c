@@ -90,6 +90,20 @@ static void usage(FILE *f)
 "      --leaf-width <m> (0.05); defaults depth 4, 2000 leaves, seed 1\n"
 "  aerotex tree --check FILE.tree\n"
 "      reads a tree, reports bad lines with their numbers, prints its size\n"
+"  aerotex field-demo -o DIR\n"
+"      writes a synthetic volume (an expanding burst with turbulence) in the\n"
+"      field volume format (src/core/field_volume.h): --size N (64),\n"
+"      --frames N (48), --spacing m (0.02), --rate fps (1000),\n"
+"      --shell-speed m/s (15), --velocity (also vx vy vz), --seed n, -q\n"
+"\n"
+"  aerotex auralize DIR --path FILE -o OUT.wav\n"
+"      field auralization (paper 002): the sound of volume DIR heard along\n"
+"      a listener path (lines 't x y z', seconds and metres, linear in\n"
+"      between). --rate Hz (48000), --speed fps (the data's rate),\n"
+"      --threshold M D Q (40 2e5 2e5), --zero f (1), --map IN_LO IN_HI\n"
+"      RHO_LO RHO_HI (0 1 0 1), --log, --vscale k (1), --no-velocity,\n"
+"      --gain dB, --duration s, --direct (per-sample reference sum),\n"
+"      --demo [N] (the synthetic burst in memory instead of DIR), -q\n"
 "\n"
 "  aerotex help\n"
 "      this text\n");
@@ -144,6 +158,10 @@ int main(int argc, char **argv)
         return aerotex_info(argc - 1, argv + 1);
     if (!strcmp(argv[1], "tree"))
         return aerotex_tree(argc - 1, argv + 1);
+    if (!strcmp(argv[1], "field-demo"))
+        return aerotex_field_demo(argc - 1, argv + 1);
+    if (!strcmp(argv[1], "auralize"))
+        return aerotex_auralize(argc - 1, argv + 1);
     aerotex_error("unknown command '%s' (try 'aerotex help')", argv[1]);
     return 2;
 }

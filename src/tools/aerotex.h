@@ -7,6 +7,9 @@ int aerotex_aeolian(int argc, char **argv, int cavity);
 int aerotex_info(int argc, char **argv);
 int aerotex_tree(int argc, char **argv); /* aerotex_tree.c */
 int aerotex_vortex(int argc, char **argv); /* aerotex_vortex.c */
+/* field auralization (paper 002): aerotex_field.c */
+int aerotex_field_demo(int argc, char **argv);
+int aerotex_auralize(int argc, char **argv);
 
 /* vorticity picture: w (U/d) on nx x ny cells, solid fraction for the
    body; writes an RGB PNG (row 0 at the bottom); 0 or -1 */

@@ -22,6 +22,8 @@
  *                               channel 0 (an interaural delay)
  *   aero-analyze specdist A B   rms difference of the two log spectra over
  *                               [fmin, fmax], each smoothed by --smooth, dB
+ *   aero-analyze onset FILE     time of the first sample with |x| > 1e-3
+ *                               of the file's peak, seconds (after --skip)
  * options: --ch K (channel, default 0)  --skip S (seconds ignored at the
  * start)  --fmin F --fmax F (peak search range)  --nfft N
  * --smooth HZ (moving average of the spectrum before the peak search)
@@ -367,7 +369,7 @@ static int verdict(const char *what, double value, const char *unit,
 static void usage(void)
 {
     fprintf(stderr, "usage: aero-analyze peak|peakratio|width|level|leveldiff|band|finite|"
-                    "centroid|centroidratio|clicks FILE [FILE2] [F1 F2] [options]\n");
+                    "centroid|centroidratio|clicks|onset FILE [FILE2] [F1 F2] [options]\n");
 }
 
 int main(int argc, char **argv)
@@ -492,6 +494,20 @@ int main(int argc, char **argv)
         rc = verdict(what, centroid_hz(&s2, &o) / centroid_hz(&s, &o), "",
                      &o, 1);
         free(s2.x);
+    } else if (!strcmp(cmd, "onset")) {
+        /* first sound: arrival times (field auralization, retarded time) */
+        double top = 0;
+        long first = -1;
+        for (long i = 0; i < s.n; i++)
+            if (fabs(s.x[i]) > top)
+                top = fabs(s.x[i]);
+        for (long i = 0; i < s.n && top > 0; i++)
+            if (fabs(s.x[i]) > 1e-3 * top) {
+                first = i;
+                break;
+            }
+        snprintf(what, sizeof(what), "onset of %s", pos[0]);
+        rc = verdict(what, first < 0 ? NAN : first / s.sr, "s", &o, 0);
     } else if (!strcmp(cmd, "clicks")) {
         snprintf(what, sizeof(what), "click ratio of %s", pos[0]);
         rc = verdict(what, click_ratio(&s), "", &o, 0);

@@ -1,0 +1,888 @@
+/* aero: field auralization (paper 002): acoustic mapping, source strengths,
+ * classification, finite volumes and the retarded-time sum. See
+ * field_sound.h for the method and where it departs from the paper. */
+#include "field_sound.h"
+
+#include "aero_air.h"
+#include "aero_util.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void say(char *err, size_t errlen, const char *fmt, ...)
+{
+    va_list ap;
+    if (!err || !errlen)
+        return;
+    va_start(ap, fmt);
+    vsnprintf(err, errlen, fmt, ap);
+    va_end(ap);
+}
+
+void aero_field_params_default(aero_field_params *p)
+{
+    memset(p, 0, sizeof *p);
+    p->in_lo = 0;
+    p->in_hi = 1;
+    p->rho_lo = 0;
+    p->rho_hi = 1;
+    p->log_input = 0;
+    p->vscale = 1;
+    p->use_velocity = 1;
+    p->threshold[0] = 40;
+    p->threshold[1] = 2e5;
+    p->threshold[2] = 2e5;
+    p->zero = 1;
+}
+
+int aero_field_params_check(const aero_field_params *p, char *err,
+                            size_t errlen)
+{
+    if (!aero_is_finite(p->in_lo) || !aero_is_finite(p->in_hi) ||
+        p->in_hi == p->in_lo || fabs(p->in_hi - p->in_lo) < 1e-30) {
+        say(err, errlen, "input range %g..%g is empty", p->in_lo, p->in_hi);
+        return -1;
+    }
+    if (!aero_is_finite(p->rho_lo) || !aero_is_finite(p->rho_hi) ||
+        p->rho_lo < 0 || p->rho_hi < 0 || p->rho_hi > 1e6 ||
+        p->rho_lo > 1e6) {
+        say(err, errlen, "density range %g..%g kg/m^3 must lie in 0..1e6",
+            p->rho_lo, p->rho_hi);
+        return -1;
+    }
+    if (!aero_is_finite(p->vscale) || fabs(p->vscale) > 1e6) {
+        say(err, errlen, "velocity scale %g out of range (-1e6..1e6)",
+            p->vscale);
+        return -1;
+    }
+    for (int t = 0; t < 3; t++)
+        if (!(p->threshold[t] > 0) || p->threshold[t] > 1e30) {
+            say(err, errlen, "%s threshold %g must be > 0",
+                t == 0 ? "monopole" : t == 1 ? "dipole" : "quadrupole",
+                p->threshold[t]);
+            return -1;
+        }
+    if (!(p->zero >= 0 && p->zero <= 1)) {
+        say(err, errlen, "zero fraction %g out of range (0..1)", p->zero);
+        return -1;
+    }
+    return 0;
+}
+
+void aero_field_sources_free(aero_field_sources *s)
+{
+    free(s->pos);
+    free(s->vertex);
+    free(s->g);
+    free(s->type);
+    free(s->first);
+    free(s->last);
+    memset(s, 0, sizeof *s);
+}
+
+/* --- preprocessing ------------------------------------------------------- */
+
+void aero_field_pre_free(aero_field_pre *p)
+{
+    for (int k = 0; k < AERO_FIELD_RING; k++) {
+        free(p->rho[k]);
+        free(p->dv[k]);
+        free(p->q[k]);
+        free(p->quad[k]);
+    }
+    for (int a = 0; a < 3; a++) {
+        free(p->vel[a]);
+        free(p->strength[a]);
+    }
+    for (int a = 0; a < 6; a++)
+        free(p->tens[a]);
+    free(p->cls);
+    free(p->work);
+    free(p->entries);
+    memset(p, 0, sizeof *p);
+}
+
+int aero_field_pre_init(aero_field_pre *p, const aero_volume_info *info,
+                        const aero_field_params *par, char *err,
+                        size_t errlen)
+{
+    int ok = 1;
+    memset(p, 0, sizeof *p);
+    if (aero_field_params_check(par, err, errlen))
+        return -1;
+    if (info->nx < 2 || info->ny < 2 || info->nz < 2 || info->frames < 1 ||
+        !(info->rate > 0) || (info->fields != 1 && info->fields != 4)) {
+        say(err, errlen, "unusable volume (dims, frames, rate or fields)");
+        return -1;
+    }
+    p->info = *info;
+    p->par = *par;
+    p->n = aero_volume_count(info);
+    p->flow = par->use_velocity && info->fields == 4;
+    for (int k = 0; k < AERO_FIELD_RING; k++) {
+        ok &= !!(p->rho[k] = malloc(p->n * sizeof(float)));
+        ok &= !!(p->dv[k] = malloc(p->n * sizeof(float)));
+        ok &= !!(p->q[k] = malloc(p->n * sizeof(float)));
+        ok &= !!(p->quad[k] = malloc(p->n * sizeof(float)));
+    }
+    for (int a = 0; a < 3; a++) {
+        ok &= !!(p->vel[a] = malloc(p->n * sizeof(float)));
+        ok &= !!(p->strength[a] = malloc(p->n * sizeof(float)));
+    }
+    for (int a = 0; a < 6; a++)
+        ok &= !!(p->tens[a] = malloc(p->n * sizeof(float)));
+    ok &= !!(p->cls = malloc(p->n));
+    ok &= !!(p->work = malloc(2 * p->n * sizeof(double)));
+    if (!ok) {
+        aero_field_pre_free(p);
+        say(err, errlen, "out of memory for a %dx%dx%d volume", info->nx,
+            info->ny, info->nz);
+        return -1;
+    }
+    return 0;
+}
+
+/* ring slot of frame j (clamped to the frames that exist) */
+static int slot(const aero_field_pre *p, int j)
+{
+    if (j < 0)
+        j = 0;
+    if (j > p->info.frames - 1)
+        j = p->info.frames - 1;
+    return j % AERO_FIELD_RING;
+}
+
+/* d/dt at frame j as sum w[k] f[idx[k]] (times the rate): central inside,
+ * second-order one-sided at the first and last frames (a clamped or
+ * first-order end would turn the start of a translation into a false
+ * monopole); returns the number of terms */
+static int time_stencil(int frames, int j, int *idx, double *w)
+{
+    if (frames == 1)
+        return 0;
+    if (frames == 2) {
+        idx[0] = 0, idx[1] = 1, w[0] = -1, w[1] = 1;
+        return 2;
+    }
+    if (j == 0) {
+        idx[0] = 0, idx[1] = 1, idx[2] = 2;
+        w[0] = -1.5, w[1] = 2, w[2] = -0.5;
+        return 3;
+    }
+    if (j == frames - 1) {
+        idx[0] = j, idx[1] = j - 1, idx[2] = j - 2;
+        w[0] = 1.5, w[1] = -2, w[2] = 0.5;
+        return 3;
+    }
+    idx[0] = j - 1, idx[1] = j + 1, w[0] = -0.5, w[1] = 0.5;
+    return 2;
+}
+
+/* the last frame the stencil of frame j reaches */
+static int stencil_end(int frames, int j)
+{
+    int idx[3], end = j;
+    double w[3];
+    int terms = time_stencil(frames, j, idx, w);
+    for (int k = 0; k < terms; k++)
+        if (idx[k] > end)
+            end = idx[k];
+    return end;
+}
+
+/* out = d/dt of the ring array `ring` at frame j */
+static void time_derivative(const aero_field_pre *p, float *const *ring,
+                            int j, double *out)
+{
+    int idx[3];
+    double w[3];
+    int terms = time_stencil(p->info.frames, j, idx, w);
+    const double rate = p->info.rate;
+    for (size_t i = 0; i < p->n; i++)
+        out[i] = 0;
+    for (int k = 0; k < terms; k++) {
+        const float *f = ring[slot(p, idx[k])];
+        const double c = w[k] * rate;
+        for (size_t i = 0; i < p->n; i++)
+            out[i] += c * f[i];
+    }
+}
+
+/* Spatial stage of one frame: mapped density, velocity, momentum
+ * divergence div(rho v) and the Lighthill term d2(rho v_i v_j)/dx_i dx_j,
+ * central differences (one-sided halves at the faces). */
+static void spatial(aero_field_pre *p, const float *raw, int j)
+{
+    const aero_volume_info *v = &p->info;
+    const int nx = v->nx, ny = v->ny, nz = v->nz;
+    const size_t sx = 1, sy = (size_t)nx, sz = (size_t)nx * ny;
+    const double ih[3] = {0.5 / v->spacing[0], 0.5 / v->spacing[1],
+                          0.5 / v->spacing[2]};
+    const double lo = p->par.in_lo, span = p->par.in_hi - p->par.in_lo;
+    const double rlo = p->par.rho_lo, rspan = p->par.rho_hi - p->par.rho_lo;
+    float *rho = p->rho[slot(p, j)], *dv = p->dv[slot(p, j)];
+    float *quad = p->quad[slot(p, j)];
+    float **vel = p->vel, **tens = p->tens;
+    const size_t n = p->n;
+
+    /* 1. acoustic mapping (paper 3.2.2) */
+    for (size_t i = 0; i < n; i++) {
+        double s = raw[i];
+        if (p->par.log_input)
+            s = pow(10.0, s > 300 ? 300 : s);
+        double r = rlo + rspan * (s - lo) / span;
+        if (!aero_is_finite(r) || r < 0)
+            r = aero_is_finite(r) && r < 0 ? 0 : rlo;
+        rho[i] = (float)r;
+    }
+    /* 2. particle velocity: the flow's own, or vscale * grad(rho) */
+    for (int z = 0; z < nz; z++)
+        for (int y = 0; y < ny; y++)
+            for (int x = 0; x < nx; x++) {
+                size_t i = x + sy * y + sz * z;
+                if (p->flow) {
+                    for (int a = 0; a < 3; a++) {
+                        double u = raw[i + (size_t)(a + 1) * n];
+                        vel[a][i] = aero_is_finite(u) && fabs(u) < 1e4
+                                        ? (float)u : 0.0f;
+                    }
+                    continue;
+                }
+                size_t xm = x > 0 ? i - sx : i, xp = x < nx - 1 ? i + sx : i;
+                size_t ym = y > 0 ? i - sy : i, yp = y < ny - 1 ? i + sy : i;
+                size_t zm = z > 0 ? i - sz : i, zp = z < nz - 1 ? i + sz : i;
+                double k = p->par.vscale;
+                vel[0][i] = (float)(k * (rho[xp] - rho[xm]) * ih[0]);
+                vel[1][i] = (float)(k * (rho[yp] - rho[ym]) * ih[1]);
+                vel[2][i] = (float)(k * (rho[zp] - rho[zm]) * ih[2]);
+            }
+    /* 3. T_ij = rho v_i v_j (xx yy zz xy xz yz); momentum rho v_i kept in
+     * vel afterwards */
+    for (size_t i = 0; i < n; i++) {
+        double r = rho[i], a = vel[0][i], b = vel[1][i], c = vel[2][i];
+        tens[0][i] = (float)(r * a * a);
+        tens[1][i] = (float)(r * b * b);
+        tens[2][i] = (float)(r * c * c);
+        tens[3][i] = (float)(r * a * b);
+        tens[4][i] = (float)(r * a * c);
+        tens[5][i] = (float)(r * b * c);
+        vel[0][i] = (float)(r * a);
+        vel[1][i] = (float)(r * b);
+        vel[2][i] = (float)(r * c);
+    }
+    /* 4. div(rho v) (eq. 13 before d/dt) and d2 T_ij / dx_i dx_j (eq. 14):
+     * diagonal terms by the 3-point second difference, the mixed ones by
+     * the 4-point cross difference, counted twice (T is symmetric) */
+    const double h2[3] = {1 / (v->spacing[0] * v->spacing[0]),
+                          1 / (v->spacing[1] * v->spacing[1]),
+                          1 / (v->spacing[2] * v->spacing[2])};
+    for (int z = 0; z < nz; z++)
+        for (int y = 0; y < ny; y++)
+            for (int x = 0; x < nx; x++) {
+                size_t i = x + sy * y + sz * z;
+                size_t dxm = x > 0 ? sx : 0, dxp = x < nx - 1 ? sx : 0;
+                size_t dym = y > 0 ? sy : 0, dyp = y < ny - 1 ? sy : 0;
+                size_t dzm = z > 0 ? sz : 0, dzp = z < nz - 1 ? sz : 0;
+                double d = (vel[0][i + dxp] - vel[0][i - dxm]) * ih[0] +
+                           (vel[1][i + dyp] - vel[1][i - dym]) * ih[1] +
+                           (vel[2][i + dzp] - vel[2][i - dzm]) * ih[2];
+                dv[i] = (float)d;
+                double qq =
+                    (tens[0][i + dxp] - 2 * tens[0][i] + tens[0][i - dxm]) *
+                        (dxm && dxp ? h2[0] : 0) +
+                    (tens[1][i + dyp] - 2 * tens[1][i] + tens[1][i - dym]) *
+                        (dym && dyp ? h2[1] : 0) +
+                    (tens[2][i + dzp] - 2 * tens[2][i] + tens[2][i - dzm]) *
+                        (dzm && dzp ? h2[2] : 0);
+                qq += 2 * (tens[3][i + dxp + dyp] - tens[3][i + dxp - dym] -
+                           tens[3][i - dxm + dyp] + tens[3][i - dxm - dym]) *
+                      ih[0] * ih[1];
+                qq += 2 * (tens[4][i + dxp + dzp] - tens[4][i + dxp - dzm] -
+                           tens[4][i - dxm + dzp] + tens[4][i - dxm - dzm]) *
+                      ih[0] * ih[2];
+                qq += 2 * (tens[5][i + dyp + dzp] - tens[5][i + dyp - dzm] -
+                           tens[5][i - dym + dzp] + tens[5][i - dym - dzm]) *
+                      ih[1] * ih[2];
+                quad[i] = (float)qq;
+            }
+}
+
+/* q_j: the mass source, d rho/dt (+ div(rho v) with a flow: continuity) */
+static void mass_source(aero_field_pre *p, int j)
+{
+    const float *dv = p->dv[slot(p, j)];
+    float *q = p->q[slot(p, j)];
+    double *d = p->work;
+    time_derivative(p, p->rho, j, d);
+    for (size_t i = 0; i < p->n; i++)
+        q[i] = (float)(d[i] + (p->flow ? dv[i] : 0));
+}
+
+static int add_entry(aero_field_pre *p, unsigned int vertex, float g,
+                     unsigned char type)
+{
+    if (p->count == p->cap) {
+        size_t cap = p->cap ? 2 * p->cap : 4096;
+        aero_field_entry *e = realloc(p->entries, cap * sizeof *e);
+        if (!e)
+            return -1;
+        p->entries = e;
+        p->cap = cap;
+    }
+    p->entries[p->count].vertex = vertex;
+    p->entries[p->count].g = g;
+    p->entries[p->count].type = type;
+    p->count++;
+    return 0;
+}
+
+/* Frame j: strengths, classification, source volumes, entries. The frame
+ * index of each entry is implicit: frames are emitted in order and
+ * separated by an entry of type NONE. */
+static int emit(aero_field_pre *p, int j)
+{
+    const aero_volume_info *v = &p->info;
+    const int nx = v->nx, ny = v->ny, nz = v->nz;
+    const size_t sy = (size_t)nx, sz = (size_t)nx * ny;
+    const double zero = p->par.zero;
+    const double *th = p->par.threshold;
+    const float *q = p->q[slot(p, j)];
+    const float *quad = p->quad[slot(p, j)];
+    double *dq = p->work, *ddv = p->work + p->n;
+    time_derivative(p, p->q, j, dq);
+    time_derivative(p, p->dv, j, ddv);
+    float *sm = p->strength[0], *sd = p->strength[1], *sq = p->strength[2];
+    unsigned char *cls = p->cls;
+    for (size_t i = 0; i < p->n; i++) {
+        double m = fabs(q[i]), d = fabs(ddv[i]);
+        double w = fabs(quad[i]);
+        sm[i] = (float)m, sd[i] = (float)d, sq[i] = (float)w;
+        cls[i] = m > th[0] ? AERO_FIELD_MONOPOLE
+                 : m <= zero * th[0] && d > th[1] ? AERO_FIELD_DIPOLE
+                 : m <= zero * th[0] && d <= zero * th[1] && w > th[2]
+                     ? AERO_FIELD_QUADRUPOLE
+                     : AERO_FIELD_NONE;
+    }
+    for (int z = 0; z < nz; z++)
+        for (int y = 0; y < ny; y++)
+            for (int x = 0; x < nx; x++) {
+                size_t i = x + sy * y + sz * z;
+                int t = cls[i];
+                if (!t)
+                    continue;
+                const float *s = p->strength[t - 1];
+                const double thr = th[t - 1], si = s[i];
+                /* the six edges: cut distance to the threshold surface */
+                const int has[6] = {x > 0, x < nx - 1, y > 0, y < ny - 1,
+                                    z > 0, z < nz - 1};
+                const long step[6] = {-1, 1, -(long)sy, (long)sy, -(long)sz,
+                                      (long)sz};
+                double sum = 0;
+                int edges = 0;
+                for (int e = 0; e < 6; e++) {
+                    if (!has[e])
+                        continue;
+                    size_t nb = (size_t)((long)i + step[e]);
+                    double h = v->spacing[e / 2], cut = 0.5 * h;
+                    if (cls[nb] != t && s[nb] < thr)
+                        cut = h * (si - thr) / (si - s[nb]);
+                    sum += cut;
+                    edges++;
+                }
+                double radius = sum / edges;
+                double dvol = 4.0 / 3.0 * AERO_PI * radius * radius * radius;
+                double f = t == AERO_FIELD_MONOPOLE ? dq[i]
+                           : t == AERO_FIELD_DIPOLE ? ddv[i]
+                                                    : quad[i];
+                if (!aero_is_finite(f * dvol))
+                    continue;
+                if (add_entry(p, (unsigned int)i, (float)(f * dvol),
+                              (unsigned char)t))
+                    return -1;
+                p->points[t]++;
+            }
+    p->emitted++;
+    return add_entry(p, 0, 0, AERO_FIELD_NONE);
+}
+
+/* compute every q and emit every frame whose stencils are complete */
+static int advance(aero_field_pre *p)
+{
+    const int frames = p->info.frames;
+    while (p->q_done < frames && stencil_end(frames, p->q_done) < p->pushed)
+        mass_source(p, p->q_done++);
+    while (p->emitted < frames &&
+           stencil_end(frames, p->emitted) < p->q_done)
+        if (emit(p, p->emitted))
+            return -1;
+    return 0;
+}
+
+int aero_field_pre_push(aero_field_pre *p, const float *raw, char *err,
+                        size_t errlen)
+{
+    int j = p->pushed;
+    if (j >= p->info.frames) {
+        say(err, errlen, "more frames pushed than the volume has");
+        return -1;
+    }
+    spatial(p, raw, j);
+    p->pushed++;
+    if (advance(p)) {
+        say(err, errlen, "out of memory for the source list");
+        return -1;
+    }
+    return 0;
+}
+
+int aero_field_pre_finish(aero_field_pre *p, aero_field_sources *out,
+                          char *err, size_t errlen)
+{
+    const aero_volume_info *v = &p->info;
+    const int frames = v->frames;
+    int *id = NULL;
+    memset(out, 0, sizeof *out);
+    if (p->pushed != frames) {
+        say(err, errlen, "only %d of %d frames were read", p->pushed, frames);
+        return -1;
+    }
+    if (advance(p) || p->emitted != frames) {
+        say(err, errlen, "out of memory for the source list");
+        return -1;
+    }
+    /* active vertices: a source in at least one frame */
+    id = malloc(p->n * sizeof(int));
+    if (!id)
+        goto oom;
+    for (size_t i = 0; i < p->n; i++)
+        id[i] = -1;
+    int count = 0;
+    for (size_t e = 0; e < p->count; e++)
+        if (p->entries[e].type && id[p->entries[e].vertex] < 0)
+            id[p->entries[e].vertex] = count++;
+    out->count = count;
+    out->frames = frames;
+    out->rate = v->rate;
+    {
+        double hmin = v->spacing[0];
+        for (int a = 1; a < 3; a++)
+            if (v->spacing[a] < hmin)
+                hmin = v->spacing[a];
+        out->min_distance = 0.5 * hmin;
+    }
+    /* with a flow all terms carry two time derivatives (see the header) */
+    out->exponent[AERO_FIELD_NONE] = 0;
+    out->exponent[AERO_FIELD_MONOPOLE] = 2;
+    out->exponent[AERO_FIELD_DIPOLE] = p->flow ? 2 : 1;
+    out->exponent[AERO_FIELD_QUADRUPOLE] = p->flow ? 2 : 0;
+    memcpy(out->points, p->points, sizeof out->points);
+    size_t cells = (size_t)(count ? count : 1) * frames;
+    out->pos = malloc(3 * sizeof(float) * (count ? count : 1));
+    out->vertex = malloc(sizeof(int) * (count ? count : 1));
+    out->g = calloc(cells, sizeof(float));
+    out->type = calloc(cells, 1);
+    out->first = malloc(sizeof(int) * (count ? count : 1));
+    out->last = malloc(sizeof(int) * (count ? count : 1));
+    if (!out->pos || !out->vertex || !out->g || !out->type || !out->first ||
+        !out->last)
+        goto oom;
+    for (size_t i = 0; i < p->n; i++) {
+        int s = id[i];
+        if (s < 0)
+            continue;
+        int x = (int)(i % v->nx), y = (int)(i / v->nx % v->ny);
+        int z = (int)(i / ((size_t)v->nx * v->ny));
+        double pos[3] = {v->origin[0] + x * v->spacing[0],
+                         v->origin[1] + y * v->spacing[1],
+                         v->origin[2] + z * v->spacing[2]};
+        double reach = sqrt(pos[0] * pos[0] + pos[1] * pos[1] +
+                            pos[2] * pos[2]);
+        for (int a = 0; a < 3; a++)
+            out->pos[3 * s + a] = (float)pos[a];
+        if (reach > out->max_reach)
+            out->max_reach = reach;
+        out->vertex[s] = (int)i;
+        out->first[s] = frames;
+        out->last[s] = -1;
+    }
+    int frame = 0;
+    for (size_t e = 0; e < p->count; e++) {
+        const aero_field_entry *en = &p->entries[e];
+        if (!en->type) {
+            frame++;
+            continue;
+        }
+        int s = id[en->vertex];
+        out->g[(size_t)s * frames + frame] = en->g;
+        out->type[(size_t)s * frames + frame] = en->type;
+        if (frame < out->first[s])
+            out->first[s] = frame;
+        if (frame > out->last[s])
+            out->last[s] = frame;
+    }
+    free(id);
+    free(p->entries);
+    p->entries = NULL;
+    p->count = p->cap = 0;
+    return 0;
+oom:
+    free(id);
+    aero_field_sources_free(out);
+    say(err, errlen, "out of memory for the sources");
+    return -1;
+}
+
+int aero_field_prepare(const aero_volume_info *info,
+                       const aero_field_demo *demo,
+                       const aero_field_params *par, aero_field_sources *out,
+                       aero_field_progress_fn progress, void *ctx, char *err,
+                       size_t errlen)
+{
+    aero_field_pre pre;
+    float *raw;
+    int rc = -1;
+    memset(out, 0, sizeof *out);
+    if (aero_field_pre_init(&pre, info, par, err, errlen))
+        return -1;
+    raw = malloc(aero_volume_count(info) * info->fields * sizeof(float));
+    if (!raw) {
+        say(err, errlen, "out of memory");
+        aero_field_pre_free(&pre);
+        return -1;
+    }
+    for (int k = 0; k < info->frames; k++) {
+        if (demo)
+            aero_field_demo_frame(demo, k, raw);
+        else if (aero_volume_read_frame(info, k, raw, err, errlen))
+            goto done;
+        if (aero_field_pre_push(&pre, raw, err, errlen))
+            goto done;
+        if (progress && progress(ctx, k + 1, info->frames)) {
+            say(err, errlen, "cancelled");
+            goto done;
+        }
+    }
+    rc = aero_field_pre_finish(&pre, out, err, errlen);
+done:
+    free(raw);
+    aero_field_pre_free(&pre);
+    return rc;
+}
+
+/* --- rendering ------------------------------------------------------------ */
+
+void aero_field_render_init(aero_field_render *r, double sample_rate)
+{
+    memset(r, 0, sizeof *r);
+    r->sample_rate = sample_rate > 0 && sample_rate < 1e7 ? sample_rate
+                                                           : 44100;
+    r->speed = r->speed_target = 0;
+    r->ramp_ms = 20;
+    r->gain = 1;
+    r->phase = -2;
+}
+
+void aero_field_render_free(aero_field_render *r)
+{
+    free(r->dist);
+    r->dist = NULL;
+    r->src = NULL;
+}
+
+int aero_field_render_set_sources(aero_field_render *r,
+                                  const aero_field_sources *s)
+{
+    free(r->dist);
+    r->dist = NULL;
+    r->src = NULL;
+    r->playing = 0;
+    r->envelope = 0;
+    r->dist_valid = 0;
+    if (!s)
+        return 0;
+    r->dist = malloc(sizeof(float) * (s->count ? s->count : 1));
+    if (!r->dist)
+        return -1;
+    r->src = s;
+    if (!(r->speed_target > 0))
+        r->speed = r->speed_target = s->rate;
+    return 0;
+}
+
+int aero_field_render_set_sample_rate(aero_field_render *r, double sr)
+{
+    if (!(sr > 0 && sr < 1e7))
+        return -1;
+    r->sample_rate = sr;
+    return 0;
+}
+
+int aero_field_render_set_speed(aero_field_render *r, double fps)
+{
+    if (!(fps > 0 && fps <= 1e6))
+        return -1;
+    r->speed_target = fps;
+    if (!r->playing)
+        r->speed = fps;
+    return 0;
+}
+
+static int position_ok(double x, double y, double z)
+{
+    return aero_is_finite(x) && aero_is_finite(y) && aero_is_finite(z) &&
+           fabs(x) <= 1e5 && fabs(y) <= 1e5 && fabs(z) <= 1e5;
+}
+
+int aero_field_render_set_listener(aero_field_render *r, double x, double y,
+                                   double z)
+{
+    if (!position_ok(x, y, z))
+        return -1;
+    r->target[0] = x, r->target[1] = y, r->target[2] = z;
+    r->ramp_left = r->ramp_ms * 0.001 * r->sample_rate;
+    if (r->ramp_left < 1)
+        r->ramp_left = 1;
+    return 0;
+}
+
+int aero_field_render_place_listener(aero_field_render *r, double x,
+                                     double y, double z)
+{
+    if (!position_ok(x, y, z))
+        return -1;
+    r->target[0] = r->listener[0] = x;
+    r->target[1] = r->listener[1] = y;
+    r->target[2] = r->listener[2] = z;
+    r->ramp_left = 0;
+    r->dist_valid = 0;
+    return 0;
+}
+
+int aero_field_render_set_ramp_ms(aero_field_render *r, double ms)
+{
+    if (!(ms >= 0 && ms <= 600000))
+        return -1;
+    r->ramp_ms = ms;
+    return 0;
+}
+
+int aero_field_render_set_gain_db(aero_field_render *r, double db)
+{
+    if (!(db >= -200 && db <= 120))
+        return -1;
+    r->gain = pow(10.0, db / 20.0);
+    return 0;
+}
+
+void aero_field_render_play(aero_field_render *r)
+{
+    if (!r->src)
+        return;
+    /* frame time -2 at the start: the first cubic piece that reaches
+     * frame 0 (Catmull-Rom looks two frames ahead) begins at u = -2, so
+     * nothing is heard before D/c0 (the interpolation's latency is two
+     * frames) */
+    r->phase = -2;
+    r->speed = r->speed_target;
+    r->playing = 1;
+    r->envelope = 1;
+}
+
+void aero_field_render_stop(aero_field_render *r)
+{
+    r->playing = 0;
+}
+
+double aero_field_render_length(const aero_field_sources *s, double speed,
+                                double distance)
+{
+    if (!s || !(speed > 0))
+        return 0;
+    return (s->frames + 3) / speed + (s->max_reach + distance) / AERO_C0;
+}
+
+/* Catmull-Rom coefficients of the piece [m, m+1) of source row g (zero
+ * outside the frames), each value scaled by its type's factor */
+static void piece(const float *g, const unsigned char *type, int frames,
+                  int m, const double *scale, double c[4])
+{
+    double p[4];
+    for (int k = 0; k < 4; k++) {
+        int f = m - 1 + k;
+        p[k] = f >= 0 && f < frames ? g[f] * scale[type[f]] : 0.0;
+    }
+    c[0] = p[1];
+    c[1] = 0.5 * (p[2] - p[0]);
+    c[2] = p[0] - 2.5 * p[1] + 2 * p[2] - 0.5 * p[3];
+    c[3] = 0.5 * (p[3] - p[0]) + 1.5 * (p[1] - p[2]);
+}
+
+/* one chunk of c <= AERO_FIELD_CHUNK samples */
+static int render_chunk(aero_field_render *r, float *out, int c)
+{
+    const aero_field_sources *s = r->src;
+    const double sr = r->sample_rate, inv_c0 = 1.0 / AERO_C0;
+    double l0[3], l1[3], scale[4], env0 = r->envelope, env1;
+    double s0 = r->speed, s1, ph0 = r->phase, ph1;
+    int remaining = 0;
+
+    /* the listener: linear ramp toward the target, at most Mach 0.3 */
+    memcpy(l0, r->listener, sizeof l0);
+    if (r->ramp_left > 0) {
+        double f = c >= r->ramp_left ? 1.0 : c / r->ramp_left;
+        for (int a = 0; a < 3; a++)
+            l1[a] = l0[a] + (r->target[a] - l0[a]) * f;
+        r->ramp_left -= c;
+        if (r->ramp_left < 0)
+            r->ramp_left = 0;
+    } else
+        memcpy(l1, r->target, sizeof l1);
+    {
+        double d[3], len = 0, lim = AERO_MACH_LIMIT * AERO_C0 * c / sr;
+        for (int a = 0; a < 3; a++)
+            d[a] = l1[a] - l0[a], len += d[a] * d[a];
+        len = sqrt(len);
+        if (len > lim) {
+            /* faster than Mach 0.3: go on toward the target next chunk */
+            for (int a = 0; a < 3; a++)
+                l1[a] = l0[a] + d[a] * lim / len;
+            r->clamped = 1;
+            if (r->ramp_left < c)
+                r->ramp_left = c;
+        }
+    }
+    memcpy(r->listener, l1, sizeof l1);
+
+    /* playhead and speed: the speed glides to its target in ~10 ms */
+    {
+        double glide = c / (0.01 * sr);
+        s1 = s0 + (r->speed_target - s0) * (glide > 1 ? 1 : glide);
+    }
+    ph1 = ph0 + 0.5 * (s0 + s1) * c / sr;
+    env1 = r->playing ? 1.0 : 0.0;
+    if (!s || (env0 <= 0 && env1 <= 0)) {
+        memset(out, 0, sizeof(float) * c);
+        r->speed = s1;
+        r->envelope = env1;
+        r->dist_valid = 0;
+        return 0;
+    }
+    {
+        double sm = 0.5 * (s0 + s1) / s->rate;
+        for (int t = 0; t < 4; t++)
+            scale[t] = t ? r->gain / (4 * AERO_PI) * pow(sm, s->exponent[t])
+                         : 0;
+    }
+    double *acc = r->acc;
+    memset(acc, 0, sizeof(double) * 5 * (c + 1));
+    const int frames = s->frames;
+    const double dmin = s->min_distance;
+    for (int k = 0; k < s->count; k++) {
+        const float *pos = s->pos + 3 * k;
+        double e1[3] = {l1[0] - pos[0], l1[1] - pos[1], l1[2] - pos[2]};
+        double d1 = sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]), d0;
+        if (r->dist_valid)
+            d0 = r->dist[k];
+        else {
+            double e0[3] = {l0[0] - pos[0], l0[1] - pos[1], l0[2] - pos[2]};
+            d0 = sqrt(e0[0] * e0[0] + e0[1] * e0[1] + e0[2] * e0[2]);
+        }
+        r->dist[k] = (float)d1;
+        /* retarded frame time at both ends of the chunk: the radiation
+         * leaving the source at frame u arrives D/c0 later */
+        double u0 = ph0 - s0 * d0 * inv_c0, u1 = ph1 - s1 * d1 * inv_c0;
+        if (u0 < s->last[k] + 2)
+            remaining = 1;
+        if (u1 < s->first[k] - 2 || u0 >= s->last[k] + 2)
+            continue; /* not reached yet, or heard out */
+        double b = (u1 - u0) / c;
+        if (!(b > 1e-12))
+            b = 1e-12;
+        double w0 = 1 / (d0 > dmin ? d0 : dmin);
+        double w1 = 1 / (d1 > dmin ? d1 : dmin);
+        double wd = (w1 - w0) / c;
+        const float *g = s->g + (size_t)k * frames;
+        const unsigned char *ty = s->type + (size_t)k * frames;
+        int m_lo = (int)floor(u0), m_hi = (int)floor(u1);
+        if (m_lo < s->first[k] - 2)
+            m_lo = s->first[k] - 2;
+        if (m_hi > s->last[k] + 1)
+            m_hi = s->last[k] + 1;
+        for (int m = m_lo; m <= m_hi; m++) {
+            int is = m <= u0 ? 0 : (int)ceil((m - u0) / b);
+            int ie = m + 1 > u1 ? c : (int)ceil((m + 1 - u0) / b);
+            if (is < 0) is = 0;
+            if (ie > c) ie = c;
+            if (ie <= is)
+                continue;
+            double cf[4];
+            piece(g, ty, frames, m, scale, cf);
+            if (cf[0] == 0 && cf[1] == 0 && cf[2] == 0 && cf[3] == 0)
+                continue;
+            double al = u0 - m;
+            if (r->direct) {
+                /* the reference: every sample evaluated on its own */
+                for (int i = is; i < ie; i++) {
+                    double x = al + b * i;
+                    double v = ((cf[3] * x + cf[2]) * x + cf[1]) * x + cf[0];
+                    acc[5 * i] += v * (w0 + wd * i);
+                }
+                continue;
+            }
+            /* the piece as a cubic in the sample index i (x = al + b i),
+             * times 1/D = w0 + wd i: a quartic, added from is to ie */
+            double g0 = ((cf[3] * al + cf[2]) * al + cf[1]) * al + cf[0];
+            double g1 = ((3 * cf[3] * al + 2 * cf[2]) * al + cf[1]) * b;
+            double g2 = (3 * cf[3] * al + cf[2]) * b * b;
+            double g3 = cf[3] * b * b * b;
+            double f[5] = {g0 * w0, g1 * w0 + g0 * wd, g2 * w0 + g1 * wd,
+                           g3 * w0 + g2 * wd, g3 * wd};
+            double *a_s = acc + 5 * is, *a_e = acc + 5 * ie;
+            for (int j = 0; j < 5; j++) {
+                a_s[j] += f[j];
+                a_e[j] -= f[j];
+            }
+        }
+    }
+    r->dist_valid = 1;
+    if (r->direct) {
+        for (int i = 0; i < c; i++) {
+            double e = env0 + (env1 - env0) * i / c;
+            out[i] = (float)(acc[5 * i] * e);
+        }
+    } else {
+        double p[5] = {0, 0, 0, 0, 0};
+        for (int i = 0; i < c; i++) {
+            for (int j = 0; j < 5; j++)
+                p[j] += acc[5 * i + j];
+            double x = i;
+            double v = (((p[4] * x + p[3]) * x + p[2]) * x + p[1]) * x + p[0];
+            double e = env0 + (env1 - env0) * i / c;
+            out[i] = (float)(v * e);
+        }
+    }
+    for (int i = 0; i < c; i++)
+        if (!aero_is_finite(out[i]))
+            out[i] = 0;
+    r->phase = ph1;
+    r->speed = s1;
+    r->envelope = env1;
+    if (r->playing && !remaining)
+        r->playing = 0; /* every source has been heard */
+    return r->playing;
+}
+
+int aero_field_render_process(aero_field_render *r, float *out, int n)
+{
+    int playing = 0;
+    while (n > 0) {
+        int c = n < AERO_FIELD_CHUNK ? n : AERO_FIELD_CHUNK;
+        playing = render_chunk(r, out, c);
+        out += c;
+        n -= c;
+    }
+    return playing;
+}

@@ -46,6 +46,12 @@ suite=$?
 (cd "$ASAN_ROOT" && sh tests/robust/asan-control.sh "$REPORTS")
 control=$?
 
+# UBSan (gcc) may print into the Pd log instead of log_path: look there too
+grep -a -l -r -e "runtime error:" -e "ERROR: AddressSanitizer" \
+    -e "ERROR: LeakSanitizer" "$ASAN_ROOT/build/tests/out" 2>/dev/null |
+    grep -v asan-control | while read -r log; do
+        cp "$log" "$REPORTS/in-log.$(basename "$log")"
+    done
 reports=$(ls "$REPORTS" 2>/dev/null | grep -v '^control' | wc -l)
 echo
 if [ "$reports" -ne 0 ]; then

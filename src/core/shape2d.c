@@ -129,6 +129,16 @@ int aero_shape2d_polygon(aero_shape2d *s, const double *x, const double *y,
         s->py[i] = (y[i] - cy) * scale;
     }
     s->size = (xmax - xmin) * scale;
+    /* extreme coordinates (1e163 beside 30, found by fuzzing) made the
+     * radius Inf and the solver's grid nonsense: the outline must fit in
+     * a circle of 1000 widths */
+    double r = aero_shape2d_radius(s);
+    if (!(r <= 1e3 * s->size) || !(s->size > 0.0) || !isfinite(s->size)) {
+        aero_shape2d_free(s);
+        snprintf(err, errlen, "polygon is degenerate (radius %g for a width "
+                 "of %g)", r, (xmax - xmin) * scale);
+        return -1;
+    }
     return 0;
 }
 

@@ -4,16 +4,30 @@
 # input must load or be refused with a message, never break an invariant
 # of the harness (finite output, consistent sizes) or crash.
 section "fuzz regressions: seeds and saved crashes replayed (fuzz/targets.txt)"
-mkdir -p build/fuzz-replay
+# The harnesses and the core are compiled here with UBSan (float-to-int
+# overflow included), so that undefined behaviour a fuzz run once found
+# stays caught; check-asan sets FUZZ_REPLAY_FLAGS to add ASan.
+replay_flags=${FUZZ_REPLAY_FLAGS:--fsanitize=undefined,float-cast-overflow -fno-sanitize-recover=all}
+replay_dir=build/fuzz-replay
+mkdir -p "$replay_dir/core"
+replay_ok=1
+for c in src/core/*.c; do
+    # shellcheck disable=SC2086
+    ${CC:-cc} -std=gnu99 -O1 -g -fopenmp -Isrc/core $replay_flags -c "$c" \
+        -o "$replay_dir/core/$(basename "$c" .c).o" 2>>"$OUT/fuzz-core.build" ||
+        replay_ok=0
+done
 grep -v -e '^#' -e '^[[:space:]]*$' fuzz/targets.txt | while read -r name extra seeds; do
     [ "$extra" = "-" ] && extra=""
     [ "$seeds" = "-" ] && seeds=""
-    bin=build/fuzz-replay/$name
+    bin=$replay_dir/$name
     # shellcheck disable=SC2086
-    if ! ${CC:-cc} -std=gnu99 -O1 -g -DFUZZ_REPLAY -Wall -Wextra -fopenmp \
-        -Isrc/core "fuzz/fuzz_$name.c" $extra build/libaero_core.a -o "$bin" \
+    if [ "$replay_ok" -ne 1 ] || ! ${CC:-cc} -std=gnu99 -O1 -g -DFUZZ_REPLAY \
+        -Wall -Wextra -fopenmp $replay_flags -Isrc/core "fuzz/fuzz_$name.c" \
+        $extra "$replay_dir"/core/*.o -o "$bin" \
         -lsndfile -lfftw3f -lfftw3 -lpng -lm >"$OUT/fuzz-$name.build" 2>&1; then
-        echo "  FAIL  fuzz harness $name does not build"; cat "$OUT/fuzz-$name.build"
+        echo "  FAIL  fuzz harness $name does not build"
+        cat "$OUT/fuzz-core.build" "$OUT/fuzz-$name.build" 2>/dev/null | head -20
         echo "0 passed, 1 failed" >"$OUT/fuzz-$name.txt"
         continue
     fi

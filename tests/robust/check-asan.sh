@@ -38,7 +38,9 @@ UBSAN_OPTIONS="log_path=$REPORTS/ubsan:print_stacktrace=1:halt_on_error=1"
 # libgomp's thread pool: one thread, so the instrumented tools stay within
 # the machine's budget
 OMP_NUM_THREADS=${OMP_NUM_THREADS:-1}
-export PATH ASAN_OPTIONS LSAN_OPTIONS UBSAN_OPTIONS OMP_NUM_THREADS
+# the fuzz regressions (tests/objects/95-fuzz-replay.sh) under ASan too
+FUZZ_REPLAY_FLAGS="-fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all"
+export PATH ASAN_OPTIONS LSAN_OPTIONS UBSAN_OPTIONS OMP_NUM_THREADS FUZZ_REPLAY_FLAGS
 
 echo "== check-asan: tests/run.sh with ASan+UBSan ($LIBASAN preloaded into Pd)"
 (cd "$ASAN_ROOT" && sh tests/run.sh)

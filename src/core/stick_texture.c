@@ -681,8 +681,14 @@ static void render_source(aero_stick_texture *s, aero_stick_source *src,
             tex[3][j] = r0[c1 + 1] + fr * (r1[c1 + 1] - r0[c1 + 1]);
             inc += dinc;
             pos += inc;
-            if (pos >= frames)
-                pos -= frames;
+            /* more than a whole texture per sample (a tiny stick in a fast
+             * flow, a short texture) must still wrap into it: reading past
+             * the end was a heap overflow found by fuzzing */
+            if (pos >= frames) {
+                pos -= frames * floor(pos / frames);
+                if (!(pos >= 0.0 && pos < frames))
+                    pos = 0.0;
+            }
         }
         if (!(pos >= 0.0 && pos < frames))
             pos = 0.0;

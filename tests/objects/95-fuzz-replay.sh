@@ -4,10 +4,10 @@
 # input must load or be refused with a message, never break an invariant
 # of the harness (finite output, consistent sizes) or crash.
 section "fuzz regressions: seeds and saved crashes replayed (fuzz/targets.txt)"
-# The harnesses and the core are compiled here with UBSan (float-to-int
+# The harnesses and the core are compiled here with ASan and UBSan (float-to-int
 # overflow included), so that undefined behaviour a fuzz run once found
-# stays caught; check-asan sets FUZZ_REPLAY_FLAGS to add ASan.
-replay_flags=${FUZZ_REPLAY_FLAGS:--fsanitize=undefined,float-cast-overflow -fno-sanitize-recover=all}
+# stays caught, as do overflows and leaks.
+replay_flags=${FUZZ_REPLAY_FLAGS:--fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all}
 replay_dir=build/fuzz-replay
 mkdir -p "$replay_dir/core"
 replay_ok=1

@@ -4,7 +4,8 @@
 # aerotex, and instrumented externals loaded into the stock Pd with the
 # sanitizer runtime preloaded. Any sanitizer report fails the run, even one
 # that did not change a test's verdict (e.g. a leak found at Pd's exit).
-# Run from the repository root after `make all asan`.
+# Run from the repository root after `make all asan`. ONLY=pattern is
+# passed to tests/run.sh (e.g. ONLY=objects/9 for the robustness scripts).
 set -u
 ROOT=$(pwd)
 ASAN_ROOT=$ROOT/build-asan/root
@@ -15,9 +16,13 @@ mkdir -p "$REPORTS" "$ROOT/build-asan/bin"
 
 # the suite runs in a mirror of the tree whose build/ and externals are the
 # instrumented ones
-for d in tests help textures src abstractions Makefile pd-lib-builder; do
+for d in tests help textures src abstractions fuzz Makefile pd-lib-builder; do
     [ -e "$ROOT/$d" ] && ln -sfn "$ROOT/$d" "$ASAN_ROOT/$d"
 done
+# the writable-globals check reads the normal build's objects (the
+# sanitizers add their own globals to the instrumented ones)
+mkdir -p "$ASAN_ROOT/build"
+ln -sfn "$ROOT/build/core" "$ASAN_ROOT/build/core"
 
 # `pd` on the PATH: the stock Pd with libasan preloaded (Pd itself is not
 # instrumented; the runtime must be loaded before any instrumented

@@ -157,3 +157,88 @@ libpd-example: all
 clean: clean-aero
 clean-aero:
 	rm -rf $(BUILD) $(BUILD).log
+
+# ============================================================================
+# --- robustness (issue 10): sanitizers, fuzzing, long runs, globals --------
+#   make check-asan   unit tests + Pd batch tests under ASan/UBSan (gcc),
+#                     instrumented externals loaded into Pd with libasan
+#                     preloaded, + valgrind of the core unit tests
+#   make fuzz         libFuzzer harnesses of fuzz/targets.txt (FUZZ_SECONDS
+#                     per harness, default 300)
+#   make check-long   one hour of audio per line of tests/robust/long.txt
+#   make check-globals  no writable globals in src/ (nm)
+# Everything builds under build-asan/ and build-fuzz/; build/ is untouched.
+# ============================================================================
+DEB_PACKAGES += clang libclang-rt-14-dev
+ASAN_DIR = build-asan
+ASAN_CC = gcc
+# float-cast-overflow is not part of gcc's 'undefined': (int) of a NaN or
+# huge float from a patch is exactly what hostile input produces
+ASAN_FLAGS = -g -O1 -fno-omit-frame-pointer -fsanitize=address,undefined \
+    -fsanitize=float-cast-overflow -fno-sanitize-recover=undefined,float-cast-overflow
+ASAN_CFLAGS = -std=c99 -D_POSIX_C_SOURCE=200809L -fPIC -fopenmp \
+    -Wall -Wextra -Wshadow -Isrc/core $(ASAN_FLAGS)
+ASAN_ROOT = $(ASAN_DIR)/root
+asan.core.objects = $(patsubst src/core/%.c,$(ASAN_DIR)/core/%.o,$(core.sources))
+asan.lib = $(ASAN_DIR)/libaero_core.a
+asan.externals = $(patsubst src/pd/%.c,$(ASAN_ROOT)/%.pd_linux,$(class.sources))
+asan.tools = $(ASAN_ROOT)/build/aerotex $(ASAN_ROOT)/build/aero-analyze \
+    $(patsubst tests/unit/%.c,$(ASAN_ROOT)/build/tests/%,$(unit.sources))
+ASAN_PD_CFLAGS = -DPD -DUNIX -I/usr/include/pd -shared $(ASAN_CFLAGS)
+
+$(ASAN_DIR)/core/%.o: src/core/%.c $(wildcard src/core/*.h)
+	@mkdir -p $(dir $@)
+	$(ASAN_CC) $(ASAN_CFLAGS) -c $< -o $@
+$(asan.lib): $(asan.core.objects)
+	rm -f $@; ar rcs $@ $^
+$(ASAN_ROOT)/%~.pd_linux: src/pd/%~.c src/pd/aero_pd.h $(asan.lib)
+	@mkdir -p $(dir $@)
+	$(ASAN_CC) $(ASAN_PD_CFLAGS) $< -o $@ $(asan.lib) -lsndfile -lm
+$(ASAN_ROOT)/aero.pd_linux: $(lib.setup.sources) $(class.sources) $(asan.lib)
+	$(ASAN_CC) $(ASAN_PD_CFLAGS) $(lib.setup.sources) $(class.sources) -o $@ \
+	    $(asan.lib) -lsndfile -lm
+$(ASAN_ROOT)/build/aerotex: $(aerotex.sources) $(asan.lib)
+	@mkdir -p $(dir $@)
+	$(ASAN_CC) $(ASAN_CFLAGS) $(aerotex.sources) -o $@ \
+	    $(subst $(core.lib),$(asan.lib),$(TOOL_LIBS))
+$(ASAN_ROOT)/build/aero-analyze: $(analyze.sources) $(asan.lib)
+	@mkdir -p $(dir $@)
+	$(ASAN_CC) $(ASAN_CFLAGS) $(analyze.sources) -o $@ \
+	    $(subst $(core.lib),$(asan.lib),$(TOOL_LIBS))
+$(ASAN_ROOT)/build/tests/%: tests/unit/%.c tests/unit/unit.h $(asan.lib)
+	@mkdir -p $(dir $@)
+	$(ASAN_CC) $(ASAN_CFLAGS) $< -o $@ \
+	    $(subst $(core.lib),$(asan.lib),$(TOOL_LIBS))
+
+.PHONY: asan check-asan check-valgrind fuzz fuzz-build check-long check-globals
+asan: $(asan.externals) $(ASAN_ROOT)/aero.pd_linux $(asan.tools)
+check-asan:
+	@$(MAKE) --no-print-directory deps
+	@$(MAKE) --no-print-directory -s all asan >$(ASAN_DIR).log 2>&1 || \
+	    { cat $(ASAN_DIR).log; exit 1; }
+	@sh tests/robust/check-asan.sh
+	@$(MAKE) --no-print-directory check-valgrind
+check-valgrind:
+	@$(MAKE) --no-print-directory -s tools >/dev/null
+	@sh tests/robust/valgrind.sh
+
+FUZZ_DIR = build-fuzz
+FUZZ_SECONDS ?= 300
+fuzz:
+	@$(MAKE) --no-print-directory deps
+	@FUZZ_SECONDS=$(FUZZ_SECONDS) sh fuzz/run.sh
+
+check-long:
+	@$(MAKE) --no-print-directory deps
+	@$(MAKE) --no-print-directory -s all lib >$(BUILD).log 2>&1 || \
+	    { cat $(BUILD).log; exit 1; }
+	@sh tests/robust/long.sh
+
+check-globals:
+	@$(MAKE) --no-print-directory -s all lib >$(BUILD).log 2>&1 || \
+	    { cat $(BUILD).log; exit 1; }
+	@sh tests/robust/globals.sh
+
+clean: clean-robust
+clean-robust:
+	rm -rf $(ASAN_DIR) $(ASAN_DIR).log $(FUZZ_DIR)

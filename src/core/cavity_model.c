@@ -267,8 +267,11 @@ static void process_model(aero_cavity_model *m, const float *u, float *out,
             double g = m->mode_gain[k] + (gain_end[k] - m->mode_gain[k]) * t;
             double p = m->phase[k] + m->freq_factor[k] * u[i] / sr +
                        jitter[k] * (double)(int8_t)(word >> (8 * k)) * (1.0 / 128.0);
-            p += p < 0.0 ? 1.0 : 0.0;
-            p -= p >= 1.0 ? 1.0 : 0.0;
+            /* a short cavity in a fast flow (or a low sample rate) puts
+             * a mode above the sample rate: the phase may step by more
+             * than a cycle, so wrap by floor (sin_cycles needs [0, 1)) */
+            if (p < 0.0 || p >= 1.0)
+                p -= floor(p);
             m->phase[k] = p;
             s += g * sin_cycles((float)p);
         }

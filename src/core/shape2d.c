@@ -87,9 +87,10 @@ int aero_shape2d_polygon(aero_shape2d *s, const double *x, const double *y,
         return -1;
     }
     for (int i = 0; i < n; i++)
-        if (!isfinite(x[i]) || !isfinite(y[i])) {
-            snprintf(err, errlen, "polygon vertex %d is not a finite number",
-                     i + 1);
+        /* beyond 1e9 (in the file's unit) the centroid's sums overflow */
+        if (!(fabs(x[i]) <= 1e9) || !(fabs(y[i]) <= 1e9)) {
+            snprintf(err, errlen, "polygon vertex %d is not a finite number "
+                     "within 1e9", i + 1);
             return -1;
         }
     for (int i = 0; i < n; i++)
@@ -129,6 +130,16 @@ int aero_shape2d_polygon(aero_shape2d *s, const double *x, const double *y,
         s->py[i] = (y[i] - cy) * scale;
     }
     s->size = (xmax - xmin) * scale;
+    /* extreme coordinates (1e163 beside 30, found by fuzzing) made the
+     * radius Inf and the solver's grid nonsense: the outline must fit in
+     * a circle of 1000 widths */
+    double r = aero_shape2d_radius(s);
+    if (!(r > 0.0 && r <= 1e3 * s->size) || !isfinite(s->size)) {
+        aero_shape2d_free(s);
+        snprintf(err, errlen, "polygon is degenerate (radius %g for a width "
+                 "of %g)", r, (xmax - xmin) * scale);
+        return -1;
+    }
     return 0;
 }
 

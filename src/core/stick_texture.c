@@ -132,7 +132,12 @@ static void update_source_count(aero_stick_texture *s)
     int n = s->sources_wanted;
     if (n <= 0) {
         double len = stick_length(s->pose_to);
-        n = (int)floor(len / (3.0 * current_diameter(s)) + 0.5);
+        /* clamp before the cast: a 1e5 m pose of a 1e-5 m stick asks for
+           3e9 sources, beyond int (found by fuzzing) */
+        double want = floor(len / (3.0 * current_diameter(s)) + 0.5);
+        n = !(want >= 1.0) ? 1
+            : want > AERO_STICK_MAX_SOURCES ? AERO_STICK_MAX_SOURCES
+                                            : (int)want;
     }
     if (n < 1)
         n = 1;
@@ -200,7 +205,10 @@ int aero_stick_texture_set_texture(aero_stick_texture *s, aero_texture *t,
         }
         double v0 = aero_texture_getd(t, "v0", 0.0);
         double d = aero_texture_getd(t, "diameter", 0.0);
-        int symmetry = (int)aero_texture_getd(t, "symmetry", 0.0);
+        /* range before the cast (a file may say symmetry=1e300) */
+        double symmetry_value = aero_texture_getd(t, "symmetry", 0.0);
+        int symmetry = symmetry_value >= 0.0 && symmetry_value <= 360.0
+                           ? (int)symmetry_value : -1;
         if (!(v0 > 0.0 && v0 < 1e3) || !(d > 0.0 && d < 100.0) ||
             !(t->rate > 0.0) || t->frames < 2 || t->directions < 1 ||
             symmetry < 0 || symmetry > 360) {
@@ -219,7 +227,7 @@ int aero_stick_texture_set_texture(aero_stick_texture *s, aero_texture *t,
         s->st = aero_texture_getd(t, "st", 0.0);
         s->period = symmetry > 0 && t->directions > 1 ? 360.0 / symmetry
                                                        : 0.0;
-        s->mirror = (int)aero_texture_getd(t, "mirror", 0.0) != 0;
+        s->mirror = fabs(aero_texture_getd(t, "mirror", 0.0)) >= 1.0;
     }
     if (s->texture) {
         aero_texture_free(s->texture);
@@ -675,8 +683,14 @@ static void render_source(aero_stick_texture *s, aero_stick_source *src,
             tex[3][j] = r0[c1 + 1] + fr * (r1[c1 + 1] - r0[c1 + 1]);
             inc += dinc;
             pos += inc;
-            if (pos >= frames)
-                pos -= frames;
+            /* more than a whole texture per sample (a tiny stick in a fast
+             * flow, a short texture) must still wrap into it: reading past
+             * the end was a heap overflow found by fuzzing */
+            if (pos >= frames) {
+                pos -= frames * floor(pos / frames);
+                if (!(pos >= 0.0 && pos < frames))
+                    pos = 0.0;
+            }
         }
         if (!(pos >= 0.0 && pos < frames))
             pos = 0.0;

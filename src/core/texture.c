@@ -364,7 +364,9 @@ int aero_texture_load(const char *path, aero_texture *t, char *err,
             return load_vortex(path, t, &info, err, errlen);
         }
     }
-    dirs = (int)aero_texture_getd(t, "directions", 0.0);
+    /* range before the cast: the file may say directions=1e300 */
+    double dirs_value = aero_texture_getd(t, "directions", 0.0);
+    dirs = dirs_value >= 1.0 && dirs_value <= 1e6 ? (int)dirs_value : 0;
     if (dirs < 1 || info.channels != 3 * dirs) {
         snprintf(err, errlen,
                  "%s: %d channels do not match directions=%d (3 per direction)",

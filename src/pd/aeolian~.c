@@ -150,9 +150,9 @@ static void aeolian_tilde_ramp(t_aeolian_tilde *x, t_floatarg f)
 
 static void aeolian_tilde_seed(t_aeolian_tilde *x, t_floatarg f)
 {
-    aero_aeolian_model_set_seed(&x->x_model, (uint32_t)(int64_t)f);
+    aero_aeolian_model_set_seed(&x->x_model, aero_pd_seed(f));
     if (x->x_stick)
-        aero_stick_texture_set_seed(x->x_stick, (uint32_t)(int64_t)f);
+        aero_stick_texture_set_seed(x->x_stick, aero_pd_seed(f));
 }
 
 /* --- texture mode ------------------------------------------------------------ */
@@ -239,7 +239,9 @@ static void aeolian_tilde_roll(t_aeolian_tilde *x, t_floatarg f)
 static void aeolian_tilde_sources(t_aeolian_tilde *x, t_floatarg f)
 {
     aero_stick_texture *st = aeolian_tilde_stick(x);
-    if (st && (f != (int)f || aero_stick_texture_set_sources(st, (int)f)))
+    /* range first: (int) of NaN or 1e30 is undefined behaviour */
+    if (st && (!(f >= 0 && f <= AERO_STICK_MAX_SOURCES) || f != (int)f ||
+               aero_stick_texture_set_sources(st, (int)f)))
         pd_error(x, OBJ ": n %g: point sources must be 0 (auto: length / "
                  "3 d) to %d", f, AERO_STICK_MAX_SOURCES);
 }

@@ -26,6 +26,16 @@ static inline uint32_t aero_pd_default_seed(void)
     return seed;
 }
 
+/* A number from a patch as a 32-bit seed: any finite value wraps; NaN,
+ * infinities and beyond +-9.2e18 give 0 (converting those to an integer
+ * type is undefined behaviour in C; UBSan caught it, issue 10). */
+static inline uint32_t aero_pd_seed(t_float f)
+{
+    if (!(f > -9.2e18f && f < 9.2e18f))
+        return 0;
+    return (uint32_t)(int64_t)f;
+}
+
 /* exactly `want` numbers from a message, else an error naming the object */
 static inline int aero_pd_floats(void *x, const char *obj, const char *what,
                                  int argc, const t_atom *argv, int want,

@@ -92,7 +92,7 @@ static void cavity_tilde_exponent(t_cavity_tilde *x, t_floatarg f)
 
 static void cavity_tilde_seed(t_cavity_tilde *x, t_floatarg f)
 {
-    aero_cavity_model_set_seed(&x->x_model, (uint32_t)(int64_t)f);
+    aero_cavity_model_set_seed(&x->x_model, aero_pd_seed(f));
 }
 
 static void cavity_tilde_listener(t_cavity_tilde *x, t_symbol *s, int argc,

@@ -34,7 +34,7 @@ static void make_texture(aero_texture *t, int frames, int dirs)
 static void test_round_trip(void)
 {
     aero_texture t, b;
-    char err[256], buf[128];
+    char err[256] = "", buf[128];
     int same = 1;
     printf("round trip\n");
     make_texture(&t, 1000, 2);

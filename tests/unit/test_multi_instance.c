@@ -1,0 +1,194 @@
+/* aero (issue 10): two instances of each core, run interleaved block by
+ * block with different settings, give exactly (bit for bit) what each
+ * gives alone: no state is shared through globals or statics. A new core
+ * joins with one line in `cores` below.
+ * Negative control: a "core" whose state hides in a static variable must
+ * fail the same comparison. */
+#include "unit.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "aeolian_model.h"
+#include "cavity_model.h"
+#include "stick_texture.h"
+
+#define BLOCK 64
+#define BLOCKS 200
+
+/* an instance: make(variant) -> state, run(state, speed, out, n), drop */
+typedef struct {
+    const char *name;
+    void *(*make)(int variant);
+    void (*run)(void *state, const float *speed, float *out, int n);
+    void (*drop)(void *state);
+} core_api;
+
+/* --- [aeolian~] model mode --- */
+static void *aeolian_make(int variant)
+{
+    aero_aeolian_model *m = calloc(1, sizeof(*m));
+    aero_aeolian_model_init(m, 44100.0, 1, 11u + variant);
+    aero_aeolian_model_set_diameter(m, variant ? 0.004 : 0.01);
+    return m;
+}
+static void aeolian_run(void *s, const float *speed, float *out, int n)
+{
+    float *outs[1] = {out};
+    aero_aeolian_model_process(s, speed, outs, n);
+}
+static void plain_drop(void *s) { free(s); }
+
+/* --- [cavity~] model and texture mode --- */
+static aero_texture *synthetic_texture(const char *kind, int dirs)
+{
+    aero_texture *t = calloc(1, sizeof(*t));
+    aero_texture_init(t, 512, dirs, 16000.0);
+    for (int n = 0; n < 512 * t->channels; n++)
+        t->data[n] = (float)sin(0.05 * n) * (float)cos(0.0031 * n);
+    aero_texture_set(t, "kind", kind);
+    aero_texture_set(t, "v0", "10");
+    aero_texture_set(t, "diameter", "0.01");
+    aero_texture_set(t, "st", "0.2");
+    aero_texture_set(t, "symmetry", "0");
+    aero_texture_set(t, "mirror", "1");
+    for (int k = 0; k < dirs; k++)
+        t->angles[k] = 45.0 * k;
+    return t;
+}
+static void *cavity_make_mode(int variant, int textured)
+{
+    char err[128];
+    aero_cavity_model *m = calloc(1, sizeof(*m));
+    aero_cavity_model_init(m, 44100.0, 5u + variant);
+    aero_cavity_model_set_length(m, variant ? 0.05 : 0.02);
+    if (textured)
+        aero_cavity_model_set_texture(m, synthetic_texture("cavity", 1), err,
+                                      sizeof(err));
+    return m;
+}
+static void *cavity_make(int variant) { return cavity_make_mode(variant, 0); }
+static void *cavity_tex_make(int variant) { return cavity_make_mode(variant, 1); }
+static void cavity_run(void *s, const float *speed, float *out, int n)
+{
+    aero_cavity_model_process(s, speed, out, n);
+}
+static void cavity_drop(void *s)
+{
+    aero_cavity_model_free(s);
+    free(s);
+}
+
+/* --- [aeolian~] texture mode: a moving stick --- */
+static void *stick_make(int variant)
+{
+    char err[128];
+    aero_stick_texture *s = calloc(1, sizeof(*s));
+    aero_stick_texture_init(s, 44100.0, 1, 3u + variant);
+    aero_stick_texture_set_texture(s, synthetic_texture("aeolian", 2), err,
+                                   sizeof(err));
+    double wind[3] = {variant ? 7.0 : 12.0, 1.0, 0.0};
+    aero_stick_texture_set_wind(s, wind);
+    aero_stick_texture_set_sources(s, variant ? 3 : 5);
+    return s;
+}
+static void stick_run(void *s, const float *speed, float *out, int n)
+{
+    float *outs[1] = {out};
+    aero_stick_texture_process(s, speed, outs, n);
+}
+static void stick_drop(void *s)
+{
+    aero_stick_texture_free(s);
+    free(s);
+}
+
+/* --- negative control: state in a static, as a careless core would --- */
+static double shared_phase;
+static void *shared_make(int variant)
+{
+    double *f = calloc(1, sizeof(*f));
+    *f = variant ? 0.03 : 0.01;
+    shared_phase = 0.0;
+    return f;
+}
+static void shared_run(void *s, const float *speed, float *out, int n)
+{
+    for (int i = 0; i < n; i++) {
+        shared_phase += *(double *)s * (1.0 + speed[i]);
+        out[i] = (float)sin(shared_phase);
+    }
+}
+
+static const core_api cores[] = {
+    {"aeolian_model", aeolian_make, aeolian_run, plain_drop},
+    {"cavity_model", cavity_make, cavity_run, cavity_drop},
+    {"cavity_model (texture)", cavity_tex_make, cavity_run, cavity_drop},
+    {"stick_texture", stick_make, stick_run, stick_drop},
+};
+static const core_api control = {"static-state control", shared_make,
+                                 shared_run, plain_drop};
+
+/* a gusting speed, different for the two instances */
+static void speed_block(int variant, int b, float *speed)
+{
+    for (int i = 0; i < BLOCK; i++) {
+        double t = (b * BLOCK + i) / 44100.0;
+        speed[i] = (float)(8.0 + 4.0 * variant + 3.0 * sin(6.0 * t + variant));
+    }
+}
+
+/* alone: instance `variant` for BLOCKS blocks */
+static void run_alone(const core_api *c, int variant, float *out)
+{
+    float speed[BLOCK];
+    void *s = c->make(variant);
+    for (int b = 0; b < BLOCKS; b++) {
+        speed_block(variant, b, speed);
+        c->run(s, speed, out + b * BLOCK, BLOCK);
+    }
+    c->drop(s);
+}
+
+/* number of samples where the interleaved run differs from the lone one */
+static int interleaved_differences(const core_api *c)
+{
+    static float alone[2][BLOCK * BLOCKS], together[2][BLOCK * BLOCKS];
+    float speed[BLOCK];
+    run_alone(c, 0, alone[0]);
+    run_alone(c, 1, alone[1]);
+    void *s[2] = {c->make(0), c->make(1)};
+    for (int b = 0; b < BLOCKS; b++)
+        for (int v = 0; v < 2; v++) {
+            speed_block(v, b, speed);
+            c->run(s[v], speed, together[v] + b * BLOCK, BLOCK);
+        }
+    c->drop(s[0]);
+    c->drop(s[1]);
+    int diff = 0, sound = 0;
+    for (int v = 0; v < 2; v++)
+        for (int i = 0; i < BLOCK * BLOCKS; i++) {
+            diff += memcmp(&alone[v][i], &together[v][i], sizeof(float)) != 0;
+            sound += alone[v][i] != 0.0f;
+        }
+    UNIT_CHECK(sound > BLOCK * BLOCKS / 2,
+               "%s: the instances make sound (%d non-zero samples)", c->name,
+               sound);
+    return diff;
+}
+
+int main(void)
+{
+    for (size_t k = 0; k < sizeof(cores) / sizeof(cores[0]); k++) {
+        int diff = interleaved_differences(&cores[k]);
+        UNIT_CHECK(diff == 0,
+                   "%s: two instances interleaved = each alone, bit for bit "
+                   "(%d of %d samples differ)",
+                   cores[k].name, diff, 2 * BLOCK * BLOCKS);
+    }
+    int diff = interleaved_differences(&control);
+    UNIT_CHECK(diff > 0,
+               "negative control: a core with static state is caught (%d "
+               "samples differ)", diff);
+    return unit_summary();
+}

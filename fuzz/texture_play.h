@@ -25,8 +25,12 @@ static int fuzz_texture_check(const char *path)
         free(t);
         return 0;
     }
-    FUZZ_REQUIRE(t->frames >= 2 && t->directions >= 1 &&
-                     t->channels == 3 * t->directions && t->rate > 0.0,
+    /* an aeolian/cavity texture: 3 channels per direction; a vortex
+     * texture: no directions, one channel per (finite) speed */
+    int vortex = t->directions == 0;
+    FUZZ_REQUIRE(t->frames >= 2 && t->rate > 0.0 &&
+                     (vortex ? t->channels >= 1 && t->speeds != NULL
+                             : t->channels == 3 * t->directions),
                  "loaded texture with %d frames, %d directions, %d channels",
                  t->frames, t->directions, t->channels);
     FUZZ_REQUIRE(fuzz_finite(t->data, t->frames * t->channels),
@@ -36,7 +40,11 @@ static int fuzz_texture_check(const char *path)
     char buf[64];
     aero_texture_get(t, "kind", buf, sizeof(buf));
     aero_texture_get(t, "", buf, 1);
-    (void)aero_texture_sample(t, -12345, t->directions - 1, 2);
+    for (int k = 0; vortex && k < t->channels; k++)
+        FUZZ_REQUIRE(isfinite(t->speeds[k]) && t->speeds[k] > 0.0,
+                     "speed %d not finite and positive", k);
+    if (!vortex)
+        (void)aero_texture_sample(t, -12345, t->directions - 1, 2);
 
     /* the moving stick */
     aero_stick_texture *stick = calloc(1, sizeof(*stick));

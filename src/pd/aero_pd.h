@@ -84,22 +84,26 @@ static inline void aero_pd_parse_flags(void *x, const char *obj,
     }
 }
 
-/* Finds a texture as DESIGN.md says: next to the patch and on Pd's search
- * path (canvas_open), then in the library's own textures/ folder. Writes
- * the full path; 0 when found. */
-static inline int aero_pd_find_texture(const t_canvas *canvas,
-                                       const t_class *cls, const char *name,
-                                       char *path, size_t len)
+/* Finds a data file as DESIGN.md says: next to the patch and on Pd's
+ * search path (canvas_open), then in the library's own `folder` (textures,
+ * trees). `ext` (".wav") is appended unless the name has it. Writes the
+ * full path; 0 when found. */
+static inline int aero_pd_find_file(const t_canvas *canvas,
+                                    const t_class *cls, const char *name,
+                                    const char *ext, const char *folder,
+                                    char *path, size_t len)
 {
     char dir[MAXPDSTRING], *base;
-    size_t n = strlen(name);
-    const char *ext = n > 4 && !strcmp(name + n - 4, ".wav") ? "" : ".wav";
+    size_t n = strlen(name), e = strlen(ext);
+    if (n > e && !strcmp(name + n - e, ext))
+        ext = "";
     int fd = canvas_open(canvas, name, ext, dir, &base, MAXPDSTRING, 1);
     if (fd >= 0) {
         sys_close(fd);
         return snprintf(path, len, "%s/%s", dir, base) < (int)len ? 0 : -1;
     }
-    snprintf(path, len, "%s/textures/%s%s", class_gethelpdir(cls), name, ext);
+    snprintf(path, len, "%s/%s/%s%s", class_gethelpdir(cls), folder, name,
+             ext);
     FILE *f = fopen(path, "rb");
     if (f) {
         fclose(f);
@@ -108,28 +112,22 @@ static inline int aero_pd_find_texture(const t_canvas *canvas,
     return -1;
 }
 
-/* Finds a tree file (.tree) the same way: next to the patch and on Pd's
- * search path, then in the library's own trees/ folder ([treebranch~],
- * [leafwave~]). Writes the full path; 0 when found. */
+/* a texture (.wav) next to the patch, on the path or in textures/ */
+static inline int aero_pd_find_texture(const t_canvas *canvas,
+                                       const t_class *cls, const char *name,
+                                       char *path, size_t len)
+{
+    return aero_pd_find_file(canvas, cls, name, ".wav", "textures", path,
+                             len);
+}
+
+/* a tree file (.tree) the same way, or in trees/ ([treebranch~],
+ * [leafwave~]) */
 static inline int aero_pd_find_tree(const t_canvas *canvas,
                                     const t_class *cls, const char *name,
                                     char *path, size_t len)
 {
-    char dir[MAXPDSTRING], *base;
-    size_t n = strlen(name);
-    const char *ext = n > 5 && !strcmp(name + n - 5, ".tree") ? "" : ".tree";
-    int fd = canvas_open(canvas, name, ext, dir, &base, MAXPDSTRING, 1);
-    if (fd >= 0) {
-        sys_close(fd);
-        return snprintf(path, len, "%s/%s", dir, base) < (int)len ? 0 : -1;
-    }
-    snprintf(path, len, "%s/trees/%s%s", class_gethelpdir(cls), name, ext);
-    FILE *f = fopen(path, "rb");
-    if (f) {
-        fclose(f);
-        return 0;
-    }
-    return -1;
+    return aero_pd_find_file(canvas, cls, name, ".tree", "trees", path, len);
 }
 
 #endif

@@ -2,6 +2,7 @@
 #ifndef AERO_UTIL_H
 #define AERO_UTIL_H
 
+#include <math.h>
 #include <stdint.h>
 
 /* xorshift32 (Marsaglia 2003); the state must never be 0 */
@@ -24,6 +25,70 @@ static inline double aero_uniform(uint32_t *state)
 static inline int aero_is_finite(double v)
 {
     return v == v && v < 1e300 && v > -1e300;
+}
+
+/* 3-vectors */
+static inline double aero_dot3(const double *a, const double *b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static inline void aero_cross3(const double *a, const double *b, double *c)
+{
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* scales a to unit length (a zero vector stays zero); returns |a| */
+static inline double aero_normalise3(double *a)
+{
+    double n = sqrt(aero_dot3(a, a));
+    if (n > 0.0) {
+        a[0] /= n;
+        a[1] /= n;
+        a[2] /= n;
+    }
+    return n;
+}
+
+/* a value that moves linearly to its target in whole chunks of samples */
+typedef struct {
+    double value, target, step;
+    int chunks_left;
+} aero_ramp;
+
+static inline void aero_ramp_jump(aero_ramp *r, double v)
+{
+    r->value = r->target = v;
+    r->step = 0.0;
+    r->chunks_left = 0;
+}
+
+/* reaches v after ~ramp_samples, in whole chunks of `chunk` samples */
+static inline void aero_ramp_to(aero_ramp *r, double v, double ramp_samples,
+                                int chunk)
+{
+    int chunks = (int)ceil(ramp_samples / chunk);
+    r->target = v;
+    if (!(chunks >= 1)) {
+        r->value = v;
+        r->chunks_left = 0;
+        return;
+    }
+    r->chunks_left = chunks;
+    r->step = (v - r->value) / chunks;
+}
+
+/* the value after one more chunk */
+static inline double aero_ramp_advance(aero_ramp *r)
+{
+    if (r->chunks_left > 0) {
+        r->value += r->step;
+        if (--r->chunks_left == 0)
+            r->value = r->target;
+    }
+    return r->value;
 }
 
 #endif

@@ -13,60 +13,17 @@
 #define VELOCITY_TAU_S 0.008 /* smoothing of pose-derived velocities */
 #define MIN_SPEED 1e-6       /* below this the flow direction is unknown */
 
-/* --- small vector and ramp helpers ---------------------------------------- */
+/* --- helpers ------------------------------------------------------------- */
 
-static double dot3(const double *a, const double *b)
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
+#define dot3 aero_dot3
+#define cross3 aero_cross3
+#define normalise3 aero_normalise3
+#define ramp_jump aero_ramp_jump
+#define ramp_advance aero_ramp_advance
 
-static void cross3(const double *a, const double *b, double *c)
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static double normalise3(double *a)
-{
-    double n = sqrt(dot3(a, a));
-    if (n > 0.0) {
-        a[0] /= n;
-        a[1] /= n;
-        a[2] /= n;
-    }
-    return n;
-}
-
-static void ramp_jump(aero_ramp *r, double v)
-{
-    r->value = r->target = v;
-    r->step = 0.0;
-    r->chunks_left = 0;
-}
-
-/* the ramp reaches its target after ~ramp_samples, in whole chunks */
 static void ramp_to(aero_ramp *r, double v, double ramp_samples)
 {
-    int chunks = (int)ceil(ramp_samples / AERO_STICK_CHUNK);
-    r->target = v;
-    if (chunks < 1) {
-        r->value = v;
-        r->chunks_left = 0;
-        return;
-    }
-    r->chunks_left = chunks;
-    r->step = (v - r->value) / chunks;
-}
-
-static double ramp_advance(aero_ramp *r)
-{
-    if (r->chunks_left > 0) {
-        r->value += r->step;
-        if (--r->chunks_left == 0)
-            r->value = r->target;
-    }
-    return r->value;
+    aero_ramp_to(r, v, ramp_samples, AERO_STICK_CHUNK);
 }
 
 static int finite3(const double *v, double limit)

@@ -30,6 +30,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "aero_util.h"
 #include "texture.h"
 
 #define AERO_STICK_MAX_EARS 2
@@ -37,11 +38,6 @@
 #define AERO_STICK_CHUNK 32          /* samples per geometry update */
 #define AERO_STICK_MAX_DELAY_S 1.0   /* sound travel time kept: 343 m */
 
-/* a value that moves linearly to its target over the ramp time */
-typedef struct {
-    double value, target, step;
-    int chunks_left;
-} aero_ramp;
 
 typedef struct {
     double pos;          /* texture coordinate, frames */

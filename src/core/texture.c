@@ -11,12 +11,20 @@
 
 int aero_texture_init(aero_texture *t, int frames, int directions, double rate)
 {
+    return aero_texture_init_regions(t, frames, directions, 1, rate);
+}
+
+int aero_texture_init_regions(aero_texture *t, int frames, int directions,
+                              int regions, double rate)
+{
     memset(t, 0, sizeof *t);
-    if (frames < 1 || directions < 1 || !(rate > 0.0))
+    if (frames < 1 || directions < 1 || regions < 1 ||
+        (long)directions * regions > 4096 || !(rate > 0.0))
         return -1;
     t->frames = frames;
     t->directions = directions;
-    t->channels = 3 * directions;
+    t->regions = regions;
+    t->channels = 3 * directions * regions;
     t->rate = rate;
     t->data = calloc((size_t)frames * t->channels, sizeof(float));
     t->angles = calloc((size_t)directions, sizeof(double));
@@ -330,7 +338,7 @@ int aero_texture_load(const char *path, aero_texture *t, char *err,
     SF_INFO info;
     SNDFILE *f;
     const char *c;
-    int dirs;
+    int dirs, regions;
     memset(t, 0, sizeof *t);
     memset(&info, 0, sizeof info);
     f = sf_open(path, SFM_READ, &info);
@@ -366,11 +374,17 @@ int aero_texture_load(const char *path, aero_texture *t, char *err,
     }
     /* range before the cast: the file may say directions=1e300 */
     double dirs_value = aero_texture_getd(t, "directions", 0.0);
+    double regions_value = aero_texture_getd(t, "regions", 1.0);
     dirs = dirs_value >= 1.0 && dirs_value <= 1e6 ? (int)dirs_value : 0;
-    if (dirs < 1 || info.channels != 3 * dirs) {
+    regions = regions_value >= 1.0 && regions_value <= 4096.0 &&
+                      regions_value == floor(regions_value)
+                  ? (int)regions_value : 0;
+    if (dirs < 1 || regions < 1 ||
+        (double)info.channels != 3.0 * dirs * regions) {
         snprintf(err, errlen,
-                 "%s: %d channels do not match directions=%d (3 per direction)",
-                 path, info.channels, dirs);
+                 "%s: %d channels do not match directions=%d regions=%d (3 "
+                 "per direction and region)", path, info.channels, dirs,
+                 regions);
         goto fail;
     }
     if (aero_texture_getd(t, "frames", (double)info.frames) != info.frames) {
@@ -381,6 +395,7 @@ int aero_texture_load(const char *path, aero_texture *t, char *err,
     t->frames = (int)info.frames;
     t->channels = info.channels;
     t->directions = dirs;
+    t->regions = regions;
     t->rate = aero_texture_getd(t, "rate", (double)info.samplerate);
     if (!(t->rate > 0.0) || fabs(t->rate - info.samplerate) > 0.5) {
         snprintf(err, errlen, "%s: rate=%g does not match the file's %d Hz",
@@ -435,7 +450,16 @@ void aero_texture_resample_derivative(const double *t, const double *f,
                                       double scale, float *out, int stride,
                                       int nout)
 {
-    const double fc = 0.45 * rate, w = 8.0 / fc;
+    aero_texture_resample_derivative_fc(t, f, n, rate, 0.45 * rate, t0, scale,
+                                        out, stride, nout);
+}
+
+void aero_texture_resample_derivative_fc(const double *t, const double *f,
+                                         int n, double rate, double fc,
+                                         double t0, double scale, float *out,
+                                         int stride, int nout)
+{
+    const double w = 8.0 / fc;
     int lo = 0;
     for (int k = 0; k < nout; k++) {
         double tk = t0 + k / rate, acc = 0.0;

@@ -19,6 +19,8 @@ typedef struct {
     int frames;       /* samples per channel */
     int channels;     /* 3 * directions */
     int directions;   /* 0 for a vortex texture */
+    int regions;      /* object textures: point sources (regions) per
+                         direction, channel 3 (k regions + l) + c; else 1 */
     double rate;      /* texture sample rate, Hz */
     float *data;      /* frames * channels, interleaved */
     double *angles;   /* flow angle of each direction in the body frame, deg */
@@ -29,6 +31,10 @@ typedef struct {
 
 /* an empty texture of frames x (3 * directions) zeros; 0 or -1 */
 int aero_texture_init(aero_texture *t, int frames, int directions, double rate);
+/* an empty object texture (kind=object, 3D bodies): frames x (3 *
+   directions * regions) zeros; 0 or -1 */
+int aero_texture_init_regions(aero_texture *t, int frames, int directions,
+                              int regions, double rate);
 /* an empty vortex texture: frames x nspeeds zeros, speeds copied (they
    must increase and be > 0; the `speeds` metadata is written from them);
    0 or -1 */
@@ -61,6 +67,13 @@ void aero_texture_resample_derivative(const double *t, const double *f,
                                       int n, double rate, double t0,
                                       double scale, float *out, int stride,
                                       int nout);
+/* the same with the low-pass cut-off fc (Hz) given: below the source's
+   own Nyquist rate when it is sampled more coarsely than the texture (3D
+   solvers take larger steps), so its steps do not alias into the texture */
+void aero_texture_resample_derivative_fc(const double *t, const double *f,
+                                         int n, double rate, double fc,
+                                         double t0, double scale, float *out,
+                                         int stride, int nout);
 /* loop length in [lmin, lmax] frames whose start and end match best over
    xfade frames (normalised cross-correlation over all channels); the
    signal x (frames x channels) must hold lmax + xfade frames */

@@ -25,7 +25,8 @@
  *   aero-analyze onset FILE     time of the first sample with |x| > 1e-3
  *                               of the file's peak, seconds (after --skip)
  * options: --ch K (channel, default 0)  --skip S (seconds ignored at the
- * start)  --fmin F --fmax F (peak search range)  --nfft N
+ * start)  --dur S (seconds analysed after the skip; default all)
+ * --fmin F --fmax F (peak search range)  --nfft N
  * --smooth HZ (moving average of the spectrum before the peak search)
  *   --expect V --tol T   pass if |value - V| <= T (relative for peak,
  *                        absolute dB otherwise)
@@ -43,7 +44,7 @@
 
 typedef struct {
     int channel;
-    double skip, fmin, fmax, smooth;
+    double skip, dur, fmin, fmax, smooth;
     int nfft;
     int has_expect, has_tol, has_min, has_max;
     double expect, tol, min, max;
@@ -77,6 +78,8 @@ static int load(const char *path, const options *o, signal_t *s)
     if (skip > got)
         skip = got;
     s->n = got - skip;
+    if (o->dur > 0.0 && (long)(o->dur * info.samplerate) < s->n)
+        s->n = (long)(o->dur * info.samplerate);
     s->sr = info.samplerate;
     s->x = malloc(sizeof(double) * (s->n + 1));
     for (long i = 0; i < s->n; i++)
@@ -374,7 +377,7 @@ static void usage(void)
 
 int main(int argc, char **argv)
 {
-    options o = {0, 0.0, 20.0, 1e9, 0.0, 16384, 0, 0, 0, 0, 0, 0, 0, 0};
+    options o = {0, 0.0, 0.0, 20.0, 1e9, 0.0, 16384, 0, 0, 0, 0, 0, 0, 0, 0};
     const char *pos[6];
     int npos = 0;
     if (argc < 3) {
@@ -389,6 +392,8 @@ int main(int argc, char **argv)
             o.channel = atoi(argv[++i]);
         else if (!strcmp(a, "--skip") && more)
             o.skip = atof(argv[++i]);
+        else if (!strcmp(a, "--dur") && more)
+            o.dur = atof(argv[++i]);
         else if (!strcmp(a, "--fmin") && more)
             o.fmin = atof(argv[++i]);
         else if (!strcmp(a, "--fmax") && more)

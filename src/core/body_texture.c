@@ -1,0 +1,599 @@
+/* aero: a moving 3D body played from an object texture (see
+ * body_texture.h). */
+#include "body_texture.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "aero_air.h"
+
+#define VELOCITY_TAU_S 0.008 /* smoothing of pose-derived velocities */
+#define MIN_SPEED 1e-6       /* below this the flow direction is unknown */
+#define POS_LIMIT 1e5
+
+static void ramp_to(aero_ramp *r, double v, double ramp_samples)
+{
+    aero_ramp_to(r, v, ramp_samples, AERO_BODY_CHUNK);
+}
+
+static int finite_n(const double *v, int n, double limit)
+{
+    for (int i = 0; i < n; i++)
+        if (!aero_is_finite(v[i]) || fabs(v[i]) > limit)
+            return 0;
+    return 1;
+}
+
+/* R(q) v for a unit quaternion q = (w, x, y, z) */
+static void rotate(const double *q, const double *v, double *out)
+{
+    double u[3] = {q[1], q[2], q[3]}, t[3], c[3];
+    aero_cross3(u, v, t);
+    for (int i = 0; i < 3; i++)
+        t[i] *= 2.0;
+    aero_cross3(u, t, c);
+    for (int i = 0; i < 3; i++)
+        out[i] = v[i] + q[0] * t[i] + c[i];
+}
+
+void aero_body_quaternion_from_rotvec(const double r[3], double q[4])
+{
+    double axis[3] = {r[0], r[1], r[2]};
+    double deg = aero_normalise3(axis);
+    double half = 0.5 * deg * AERO_PI / 180.0;
+    q[0] = cos(half);
+    for (int i = 0; i < 3; i++)
+        q[1 + i] = axis[i] * sin(half);
+}
+
+/* --- life cycle ----------------------------------------------------------- */
+
+static int alloc_rings(aero_body_texture *s, double sr)
+{
+    long need = (long)ceil(sr * AERO_BODY_MAX_DELAY_S) + 4 * AERO_BODY_CHUNK;
+    long len = 1;
+    float *rings[AERO_BODY_MAX_EARS] = {NULL, NULL};
+    while (len < need)
+        len <<= 1;
+    for (int e = 0; e < s->n_ears; e++) {
+        rings[e] = calloc((size_t)len, sizeof(float));
+        if (!rings[e]) {
+            for (int k = 0; k < e; k++)
+                free(rings[k]);
+            return -1;
+        }
+    }
+    for (int e = 0; e < AERO_BODY_MAX_EARS; e++) {
+        free(s->ring[e]);
+        s->ring[e] = rings[e];
+    }
+    s->ring_mask = len - 1;
+    s->ring_head = 0;
+    return 0;
+}
+
+static void restart_sources(aero_body_texture *s)
+{
+    for (int i = 0; i < AERO_BODY_MAX_SOURCES; i++) {
+        memset(&s->src[i], 0, sizeof(s->src[i]));
+        if (s->texture)
+            s->src[i].pos = 0.5 * (aero_uniform(&s->rng) + 1.0) *
+                            s->texture->frames;
+    }
+}
+
+int aero_body_texture_init(aero_body_texture *s, double sample_rate,
+                           int n_ears, uint32_t seed)
+{
+    static const double unturned[7] = {0, 0, 0, 1, 0, 0, 0};
+    memset(s, 0, sizeof(*s));
+    s->n_ears = n_ears < 1 ? 1 : n_ears > 2 ? 2 : n_ears;
+    s->sample_rate = sample_rate >= 1000.0 && sample_rate <= 1536000.0
+                         ? sample_rate : 44100.0;
+    s->rng = seed ? seed : 1;
+    s->scale = 1.0;
+    s->exponent = 3.0;
+    s->ramp_samples = 0.020 * s->sample_rate;
+    memcpy(s->pose, unturned, sizeof(unturned));
+    memcpy(s->pose_from, unturned, sizeof(unturned));
+    memcpy(s->pose_to, unturned, sizeof(unturned));
+    aero_ramp_jump(&s->gain, 1.0);
+    for (int e = 0; e < AERO_BODY_MAX_EARS; e++) {
+        aero_ramp_jump(&s->ear[3 * e + 0],
+                       s->n_ears == 2 ? (e ? 0.1 : -0.1) : 0.0);
+        aero_ramp_jump(&s->ear[3 * e + 1], 1.0);
+        aero_ramp_jump(&s->ear[3 * e + 2], 0.0);
+    }
+    return alloc_rings(s, s->sample_rate);
+}
+
+void aero_body_texture_free(aero_body_texture *s)
+{
+    for (int e = 0; e < AERO_BODY_MAX_EARS; e++) {
+        free(s->ring[e]);
+        s->ring[e] = NULL;
+    }
+    if (s->texture) {
+        aero_texture_free(s->texture);
+        free(s->texture);
+        s->texture = NULL;
+    }
+}
+
+/* "x,y,z;x,y,z;..." into centre, n triples: 0 or -1 */
+static int parse_centres(const char *p, int n, double *centre)
+{
+    for (int l = 0; l < n; l++)
+        for (int a = 0; a < 3; a++) {
+            char *end;
+            double v = strtod(p, &end);
+            if (end == p || !aero_is_finite(v) || fabs(v) > 1e3)
+                return -1;
+            centre[3 * l + a] = v;
+            p = end;
+            if (a < 2 ? *p != ',' : (l < n - 1 ? *p != ';' : 0))
+                return -1;
+            if (!(l == n - 1 && a == 2))
+                p++;
+        }
+    return *p == 0 || *p == '\n' ? 0 : -1;
+}
+
+int aero_body_texture_set_texture(aero_body_texture *s, aero_texture *t,
+                                  char *err, size_t errlen)
+{
+    if (t) {
+        char kind[32], sym[32], list[8192];
+        double centre[3 * AERO_BODY_MAX_SOURCES];
+        double v0 = aero_texture_getd(t, "v0", 0.0);
+        double d = aero_texture_getd(t, "diameter", 0.0);
+        int sphere;
+        if (!aero_texture_get(t, "kind", kind, sizeof(kind)) ||
+            strcmp(kind, "object")) {
+            snprintf(err, errlen, "not an object texture (kind=%s; aeolian "
+                     "textures are for [aeolian~])",
+                     aero_texture_get(t, "kind", kind, sizeof(kind))
+                         ? kind : "missing");
+            return -1;
+        }
+        if (!aero_texture_get(t, "symmetry", sym, sizeof(sym)) ||
+            (strcmp(sym, "sphere") && strcmp(sym, "axis"))) {
+            snprintf(err, errlen, "symmetry must be sphere or axis");
+            return -1;
+        }
+        sphere = !strcmp(sym, "sphere");
+        if (!(v0 > 0.0 && v0 < 1e3) || !(d > 0.0 && d < 100.0) ||
+            !(t->rate > 0.0) || t->frames < 2 || t->directions < 1 ||
+            t->regions < 1 || t->regions > AERO_BODY_MAX_SOURCES ||
+            (sphere && t->directions != 1)) {
+            snprintf(err, errlen, "bad metadata (v0 %g, diameter %g, %d "
+                     "directions, %d regions, %d frames)", v0, d,
+                     t->directions, t->regions, t->frames);
+            return -1;
+        }
+        for (int k = 0; k < t->directions; k++)
+            if (!(t->angles[k] >= 0.0 && t->angles[k] <= 180.0) ||
+                (k && !(t->angles[k] > t->angles[k - 1]))) {
+                snprintf(err, errlen, "angles must increase within 0..180");
+                return -1;
+            }
+        if (!aero_texture_get(t, "centres", list, sizeof(list)) ||
+            parse_centres(list, t->regions, centre)) {
+            snprintf(err, errlen, "centres= must list %d x,y,z triples "
+                     "separated by ';'", t->regions);
+            return -1;
+        }
+        s->v0 = v0;
+        s->tex_size = d;
+        s->tex_rate = t->rate;
+        s->regions = t->regions;
+        s->sphere = sphere;
+        s->mirror = fabs(aero_texture_getd(t, "mirror", 0.0)) >= 1.0;
+        memcpy(s->centre, centre, sizeof(double) * 3 * t->regions);
+    }
+    if (s->texture) {
+        aero_texture_free(s->texture);
+        free(s->texture);
+    }
+    s->texture = t;
+    if (!t)
+        s->regions = 0;
+    restart_sources(s);
+    return 0;
+}
+
+/* --- setters --------------------------------------------------------------- */
+
+int aero_body_texture_set_sample_rate(aero_body_texture *s, double sr)
+{
+    if (!(sr >= 1000.0 && sr <= 1536000.0))
+        return -1;
+    if (sr != s->sample_rate || !s->ring[0]) {
+        double ms = s->ramp_samples / s->sample_rate * 1000.0;
+        if (alloc_rings(s, sr))
+            return -1;
+        s->sample_rate = sr;
+        s->ramp_samples = ms * 0.001 * sr;
+        for (int i = 0; i < AERO_BODY_MAX_SOURCES; i++)
+            s->src[i].primed = 0;
+    }
+    return 0;
+}
+
+int aero_body_texture_set_scale(aero_body_texture *s, double scale)
+{
+    if (!(scale >= 1e-3 && scale <= 1e3))
+        return -1;
+    s->scale = scale;
+    return 0;
+}
+
+int aero_body_texture_set_exponent(aero_body_texture *s, double e)
+{
+    if (!(e >= 0.0 && e <= 12.0))
+        return -1;
+    s->exponent = e;
+    return 0;
+}
+
+int aero_body_texture_set_gain_db(aero_body_texture *s, double db)
+{
+    if (!(db >= -200.0 && db <= 120.0))
+        return -1;
+    ramp_to(&s->gain, pow(10.0, db / 20.0), s->ramp_samples);
+    return 0;
+}
+
+int aero_body_texture_set_ramp_ms(aero_body_texture *s, double ms)
+{
+    if (!(ms >= 0.0 && ms <= 600000.0))
+        return -1;
+    s->ramp_samples = ms * 0.001 * s->sample_rate;
+    return 0;
+}
+
+void aero_body_texture_set_seed(aero_body_texture *s, uint32_t seed)
+{
+    s->rng = seed ? seed : 1;
+    restart_sources(s);
+}
+
+/* where region l's body-frame centre is for a pose */
+static void region_point(const aero_body_texture *s, const double *pose,
+                         int l, double *x)
+{
+    double c[3] = {s->scale * s->centre[3 * l], s->scale * s->centre[3 * l + 1],
+                   s->scale * s->centre[3 * l + 2]};
+    rotate(pose + 3, c, x);
+    for (int i = 0; i < 3; i++)
+        x[i] += pose[i];
+}
+
+int aero_body_texture_set_pose(aero_body_texture *s, const double pos[3],
+                               const double quat[4], double interval_s)
+{
+    double p[7] = {pos[0], pos[1], pos[2], quat[0], quat[1], quat[2], quat[3]};
+    double n = sqrt(p[3] * p[3] + p[4] * p[4] + p[5] * p[5] + p[6] * p[6]);
+    if (!finite_n(pos, 3, POS_LIMIT) || !finite_n(quat, 4, 1e6) ||
+        !(n > 1e-9))
+        return -1;
+    for (int i = 3; i < 7; i++)
+        p[i] /= n;
+    /* the shorter way round: q and -q are the same turn */
+    if (p[3] * s->pose_to[3] + p[4] * s->pose_to[4] + p[5] * s->pose_to[5] +
+            p[6] * s->pose_to[6] < 0.0)
+        for (int i = 3; i < 7; i++)
+            p[i] = -p[i];
+    if (!s->pose_set || interval_s < 0.0 || interval_s > 0.5) {
+        memcpy(s->pose, p, sizeof(p));
+        memcpy(s->pose_from, p, sizeof(p));
+        memcpy(s->pose_to, p, sizeof(p));
+        for (int l = 0; l < AERO_BODY_MAX_SOURCES; l++)
+            memset(s->src[l].stream_velocity, 0, sizeof(double) * 3);
+        s->pose_elapsed = s->pose_duration = 0.0;
+        s->pose_set = 1;
+        return 0;
+    }
+    if (!(interval_s >= 0.001))
+        interval_s = 0.001;
+    /* each region's velocity from the stream's own time stamps */
+    for (int l = 0; l < s->regions; l++) {
+        double a[3], b[3];
+        region_point(s, s->pose_to, l, a);
+        region_point(s, p, l, b);
+        for (int i = 0; i < 3; i++)
+            s->src[l].stream_velocity[i] = (b[i] - a[i]) / interval_s;
+    }
+    memcpy(s->pose_from, s->pose, sizeof(p));
+    memcpy(s->pose_to, p, sizeof(p));
+    s->pose_elapsed = 0.0;
+    s->pose_duration = interval_s * s->sample_rate;
+    return 0;
+}
+
+int aero_body_texture_set_wind(aero_body_texture *s, const double w[3])
+{
+    if (!finite_n(w, 3, AERO_MACH_LIMIT * AERO_C0 * 10.0))
+        return -1;
+    for (int i = 0; i < 3; i++)
+        ramp_to(&s->wind[i], w[i], s->ramp_samples);
+    return 0;
+}
+
+int aero_body_texture_set_ear(aero_body_texture *s, int ear, double x,
+                              double y, double z)
+{
+    double v[3] = {x, y, z};
+    if (ear < 0 || ear >= s->n_ears || !finite_n(v, 3, POS_LIMIT))
+        return -1;
+    for (int i = 0; i < 3; i++)
+        ramp_to(&s->ear[3 * ear + i], v[i], s->ramp_samples);
+    return 0;
+}
+
+/* --- processing --------------------------------------------------------------- */
+
+/* the pose at the chunk's end: position linear, orientation normalised
+   linear (nlerp), both over the pose interval */
+static void advance_pose(aero_body_texture *s, int m)
+{
+    double frac, n = 0.0;
+    s->pose_elapsed += m;
+    frac = s->pose_duration > 0.0 ? s->pose_elapsed / s->pose_duration : 1.0;
+    if (frac > 1.0)
+        frac = 1.0;
+    for (int i = 0; i < 7; i++)
+        s->pose[i] = s->pose_from[i] + frac * (s->pose_to[i] - s->pose_from[i]);
+    for (int i = 3; i < 7; i++)
+        n += s->pose[i] * s->pose[i];
+    n = sqrt(n);
+    for (int i = 3; i < 7; i++)
+        s->pose[i] = n > 1e-12 ? s->pose[i] / n : (i == 3);
+}
+
+/* the direction pair around theta and the weight of the second */
+static void direction_pair(const aero_texture *t, double theta, int *k0,
+                           int *k1, double *w)
+{
+    int n = t->directions, k = 0;
+    *k0 = *k1 = 0;
+    *w = 0.0;
+    if (n < 2)
+        return;
+    while (k + 2 < n && t->angles[k + 1] <= theta)
+        k++;
+    *k0 = k;
+    *k1 = k + 1;
+    *w = (theta - t->angles[k]) / (t->angles[k + 1] - t->angles[k]);
+    if (*w < 0.0) *w = 0.0;
+    if (*w > 1.0) *w = 1.0;
+}
+
+/* geometry of region l at the chunk's end; returns 1 if clamped */
+static int geometry(aero_body_texture *s, int l, const double *wind,
+                    const double (*ears)[3], double gain,
+                    aero_body_geometry *g)
+{
+    aero_body_source *src = &s->src[l];
+    double rel[3], axis[3], e1[3], e2[3], e3[3], pos[3], v, cth;
+    const double z[3] = {0.0, 0.0, 1.0};
+    int clamped = 0;
+    for (int i = 0; i < 3; i++)
+        rel[i] = wind[i] - src->velocity[i];
+    v = aero_normalise3(rel);
+    if (v > AERO_MACH_LIMIT * AERO_C0) {
+        v = AERO_MACH_LIMIT * AERO_C0;
+        clamped = 1;
+    }
+    rotate(s->pose + 3, z, axis);
+    if (v <= MIN_SPEED) { /* still air: silent, any frame */
+        double xb[3] = {1.0, 0.0, 0.0};
+        rotate(s->pose + 3, xb, rel);
+    }
+    cth = aero_dot3(rel, axis);
+    g->flip = 0;
+    if (s->sphere) {
+        memcpy(e1, rel, sizeof(e1));
+        for (int i = 0; i < 3; i++)
+            e3[i] = axis[i] - cth * rel[i];
+        if (aero_normalise3(e3) < 1e-6) { /* flow along the axis */
+            double xb[3] = {1.0, 0.0, 0.0};
+            rotate(s->pose + 3, xb, e3);
+        }
+        aero_cross3(e3, e1, e2);
+        g->theta = 90.0;
+    } else {
+        memcpy(e3, axis, sizeof(e3));
+        for (int i = 0; i < 3; i++)
+            e1[i] = rel[i] - cth * axis[i];
+        if (aero_normalise3(e1) < 1e-6) { /* flow along the axis */
+            double xb[3] = {1.0, 0.0, 0.0};
+            rotate(s->pose + 3, xb, e1);
+        }
+        aero_cross3(e3, e1, e2);
+        g->theta = acos(cth < -1.0 ? -1.0 : cth > 1.0 ? 1.0 : cth) * 180.0 /
+                   AERO_PI;
+        if (s->mirror && g->theta > 90.0) {
+            g->theta = 180.0 - g->theta;
+            g->flip = 1;
+            for (int i = 0; i < 3; i++) {
+                e2[i] = -e2[i];
+                e3[i] = -e3[i];
+            }
+        }
+    }
+    /* where it radiates from: a sphere's sectors turn with the flow */
+    if (s->sphere) {
+        const double *c = s->centre + 3 * l;
+        for (int i = 0; i < 3; i++)
+            pos[i] = s->pose[i] + s->scale * (c[0] * e1[i] + c[1] * e2[i] +
+                                              c[2] * e3[i]);
+    } else {
+        region_point(s, s->pose, l, pos); /* the region itself; a flipped
+                                             read takes its mirror image's
+                                             channel (render) */
+    }
+    g->inc = v / s->v0 / s->scale * s->tex_rate / s->sample_rate;
+    g->amp = v > MIN_SPEED ? pow(v / s->v0, s->exponent) * s->scale * gain
+                           : 0.0;
+    for (int e = 0; e < s->n_ears; e++) {
+        double r[3] = {ears[e][0] - pos[0], ears[e][1] - pos[1],
+                       ears[e][2] - pos[2]};
+        double dist = sqrt(aero_dot3(r, r)), k;
+        double near = 0.25 * s->scale * s->tex_size;
+        double dmax = AERO_BODY_MAX_DELAY_S * s->sample_rate;
+        if (dist < near) /* inside the body: the far field does not hold */
+            dist = near;
+        k = 1.0 / (4.0 * AERO_PI * AERO_C0 * dist * dist);
+        g->proj[e][0] = aero_dot3(r, e1) * k;
+        g->proj[e][1] = aero_dot3(r, e2) * k;
+        g->proj[e][2] = aero_dot3(r, e3) * k;
+        g->delay[e] = dist / AERO_C0 * s->sample_rate;
+        if (g->delay[e] > dmax)
+            g->delay[e] = dmax;
+    }
+    return clamped;
+}
+
+/* one source over a chunk of m samples */
+static void render(aero_body_texture *s, int l, const aero_body_geometry *g,
+                   int m)
+{
+    aero_body_source *src = &s->src[l];
+    const aero_texture *t = s->texture;
+    const int ch = t->channels, R = s->regions;
+    const long frames = t->frames;
+    const double inv_m = 1.0 / m;
+    aero_body_geometry then = src->primed ? src->then : *g;
+    float tex[6][AERO_BODY_CHUNK];
+    int k0, k1, c0, c1, region;
+    double w_then, w_now;
+    if (!src->primed) { /* first chunk: amplitude from 0 */
+        then.amp = 0.0;
+        src->primed = 1;
+    }
+    /* the pair of the chunk's end serves its whole chunk */
+    direction_pair(t, g->theta, &k0, &k1, &w_now);
+    {
+        int a, b;
+        direction_pair(t, then.theta, &a, &b, &w_then);
+        (void)b;
+        if (a != k0) /* crossed into another pair: its nearest end */
+            w_then = then.theta < t->angles[k0] ? 0.0 : 1.0;
+    }
+    if (then.flip != g->flip) /* turned through 90 deg: start from 0 */
+        then.amp = 0.0;
+    region = g->flip ? R - 1 - l : l;
+    c0 = 3 * (k0 * R + region);
+    c1 = 3 * (k1 * R + region);
+    {
+        double pos = src->pos, inc = then.inc;
+        const double dinc = (g->inc - then.inc) * inv_m;
+        for (int j = 0; j < m; j++) {
+            long i0 = (long)pos;
+            float fr = (float)(pos - (double)i0);
+            long i1 = i0 + 1 == frames ? 0 : i0 + 1;
+            const float *r0 = t->data + i0 * ch, *r1 = t->data + i1 * ch;
+            for (int c = 0; c < 3; c++) {
+                tex[c][j] = r0[c0 + c] + fr * (r1[c0 + c] - r0[c0 + c]);
+                tex[3 + c][j] = r0[c1 + c] + fr * (r1[c1 + c] - r0[c1 + c]);
+            }
+            inc += dinc;
+            pos += inc;
+            if (pos >= frames) {
+                pos -= frames * floor(pos / frames);
+                if (!(pos >= 0.0 && pos < frames))
+                    pos = 0.0;
+            }
+        }
+        if (!(pos >= 0.0 && pos < frames))
+            pos = 0.0;
+        src->pos = pos;
+    }
+    for (int e = 0; e < s->n_ears; e++) {
+        float cf[6], dcf[6];
+        float *ring = s->ring[e];
+        const long mask = s->ring_mask;
+        const double ddelay = (g->delay[e] - then.delay[e]) * inv_m;
+        double at = (double)s->ring_head + then.delay[e];
+        for (int c = 0; c < 3; c++) {
+            double a0 = then.amp * then.proj[e][c], a1 = g->amp * g->proj[e][c];
+            double s0 = (1.0 - w_then) * a0, s1 = (1.0 - w_now) * a1;
+            double t0 = w_then * a0, t1 = w_now * a1;
+            cf[c] = (float)s0;
+            dcf[c] = (float)((s1 - s0) * inv_m);
+            cf[3 + c] = (float)t0;
+            dcf[3 + c] = (float)((t1 - t0) * inv_m);
+        }
+        for (int j = 0; j < m; j++) {
+            float v = 0.0f;
+            long ia;
+            float fa;
+            for (int q = 0; q < 6; q++) {
+                v += cf[q] * tex[q][j];
+                cf[q] += dcf[q];
+            }
+            ia = (long)at;
+            fa = (float)(at - (double)ia);
+            ring[ia & mask] += v * (1.0f - fa);
+            ring[(ia + 1) & mask] += v * fa;
+            at += 1.0 + ddelay;
+        }
+    }
+    src->then = *g;
+}
+
+int aero_body_texture_process(aero_body_texture *s, const float *speed,
+                              float *const *out, int n)
+{
+    s->clamped = 0;
+    for (int done = 0; done < n;) {
+        int m = n - done < AERO_BODY_CHUNK ? n - done : AERO_BODY_CHUNK;
+        double sp = 0.0, wind[3], ears[AERO_BODY_MAX_EARS][3], gain, alpha;
+        int stopped;
+        if (speed) { /* the inlet's mean over the chunk (NaN counts as 0) */
+            for (int j = 0; j < m; j++) {
+                float v = speed[done + j];
+                sp += v == v && v < 1e30f && v > -1e30f ? v : 0.0f;
+            }
+            sp /= m;
+        }
+        advance_pose(s, m);
+        stopped = s->pose_elapsed > 1.5 * s->pose_duration + m;
+        alpha = 1.0 - exp(-m / (VELOCITY_TAU_S * s->sample_rate));
+        for (int i = 0; i < 3; i++)
+            wind[i] = aero_ramp_advance(&s->wind[i]);
+        wind[0] += sp;
+        for (int e = 0; e < s->n_ears; e++)
+            for (int i = 0; i < 3; i++)
+                ears[e][i] = aero_ramp_advance(&s->ear[3 * e + i]);
+        gain = aero_ramp_advance(&s->gain);
+        if (s->texture) {
+            for (int l = 0; l < s->regions; l++) {
+                aero_body_geometry g;
+                for (int i = 0; i < 3; i++) {
+                    double v = stopped ? 0.0 : s->src[l].stream_velocity[i];
+                    s->src[l].velocity[i] += alpha * (v - s->src[l].velocity[i]);
+                }
+                s->clamped |= geometry(s, l, wind, (const double (*)[3])ears,
+                                       gain, &g);
+                render(s, l, &g, m);
+            }
+        }
+        for (int e = 0; e < s->n_ears; e++) {
+            float *ring = s->ring[e];
+            float *o = out[e] + done;
+            for (int j = 0; j < m; j++) {
+                long i = (s->ring_head + j) & s->ring_mask;
+                float v = ring[i];
+                ring[i] = 0.0f;
+                o[j] = v == v && v < 1e30f && v > -1e30f ? v : 0.0f;
+            }
+        }
+        s->ring_head = (s->ring_head + m) & s->ring_mask;
+        done += m;
+    }
+    return s->clamped;
+}

@@ -1,0 +1,130 @@
+/* aero: a moving 3D body played from an object texture (paper 000, the 3D
+ * case: w(l, s, u) per region l; textures made by `aerotex object`).
+ *
+ * The body has a pose: a position P and an orientation (a unit quaternion
+ * q, rotating body coordinates into the world). Region l is a point
+ * source at P + R(q) (scale c_l), c_l its centre in body coordinates from
+ * the texture. Per source, per control chunk (AERO_BODY_CHUNK samples,
+ * values interpolated per sample in between):
+ *   - its velocity (from the pose stream, rotation included), the air's
+ *     velocity relative to it (wind - body), speed v and direction f;
+ *   - the sample frame e1, e2, e3 of the texture (body_flow.h: the flow
+ *     arrives at theta from e3 towards e1):
+ *       symmetry=axis (bodies of revolution about body z; a mesh is
+ *       treated so): e3 = the body axis R(q) z, theta = angle(f, e3),
+ *       e1 = f's part normal to the axis, e2 = e3 x e1;
+ *       symmetry=sphere: one sampled direction, theta = 90: e1 = f,
+ *       e3 = the body axis made normal to f, e2 = e3 x e1 (a sphere's
+ *       regions are sectors around the flow: they follow e1, e2, e3);
+ *     mirror=1 (a body symmetric under z -> -z, sampled over 0..90 deg):
+ *     theta > 90 reads 180 - theta with e2, e3 negated and the regions in
+ *     reverse order;
+ *   - the two sampled directions around theta and their weights;
+ *   - the texture coordinate advancing by (v/v0)/scale per unit of time
+ *     (frequency St v / d, d = scale d_tex), the amplitude
+ *     (v/v0)^exponent times scale (dF/dt ~ rho U^3 d for a whole 3D body:
+ *     pressure, not the paper's intensity law);
+ *   - Curle's far field p = (x - y).g / (4 pi c0 |x - y|^2), g =
+ *     SUM_c g_c e_c, heard |x - y|/c0 later per ear through one delay ring
+ *     per ear (exact Doppler of moving sources, interaural delay).
+ * Each region starts at its own texture offset (they add incoherently, as
+ * sources further apart than the correlation length do).
+ *
+ * Life cycle: init, set_texture (takes ownership), set_*, process (any
+ * block size), free. No globals. */
+#ifndef AERO_BODY_TEXTURE_H
+#define AERO_BODY_TEXTURE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "aero_util.h"
+#include "texture.h"
+
+#define AERO_BODY_MAX_EARS 2
+#define AERO_BODY_MAX_SOURCES 64
+#define AERO_BODY_CHUNK 32
+#define AERO_BODY_MAX_DELAY_S 1.0
+
+/* one source's geometry at a chunk's end */
+typedef struct {
+    double inc;                       /* texture frames per sample */
+    double theta;                     /* folded flow angle, deg */
+    double amp;
+    double proj[AERO_BODY_MAX_EARS][3]; /* (x - y).e_c / (4 pi c0 r^2) */
+    double delay[AERO_BODY_MAX_EARS];   /* samples */
+    int flip;                         /* read the mirrored region */
+} aero_body_geometry;
+
+typedef struct {
+    double pos;                 /* texture coordinate, frames */
+    double velocity[3];         /* smoothed, m/s */
+    double stream_velocity[3];  /* of the pose stream */
+    aero_body_geometry then;    /* at the previous chunk's end */
+    int primed;
+} aero_body_source;
+
+typedef struct aero_body_texture {
+    double sample_rate;
+    int n_ears;
+    uint32_t rng;
+
+    aero_texture *texture;      /* owned */
+    double v0, tex_size, tex_rate;
+    int regions, sphere, mirror;
+    double centre[3 * AERO_BODY_MAX_SOURCES]; /* body frame, m */
+
+    double scale, exponent, ramp_samples;
+
+    /* pose: position and quaternion (w, x, y, z), from -> to */
+    double pose[7], pose_from[7], pose_to[7];
+    double pose_elapsed, pose_duration;
+    int pose_set;
+    aero_ramp wind[3];
+    aero_ramp ear[3 * AERO_BODY_MAX_EARS];
+    aero_ramp gain;
+
+    aero_body_source src[AERO_BODY_MAX_SOURCES];
+
+    float *ring[AERO_BODY_MAX_EARS];
+    long ring_mask, ring_head;
+    int clamped;
+} aero_body_texture;
+
+/* 0, or -1 when out of memory. Defaults: no texture (silent), the body at
+ * the origin unturned, still air, one listener 1 m away along +y (stereo:
+ * ears at x = -+0.1), exponent 3, scale 1, gain 0 dB, ramp 20 ms. */
+int aero_body_texture_init(aero_body_texture *s, double sample_rate,
+                           int n_ears, uint32_t seed);
+void aero_body_texture_free(aero_body_texture *s);
+
+/* Takes ownership of a loaded texture of kind object (NULL removes it):
+ * 0, or -1 with a message in err (then the texture is NOT taken). */
+int aero_body_texture_set_texture(aero_body_texture *s, aero_texture *t,
+                                  char *err, size_t errlen);
+
+/* setters: 0 accepted, -1 invalid (the previous value stays) */
+int aero_body_texture_set_sample_rate(aero_body_texture *s, double sr);
+int aero_body_texture_set_scale(aero_body_texture *s, double scale);
+int aero_body_texture_set_exponent(aero_body_texture *s, double e);
+int aero_body_texture_set_gain_db(aero_body_texture *s, double db);
+int aero_body_texture_set_ramp_ms(aero_body_texture *s, double ms);
+void aero_body_texture_set_seed(aero_body_texture *s, uint32_t seed);
+/* position and orientation (unit quaternion w x y z; normalised here);
+ * interval_s as for sticks: the motion is interpolated over it; the first
+ * pose, one after a 0.5 s pause and interval_s < 0 jump without motion */
+int aero_body_texture_set_pose(aero_body_texture *s, const double pos[3],
+                               const double quat[4], double interval_s);
+int aero_body_texture_set_wind(aero_body_texture *s, const double w[3]);
+int aero_body_texture_set_ear(aero_body_texture *s, int ear, double x,
+                              double y, double z);
+
+/* n samples; speed[i] (may be NULL) adds a wind along +x; out[e][i] is the
+ * sound pressure at ear e in Pa. Returns 1 if a speed was clamped. */
+int aero_body_texture_process(aero_body_texture *s, const float *speed,
+                              float *const *out, int n);
+
+/* a rotation vector (axis times angle in degrees) as a unit quaternion */
+void aero_body_quaternion_from_rotvec(const double r[3], double q[4]);
+
+#endif

@@ -6,6 +6,7 @@ if make -s deken >"$OUT/deken.log" 2>&1; then
     listing=$(unzip -l "$dek" 2>/dev/null)
     missing=""
     for f in aero/aeolian~.pd_linux aero/aeolian~-help.pd aero/aero.wind~.pd \
+        aero/aero.fire~.pd aero/aero.tree~.pd aero/aero.fire~-help.pd \
         aero/textures/sword.wav aero/LICENSE; do
         echo "$listing" | grep -q -F "$f" || missing="$missing $f"
     done

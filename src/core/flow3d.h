@@ -7,7 +7,9 @@
  * One step (Fedkiw, Stam and Jensen 2001, "Visual simulation of smoke",
  * the solver paper 004 uses):
  *   1. semi-Lagrangian advection of the face velocities (stable at any
- *      step; its numerical diffusion is what step 2 compensates),
+ *      step; its numerical diffusion is what step 2 compensates), or
+ *      (`advection` AERO_F3_MACCORMACK) its limited MacCormack form
+ *      (Selle et al. 2008), second order, for wakes that must shed,
  *   2. vorticity confinement, a = eps U_ref (N x omega), N = grad|omega| /
  *      |grad|omega|| (FSJ01 eq. 11-12, with a velocity scale U_ref so the
  *      force scales as U^2/h like the flow's own accelerations),
@@ -21,8 +23,17 @@
  *      Dirichlet phi = 0 at the open top). After it the discrete
  *      divergence is zero to rounding.
  *
- * Solid hook: `solid` (NULL here) is reserved for a cell mask of a body
- * (Brinkman penalisation, issue 11); nothing reads it yet.
+ * Immersed body (aero_flow3d_set_body): a solid fraction chi in [0, 1]
+ * per cell. After the other forces and before the projection each face
+ * velocity is multiplied by (1 - chi_face), chi_face the mean of its two
+ * cells: direct forcing of the body's zero velocity (Fadlun et al. 2000,
+ * J. Comput. Phys. 161, with a volume-fraction weight as in Brinkman
+ * penalisation). The momentum removed is what the air pushed into the
+ * body, so the force on the body per unit density is
+ * F / rho = SUM chi_face u* h^3 / dt over the faces, summed per region
+ * into `region_force` every step (Uhlmann 2005 uses the same sum). A
+ * face is solid when its two cells are half solid together (a sharp
+ * wall), and vorticity confinement is off within 2 cells of the body.
  *
  * Layout: index (k * ny + j) * nx + i. u[i] lies on the face x = i h of
  * cell i, v[j] on y = j h, w[k] on z = k h (k = 0..nz, nz + 1 layers; w[0]
@@ -38,6 +49,8 @@
 
 #include <stddef.h>
 
+enum { AERO_F3_SEMI_LAGRANGIAN = 0, AERO_F3_MACCORMACK = 1 };
+
 typedef struct {
     int nx, ny, nz;       /* cells (nx, ny even, >= 4; nz >= 3) */
     double h;             /* cell size, m */
@@ -47,6 +60,8 @@ typedef struct {
     double sponge;        /* fraction of the height under the open top
                              where the velocity is relaxed towards
                              (0, 0, u_ref) (0: none) */
+    int advection;        /* AERO_F3_SEMI_LAGRANGIAN (0) or
+                             AERO_F3_MACCORMACK */
 } aero_flow3d_params;
 
 typedef struct aero_flow3d {
@@ -55,11 +70,18 @@ typedef struct aero_flow3d {
     size_t plane;         /* nx * ny */
     float *u, *v, *w;     /* face velocities (u, v from ghost layer -1) */
     float *u1, *v1, *w1;  /* advection targets */
+    float *mc, *mc_lo, *mc_hi; /* MacCormack: the backward pass and the
+                                  limiter's bounds (3 fields each) */
     float *cx, *cy, *cz;  /* cell-centred velocity, then force scratch */
     float *ox, *oy, *oz, *omag; /* cell-centred vorticity and |omega| */
     float *phi;           /* pressure-like potential, nx*ny*nz */
     float *in_u, *in_v, *in_w; /* inflow at the bottom face, nx*ny each */
-    const float *solid;   /* reserved: body mask for issue 11 (unused) */
+    const float *solid;   /* body: solid fraction per cell (NULL: none) */
+    const int *region;    /* body: region of each cell (< 0: none) */
+    int n_regions;
+    double *region_force; /* body: 3 per region, F / rho of the last step
+                             (m^4/s^2), in grid axes */
+    unsigned char *near_body; /* cells near the body: no confinement */
     /* Poisson solver */
     void *fwd, *inv;      /* fftwf plans */
     void *spec;           /* fftwf_complex, nz * ny * (nx/2+1) */
@@ -78,6 +100,12 @@ void aero_flow3d_free(aero_flow3d *s);
 /* index of w (k = 0..nz) or of a cell-centred value (k = 0..nz-1) */
 #define AERO_F3_C(s, i, j, k) \
     ((size_t)(k) * (s)->plane + (size_t)(j) * (s)->nx + (size_t)(i))
+
+/* an immersed body (see above): chi and region per cell (nx*ny*nz, kept
+   by pointer, not copied), the forces of each step written to force
+   (3 * n_regions); solid NULL removes it */
+void aero_flow3d_set_body(aero_flow3d *s, const float *solid,
+                          const int *region, int n_regions, double *force);
 
 /* one step of dt seconds (the inflow arrays are read at its start);
    returns -1 if a velocity became non-finite */

@@ -28,48 +28,15 @@ typedef struct {
     const char *out, *png_dir;
 } vjob_t;
 
-typedef struct {
-    long total, done;
-    double t0, last;
-    int show;
-    omp_lock_t plan;      /* FFTW planner */
-} vprogress_t;
 
 typedef struct {
     const vjob_t *job;
-    vprogress_t *prog;
+    aerotex_progress *prog;
     int index;            /* speed index */
     long last_step, snap_every, snap;
     float *slice, *zero;
     char err[256];
 } vctx_t;
-
-static double vnow(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
-
-static void vprogress_show(vprogress_t *p, int final)
-{
-    double t = vnow(), frac, eta;
-    int bar = 30, fill;
-    if (!p->show || (!final && t - p->last < 0.25))
-        return;
-    p->last = t;
-    frac = p->total ? (double)p->done / p->total : 1.0;
-    if (frac > 1.0) frac = 1.0;
-    fill = (int)(frac * bar + 0.5);
-    eta = frac > 0.01 ? (t - p->t0) * (1.0 - frac) / frac : 0.0;
-    fprintf(stderr, "\r[%.*s%*s] %3d%%  %s %dm%02ds ", fill,
-            "##############################", bar - fill, "",
-            (int)(100.0 * frac), final ? "took" : "ETA",
-            (int)((final ? t - p->t0 : eta) / 60.0),
-            (int)fmod(final ? t - p->t0 : eta, 60.0));
-    if (final) fprintf(stderr, "\n");
-    fflush(stderr);
-}
 
 static void plan_lock(void *ctx, int on)
 {
@@ -91,7 +58,7 @@ static void hook(void *ctx, const aero_flow3d *s, long step, int recording)
     c->prog->done += add;
     if (c->prog->show) {
 #pragma omp critical(aerotex_vortex_progress)
-        vprogress_show(c->prog, 0);
+        aerotex_progress_show(c->prog, 0);
     }
     if (c->job->png_dir && c->slice && step >= c->snap * c->snap_every) {
         /* the vertical mid-plane y = box/2: |omega| in units of U/box */
@@ -272,13 +239,13 @@ static void join(char *buf, size_t len, const double *x, int n)
 int aerotex_vortex(int argc, char **argv)
 {
     vjob_t j;
-    vprogress_t prog;
+    aerotex_progress prog;
     vctx_t *ctx;
     aero_vortex_stats *st;
     aero_texture tex;
     float *raw;
     char err[512], command[4096], buf[8192];
-    double t_start = vnow(), list[MAX_SPEEDS];
+    double t_start = aerotex_now(), list[MAX_SPEEDS];
     int status = 1, l0, xf, lmin, lmax, avail, len, ns;
 
     memset(&j, 0, sizeof j);
@@ -332,7 +299,7 @@ int aerotex_vortex(int argc, char **argv)
         prog.total += aero_vortex_steps(&p, j.rate, avail);
     }
     prog.done = 0;
-    prog.t0 = prog.last = vnow();
+    prog.t0 = prog.last = aerotex_now();
     prog.show = !j.quiet && isatty(fileno(stderr));
     omp_init_lock(&prog.plan);
     if (!j.quiet)
@@ -373,7 +340,7 @@ int aerotex_vortex(int argc, char **argv)
         free(c->slice);
         free(c->zero);
     }
-    vprogress_show(&prog, 1);
+    aerotex_progress_show(&prog, 1);
     omp_destroy_lock(&prog.plan);
 
     status = 0;
@@ -451,7 +418,7 @@ int aerotex_vortex(int argc, char **argv)
                    20.0 * log10(e / 2e-5 + 1e-30), st[k].steps,
                    1e3 * st[k].dt, st[k].max_div);
         }
-        printf("  %.1f s\n", vnow() - t_start);
+        printf("  %.1f s\n", aerotex_now() - t_start);
     }
     aero_texture_free(&tex);
 out:

@@ -1,0 +1,465 @@
+/* aero: a 3D body in a uniform flow, forces per region (see body_flow.h). */
+#include "body_flow.h"
+#include "aero_air.h"
+#include "aero_util.h"
+#include "texture.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MAX_CELLS (48L * 1000 * 1000)
+#define SUB 3 /* solid-fraction samples per cell edge */
+
+void aero_body_flow_defaults(aero_body_flow_params *p,
+                             const aero_body_shape *body)
+{
+    double d = body ? aero_body_reference_size(body) : 0.1;
+    memset(p, 0, sizeof *p);
+    p->body = body;
+    p->angle = 90.0;
+    p->speed = 10.0;
+    p->cell = d / 12.0;
+    p->side = 2.5 * d;
+    p->upstream = 3.0 * d;
+    p->downstream = 8.0 * d;
+    p->regions = 1;
+    p->nu = AERO_NU;
+    p->cfl = 0.7;
+    p->settle = 25.0 * d / p->speed;
+    p->noise = 0.01;
+    p->sponge = 0.2;
+    p->confinement = 0.15;
+    p->seed = 1;
+}
+
+/* sample frame -> grid: a rotation by -angle about y (flow to +z) */
+typedef struct {
+    double c, s;
+} turn;
+
+static void to_grid(const turn *r, const double *p, double *g)
+{
+    g[0] = p[0] * r->c - p[2] * r->s;
+    g[1] = p[1];
+    g[2] = p[0] * r->s + p[2] * r->c;
+}
+
+static void to_sample(const turn *r, const double *g, double *p)
+{
+    p[0] = g[0] * r->c + g[2] * r->s;
+    p[1] = g[1];
+    p[2] = -g[0] * r->s + g[2] * r->c;
+}
+
+typedef struct {
+    int nx, ny, nz;
+    double centre_grid[3];  /* the body's box centre, grid metres */
+    double centre_body[3];  /* the same point in body coordinates */
+} layout;
+
+static int make_layout(const aero_body_flow_params *p, const turn *r,
+                       layout *L, char *err, size_t errlen)
+{
+    const aero_body_shape *b = p->body;
+    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
+    double hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    double ext[3], n[3];
+    long cells;
+    for (int k = 0; k < 3; k++)
+        L->centre_body[k] = 0.5 * (b->lo[k] + b->hi[k]);
+    for (int q = 0; q < 8; q++) {
+        double c[3] = {(q & 1 ? b->hi[0] : b->lo[0]) - L->centre_body[0],
+                       (q & 2 ? b->hi[1] : b->lo[1]) - L->centre_body[1],
+                       (q & 4 ? b->hi[2] : b->lo[2]) - L->centre_body[2]};
+        double g[3];
+        to_grid(r, c, g);
+        for (int k = 0; k < 3; k++) {
+            if (g[k] < lo[k]) lo[k] = g[k];
+            if (g[k] > hi[k]) hi[k] = g[k];
+        }
+    }
+    for (int k = 0; k < 3; k++)
+        ext[k] = hi[k] - lo[k];
+    n[0] = (ext[0] + 2.0 * p->side) / p->cell;
+    n[1] = (ext[1] + 2.0 * p->side) / p->cell;
+    n[2] = (p->upstream + ext[2] + p->downstream) / p->cell;
+    if (!(n[0] <= 1024.0 && n[1] <= 1024.0 && n[2] <= 1024.0)) {
+        snprintf(err, errlen, "the box needs %.0f x %.0f x %.0f cells (at "
+                 "most 1024 each): a coarser grid or smaller margins",
+                 n[0], n[1], n[2]);
+        return -1;
+    }
+    /* even across the flow, and a multiple of 4 for FFTW */
+    L->nx = 4 * (int)ceil(n[0] / 4.0);
+    L->ny = 4 * (int)ceil(n[1] / 4.0);
+    L->nz = (int)ceil(n[2]);
+    if (L->nx < 8) L->nx = 8;
+    if (L->ny < 8) L->ny = 8;
+    if (L->nz < 8) L->nz = 8;
+    cells = (long)L->nx * L->ny * L->nz;
+    if (cells > MAX_CELLS) {
+        snprintf(err, errlen, "the box needs %d x %d x %d = %ld cells (at "
+                 "most %ld): a coarser grid or smaller margins", L->nx,
+                 L->ny, L->nz, cells, MAX_CELLS);
+        return -1;
+    }
+    L->centre_grid[0] = 0.5 * L->nx * p->cell;
+    L->centre_grid[1] = 0.5 * L->ny * p->cell;
+    L->centre_grid[2] = p->upstream - lo[2];
+    return 0;
+}
+
+/* solid fraction and region of every cell, region centroids and volume */
+static void voxelise(const aero_body_flow_params *p, const turn *r,
+                     const layout *L, float *chi, int *region,
+                     aero_body_flow_stats *st)
+{
+    const double h = p->cell;
+    const int nr = p->regions;
+    double wsum[AERO_BODY_MAX_REGIONS] = {0};
+    double csum[3 * AERO_BODY_MAX_REGIONS] = {0};
+    const aero_body_shape *b = p->body;
+    /* the body's reach from its box centre bounds the cells to test */
+    double reach = 0.0;
+    int i0, i1, j0, j1, k0, k1;
+    for (int k = 0; k < 3; k++)
+        reach += 0.25 * (b->hi[k] - b->lo[k]) * (b->hi[k] - b->lo[k]);
+    reach = sqrt(reach) + 2.0 * h;
+    i0 = (int)floor((L->centre_grid[0] - reach) / h);
+    i1 = (int)ceil((L->centre_grid[0] + reach) / h);
+    j0 = (int)floor((L->centre_grid[1] - reach) / h);
+    j1 = (int)ceil((L->centre_grid[1] + reach) / h);
+    k0 = (int)floor((L->centre_grid[2] - reach) / h);
+    k1 = (int)ceil((L->centre_grid[2] + reach) / h);
+    if (i0 < 0) i0 = 0;
+    if (j0 < 0) j0 = 0;
+    if (k0 < 0) k0 = 0;
+    if (i1 > L->nx) i1 = L->nx;
+    if (j1 > L->ny) j1 = L->ny;
+    if (k1 > L->nz) k1 = L->nz;
+    for (long c = 0; c < (long)L->nx * L->ny * L->nz; c++) {
+        chi[c] = 0.0f;
+        region[c] = -1;
+    }
+    st->solid_volume = 0.0;
+    for (int k = k0; k < k1; k++)
+        for (int j = j0; j < j1; j++)
+            for (int i = i0; i < i1; i++) {
+                int inside = 0;
+                double acc[3] = {0, 0, 0};
+                for (int q = 0; q < SUB * SUB * SUB; q++) {
+                    double g[3], s[3];
+                    g[0] = (i + (q % SUB + 0.5) / SUB) * h - L->centre_grid[0];
+                    g[1] = (j + (q / SUB % SUB + 0.5) / SUB) * h -
+                           L->centre_grid[1];
+                    g[2] = (k + (q / (SUB * SUB) + 0.5) / SUB) * h -
+                           L->centre_grid[2];
+                    to_sample(r, g, s);
+                    for (int a = 0; a < 3; a++)
+                        s[a] += L->centre_body[a];
+                    if (aero_body_inside(b, s)) {
+                        inside++;
+                        for (int a = 0; a < 3; a++)
+                            acc[a] += s[a];
+                    }
+                }
+                if (inside) {
+                    size_t c = ((size_t)k * L->ny + j) * L->nx + i;
+                    double f = (double)inside / (SUB * SUB * SUB);
+                    double m[3] = {acc[0] / inside, acc[1] / inside,
+                                   acc[2] / inside};
+                    int rg = aero_body_region(b, m, nr);
+                    chi[c] = (float)f;
+                    region[c] = rg;
+                    wsum[rg] += f;
+                    for (int a = 0; a < 3; a++)
+                        csum[3 * rg + a] += f * m[a];
+                    st->solid_volume += f * h * h * h;
+                }
+            }
+    for (int l = 0; l < nr; l++)
+        for (int a = 0; a < 3; a++)
+            st->centre[3 * l + a] = wsum[l] > 0.0 ? csum[3 * l + a] / wsum[l]
+                                                  : L->centre_body[a];
+    /* frontal area: the columns along the flow that meet the body */
+    st->frontal_area = 0.0;
+    for (int j = 0; j < L->ny; j++)
+        for (int i = 0; i < L->nx; i++) {
+            float m = 0.0f;
+            for (int k = k0; k < k1; k++) {
+                float v = chi[((size_t)k * L->ny + j) * L->nx + i];
+                if (v > m) m = v;
+            }
+            st->frontal_area += m * h * h;
+        }
+}
+
+static double step_of(const aero_body_flow_params *p)
+{
+    return p->cfl * p->cell / p->speed;
+}
+
+/* the low-pass of the derivative: below the step rate's Nyquist */
+static double cutoff_of(const aero_body_flow_params *p, double rate)
+{
+    double fc = 0.45 * rate, fs = 0.4 / step_of(p);
+    return fs < fc ? fs : fc;
+}
+
+long aero_body_flow_steps(const aero_body_flow_params *p, double rate,
+                          int nout)
+{
+    double dt = step_of(p), w = 8.0 / cutoff_of(p, rate);
+    return (long)ceil((p->settle + nout / rate + 2.0 * w) / dt) + 1;
+}
+
+static int check_params(const aero_body_flow_params *p, double rate,
+                        int nout, char *err, size_t errlen)
+{
+    if (!p->body) {
+        snprintf(err, errlen, "no body");
+        return -1;
+    }
+    if (!(p->speed > 0.0 && p->speed <= AERO_MACH_LIMIT * AERO_C0) ||
+        !(p->cell > 0.0 && p->cell < 10.0) || !(p->side >= 0.0) ||
+        !(p->upstream >= 0.0) || !(p->downstream >= 0.0) ||
+        !(p->nu >= 0.0) || !(p->confinement >= 0.0 && p->confinement <= 5.0) || !(p->cfl > 0.0 && p->cfl <= 2.0) ||
+        !(p->settle >= 0.0 && p->settle < 1e3) ||
+        !(p->noise >= 0.0 && p->noise <= 1.0) ||
+        !(p->sponge >= 0.0 && p->sponge <= 1.0) || !aero_is_finite(p->angle) ||
+        p->regions < 1 || p->regions > AERO_BODY_MAX_REGIONS ||
+        !(rate >= 100.0 && rate <= 192000.0) || nout < 1) {
+        snprintf(err, errlen, "bad flow parameters (speed %g m/s, cell %g m, "
+                 "%d regions, rate %g Hz)", p->speed, p->cell, p->regions,
+                 rate);
+        return -1;
+    }
+    if (p->nu * step_of(p) / (p->cell * p->cell) > 1.0 / 6.0) {
+        snprintf(err, errlen, "viscosity %g m^2/s is too large for the "
+                 "explicit step on %g m cells", p->nu, p->cell);
+        return -1;
+    }
+    return 0;
+}
+
+/* the shedding peak of the lateral sound source: the spectrum of dF/dt
+   (power times f^2, what radiates; Hann window, a DFT scan) over 0.05..1
+   v0/d. Below 0.05 a sphere's wake also wanders slowly (Constantinescu
+   and Squires 2004, Phys. Fluids 16, a mode far below the shedding), which
+   dominates the force itself but hardly radiates. Hz */
+static double lateral_peak(const double *fx, const double *fy, long n,
+                           double dt, double d, double v0)
+{
+    double best = 0.0, fbest = 0.0, T = n * dt;
+    double mx = 0.0, my = 0.0;
+    if (n < 16)
+        return 0.0;
+    for (long m = 0; m < n; m++) {
+        mx += fx[m];
+        my += fy[m];
+    }
+    mx /= n;
+    my /= n;
+    for (double f = 0.05 * v0 / d; f <= 1.0 * v0 / d; f += 0.25 / T) {
+        double ar = 0, ai = 0, br = 0, bi = 0;
+        double w = 2.0 * AERO_PI * f * dt;
+        for (long m = 0; m < n; m++) {
+            double hann = 0.5 - 0.5 * cos(2.0 * AERO_PI * m / (n - 1));
+            double c = cos(w * m), s = sin(w * m);
+            ar += hann * (fx[m] - mx) * c;
+            ai -= hann * (fx[m] - mx) * s;
+            br += hann * (fy[m] - my) * c;
+            bi -= hann * (fy[m] - my) * s;
+        }
+        if ((ar * ar + ai * ai + br * br + bi * bi) * f * f > best) {
+            best = (ar * ar + ai * ai + br * br + bi * bi) * f * f;
+            fbest = f;
+        }
+    }
+    return fbest;
+}
+
+int aero_body_flow_simulate(const aero_body_flow_params *p, double rate,
+                            float *out, int stride, int nout,
+                            aero_body_flow_stats *st,
+                            void (*hook)(void *ctx, const aero_flow3d *s,
+                                         long step, int recording),
+                            long hook_every, void *ctx, char *err,
+                            size_t errlen)
+{
+    aero_flow3d_params fp;
+    aero_flow3d s;
+    layout L;
+    turn r;
+    float *chi = NULL;
+    int *region = NULL;
+    double *times = NULL, *forces = NULL, *series = NULL;
+    double force[3 * AERO_BODY_MAX_REGIONS];
+    const int nr = p->regions;
+    double dt, t_keep, fc, d;
+    long steps, kept = 0, first_kept = -1;
+    uint32_t rng;
+    int status = -1, solver_up = 0;
+    size_t cells;
+
+    memset(st, 0, sizeof *st);
+    if (check_params(p, rate, nout, err, errlen))
+        return -1;
+    r.c = cos(p->angle * AERO_PI / 180.0);
+    r.s = sin(p->angle * AERO_PI / 180.0);
+    if (make_layout(p, &r, &L, err, errlen))
+        return -1;
+    d = aero_body_reference_size(p->body);
+    dt = step_of(p);
+    fc = cutoff_of(p, rate);
+    steps = aero_body_flow_steps(p, rate, nout);
+    t_keep = p->settle - 8.0 / fc - dt;
+    cells = (size_t)L.nx * L.ny * L.nz;
+    chi = malloc(sizeof(float) * cells);
+    region = malloc(sizeof(int) * cells);
+    times = malloc(sizeof(double) * (size_t)steps);
+    forces = malloc(sizeof(double) * (size_t)steps * 3 * nr);
+    series = malloc(sizeof(double) * (size_t)steps);
+    if (!chi || !region || !times || !forces || !series) {
+        snprintf(err, errlen, "out of memory for a %d x %d x %d grid", L.nx,
+                 L.ny, L.nz);
+        goto out;
+    }
+    voxelise(p, &r, &L, chi, region, st);
+    if (!(st->solid_volume > 0.0)) {
+        snprintf(err, errlen, "the body fills no cell: a finer grid "
+                 "(cell %g m)", p->cell);
+        goto out;
+    }
+    memset(&fp, 0, sizeof fp);
+    fp.nx = L.nx;
+    fp.ny = L.ny;
+    fp.nz = L.nz;
+    fp.h = p->cell;
+    fp.nu = p->nu;
+    fp.u_ref = p->speed;
+    fp.confinement = p->confinement;
+    fp.advection = AERO_F3_MACCORMACK;
+    fp.sponge = p->downstream > 0.0
+                    ? fmin(0.5, p->sponge * p->downstream / (L.nz * p->cell))
+                    : 0.0;
+    if (p->plan_lock) p->plan_lock(ctx, 1);
+    solver_up = aero_flow3d_init(&s, &fp, err, errlen) == 0;
+    if (p->plan_lock) p->plan_lock(ctx, 0);
+    if (!solver_up)
+        goto out;
+    st->nx = L.nx;
+    st->ny = L.ny;
+    st->nz = L.nz;
+    st->dt = dt;
+    aero_flow3d_set_body(&s, chi, region, nr, force);
+    /* start: the uniform flow everywhere, made divergence-free around the
+       body */
+    for (size_t c = 0; c < s.plane * (size_t)(s.nz + 1); c++)
+        s.w[c] = (float)p->speed;
+    for (size_t c = 0; c < s.plane; c++)
+        s.in_w[c] = (float)p->speed;
+    aero_flow3d_project(&s);
+    rng = p->seed ? p->seed : 1;
+    for (long n = 0; n < steps; n++) {
+        double t = n * dt;
+        /* a lateral gust (one sine period) during the first quarter of
+           the settling time, then a little seeded noise */
+        double gust = t < 0.25 * p->settle
+                          ? 0.1 * sin(2.0 * AERO_PI * t / (0.25 * p->settle))
+                          : 0.0;
+        float gu = (float)(p->speed * (gust + p->noise * aero_uniform(&rng)));
+        float gv = (float)(p->speed * (0.5 * gust +
+                                       p->noise * aero_uniform(&rng)));
+        for (size_t c = 0; c < s.plane; c++) {
+            s.in_u[c] = gu;
+            s.in_v[c] = gv;
+        }
+        if (aero_flow3d_step(&s, dt)) {
+            snprintf(err, errlen, "the flow blew up at t = %.4g s (step %ld): "
+                     "a smaller --cfl", t, n);
+            goto out;
+        }
+        if (t + dt >= t_keep) {
+            if (first_kept < 0)
+                first_kept = n;
+            times[kept] = t + dt;
+            /* into the sample frame */
+            for (int l = 0; l < nr; l++)
+                to_sample(&r, force + 3 * l, forces + ((size_t)kept * nr + l) * 3);
+            kept++;
+        }
+        if (hook && hook_every > 0 && (n % hook_every == 0 || n == steps - 1))
+            hook(ctx, &s, n, t >= p->settle);
+    }
+    st->steps = steps;
+    st->max_div = aero_flow3d_max_divergence(&s);
+    /* g_l = rho dF_l/dt, resampled from the settling time on */
+    for (int l = 0; l < nr; l++)
+        for (int c = 0; c < 3; c++) {
+            for (long m = 0; m < kept; m++)
+                series[m] = forces[((size_t)m * nr + l) * 3 + c];
+            aero_texture_resample_derivative_fc(times, series, (int)kept,
+                                                rate, fc, p->settle, AERO_RHO,
+                                                out + 3 * l + c, stride, nout);
+        }
+    /* statistics over the recorded part, in grid axes (z: drag) */
+    {
+        double *fx = malloc(sizeof(double) * (size_t)kept);
+        double *fy = malloc(sizeof(double) * (size_t)kept);
+        double drag = 0.0, lat = 0.0, q, mx = 0.0, my = 0.0;
+        long m0 = 0, nrec;
+        while (m0 < kept && times[m0] < p->settle)
+            m0++;
+        nrec = kept - m0;
+        if (!fx || !fy || nrec < 2) {
+            free(fx);
+            free(fy);
+            snprintf(err, errlen, nrec < 2 ? "too short a recording"
+                                           : "out of memory");
+            goto out;
+        }
+        for (long m = 0; m < nrec; m++) {
+            double sx = 0.0, sy = 0.0, sz = 0.0;
+            for (int l = 0; l < nr; l++) {
+                double g[3];
+                to_grid(&r, forces + ((size_t)(m0 + m) * nr + l) * 3, g);
+                sx += g[0];
+                sy += g[1];
+                sz += g[2];
+            }
+            fx[m] = sx;
+            fy[m] = sy;
+            mx += sx;
+            my += sy;
+            drag += sz;
+        }
+        mx /= nrec;
+        my /= nrec;
+        for (long m = 0; m < nrec; m++)
+            lat += (fx[m] - mx) * (fx[m] - mx) + (fy[m] - my) * (fy[m] - my);
+        q = 0.5 * p->speed * p->speed * st->frontal_area; /* per rho */
+        st->cd = drag / nrec / q;
+        st->cl_rms = sqrt(lat / nrec) / q;
+        st->f_peak = lateral_peak(fx, fy, nrec, dt, d, p->speed);
+        st->st = st->f_peak * d / p->speed;
+        free(fx);
+        free(fy);
+    }
+    (void)first_kept;
+    status = 0;
+out:
+    if (solver_up) {
+        if (p->plan_lock) p->plan_lock(ctx, 1);
+        aero_flow3d_free(&s);
+        if (p->plan_lock) p->plan_lock(ctx, 0);
+    }
+    free(chi);
+    free(region);
+    free(times);
+    free(forces);
+    free(series);
+    return status;
+}

@@ -52,26 +52,8 @@ void aero_body_quaternion_from_rotvec(const double r[3], double q[4])
 
 static int alloc_rings(aero_body_texture *s, double sr)
 {
-    long need = (long)ceil(sr * AERO_BODY_MAX_DELAY_S) + 4 * AERO_BODY_CHUNK;
-    long len = 1;
-    float *rings[AERO_BODY_MAX_EARS] = {NULL, NULL};
-    while (len < need)
-        len <<= 1;
-    for (int e = 0; e < s->n_ears; e++) {
-        rings[e] = calloc((size_t)len, sizeof(float));
-        if (!rings[e]) {
-            for (int k = 0; k < e; k++)
-                free(rings[k]);
-            return -1;
-        }
-    }
-    for (int e = 0; e < AERO_BODY_MAX_EARS; e++) {
-        free(s->ring[e]);
-        s->ring[e] = rings[e];
-    }
-    s->ring_mask = len - 1;
-    s->ring_head = 0;
-    return 0;
+    return aero_arrivals_alloc(&s->arrivals, s->n_ears, sr,
+                               AERO_BODY_MAX_DELAY_S, 4 * AERO_BODY_CHUNK);
 }
 
 static void restart_sources(aero_body_texture *s)
@@ -111,10 +93,7 @@ int aero_body_texture_init(aero_body_texture *s, double sample_rate,
 
 void aero_body_texture_free(aero_body_texture *s)
 {
-    for (int e = 0; e < AERO_BODY_MAX_EARS; e++) {
-        free(s->ring[e]);
-        s->ring[e] = NULL;
-    }
+    aero_arrivals_free(&s->arrivals);
     if (s->texture) {
         aero_texture_free(s->texture);
         free(s->texture);
@@ -210,7 +189,7 @@ int aero_body_texture_set_sample_rate(aero_body_texture *s, double sr)
 {
     if (!(sr >= 1000.0 && sr <= 1536000.0))
         return -1;
-    if (sr != s->sample_rate || !s->ring[0]) {
+    if (sr != s->sample_rate || !s->arrivals.ring[0]) {
         double ms = s->ramp_samples / s->sample_rate * 1000.0;
         if (alloc_rings(s, sr))
             return -1;
@@ -514,10 +493,10 @@ static void render(aero_body_texture *s, int l, const aero_body_geometry *g,
     }
     for (int e = 0; e < s->n_ears; e++) {
         float cf[6], dcf[6];
-        float *ring = s->ring[e];
-        const long mask = s->ring_mask;
+        float *ring = s->arrivals.ring[e];
+        const long mask = s->arrivals.mask;
         const double ddelay = (g->delay[e] - then.delay[e]) * inv_m;
-        double at = (double)s->ring_head + then.delay[e];
+        double at = (double)s->arrivals.head + then.delay[e];
         for (int c = 0; c < 3; c++) {
             double a0 = then.amp * then.proj[e][c], a1 = g->amp * g->proj[e][c];
             double s0 = (1.0 - w_then) * a0, s1 = (1.0 - w_now) * a1;
@@ -529,16 +508,11 @@ static void render(aero_body_texture *s, int l, const aero_body_geometry *g,
         }
         for (int j = 0; j < m; j++) {
             float v = 0.0f;
-            long ia;
-            float fa;
             for (int q = 0; q < 6; q++) {
                 v += cf[q] * tex[q][j];
                 cf[q] += dcf[q];
             }
-            ia = (long)at;
-            fa = (float)(at - (double)ia);
-            ring[ia & mask] += v * (1.0f - fa);
-            ring[(ia + 1) & mask] += v * fa;
+            aero_arrivals_add(ring, mask, at, v);
             at += 1.0 + ddelay;
         }
     }
@@ -582,17 +556,7 @@ int aero_body_texture_process(aero_body_texture *s, const float *speed,
                 render(s, l, &g, m);
             }
         }
-        for (int e = 0; e < s->n_ears; e++) {
-            float *ring = s->ring[e];
-            float *o = out[e] + done;
-            for (int j = 0; j < m; j++) {
-                long i = (s->ring_head + j) & s->ring_mask;
-                float v = ring[i];
-                ring[i] = 0.0f;
-                o[j] = v == v && v < 1e30f && v > -1e30f ? v : 0.0f;
-            }
-        }
-        s->ring_head = (s->ring_head + m) & s->ring_mask;
+        aero_arrivals_take(&s->arrivals, out, done, m);
         done += m;
     }
     return s->clamped;

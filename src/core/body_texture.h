@@ -39,6 +39,7 @@
 #include <stdint.h>
 
 #include "aero_util.h"
+#include "arrivals.h"
 #include "texture.h"
 
 #define AERO_BODY_MAX_EARS 2
@@ -86,8 +87,7 @@ typedef struct aero_body_texture {
 
     aero_body_source src[AERO_BODY_MAX_SOURCES];
 
-    float *ring[AERO_BODY_MAX_EARS];
-    long ring_mask, ring_head;
+    aero_arrivals arrivals; /* one ring per ear (arrivals.h) */
     int clamped;
 } aero_body_texture;
 

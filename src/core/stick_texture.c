@@ -38,26 +38,8 @@ static int finite3(const double *v, double limit)
 
 static int alloc_rings(aero_stick_texture *s, double sr)
 {
-    long need = (long)ceil(sr * AERO_STICK_MAX_DELAY_S) + 4 * AERO_STICK_CHUNK;
-    long len = 1;
-    while (len < need)
-        len <<= 1;
-    float *rings[AERO_STICK_MAX_EARS] = {NULL, NULL};
-    for (int e = 0; e < s->n_ears; e++) {
-        rings[e] = calloc((size_t)len, sizeof(float));
-        if (!rings[e]) {
-            for (int k = 0; k < e; k++)
-                free(rings[k]);
-            return -1;
-        }
-    }
-    for (int e = 0; e < AERO_STICK_MAX_EARS; e++) {
-        free(s->ring[e]);
-        s->ring[e] = rings[e];
-    }
-    s->ring_mask = len - 1;
-    s->ring_head = 0;
-    return 0;
+    return aero_arrivals_alloc(&s->arrivals, s->n_ears, sr,
+                               AERO_STICK_MAX_DELAY_S, 4 * AERO_STICK_CHUNK);
 }
 
 static void default_pose(aero_stick_texture *s)
@@ -137,10 +119,7 @@ int aero_stick_texture_init(aero_stick_texture *s, double sample_rate,
 
 void aero_stick_texture_free(aero_stick_texture *s)
 {
-    for (int e = 0; e < AERO_STICK_MAX_EARS; e++) {
-        free(s->ring[e]);
-        s->ring[e] = NULL;
-    }
+    aero_arrivals_free(&s->arrivals);
     if (s->texture) {
         aero_texture_free(s->texture);
         free(s->texture);
@@ -207,7 +186,7 @@ int aero_stick_texture_set_sample_rate(aero_stick_texture *s, double sr)
 {
     if (!(sr >= 1000.0 && sr <= 1536000.0))
         return -1;
-    if (sr != s->sample_rate || !s->ring[0]) {
+    if (sr != s->sample_rate || !s->arrivals.ring[0]) {
         double ms = s->ramp_samples / s->sample_rate * 1000.0;
         if (alloc_rings(s, sr))
             return -1;
@@ -665,16 +644,13 @@ static void render_source(aero_stick_texture *s, aero_stick_source *src,
         }
         const double delay = then.delay[e];
         const double ddelay = (g->delay[e] - delay) * inv_m;
-        float *ring = s->ring[e];
-        const long mask = s->ring_mask;
-        double at = (double)s->ring_head + delay;
+        float *ring = s->arrivals.ring[e];
+        const long mask = s->arrivals.mask;
+        double at = (double)s->arrivals.head + delay;
         for (int j = 0; j < m; j++) {
             float v = cf[0] * tex[0][j] + cf[1] * tex[1][j] +
                       cf[2] * tex[2][j] + cf[3] * tex[3][j];
-            long ia = (long)at;
-            float fa = (float)(at - (double)ia);
-            ring[ia & mask] += v * (1.0f - fa);
-            ring[(ia + 1) & mask] += v * fa;
+            aero_arrivals_add(ring, mask, at, v);
             cf[0] += dcf[0];
             cf[1] += dcf[1];
             cf[2] += dcf[2];
@@ -717,18 +693,7 @@ int aero_stick_texture_process(aero_stick_texture *s, const float *speed,
                 render_source(s, &s->src[i], &g, m);
             }
         }
-        /* read the arrivals of this chunk and clear them for reuse */
-        for (int e = 0; e < s->n_ears; e++) {
-            float *ring = s->ring[e];
-            float *o = out[e] + done;
-            for (int j = 0; j < m; j++) {
-                long i = (s->ring_head + j) & s->ring_mask;
-                float v = ring[i];
-                ring[i] = 0.0f;
-                o[j] = v == v && v < 1e30f && v > -1e30f ? v : 0.0f;
-            }
-        }
-        s->ring_head = (s->ring_head + m) & s->ring_mask;
+        aero_arrivals_take(&s->arrivals, out, done, m);
         done += m;
     }
     return s->clamped;

@@ -31,6 +31,7 @@
 #include <stdint.h>
 
 #include "aero_util.h"
+#include "arrivals.h"
 #include "texture.h"
 
 #define AERO_STICK_MAX_EARS 2
@@ -83,10 +84,7 @@ typedef struct aero_stick_texture {
 
     aero_stick_source src[AERO_STICK_MAX_SOURCES];
 
-    /* arrival rings, one per ear */
-    float *ring[AERO_STICK_MAX_EARS];
-    long ring_mask;
-    long ring_head;      /* ring index of the next output sample */
+    aero_arrivals arrivals; /* one ring per ear (arrivals.h) */
 
     int clamped;         /* a speed was clamped at Mach 0.3 */
 } aero_stick_texture;

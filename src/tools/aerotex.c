@@ -39,6 +39,28 @@ void aerotex_progress_show(aerotex_progress *p, int final)
     fflush(stderr);
 }
 
+int aerotex_number(int argc, char **argv, int *i, double lo, double hi,
+                   double *x)
+{
+    const char *opt = argv[*i];
+    char *end;
+    if (*i + 1 >= argc) {
+        aerotex_error("%s needs a value", opt);
+        return -1;
+    }
+    (*i)++;
+    *x = strtod(argv[*i], &end);
+    if (end == argv[*i] || *end || !isfinite(*x)) {
+        aerotex_error("%s: '%s' is not a number", opt, argv[*i]);
+        return -1;
+    }
+    if (*x < lo || *x > hi) {
+        aerotex_error("%s %g is out of range [%g, %g]", opt, *x, lo, hi);
+        return -1;
+    }
+    return 0;
+}
+
 void aerotex_error(const char *fmt, ...)
 {
     va_list ap;

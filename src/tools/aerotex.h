@@ -31,6 +31,11 @@ double aerotex_now(void);
 /* draws the bar (at most every 0.25 s unless final) */
 void aerotex_progress_show(aerotex_progress *p, int final);
 
+/* the number after option argv[*i] into *x (advancing *i), checked
+   against [lo, hi]: 0, or -1 with a message */
+int aerotex_number(int argc, char **argv, int *i, double lo, double hi,
+                   double *x);
+
 /* messages on stderr, prefixed "aerotex: " */
 void aerotex_error(const char *fmt, ...);
 

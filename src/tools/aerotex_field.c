@@ -52,27 +52,6 @@ static void bar(bar_t *b, double frac, int final)
     fflush(stderr);
 }
 
-static int number(int argc, char **argv, int *i, double lo, double hi,
-                  double *x)
-{
-    const char *opt = argv[*i];
-    char *end;
-    if (*i + 1 >= argc) {
-        aerotex_error("%s needs a value", opt);
-        return -1;
-    }
-    (*i)++;
-    *x = strtod(argv[*i], &end);
-    if (end == argv[*i] || *end || !(*x == *x) || *x > 1e300 || *x < -1e300) {
-        aerotex_error("%s: '%s' is not a number", opt, argv[*i]);
-        return -1;
-    }
-    if (*x < lo || *x > hi) {
-        aerotex_error("%s %g is out of range [%g, %g]", opt, *x, lo, hi);
-        return -1;
-    }
-    return 0;
-}
 
 /* --- aerotex field-demo ---------------------------------------------------- */
 
@@ -90,22 +69,22 @@ int aerotex_field_demo(int argc, char **argv)
         if (!strcmp(a, "-o") && i + 1 < argc) {
             dir = argv[++i];
         } else if (!strcmp(a, "--size")) {
-            if (number(argc, argv, &i, 4, 512, &x)) return 2;
+            if (aerotex_number(argc, argv, &i, 4, 512, &x)) return 2;
             d.size = (int)x;
         } else if (!strcmp(a, "--frames")) {
-            if (number(argc, argv, &i, 1, 100000, &x)) return 2;
+            if (aerotex_number(argc, argv, &i, 1, 100000, &x)) return 2;
             d.frames = (int)x;
         } else if (!strcmp(a, "--spacing")) {
-            if (number(argc, argv, &i, 1e-5, 1e3, &x)) return 2;
+            if (aerotex_number(argc, argv, &i, 1e-5, 1e3, &x)) return 2;
             d.spacing = x;
         } else if (!strcmp(a, "--rate")) {
-            if (number(argc, argv, &i, 1e-3, 1e6, &x)) return 2;
+            if (aerotex_number(argc, argv, &i, 1e-3, 1e6, &x)) return 2;
             d.rate = x;
         } else if (!strcmp(a, "--shell-speed")) {
-            if (number(argc, argv, &i, 0, 1e3, &x)) return 2;
+            if (aerotex_number(argc, argv, &i, 0, 1e3, &x)) return 2;
             d.shell_speed = x;
         } else if (!strcmp(a, "--seed")) {
-            if (number(argc, argv, &i, 0, 4294967295.0, &x)) return 2;
+            if (aerotex_number(argc, argv, &i, 0, 4294967295.0, &x)) return 2;
             d.seed = (uint32_t)x;
         } else if (!strcmp(a, "--velocity")) {
             d.velocity = 1;
@@ -271,27 +250,27 @@ int aerotex_auralize(int argc, char **argv)
         else if (!strcmp(a, "--path") && i + 1 < argc)
             path_file = argv[++i];
         else if (!strcmp(a, "--rate")) {
-            if (number(argc, argv, &i, 1000, 384000, &rate)) return 2;
+            if (aerotex_number(argc, argv, &i, 1000, 384000, &rate)) return 2;
         } else if (!strcmp(a, "--speed")) {
-            if (number(argc, argv, &i, 1e-3, 1e6, &speed)) return 2;
+            if (aerotex_number(argc, argv, &i, 1e-3, 1e6, &speed)) return 2;
         } else if (!strcmp(a, "--duration")) {
-            if (number(argc, argv, &i, 1e-3, 3600, &duration)) return 2;
+            if (aerotex_number(argc, argv, &i, 1e-3, 3600, &duration)) return 2;
         } else if (!strcmp(a, "--gain")) {
-            if (number(argc, argv, &i, -200, 120, &gain_db)) return 2;
+            if (aerotex_number(argc, argv, &i, -200, 120, &gain_db)) return 2;
         } else if (!strcmp(a, "--threshold")) {
             for (int t = 0; t < 3; t++)
-                if (number(argc, argv, &i, 1e-30, 1e30, &par.threshold[t]))
+                if (aerotex_number(argc, argv, &i, 1e-30, 1e30, &par.threshold[t]))
                     return 2;
         } else if (!strcmp(a, "--zero")) {
-            if (number(argc, argv, &i, 0, 1, &par.zero)) return 2;
+            if (aerotex_number(argc, argv, &i, 0, 1, &par.zero)) return 2;
         } else if (!strcmp(a, "--map")) {
-            if (number(argc, argv, &i, -1e30, 1e30, &par.in_lo) ||
-                number(argc, argv, &i, -1e30, 1e30, &par.in_hi) ||
-                number(argc, argv, &i, 0, 1e6, &par.rho_lo) ||
-                number(argc, argv, &i, 0, 1e6, &par.rho_hi))
+            if (aerotex_number(argc, argv, &i, -1e30, 1e30, &par.in_lo) ||
+                aerotex_number(argc, argv, &i, -1e30, 1e30, &par.in_hi) ||
+                aerotex_number(argc, argv, &i, 0, 1e6, &par.rho_lo) ||
+                aerotex_number(argc, argv, &i, 0, 1e6, &par.rho_hi))
                 return 2;
         } else if (!strcmp(a, "--vscale")) {
-            if (number(argc, argv, &i, -1e6, 1e6, &par.vscale)) return 2;
+            if (aerotex_number(argc, argv, &i, -1e6, 1e6, &par.vscale)) return 2;
         } else if (!strcmp(a, "--log"))
             par.log_input = 1;
         else if (!strcmp(a, "--no-velocity"))
@@ -302,7 +281,7 @@ int aerotex_auralize(int argc, char **argv)
             /* the synthetic burst in memory, no files (benchmarks) */
             use_demo = 1;
             if (i + 1 < argc && argv[i + 1][0] != '-') {
-                if (number(argc, argv, &i, 4, 512, &x)) return 2;
+                if (aerotex_number(argc, argv, &i, 4, 512, &x)) return 2;
                 demo.size = (int)x;
             }
         } else if (!strcmp(a, "-q"))

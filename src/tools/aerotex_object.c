@@ -85,27 +85,6 @@ static void hook(void *ctx, const aero_flow3d *s, long step, int recording)
     }
 }
 
-static int onumber(int argc, char **argv, int *i, double lo, double hi,
-                   double *x)
-{
-    const char *opt = argv[*i];
-    char *end;
-    if (*i + 1 >= argc) {
-        aerotex_error("%s needs a value", opt);
-        return -1;
-    }
-    (*i)++;
-    *x = strtod(argv[*i], &end);
-    if (end == argv[*i] || *end || !isfinite(*x)) {
-        aerotex_error("%s: '%s' is not a number", opt, argv[*i]);
-        return -1;
-    }
-    if (*x < lo || *x > hi) {
-        aerotex_error("%s %g is out of range [%g, %g]", opt, *x, lo, hi);
-        return -1;
-    }
-    return 0;
-}
 
 static int oparse(ojob_t *j, int argc, char **argv)
 {
@@ -114,7 +93,7 @@ static int oparse(ojob_t *j, int argc, char **argv)
         const char *a = argv[i];
 #define ONUM(name, lo, hi, field)                                  \
     if (!strcmp(a, name)) {                                        \
-        if (onumber(argc, argv, &i, lo, hi, &x)) return -1;        \
+        if (aerotex_number(argc, argv, &i, lo, hi, &x)) return -1;        \
         field = x;                                                 \
         continue;                                                  \
     }
@@ -134,7 +113,7 @@ static int oparse(ojob_t *j, int argc, char **argv)
             double hi = !strcmp(a, "--sources") ? AERO_BODY_MAX_REGIONS
                         : !strcmp(a, "--directions") ? MAX_DIRECTIONS
                         : !strcmp(a, "--threads") ? 256 : 4294967295.0;
-            if (onumber(argc, argv, &i, !strcmp(a, "--seed") ? 0 : 1, hi,
+            if (aerotex_number(argc, argv, &i, !strcmp(a, "--seed") ? 0 : 1, hi,
                         &x))
                 return -1;
             if (x != floor(x)) {

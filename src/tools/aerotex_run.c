@@ -36,61 +36,7 @@ typedef struct {
     char err[256];
 } dir_t;
 
-typedef struct {
-    long total, done;
-    double t0, last;
-    int show;
-} progress_t;
 
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
-
-static void progress_show(progress_t *p, int final)
-{
-    double t = now(), frac, eta;
-    int bar = 30, fill;
-    if (!p->show || (!final && t - p->last < 0.25))
-        return;
-    p->last = t;
-    frac = p->total ? (double)p->done / p->total : 1.0;
-    if (frac > 1.0) frac = 1.0;
-    fill = (int)(frac * bar + 0.5);
-    eta = frac > 0.01 ? (t - p->t0) * (1.0 - frac) / frac : 0.0;
-    fprintf(stderr, "\r[%.*s%*s] %3d%%  %s %dm%02ds ", fill,
-            "##############################", bar - fill, "",
-            (int)(100.0 * frac), final ? "took" : "ETA",
-            (int)((final ? t - p->t0 : eta) / 60.0),
-            (int)fmod(final ? t - p->t0 : eta, 60.0));
-    if (final) fprintf(stderr, "\n");
-    fflush(stderr);
-}
-
-/* parses the number after option argv[*i] into *x, checked against [lo, hi] */
-static int number(int argc, char **argv, int *i, double lo, double hi,
-                  double *x)
-{
-    const char *opt = argv[*i];
-    char *end;
-    if (*i + 1 >= argc) {
-        aerotex_error("%s needs a value", opt);
-        return -1;
-    }
-    (*i)++;
-    *x = strtod(argv[*i], &end);
-    if (end == argv[*i] || *end || !isfinite(*x)) {
-        aerotex_error("%s: '%s' is not a number", opt, argv[*i]);
-        return -1;
-    }
-    if (*x < lo || *x > hi) {
-        aerotex_error("%s %g is out of range [%g, %g]", opt, *x, lo, hi);
-        return -1;
-    }
-    return 0;
-}
 
 static int parse(job_t *j, int argc, char **argv)
 {
@@ -99,7 +45,7 @@ static int parse(job_t *j, int argc, char **argv)
         const char *a = argv[i];
 #define NUM(name, lo, hi, field)                                    \
     if (!strcmp(a, name)) {                                         \
-        if (number(argc, argv, &i, lo, hi, &x)) return -1;          \
+        if (aerotex_number(argc, argv, &i, lo, hi, &x)) return -1;          \
         field = x;                                                  \
         continue;                                                   \
     }
@@ -116,7 +62,7 @@ static int parse(job_t *j, int argc, char **argv)
             NUM("--aspect", 0.01, 1.0, j->aspect)
             NUM("--directions", 1.0, 360.0, j->directions)
             if (!strcmp(a, "--symmetry")) {
-                if (number(argc, argv, &i, 1.0, 64.0, &x)) return -1;
+                if (aerotex_number(argc, argv, &i, 1.0, 64.0, &x)) return -1;
                 if (x != floor(x)) {
                     aerotex_error("--symmetry takes a whole number");
                     return -1;
@@ -224,7 +170,7 @@ static double record_time(const job_t *j)
 /* one direction: settle, record the force, keep the statistics */
 static void run_direction(const job_t *j, const aero_shape2d *shape,
                           const aero_flow2d_params *fp, int k, dir_t *r,
-                          progress_t *prog)
+                          aerotex_progress *prog)
 {
     aero_flow2d s;
     long step = 0, chunk = 0, nsnap, snap = 0;
@@ -276,7 +222,7 @@ static void run_direction(const job_t *j, const aero_shape2d *shape,
             chunk = 0;
             if (prog->show) {
 #pragma omp critical(aerotex_progress)
-                progress_show(prog, 0);
+                aerotex_progress_show(prog, 0);
             }
         }
     }
@@ -421,11 +367,11 @@ int aerotex_aeolian(int argc, char **argv, int cavity)
     aero_shape2d shape;
     aero_flow2d_params fp;
     dir_t *r;
-    progress_t prog;
+    aerotex_progress prog;
     aero_texture tex;
     char err[512], shape_desc[512], command[4096];
     int status = 1;
-    double t_start = now(), thin = 1e300;
+    double t_start = aerotex_now(), thin = 1e300;
 
     memset(&j, 0, sizeof j);
     j.cavity = cavity;
@@ -604,13 +550,13 @@ int aerotex_aeolian(int argc, char **argv, int cavity)
         aero_flow2d_free(&probe);
     }
     prog.done = 0;
-    prog.t0 = prog.last = now();
+    prog.t0 = prog.last = aerotex_now();
     prog.show = !j.quiet && isatty(fileno(stderr));
 
 #pragma omp parallel for schedule(dynamic, 1) num_threads(j.threads)
     for (int k = 0; k < j.directions; k++)
         run_direction(&j, &shape, &fp, k, &r[k], &prog);
-    progress_show(&prog, 1);
+    aerotex_progress_show(&prog, 1);
 
     status = 0;
     for (int k = 0; k < j.directions; k++)
@@ -646,7 +592,7 @@ int aerotex_aeolian(int argc, char **argv, int cavity)
                            "flow: the texture holds only its weak broadband "
                            "wall-pressure force (a --grid under 48 damps "
                            "the shear layer)\n");
-                printf("  %.1f s\n", now() - t_start);
+                printf("  %.1f s\n", aerotex_now() - t_start);
             }
             aero_texture_free(&tex);
         }

@@ -80,27 +80,6 @@ static void hook(void *ctx, const aero_flow3d *s, long step, int recording)
     }
 }
 
-static int vnumber(int argc, char **argv, int *i, double lo, double hi,
-                   double *x)
-{
-    const char *opt = argv[*i];
-    char *end;
-    if (*i + 1 >= argc) {
-        aerotex_error("%s needs a value", opt);
-        return -1;
-    }
-    (*i)++;
-    *x = strtod(argv[*i], &end);
-    if (end == argv[*i] || *end || !isfinite(*x)) {
-        aerotex_error("%s: '%s' is not a number", opt, argv[*i]);
-        return -1;
-    }
-    if (*x < lo || *x > hi) {
-        aerotex_error("%s %g is out of range [%g, %g]", opt, *x, lo, hi);
-        return -1;
-    }
-    return 0;
-}
 
 static int parse_speeds(vjob_t *j, const char *list)
 {
@@ -147,7 +126,7 @@ static int vparse(vjob_t *j, int argc, char **argv)
         const char *a = argv[i];
 #define VNUM(name, lo, hi, field)                                  \
     if (!strcmp(a, name)) {                                        \
-        if (vnumber(argc, argv, &i, lo, hi, &x)) return -1;        \
+        if (aerotex_number(argc, argv, &i, lo, hi, &x)) return -1;        \
         field = x;                                                 \
         continue;                                                  \
     }
@@ -166,7 +145,7 @@ static int vparse(vjob_t *j, int argc, char **argv)
             double lo = !strcmp(a, "--seed") ? 0.0 : !strcmp(a, "--receivers") ? 1.0 : 4.0;
             double hi = !strcmp(a, "--seed") ? 4294967295.0
                         : !strcmp(a, "--receivers") ? 64.0 : 256.0;
-            if (vnumber(argc, argv, &i, lo, hi, &x)) return -1;
+            if (aerotex_number(argc, argv, &i, lo, hi, &x)) return -1;
             if (x != floor(x)) {
                 aerotex_error("%s takes a whole number", a);
                 return -1;

@@ -65,30 +65,12 @@ static void render(aero_body_texture *s, float *out, int n, int block)
     }
 }
 
-/* frequency from positive-going zero crossings (interpolated) */
 static double zero_crossing_hz(const float *x, int n)
 {
-    double first = -1, last = -1;
-    int count = 0;
-    for (int i = 1; i < n; i++)
-        if (x[i - 1] < 0 && x[i] >= 0) {
-            double t = i - 1 + x[i - 1] / (x[i - 1] - x[i]);
-            if (first < 0)
-                first = t;
-            else
-                count++;
-            last = t;
-        }
-    return count > 0 ? count * SR / (last - first) : 0;
+    return unit_zero_crossing_hz(x, n, SR);
 }
 
-static double rms(const float *x, int n)
-{
-    double sum = 0;
-    for (int i = 0; i < n; i++)
-        sum += (double)x[i] * x[i];
-    return sqrt(sum / n);
-}
+#define rms unit_rms
 
 /* rms of a static body in a wind, heard at the listener */
 static double static_rms(aero_texture *t, const double *wind,
@@ -331,7 +313,7 @@ int main(void)
     /* 8. an object texture survives a save and a load */
     {
         aero_texture *t = sphere(2), back;
-        char err[256], path[] = "build/tests/body-roundtrip.wav";
+        char err[256] = "", path[] = "build/tests/body-roundtrip.wav";
         aero_texture_setd(t, "directions", 1);
         UNIT_CHECK(aero_texture_save(path, t, err, sizeof err) == 0 &&
                        aero_texture_load(path, &back, err, sizeof err) == 0 &&
@@ -343,6 +325,19 @@ int main(void)
         UNIT_CHECK(aero_texture_load(path, &back, err, sizeof err) == -1 &&
                        strstr(err, "regions"),
                    "a channel count that does not match regions: %s", err);
+        aero_texture_free(t);
+        free(t);
+    }
+    /* 9. a fixture for the Pd tests (tests/objects/45-body.sh): a sphere
+     *    texture whose drag is a pure 100 Hz sine at v0 = 10 m/s, d = 0.1 m,
+     *    so the Doppler of a whirl in real Pd can be read off one peak */
+    {
+        aero_texture *t = sphere(0);
+        char err[256];
+        aero_texture_setd(t, "directions", 1);
+        UNIT_CHECK(aero_texture_save("build/tests/sine-sphere.wav", t, err,
+                                     sizeof err) == 0,
+                   "fixture build/tests/sine-sphere.wav written (%s)", err);
         aero_texture_free(t);
         free(t);
     }

@@ -62,30 +62,12 @@ static void render(aero_stick_texture *s, float *out, int n, int block)
     }
 }
 
-/* frequency from positive-going zero crossings (interpolated) */
 static double zero_crossing_hz(const float *x, int n)
 {
-    double first = -1, last = -1;
-    int count = 0;
-    for (int i = 1; i < n; i++)
-        if (x[i - 1] < 0 && x[i] >= 0) {
-            double t = i - 1 + x[i - 1] / (x[i - 1] - x[i]);
-            if (first < 0)
-                first = t;
-            else
-                count++;
-            last = t;
-        }
-    return count > 0 ? count * SR / (last - first) : 0;
+    return unit_zero_crossing_hz(x, n, SR);
 }
 
-static double rms(const float *x, int n)
-{
-    double sum = 0;
-    for (int i = 0; i < n; i++)
-        sum += (double)x[i] * x[i];
-    return sqrt(sum / n);
-}
+#define rms unit_rms
 
 int main(void)
 {

@@ -31,6 +31,32 @@ static int unit_passed, unit_failed;
                "%s: got %g, want %g (+-%g%%)", what, (double)(got),        \
                (double)(want), 100.0 * (tol))
 
+/* frequency of a tone from its positive-going zero crossings
+   (interpolated), sr samples per second */
+static inline double unit_zero_crossing_hz(const float *x, int n, double sr)
+{
+    double first = -1, last = -1;
+    int count = 0;
+    for (int i = 1; i < n; i++)
+        if (x[i - 1] < 0 && x[i] >= 0) {
+            double t = i - 1 + x[i - 1] / (x[i - 1] - x[i]);
+            if (first < 0)
+                first = t;
+            else
+                count++;
+            last = t;
+        }
+    return count > 0 ? count * sr / (last - first) : 0;
+}
+
+static inline double unit_rms(const float *x, int n)
+{
+    double sum = 0;
+    for (int i = 0; i < n; i++)
+        sum += (double)x[i] * x[i];
+    return sqrt(sum / n);
+}
+
 static int unit_summary(void)
 {
     printf("%d passed, %d failed\n", unit_passed, unit_failed);

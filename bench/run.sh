@@ -141,4 +141,6 @@ sh bench/treebranch.sh
 sh bench/leafwave.sh
 # vortex sound (issue 6): texture set and [vortex~] per volume
 [ -f bench/vortex.sh ] && sh bench/vortex.sh
+# 3D object textures (issue 11): sphere and club, and [body~] per body
+[ -f bench/object.sh ] && sh bench/object.sh
 exit 0

@@ -25,3 +25,10 @@ $T cavity --length 0.02 --depth 0.01 --speed 10 --grid 48 \
 # average speeds 1..16 m/s, Howe's vortex sound at 1 m, one channel each
 $T vortex --speeds 1,2,3,4,6,8,12,16 --box 0.1 --grid 32 --duration 0.5 \
     -o textures/fire.wav
+# 3D object textures (paper 000, 3D case): the paper's sphere (radius
+# 5 cm) and a club (handle 12.5 mm, tip 30 mm, 0.8 m) with 10 regions and
+# 5 flow directions from its axis (0, 45, 90, 135, 180 deg)
+$T object --shape sphere --radius 0.05 --speed 10 --grid 10 --duration 0.6 \
+    -o textures/sphere.wav
+$T object --shape club --handle 0.0125 --tip 0.03 --length 0.8 --sources 10 \
+    --directions 5 --speed 10 --grid 8 --duration 0.4 -o textures/club.wav

@@ -9,6 +9,7 @@ void treebranch_tilde_setup(void);
 void leafwave_tilde_setup(void);
 void vortex_tilde_setup(void);
 void fieldsound_tilde_setup(void);
+void body_tilde_setup(void);
 
 void aero_setup(void)
 {
@@ -18,6 +19,7 @@ void aero_setup(void)
     leafwave_tilde_setup();
     vortex_tilde_setup();
     fieldsound_tilde_setup();
+    body_tilde_setup();
     post("aero: aerodynamic sound library loaded ([aeolian~] [cavity~] "
-         "[treebranch~] [leafwave~] [vortex~] [fieldsound~])");
+         "[treebranch~] [leafwave~] [vortex~] [fieldsound~] [body~])");
 }

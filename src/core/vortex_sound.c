@@ -281,6 +281,7 @@ int aero_vortex_simulate(const aero_vortex_params *p, double rate,
     h = p->box / p->n;
     step_plan(p, rate, nout, &dt, &settle, &rec);
     total = settle + rec;
+    memset(&fp, 0, sizeof fp); /* fields it does not set are off */
     fp.nx = fp.ny = p->n;
     fp.nz = p->nz;
     fp.h = h;

@@ -60,13 +60,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             if (aero_field_prepare(&info, &d, &par, &fresh, NULL, NULL, err,
                                    sizeof(err)))
                 break;
-            if (aero_field_render_set_sources(&r, &fresh)) {
-                aero_field_sources_free(&fresh);
-                aero_field_render_set_sources(&r, NULL);
-                break;
-            }
-            aero_field_sources_free(&src);
+            /* the renderer keeps a pointer to the sources: swap them
+               into `src` first, as the wrapper does into x_sources */
+            aero_field_sources old = src;
             src = fresh;
+            if (aero_field_render_set_sources(&r, &src)) {
+                aero_field_sources_free(&src);
+                aero_field_render_set_sources(&r, NULL);
+            }
+            aero_field_sources_free(&old);
             break;
         }
         default: { /* a block of any size */

@@ -43,7 +43,8 @@ static int tree_copy(const aero_tree *t, aero_tree *c)
         return -1;
     }
     memcpy(c->branches, t->branches, sizeof(aero_branch) * (size_t)t->nbranches);
-    memcpy(c->leaves, t->leaves, sizeof(aero_leaf) * (size_t)t->nleaves);
+    if (t->nleaves > 0)
+        memcpy(c->leaves, t->leaves, sizeof(aero_leaf) * (size_t)t->nleaves);
     return 0;
 }
 

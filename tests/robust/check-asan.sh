@@ -45,7 +45,10 @@ UBSAN_OPTIONS="log_path=$REPORTS/ubsan:print_stacktrace=1:halt_on_error=1"
 OMP_NUM_THREADS=${OMP_NUM_THREADS:-1}
 # the fuzz regressions (tests/objects/95-fuzz-replay.sh) under ASan too
 FUZZ_REPLAY_FLAGS="-fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all"
-export PATH ASAN_OPTIONS LSAN_OPTIONS UBSAN_OPTIONS OMP_NUM_THREADS FUZZ_REPLAY_FLAGS
+# Pd runs 3-10x slower instrumented ([fieldsound~]'s hostile run
+# preprocesses its 32^3 fallback burst ~60 times)
+HOSTILE_TIMEOUT=${HOSTILE_TIMEOUT:-900}
+export HOSTILE_TIMEOUT PATH ASAN_OPTIONS LSAN_OPTIONS UBSAN_OPTIONS OMP_NUM_THREADS FUZZ_REPLAY_FLAGS
 
 echo "== check-asan: tests/run.sh with ASan+UBSan ($LIBASAN preloaded into Pd)"
 (cd "$ASAN_ROOT" && sh tests/run.sh)

@@ -40,7 +40,8 @@ static inline uint32_t aero_pd_seed(t_float f)
 /* A number from a patch as a whole number in lo..hi: 0 with *n set, else
  * -1. NaN, infinities, fractions and numbers out of range are refused
  * before any conversion (a float outside int's range converted to int is
- * undefined behaviour; UBSan caught [vortex~ n inf], issue 10). */
+ * undefined behaviour: [vortex~ n inf], [leafwave~ voices nan] and
+ * [fieldsound~ demo nan] did that, issue 10). */
 static inline int aero_pd_whole(t_float f, int lo, int hi, int *n)
 {
     if (!(f >= lo && f <= hi) || f != floor(f))

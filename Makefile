@@ -193,10 +193,10 @@ $(asan.lib): $(asan.core.objects)
 	rm -f $@; ar rcs $@ $^
 $(ASAN_ROOT)/%~.pd_linux: src/pd/%~.c src/pd/aero_pd.h $(asan.lib)
 	@mkdir -p $(dir $@)
-	$(ASAN_CC) $(ASAN_PD_CFLAGS) $< -o $@ $(asan.lib) -lsndfile -lm
+	$(ASAN_CC) $(ASAN_PD_CFLAGS) $< -o $@ $(asan.lib) -lsndfile -lfftw3f -lm
 $(ASAN_ROOT)/aero.pd_linux: $(lib.setup.sources) $(class.sources) $(asan.lib)
 	$(ASAN_CC) $(ASAN_PD_CFLAGS) $(lib.setup.sources) $(class.sources) -o $@ \
-	    $(asan.lib) -lsndfile -lm
+	    $(asan.lib) -lsndfile -lfftw3f -lm
 $(ASAN_ROOT)/build/aerotex: $(aerotex.sources) $(asan.lib)
 	@mkdir -p $(dir $@)
 	$(ASAN_CC) $(ASAN_CFLAGS) $(aerotex.sources) -o $@ \

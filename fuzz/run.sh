@@ -37,8 +37,10 @@ grep -v -e '^#' -e '^[[:space:]]*$' fuzz/targets.txt | while read -r name extra 
         seeddirs="$B/seeds/$name"
     fi
     [ -d "fuzz/regress/$name" ] && seeddirs="$seeddirs fuzz/regress/$name"
-    maxlen=4096
-    [ "$name" = texture ] && maxlen=1048576
+    # inputs as long as the longest seed (at least 4 kB, at most 1 MB)
+    maxlen=$(for d in $seeddirs; do
+        ls -l "$d"; done | awk '$5 > m { m = $5 } END { m = m < 4096 ? 4096 : m;
+        print (m > 1048576 ? 1048576 : m) }')
     echo "== fuzz $name: ${SECONDS_EACH} s"
     # shellcheck disable=SC2086
     ASAN_OPTIONS=detect_leaks=1 nice "$bin" -max_total_time="$SECONDS_EACH" \

@@ -545,6 +545,11 @@ int aero_field_prepare(const aero_volume_info *info,
     float *raw;
     int rc = -1;
     memset(out, 0, sizeof *out);
+    /* the first frame file before any allocation: a hostile header
+       (1024^3 vertices, no data) must not cost tens of GB first (under
+       ASan it hung Pd; issue 10) */
+    if (!demo && aero_volume_check_frame(info, 0, err, errlen))
+        return -1;
     if (aero_field_pre_init(&pre, info, par, err, errlen))
         return -1;
     raw = malloc(aero_volume_count(info) * info->fields * sizeof(float));

@@ -218,39 +218,62 @@ done:
     return rc;
 }
 
-int aero_volume_read_frame(const aero_volume_info *v, int k, float *data,
-                           char *err, size_t errlen)
+/* opens frame k and checks its size: the file, or NULL with a message */
+static FILE *open_frame(const aero_volume_info *v, int k, char *err,
+                        size_t errlen)
 {
     char path[AERO_VOLUME_PATH + 160];
     size_t n = aero_volume_count(v) * (size_t)v->fields;
     long want = (long)(n * sizeof(float)), size;
     if (k < 0 || k >= v->frames) {
         say(err, errlen, "frame %d out of range 0..%d", k, v->frames - 1);
-        return -1;
+        return NULL;
     }
     if (frame_path(v, k, path, sizeof path)) {
         say(err, errlen, "frame file name too long");
-        return -1;
+        return NULL;
     }
     FILE *f = fopen(path, "rb");
     if (!f) {
         say(err, errlen, "can't open frame %d: %s: %s", k, path,
             strerror(errno));
-        return -1;
+        return NULL;
     }
     if (fseek(f, 0, SEEK_END) || (size = ftell(f)) < 0 ||
         fseek(f, 0, SEEK_SET)) {
         say(err, errlen, "can't read %s", path);
         fclose(f);
-        return -1;
+        return NULL;
     }
     if (size != want) {
         say(err, errlen, "%s is %ld bytes, expected %ld (%d field(s) of "
             "%dx%dx%d float32)%s", path, size, want, v->fields, v->nx, v->ny,
             v->nz, size < want ? ": truncated" : ": too long");
         fclose(f);
-        return -1;
+        return NULL;
     }
+    return f;
+}
+
+int aero_volume_check_frame(const aero_volume_info *v, int k, char *err,
+                            size_t errlen)
+{
+    FILE *f = open_frame(v, k, err, errlen);
+    if (!f)
+        return -1;
+    fclose(f);
+    return 0;
+}
+
+int aero_volume_read_frame(const aero_volume_info *v, int k, float *data,
+                           char *err, size_t errlen)
+{
+    char path[AERO_VOLUME_PATH + 160];
+    size_t n = aero_volume_count(v) * (size_t)v->fields;
+    FILE *f = open_frame(v, k, err, errlen);
+    if (!f)
+        return -1;
+    frame_path(v, k, path, sizeof path);
     size_t got = fread(data, sizeof(float), n, f);
     fclose(f);
     if (got != n) {

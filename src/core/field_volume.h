@@ -57,6 +57,11 @@ int aero_volume_read_header(const char *dir, aero_volume_info *v, char *err,
  * file's size first: a truncated or oversized frame is an error. */
 int aero_volume_read_frame(const aero_volume_info *v, int k, float *data,
                            char *err, size_t errlen);
+/* Checks that frame k's file is there with the size the header implies
+ * (before allocating for a volume: a header is a few bytes, what it
+ * claims may be tens of GB). 0, or -1 with a message. */
+int aero_volume_check_frame(const aero_volume_info *v, int k, char *err,
+                            size_t errlen);
 /* Writes v's header into v->dir (which must exist), and one frame. */
 int aero_volume_write_header(const aero_volume_info *v, char *err,
                              size_t errlen);

@@ -423,9 +423,12 @@ static void add_branch(aero_treebranch *tb, int i)
         f[1] = f[0];
     /* the frequency group: points spaced at most one bin apart along the
        branch, each carrying its share of the power (paper Fig. 8) */
-    npts = (int)(fabs(f[1] - f[0]) / tb->bin_hz) + 1;
-    if (npts > MAX_GROUP)
-        npts = MAX_GROUP;
+    /* compared before converting: a twig of 1e-30 m sheds at ~1e28 Hz,
+       beyond int (undefined behaviour; found by fuzz_tree, issue 10) */
+    {
+        double span = fabs(f[1] - f[0]) / tb->bin_hz;
+        npts = span < MAX_GROUP ? (int)span + 1 : MAX_GROUP;
+    }
     for (m = 0; m < npts; m++) {
         double s = (m + 0.5) / npts;
         double p = (dens[0] + s * (dens[1] - dens[0])) * len / npts;
@@ -437,11 +440,10 @@ static void add_branch(aero_treebranch *tb, int i)
        above f0 with the coefficient TAIL_LEVEL P df f0^(alpha - 1) of
        f^-alpha, and a running sum over bins adds every branch's tail */
     ftop = f[0] > f[1] ? f[0] : f[1];
-    if (ftop > 0.0) {
+    if (ftop > 0.0 && ftop / tb->bin_hz < tb->nbins - 2) {
         int k0 = (int)(ftop / tb->bin_hz) + 1;
-        if (k0 < tb->nbins - 1)
-            tb->tail_start[k0] += TAIL_LEVEL * ptotal * tb->bin_hz
-                * pow(ftop, tb->alpha - 1.0);
+        tb->tail_start[k0] += TAIL_LEVEL * ptotal * tb->bin_hz
+            * pow(ftop, tb->alpha - 1.0);
     }
 }
 

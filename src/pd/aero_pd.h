@@ -6,6 +6,7 @@
 #include "m_pd.h"
 #include "g_canvas.h"
 
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -34,6 +35,19 @@ static inline uint32_t aero_pd_seed(t_float f)
     if (!(f > -9.2e18f && f < 9.2e18f))
         return 0;
     return (uint32_t)(int64_t)f;
+}
+
+/* A number from a patch as a whole number in lo..hi: 0 with *n set, else
+ * -1. NaN, infinities, fractions and numbers out of range are refused
+ * before any conversion (a float outside int's range converted to int is
+ * undefined behaviour: [vortex~ n inf], [leafwave~ voices nan] and
+ * [fieldsound~ demo nan] did that, issue 10). */
+static inline int aero_pd_whole(t_float f, int lo, int hi, int *n)
+{
+    if (!(f >= lo && f <= hi) || f != floor(f))
+        return -1;
+    *n = (int)f;
+    return 0;
 }
 
 /* exactly `want` numbers from a message, else an error naming the object */

@@ -311,11 +311,12 @@ static void fieldsound_tilde_demo(t_fieldsound_tilde *x, t_symbol *s,
     int size = 32;
     (void)s;
     if (argc >= 1) {
-        t_float f = atom_getfloat(argv);
-        if (argv[0].a_type != A_FLOAT || f < 4 || f > 128) {
-            pd_error(x, OBJ ": demo size must be 4..128 vertices, using 32");
-        } else
-            size = (int)f;
+        if (argv[0].a_type != A_FLOAT ||
+            aero_pd_whole(atom_getfloat(argv), 4, 128, &size)) {
+            pd_error(x, OBJ ": demo size must be a whole number 4..128 "
+                     "vertices, using 32");
+            size = 32;
+        }
     }
     x->x_dir = NULL;
     x->x_demo_size = size;
@@ -474,9 +475,11 @@ static int fieldsound_tilde_flag(void *obj, t_symbol *flag, int argc,
         else if (!strcmp(f, "-ramp"))
             fieldsound_tilde_ramp(x, v);
         else if (!strcmp(f, "-demo")) {
-            if (v < 4 || v > 128)
-                pd_error(x, OBJ ": demo size must be 4..128, using 32");
-            x->x_demo_size = v < 4 || v > 128 ? 32 : (int)v;
+            if (aero_pd_whole(v, 4, 128, &x->x_demo_size)) {
+                pd_error(x, OBJ ": demo size must be a whole number "
+                         "4..128, using 32");
+                x->x_demo_size = 32;
+            }
         } else if (!strcmp(f, "-sync"))
             x->x_sync = 1;
         else {

@@ -155,8 +155,9 @@ SETTER(reach, aero_leafwave_set_reach, "reach %g out of range (0.1..10)")
 
 static void leafwave_tilde_voices(t_leafwave_tilde *x, t_floatarg f)
 {
-    if (x->x_ok && (f != (int)f || aero_leafwave_set_voices(&x->x_model,
-                                                            (int)f)))
+    int n;
+    if (x->x_ok && (aero_pd_whole(f, 1, 65536, &n) ||
+                    aero_leafwave_set_voices(&x->x_model, n)))
         pd_error(x, OBJ ": voices %g out of range (1..65536)", f);
 }
 
@@ -164,11 +165,12 @@ static void leafwave_tilde_set_tables(t_leafwave_tilde *x, double fm,
                                       double per_octave, double octaves,
                                       const char *what, double value)
 {
+    int per, oct;
     if (!x->x_ok)
         return;
-    if (per_octave != (int)per_octave || octaves != (int)octaves ||
-        aero_leafwave_set_tables(&x->x_model, fm, (int)per_octave,
-                                 (int)octaves))
+    if (aero_pd_whole(per_octave, 1, 128, &per) ||
+        aero_pd_whole(octaves, 1, 8, &oct) ||
+        aero_leafwave_set_tables(&x->x_model, fm, per, oct))
         pd_error(x, OBJ ": %s %g out of range (fm 20..10000 Hz, tables "
                  "1..128 per octave, octaves 1..8, at most 512 tables)",
                  what, value);
@@ -194,7 +196,7 @@ static void leafwave_tilde_octaves(t_leafwave_tilde *x, t_floatarg f)
 
 static void leafwave_tilde_seed(t_leafwave_tilde *x, t_floatarg f)
 {
-    if (x->x_ok && aero_leafwave_set_seed(&x->x_model, (uint32_t)(int64_t)f))
+    if (x->x_ok && aero_leafwave_set_seed(&x->x_model, aero_pd_seed(f)))
         pd_error(x, OBJ ": out of memory restarting from seed %g", f);
 }
 

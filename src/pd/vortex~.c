@@ -84,8 +84,9 @@ static void vortex_tilde_texture(t_vortex_tilde *x, t_symbol *name)
 
 static void vortex_tilde_n(t_vortex_tilde *x, t_floatarg f)
 {
-    if (f != floor(f) ||
-        aero_vortex_player_set_count(&x->x_player, (int)f))
+    int n;
+    if (aero_pd_whole(f, 1, AERO_VORTEX_MAX_SOURCES, &n) ||
+        aero_vortex_player_set_count(&x->x_player, n))
         pd_error(x, OBJ ": n %g: the number of source volumes is a whole "
                  "number 1..%d", f, AERO_VORTEX_MAX_SOURCES);
 }
@@ -181,7 +182,7 @@ static void vortex_tilde_ramp(t_vortex_tilde *x, t_floatarg f)
 
 static void vortex_tilde_seed(t_vortex_tilde *x, t_floatarg f)
 {
-    aero_vortex_player_set_seed(&x->x_player, (uint32_t)(int64_t)f);
+    aero_vortex_player_set_seed(&x->x_player, aero_pd_seed(f));
 }
 
 static int vortex_tilde_flag(void *obj, t_symbol *flag, int argc,

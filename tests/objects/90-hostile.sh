@@ -15,26 +15,128 @@
 #   - in a subpatch, instances created by dynamic patching with the table's
 #     hostile creation args (NaN/Inf included) and a working one, all
 #     deleted while DSP runs, re-created, deleted again.
-# Pass: Pd quits normally and prints every counter, no NaN/Inf reached an
+# Pass: every instance was created, Pd quits normally and prints every
+# counter, no NaN/Inf reached an
 # outlet, every instance ran, every "error:" line names the object.
-# HOSTILE_ONLY=class and HOSTILE_RATES="..." narrow it down by hand.
+# HOSTILE_ONLY=class and HOSTILE_RATES="..." narrow it down by hand;
+# HOSTILE_TIMEOUT (300 s of wall time per Pd run: a hang, not a slow
+# shared machine) is raised by check-asan.sh.
 section "hostile input: every object of tests/robust/objects.txt in Pd"
 HOSTILE=$OUT/hostile
 mkdir -p "$HOSTILE"
-# the bad files, next to the patches (where canvas_open looks first)
-rm -rf "$HOSTILE/dir.wav"
-mkdir -p "$HOSTILE/dir.wav"
-: >"$HOSTILE/empty.wav"
-head -c 1000 textures/cylinder.wav >"$HOSTILE/truncated.wav"
+# The bad files, next to the patches (where canvas_open looks first), one
+# maker per kind of file an object loads; the file field of the table
+# names the kind (sel:good:kind, default wav). A new kind joins with one
+# hostile_files_KIND function that makes its bad files in $HOSTILE and sets
+# hostile_bad to their names (as given to the file message).
+hostile_bad_common="no-such-file dir empty truncated garbage plain short unreadable"
 awk 'BEGIN { srand(7); for (i = 0; i < 4096; i++) printf "%c", int(rand() * 256) }' \
-    >"$HOSTILE/garbage.wav" 2>/dev/null
-cp textures/cylinder.wav "$HOSTILE/unreadable.wav"
-chmod 000 "$HOSTILE/unreadable.wav"
-sox -n -r 16000 -c 3 -b 32 -e floating-point "$HOSTILE/plain.wav" synth 0.1 sine 300 \
-    2>/dev/null || cp "$HOSTILE/garbage.wav" "$HOSTILE/plain.wav"
-# a texture whose header claims more frames than it holds
-cp textures/cylinder.wav "$HOSTILE/short.wav"
-truncate -s 20000 "$HOSTILE/short.wav"
+    >"$HOSTILE/garbage.bin" 2>/dev/null
+hostile_files_wav() { # textures (libsndfile WAV)
+    rm -rf "$HOSTILE/dir.wav"
+    mkdir -p "$HOSTILE/dir.wav"
+    : >"$HOSTILE/empty.wav"
+    head -c 1000 textures/cylinder.wav >"$HOSTILE/truncated.wav"
+    cp "$HOSTILE/garbage.bin" "$HOSTILE/garbage.wav"
+    cp textures/cylinder.wav "$HOSTILE/unreadable.wav"
+    chmod 000 "$HOSTILE/unreadable.wav"
+    sox -n -r 16000 -c 3 -b 32 -e floating-point "$HOSTILE/plain.wav" synth 0.1 sine 300 \
+        2>/dev/null || cp "$HOSTILE/garbage.wav" "$HOSTILE/plain.wav"
+    # a texture whose header claims more frames than it holds
+    cp textures/cylinder.wav "$HOSTILE/short.wav"
+    truncate -s 20000 "$HOSTILE/short.wav"
+    hostile_bad="$hostile_bad_common /no/such/folder/x.wav 12"
+}
+hostile_files_tree() { # tree files (trees/README.md)
+    rm -rf "$HOSTILE/dir.tree"
+    mkdir -p "$HOSTILE/dir.tree"
+    : >"$HOSTILE/empty.tree"
+    head -c 1000 trees/small.tree >"$HOSTILE/truncated.tree" # cut mid-line
+    cp "$HOSTILE/garbage.bin" "$HOSTILE/garbage.tree"
+    cp trees/small.tree "$HOSTILE/unreadable.tree"
+    chmod 000 "$HOSTILE/unreadable.tree"
+    # every kind of bad record, between good ones
+    {
+        echo "branch 0 -1 0 0 0 0 0 1 0.05 0.04"
+        echo "branch 1 0 0 0 1 nan 0 2 0.02 0.02"
+        echo "branch 2 0 0 0 1 inf 0 2 0.02 0.02"
+        echo "branch 3 3 0 0 1 0 1 2 0.02 0.02"
+        echo "branch 4 99 0 0 1 0 1 2 0.02 0.02"
+        echo "branch 5 0 0 0 1 0 0 1 0.02 0.02"
+        echo "branch 6 0 0 0 1 1e30 0 1e30 0.02 0.02"
+        echo "branch 7 0 0 0 1 0 1 2 -1 0.02"
+        echo "branch 8 0 0 0 1 0 1 2 0 0"
+        echo "branch 0 -1 0 0 0 0 0 1 0.05 0.04"
+        echo "branch -3 -1 0 0 0 0 0 1 0.05 0.04"
+        echo "branch 99999999999999999999 -1 0 0 0 0 0 1 0.05 0.04"
+        echo "branch 2147483647 0 0 0 1 0 0 1.5 1e-30 1e-30"
+        echo "branch 9 0 0 0 1 0 0 2"
+        echo "branch 10 0 0 0 1 0 0 2 0.1 0.1 0.1 0.1"
+        echo "branch 0x10 0 0 0 1 0 0 2 0.1 0.1"
+        echo "leaf 0 0 0 0.5 0.1 0 0.5 0.05 0.03"
+        echo "leaf 77 0 0 0.5 0.1 0 0.5 0.05 0.03"
+        echo "leaf 0 0 0 0.5 0 0 0.5 0.05 0.03"
+        echo "leaf 0 0 0 0.5 0.1 0 0.5 -1 0.03"
+        echo "leaf 0 0 0 0.5 0.1 0 0.5 1e30 1e30"
+        echo "leaf 0 nan 0 0.5 0.1 0 0.5 0.05 0.03"
+        echo "twig 1 2 3"
+        printf 'branch 11 0 0 0 1 0 0 2 0.1 0.1\r\n'
+        printf 'leaf\t0\t0 0 0.5 0 0.1 0.5 0.05 0.03\n'
+        awk 'BEGIN { printf "branch 12 0"; for (i = 0; i < 20000; i++) printf " 1"; print "" }'
+        printf 'branch 13 0 0 0 1 0 0 2 0.1 0.1'   # no newline at the end
+    } >"$HOSTILE/plain.tree"
+    # valid but extreme: 1500 leaves at one point (every pair a neighbour),
+    # a branch of 1e4 m and one of a micrometre
+    {
+        echo "branch 0 -1 0 0 0 0 0 1 0.05 0.04"
+        echo "branch 1 0 0 0 1 0 0 10001 0.05 0.04"
+        echo "branch 2 0 0 0 1 0 0 1.000001 1e-6 1e-6"
+        awk 'BEGIN { for (i = 0; i < 1500; i++) print "leaf 0 0 0 0.5 0.1 0 0.5 0.05 0.03" }'
+    } >"$HOSTILE/short.tree"
+    hostile_bad="$hostile_bad_common /no/such/folder/x.tree 12"
+}
+hostile_files_volume() { # volume directories (src/core/field_volume.h)
+    for _v in dir empty truncated garbage plain short unreadable huge pattern \
+        nan; do
+        [ -d "$HOSTILE/$_v" ] && chmod -R u+rwx "$HOSTILE/$_v"
+        rm -rf "${HOSTILE:?}/$_v"
+        mkdir -p "$HOSTILE/$_v"
+    done
+    _hdr='aero-volume 1\ndims 8 8 8\nspacing 0.1 0.1 0.1\nrate 1000\nframes 4\nfields density\n'
+    : >"$HOSTILE/empty/volume.txt"
+    printf 'aero-volume 1\ndims 8 8' >"$HOSTILE/truncated/volume.txt"
+    cp "$HOSTILE/garbage.bin" "$HOSTILE/garbage/volume.txt"
+    # numbers that are not: nan, inf, hex, negative, overflowing
+    printf 'aero-volume 1\ndims 8 8 nan\nspacing inf -1 0x10\nrate 1e400\nframes -3\n' \
+        >"$HOSTILE/nan/volume.txt"
+    # frames missing or truncated
+    printf "$_hdr" >"$HOSTILE/short/volume.txt"
+    head -c 2048 /dev/zero >"$HOSTILE/short/frame00000.f32"
+    head -c 100 /dev/zero >"$HOSTILE/short/frame00001.f32"
+    # the largest header allowed (1024^3 x 1e6 frames) without its data
+    printf 'aero-volume 1\ndims 1024 1024 1024\nspacing 0.1 0.1 0.1\nrate 1000\nframes 1000000\nfields density vx vy vz\n' \
+        >"$HOSTILE/huge/volume.txt"
+    # the good one
+    rm -rf "$HOSTILE/burst"
+    build/aerotex field-demo --size 12 --spacing 0.1 -q -o "$HOSTILE/burst" >/dev/null
+    # the good one with NaN, +Inf, -Inf (float32 0x7fc00000, 0x7f800000,
+    # 0xff800000, little-endian) over the first third of each frame
+    cp "$HOSTILE"/burst/* "$HOSTILE/plain/"
+    printf '\000\000\300\177\000\000\200\177\000\000\200\377' >"$HOSTILE/nan.bin"
+    for _k in 1 2 3 4 5 6 7 8; do
+        cat "$HOSTILE/nan.bin" "$HOSTILE/nan.bin" >"$HOSTILE/nan2.bin"
+        mv "$HOSTILE/nan2.bin" "$HOSTILE/nan.bin"
+    done
+    for _k in "$HOSTILE"/plain/*.f32; do
+        dd if="$HOSTILE/nan.bin" of="$_k" bs=2304 count=1 conv=notrunc 2>/dev/null
+    done
+    # a printf attack in the file name pattern
+    printf 'aero-volume 1\ndims 8 8 8\nspacing 0.1 0.1 0.1\nrate 1000\nframes 4\nfields density\nfiles %%s%%n%%d\n' \
+        >"$HOSTILE/pattern/volume.txt"
+    cp "$HOSTILE"/burst/* "$HOSTILE/unreadable/"
+    chmod 000 "$HOSTILE"/unreadable/*
+    hostile_bad="$hostile_bad_common huge pattern nan /no/such/folder/x 12"
+}
 
 hostile_blocks="1 2 4 8 16 32 64 128 256 512 1024 2048 4096 8192"
 hostile_rates=${HOSTILE_RATES:-22050 44100 48000 96000 192000}
@@ -59,11 +161,13 @@ pd_event() {
     pd_conn "$_start" 0 $_d 0; pd_conn "$_nan" 0 $_la 1
 }
 
-# a subpatch NAME with [block~ N] around OBJECT (NOUT signal outlets): fed
+# a subpatch NAME with [block~ N] around OBJECT (NOUT signal outlets, or
+# NOUT/NIN with NIN = 0 for an object without a signal inlet): fed
 # hostile speeds, it counts the non-finite samples on the outlets and the
 # samples it ran, and prints "NAME: bad samples" on hostile-report
 hostile_sub() {
-    _sname=$1 _sblock=$2 _sobj=$3 _snout=$4
+    _sname=$1 _sblock=$2 _sobj=$3 _snout=${4%%/*} _snin=1
+    case "$4" in */*) _snin=${4#*/} ;; esac
     {
         echo "#N canvas 0 0 500 400 $_sname 0;"
         echo "#X obj 10 10 block~ $_sblock;"                            # 0
@@ -83,7 +187,9 @@ hostile_sub() {
         echo "#X obj 10 230 pack f f;"                                  # 14
         echo "#X obj 10 250 print $_sname;"                             # 15
         echo "#X obj 200 30 r hostile-obj;"                             # 16
-        for _c in "1 0 2 0" "2 0 3 0" "3 0 4 0" "4 0 5 0" "5 0 7 0" \
+        # the hostile speeds into the signal inlet, if it has one
+        [ "$_snin" -ge 1 ] && echo "#X connect 3 0 4 0;"
+        for _c in "1 0 2 0" "2 0 3 0" "4 0 5 0" "5 0 7 0" \
             "7 0 8 0" "9 0 10 0" "10 0 11 0" "12 0 13 0" "13 1 11 0" \
             "13 0 8 0" "8 0 14 0" "11 0 14 1" "14 0 15 0"; do
             echo "#X connect $_c;"
@@ -98,12 +204,12 @@ hostile_sub() {
 # hostile_patch FILE CLASS ARGS NOUT SEL:GOOD NEWARGS MESSAGES
 hostile_patch() {
     _f=$1 _cls=$2 _args=$3 _nout=$4 _sel=${5%%:*} _good=${5#*:}
+    _good=${_good%%:*}
     _new=$6 _msgs=$7 _n=0
     _abuse="bang; foo 1 2; list a b c; symbol x; 1 2 3; set"
     _files=""
     if [ "$_sel" != "-" ]; then
-        for _bad in no-such-file dir empty truncated garbage plain short \
-            unreadable /no/such/folder/x.wav 12; do
+        for _bad in $hostile_bad; do
             _files="$_files; hostile-obj $_sel $_bad"
         done
         _files="$_files; hostile-obj $_sel"
@@ -183,6 +289,13 @@ hostile_judge() {
         grep -a -v "^hostile-block" "$_log" | tail -15 | sed 's/^/        /'
         return
     fi
+    # an object that was never created would pass the rest (its counters
+    # run on, fed by nothing)
+    if grep -a -q -e "couldn't create" -e "can't load" "$_log"; then
+        fail "$_what: $_cls was not created:"
+        grep -a -B1 -e "couldn't create" -e "can't load" "$_log" | head -6 | sed 's/^/        /'
+        return
+    fi
     _bad=$(grep -a "^hostile-block[0-9]*: " "$_log" | awk '$2 != 0' | head -3)
     _idle=$(grep -a "^hostile-block[0-9]*: " "$_log" | awk '!($3 > 0)' | head -3)
     if [ -n "$_bad" ]; then
@@ -214,20 +327,26 @@ while IFS='|' read -r h_cls h_args h_nout h_file h_new h_msgs; do
     _line_no=$((_line_no + 1))
     h_cls=$(trim "$h_cls") h_args=$(trim "$h_args") h_nout=$(trim "$h_nout")
     h_file=$(trim "$h_file")
+    h_kind=wav
+    case "$h_file" in *:*:*) h_kind=${h_file##*:} ;; esac
     case "$h_cls" in *"${HOSTILE_ONLY:-}"*) ;; *) continue ;; esac
     # at least one report per hostile message and bad file
     h_min=$(( $(printf '%s' "$h_msgs" | tr -cd ';' | wc -c) + 1 ))
-    [ "$h_file" != "-" ] && h_min=$((h_min + 10))
+    if [ "$h_file" != "-" ]; then
+        "hostile_files_$h_kind"
+        h_min=$((h_min + $(echo $hostile_bad | wc -w)))
+    fi
     for h_rate in $hostile_rates; do
         h_name="hostile-$_line_no-$h_rate"
         hostile_patch "$HOSTILE/$h_name.pd" "$h_cls" "$h_args" "$h_nout" \
             "$h_file" "$h_new" "$h_msgs"
         # shellcheck disable=SC2086
-        (cd "$HOSTILE" && timeout 120 pd $PD_FLAGS -nrt -r "$h_rate" -path "$ROOT" \
+        (cd "$HOSTILE" && timeout "${HOSTILE_TIMEOUT:-300}" pd $PD_FLAGS -nrt -r "$h_rate" -path "$ROOT" \
             -open "$h_name.pd" </dev/null >"$h_name.log" 2>&1)
         h_status=$?
         [ "$h_status" -ne 0 ] && { fail "[$h_cls $h_args] at $h_rate Hz: Pd exited $h_status"; tail -5 "$HOSTILE/$h_name.log"; }
         hostile_judge "$HOSTILE/$h_name.log" "$h_cls" "[$h_cls $h_args] at $h_rate Hz" "$h_min"
     done
 done <"$HOSTILE/table.txt"
-chmod 600 "$HOSTILE/unreadable.wav"
+chmod 600 "$HOSTILE"/unreadable.* 2>/dev/null
+[ -d "$HOSTILE/unreadable" ] && chmod -R u+rwx "$HOSTILE/unreadable"

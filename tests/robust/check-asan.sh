@@ -16,7 +16,7 @@ mkdir -p "$REPORTS" "$ROOT/build-asan/bin"
 
 # the suite runs in a mirror of the tree whose build/ and externals are the
 # instrumented ones
-for d in tests help textures src abstractions fuzz Makefile pd-lib-builder; do
+for d in tests help textures trees src abstractions fuzz Makefile pd-lib-builder; do
     [ -e "$ROOT/$d" ] && ln -sfn "$ROOT/$d" "$ASAN_ROOT/$d"
 done
 # the writable-globals check reads the normal build's objects (the
@@ -45,7 +45,10 @@ UBSAN_OPTIONS="log_path=$REPORTS/ubsan:print_stacktrace=1:halt_on_error=1"
 OMP_NUM_THREADS=${OMP_NUM_THREADS:-1}
 # the fuzz regressions (tests/objects/95-fuzz-replay.sh) under ASan too
 FUZZ_REPLAY_FLAGS="-fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all"
-export PATH ASAN_OPTIONS LSAN_OPTIONS UBSAN_OPTIONS OMP_NUM_THREADS FUZZ_REPLAY_FLAGS
+# Pd runs 3-10x slower instrumented ([fieldsound~]'s hostile run
+# preprocesses its 32^3 fallback burst ~60 times)
+HOSTILE_TIMEOUT=${HOSTILE_TIMEOUT:-900}
+export HOSTILE_TIMEOUT PATH ASAN_OPTIONS LSAN_OPTIONS UBSAN_OPTIONS OMP_NUM_THREADS FUZZ_REPLAY_FLAGS
 
 echo "== check-asan: tests/run.sh with ASan+UBSan ($LIBASAN preloaded into Pd)"
 (cd "$ASAN_ROOT" && sh tests/run.sh)

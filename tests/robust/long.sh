@@ -25,8 +25,8 @@ failed=0
 minutes=$((SECONDS_TOTAL / 60))
 COPIES=${LONG_COPIES:-16}
 grep -v -e '^#' -e '^[[:space:]]*$' tests/robust/long.txt >"$D/table.txt"
-while IFS='|' read -r name box msg; do
-    name=$(echo $name) box=$(echo $box) msg=$(echo $msg)
+while IFS='|' read -r name box msg every; do
+    name=$(echo $name) box=$(echo $box) msg=$(echo $msg) every=$(echo ${every:--})
     case "$name" in *"${LONG_ONLY:-}"*) ;; *) continue ;; esac
     init="\\; pd dsp 1"
     [ "$msg" != "-" ] && init="$init \\; long-obj $msg"
@@ -74,7 +74,6 @@ while IFS='|' read -r name box msg; do
 #X connect 8 0 10 0;
 #X connect 9 0 10 0;
 #X connect 10 0 11 0;
-#X connect 11 0 12 0;
 #X connect 12 0 13 0;
 #X connect 13 0 14 0;
 #X connect 14 0 15 0;
@@ -95,14 +94,28 @@ while IFS='|' read -r name box msg; do
 #X connect 0 0 18 0;
 #X connect 17 0 18 0;
 PATCH
-    # more copies of the object (indices 27...), same input, outlets summed
+    # the input: the speed signal into the left inlet, or (4th field) a
+    # message made of each new speed target, $1 ($1 escaped for the file)
+    if [ "$every" = "-" ]; then
+        echo "#X connect 11 0 12 0;" >>"$patch"
+        feed="11 0"
+    else
+        echo "#X msg 100 180 $(printf '%s' "$every" | sed -e 's/\$1/\\$1/g' -e 's/,/ \\, /g');" >>"$patch"
+        echo "#X connect 8 0 27 0;" >>"$patch"
+        echo "#X connect 9 0 27 0;" >>"$patch"
+        echo "#X connect 27 0 12 0;" >>"$patch"
+        feed="27 0"
+    fi
+    first=27
+    [ "$every" != "-" ] && first=28
+    # more copies of the object (indices $first...), same input, outlets summed
     # into the check: the object's cost, not Pd's, dominates the timing
     c=1
     while [ "$c" -lt "$COPIES" ]; do
         echo "#X obj $((10 + c * 40)) 230 $box;" >>"$patch"
-        echo "#X connect 11 0 $((26 + c)) 0;" >>"$patch"
-        echo "#X connect $((26 + c)) 0 13 0;" >>"$patch"
-        echo "#X connect 23 0 $((26 + c)) 0;" >>"$patch"
+        echo "#X connect $feed $((first - 1 + c)) 0;" >>"$patch"
+        echo "#X connect $((first - 1 + c)) 0 13 0;" >>"$patch"
+        echo "#X connect 23 0 $((first - 1 + c)) 0;" >>"$patch"
         c=$((c + 1))
     done
     echo "== long run: $name ([$box], $minutes minutes of audio)"

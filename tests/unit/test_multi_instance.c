@@ -11,7 +11,12 @@
 
 #include "aeolian_model.h"
 #include "cavity_model.h"
+#include "field_sound.h"
+#include "field_volume.h"
+#include "leafwave.h"
 #include "stick_texture.h"
+#include "treebranch.h"
+#include "vortex_player.h"
 
 #define BLOCK 64
 #define BLOCKS 200
@@ -103,6 +108,138 @@ static void stick_drop(void *s)
     free(s);
 }
 
+/* --- [vortex~]: a synthetic vortex texture of 3 speeds, 4 sources --- */
+static void *vortex_make(int variant)
+{
+    char err[128];
+    double speeds[3] = {5.0, 10.0, 20.0}, pos[12];
+    aero_vortex_player *m = calloc(1, sizeof(*m));
+    aero_texture *t = calloc(1, sizeof(*t));
+    aero_vortex_player_init(m, 44100.0, 0, 7u + variant);
+    aero_texture_init_speeds(t, 2048, 3, speeds, 8000.0);
+    for (int n = 0; n < 2048 * 3; n++)
+        t->data[n] = (float)sin(0.05 * n) * (float)cos(0.0031 * n);
+    aero_vortex_player_set_texture(m, t, err, sizeof(err));
+    aero_vortex_player_set_count(m, 4);
+    for (int i = 0; i < 12; i++)
+        pos[i] = 0.1 * i * (variant ? -1 : 1);
+    aero_vortex_player_set_positions(m, pos, 4);
+    return m;
+}
+static void vortex_run(void *s, const float *speed, float *out, int n)
+{
+    float *outs[1] = {out};
+    aero_vortex_player_process(s, speed, outs, n);
+}
+static void vortex_drop(void *s)
+{
+    aero_vortex_player_free(s);
+    free(s);
+}
+
+/* a small generated tree for [treebranch~] and [leafwave~] */
+static void small_tree(aero_tree *t, int variant)
+{
+    aero_tree_shape sh = {2, 80, 1.0, 0.05, 0.06, 0.04, 3u + variant};
+    aero_tree_generate(t, &sh);
+}
+/* the speed as the wrappers take it: the block's mean along +x */
+static double block_mean(const float *speed, int n)
+{
+    double sum = 0.0;
+    for (int i = 0; i < n; i++)
+        sum += speed[i];
+    return sum / n;
+}
+
+/* --- [treebranch~] --- */
+static void *treebranch_make(int variant)
+{
+    aero_tree t;
+    double ear[3] = {0.0, variant ? -2.0 : -4.0, 1.5};
+    aero_treebranch *tb = calloc(1, sizeof(*tb));
+    aero_treebranch_init(tb, 44100.0, 9u + variant);
+    small_tree(&t, variant);
+    aero_treebranch_set_tree(tb, &t);
+    aero_treebranch_set_listener(tb, ear);
+    return tb;
+}
+static void treebranch_run(void *s, const float *speed, float *out, int n)
+{
+    double w[3] = {block_mean(speed, n), 0.0, 0.0};
+    aero_treebranch_set_wind(s, w);
+    aero_treebranch_process(s, out, NULL, n);
+}
+static void treebranch_drop(void *s)
+{
+    aero_treebranch_free(s);
+    free(s);
+}
+
+/* --- [leafwave~] --- */
+static void *leafwave_make(int variant)
+{
+    char err[128];
+    aero_tree t;
+    aero_leafwave *lw = calloc(1, sizeof(*lw));
+    aero_leafwave_init(lw, 44100.0, 1, 13u + variant);
+    aero_leafwave_set_tables(lw, 400.0, 4, 3);
+    small_tree(&t, variant);
+    aero_leafwave_set_tree(lw, &t, err, sizeof(err));
+    aero_leafwave_set_ear(lw, 0, 0.0, variant ? -1.0 : -2.0, 1.5);
+    return lw;
+}
+static void leafwave_run(void *s, const float *speed, float *out, int n)
+{
+    float *outs[1] = {out};
+    aero_leafwave_set_wind(s, 1.0, 0.0, 0.0);
+    aero_leafwave_process(s, speed, outs, n);
+}
+static void leafwave_drop(void *s)
+{
+    aero_leafwave_free(s);
+    free(s);
+}
+
+/* --- [fieldsound~]: the demo burst, preprocessed, played slowly --- */
+typedef struct {
+    aero_field_sources src;
+    aero_field_render r;
+} field_state;
+static void *field_make(int variant)
+{
+    char err[256];
+    aero_field_demo d;
+    aero_volume_info info;
+    aero_field_params par;
+    field_state *f = calloc(1, sizeof(*f));
+    aero_field_demo_default(&d);
+    d.size = 12;
+    d.spacing = 1.28 / d.size;
+    d.seed = 1u + variant;
+    aero_field_demo_info(&d, &info);
+    aero_field_params_default(&par);
+    aero_field_prepare(&info, &d, &par, &f->src, NULL, NULL, err, sizeof(err));
+    aero_field_render_init(&f->r, 44100.0);
+    aero_field_render_set_sources(&f->r, &f->src);
+    aero_field_render_place_listener(&f->r, variant ? 0.5 : 0.8, 0.1, 0.0);
+    aero_field_render_set_speed(&f->r, 100.0);
+    aero_field_render_play(&f->r);
+    return f;
+}
+static void field_run(void *s, const float *speed, float *out, int n)
+{
+    (void)speed;
+    aero_field_render_process(&((field_state *)s)->r, out, n);
+}
+static void field_drop(void *s)
+{
+    field_state *f = s;
+    aero_field_render_free(&f->r);
+    aero_field_sources_free(&f->src);
+    free(f);
+}
+
 /* --- negative control: state in a static, as a careless core would --- */
 static double shared_phase;
 static void *shared_make(int variant)
@@ -125,6 +262,10 @@ static const core_api cores[] = {
     {"cavity_model", cavity_make, cavity_run, cavity_drop},
     {"cavity_model (texture)", cavity_tex_make, cavity_run, cavity_drop},
     {"stick_texture", stick_make, stick_run, stick_drop},
+    {"vortex_player", vortex_make, vortex_run, vortex_drop},
+    {"treebranch", treebranch_make, treebranch_run, treebranch_drop},
+    {"leafwave", leafwave_make, leafwave_run, leafwave_drop},
+    {"field_sound", field_make, field_run, field_drop},
 };
 static const core_api control = {"static-state control", shared_make,
                                  shared_run, plain_drop};

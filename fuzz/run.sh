@@ -21,6 +21,7 @@ status=0
 grep -v -e '^#' -e '^[[:space:]]*$' fuzz/targets.txt | while read -r name extra seeds; do
     case "$name" in *"${FUZZ_ONLY:-}"*) ;; *) continue ;; esac
     [ "$extra" = "-" ] && extra=""
+    extra=$(echo "$extra" | tr ',' ' ')
     bin=$B/fuzz_$name
     echo "== fuzz $name: build"
     # shellcheck disable=SC2086

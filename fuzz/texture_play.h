@@ -1,10 +1,12 @@
-/* aero fuzz: what a loaded texture must satisfy, and the two players that
- * take one ([aeolian~]'s moving stick, [cavity~]) rendering it finitely. */
+/* aero fuzz: what a loaded texture must satisfy, and the players that
+ * take one ([aeolian~]'s moving stick, [cavity~], [body~]) rendering it
+ * finitely. */
 #ifndef AERO_FUZZ_TEXTURE_PLAY_H
 #define AERO_FUZZ_TEXTURE_PLAY_H
 
 #include "fuzz.h"
 
+#include "body_texture.h"
 #include "cavity_model.h"
 #include "stick_texture.h"
 #include "texture.h"
@@ -25,12 +27,15 @@ static int fuzz_texture_check(const char *path)
         free(t);
         return 0;
     }
-    /* an aeolian/cavity texture: 3 channels per direction; a vortex
-     * texture: no directions, one channel per (finite) speed */
+    /* an aeolian/cavity texture: 3 channels per direction; an object
+     * texture: 3 per direction and region; a vortex texture: no
+     * directions, one channel per (finite) speed */
     int vortex = t->directions == 0;
     FUZZ_REQUIRE(t->frames >= 2 && t->rate > 0.0 &&
                      (vortex ? t->channels >= 1 && t->speeds != NULL
-                             : t->channels == 3 * t->directions),
+                             : t->regions >= 1 &&
+                                   t->channels ==
+                                       3 * t->directions * t->regions),
                  "loaded texture with %d frames, %d directions, %d channels",
                  t->frames, t->directions, t->channels);
     FUZZ_REQUIRE(fuzz_finite(t->data, t->frames * t->channels),
@@ -68,6 +73,36 @@ static int fuzz_texture_check(const char *path)
         aero_stick_texture_free(stick);
     }
     free(stick);
+    if (t) {
+        aero_texture_free(t);
+        free(t);
+    }
+
+    /* the moving 3D body */
+    t = calloc(1, sizeof(*t));
+    if (t && !aero_texture_load(path, t, err, sizeof(err))) {
+        aero_body_texture *body = calloc(1, sizeof(*body));
+        if (body && !aero_body_texture_init(body, 44100.0, 2, 1)) {
+            if (!aero_body_texture_set_texture(body, t, err, sizeof(err)))
+                t = NULL; /* the player frees it */
+            double wind[3] = {12.0, 3.0, 1.0}, q[4] = {0.9, 0.1, 0.3, 0.2};
+            double p[3] = {0.0, 0.0, 0.0};
+            aero_body_texture_set_wind(body, wind);
+            float speed[256], l[256], r[256];
+            float *out[2] = {l, r};
+            for (int i = 0; i < 256; i++)
+                speed[i] = (float)(i % 64);
+            for (int b = 0; b < 4; b++) {
+                p[0] = 0.05 * b;
+                aero_body_texture_set_pose(body, p, q, 256 / 44100.0);
+                aero_body_texture_process(body, speed, out, 256);
+                FUZZ_REQUIRE(fuzz_finite(l, 256) && fuzz_finite(r, 256),
+                             "body texture player output not finite");
+            }
+            aero_body_texture_free(body);
+        }
+        free(body);
+    }
     if (t) {
         aero_texture_free(t);
         free(t);

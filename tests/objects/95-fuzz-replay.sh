@@ -19,6 +19,7 @@ for c in src/core/*.c; do
 done
 grep -v -e '^#' -e '^[[:space:]]*$' fuzz/targets.txt | while read -r name extra seeds; do
     [ "$extra" = "-" ] && extra=""
+    extra=$(echo "$extra" | tr ',' ' ')
     [ "$seeds" = "-" ] && seeds=""
     bin=$replay_dir/$name
     # shellcheck disable=SC2086

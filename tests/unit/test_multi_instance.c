@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "aeolian_model.h"
+#include "body_texture.h"
 #include "cavity_model.h"
 #include "field_sound.h"
 #include "field_volume.h"
@@ -105,6 +106,41 @@ static void stick_run(void *s, const float *speed, float *out, int n)
 static void stick_drop(void *s)
 {
     aero_stick_texture_free(s);
+    free(s);
+}
+
+/* --- [body~]: a synthetic object texture, 2 directions x 3 regions --- */
+static void *body_make(int variant)
+{
+    char err[128];
+    aero_body_texture *s = calloc(1, sizeof(*s));
+    aero_texture *t = calloc(1, sizeof(*t));
+    double wind[3] = {variant ? 7.0 : 12.0, 1.0, 0.5};
+    double pos[3] = {0.1 * variant, 0.0, 0.0}, q[4] = {0.9, 0.1, 0.2, 0.3};
+    aero_texture_init_regions(t, 512, 2, 3, 16000.0);
+    for (int n = 0; n < 512 * t->channels; n++)
+        t->data[n] = (float)sin(0.05 * n) * (float)cos(0.0031 * n);
+    aero_texture_set(t, "kind", "object");
+    aero_texture_set(t, "v0", "10");
+    aero_texture_set(t, "diameter", "0.05");
+    aero_texture_set(t, "symmetry", "axis");
+    aero_texture_set(t, "centres", "0,0,0;0,0,0.2;0,0,0.4");
+    t->angles[0] = 0.0;
+    t->angles[1] = 90.0;
+    aero_body_texture_init(s, 44100.0, 1, 5u + variant);
+    aero_body_texture_set_texture(s, t, err, sizeof(err));
+    aero_body_texture_set_wind(s, wind);
+    aero_body_texture_set_pose(s, pos, q, -1.0);
+    return s;
+}
+static void body_run(void *s, const float *speed, float *out, int n)
+{
+    float *outs[1] = {out};
+    aero_body_texture_process(s, speed, outs, n);
+}
+static void body_drop(void *s)
+{
+    aero_body_texture_free(s);
     free(s);
 }
 
@@ -262,6 +298,7 @@ static const core_api cores[] = {
     {"cavity_model", cavity_make, cavity_run, cavity_drop},
     {"cavity_model (texture)", cavity_tex_make, cavity_run, cavity_drop},
     {"stick_texture", stick_make, stick_run, stick_drop},
+    {"body_texture", body_make, body_run, body_drop},
     {"vortex_player", vortex_make, vortex_run, vortex_drop},
     {"treebranch", treebranch_make, treebranch_run, treebranch_drop},
     {"leafwave", leafwave_make, leafwave_run, leafwave_drop},

@@ -116,3 +116,36 @@ for what in "can't find texture 'nosuch'" "not an object texture" "unknown argum
     fi
 done
 judge $ANALYZE finite "$OUT/bd-bad.wav" --max 10
+
+# 5. aerotex object on the command line: bad bodies are refused with a
+#    message naming the problem (exit 2), a tiny sphere texture is made
+#    with vorticity slices, and [body~] plays it
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\nf 1 3 4\nf 1 2 3\n' \
+    >"$OUT/open.obj"
+for bad in "--mesh $OUT/open.obj:not closed" "--mesh /nonexistent.obj:can't open" \
+    "--shape cube:takes sphere, capsule or club" \
+    "--shape sphere --radius -1:out of range" \
+    "--shape sphere --directions 3:--directions 1" \
+    "--shape club --handle 0.05 --tip 0.03:handle <= tip"; do
+    args=${bad%%:*} want=${bad#*:}
+    # shellcheck disable=SC2086
+    msg=$(build/aerotex object $args -q -o "$OUT/bad-object.wav" 2>&1)
+    status=$?
+    if [ "$status" -eq 2 ] && printf '%s' "$msg" | grep -q -F -- "$want"; then
+        pass "'aerotex object $args' -> exit 2, says '$want'"
+    else
+        fail "'aerotex object $args' -> exit $status: $msg"
+    fi
+done
+rm -rf "$OUT/object-png"
+if build/aerotex object --shape sphere --radius 0.05 --grid 6 --duration 0.05 \
+    --settle 5 --png "$OUT/object-png" -q -o "$OUT/tiny-sphere.wav" \
+    >"$OUT/tiny-sphere.txt" 2>&1 &&
+    [ "$(ls "$OUT/object-png" | wc -l)" -ge 3 ] &&
+    build/aerotex info "$OUT/tiny-sphere.wav" | grep -q "^kind=object"; then
+    pass "aerotex object: a tiny sphere texture and $(ls "$OUT/object-png" | wc -l) vorticity slices"
+else
+    fail "aerotex object: the tiny sphere"; cat "$OUT/tiny-sphere.txt"
+fi
+pd_render bd-tiny "body~ -texture $OUT/tiny-sphere" 1 500 "; aero-speed 10"
+judge $ANALYZE level "$OUT/bd-tiny.wav" --min 0

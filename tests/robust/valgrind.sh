@@ -3,11 +3,11 @@
 # build) under valgrind memcheck: no invalid read/write, no use of
 # uninitialised values, no definite or indirect leak. "Possibly lost" and
 # "still reachable" blocks are libgomp's thread pool and are not errors.
-# VALGRIND_SKIP (default: the two flow-solver tests, which run minutes
-# natively and would run hours under valgrind; check-asan runs them under
-# ASan+LSan instead) lists test names to leave out.
+# VALGRIND_SKIP (default: the three flow-solver tests, which run a minute
+# or more natively and would run hours under valgrind; check-asan runs them
+# under ASan+LSan instead) lists test names to leave out.
 set -u
-SKIP=${VALGRIND_SKIP-test_flow2d test_cavity_flow}
+SKIP=${VALGRIND_SKIP-test_flow2d test_cavity_flow test_body_flow}
 D=build/valgrind
 mkdir -p "$D"
 passed=0

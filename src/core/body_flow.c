@@ -299,7 +299,7 @@ int aero_body_flow_simulate(const aero_body_flow_params *p, double rate,
     double force[3 * AERO_BODY_MAX_REGIONS];
     const int nr = p->regions;
     double dt, t_keep, fc, d;
-    long steps, kept = 0, first_kept = -1;
+    long steps, kept = 0;
     uint32_t rng;
     int status = -1, solver_up = 0;
     size_t cells;
@@ -383,8 +383,6 @@ int aero_body_flow_simulate(const aero_body_flow_params *p, double rate,
             goto out;
         }
         if (t + dt >= t_keep) {
-            if (first_kept < 0)
-                first_kept = n;
             times[kept] = t + dt;
             /* into the sample frame */
             for (int l = 0; l < nr; l++)
@@ -448,7 +446,6 @@ int aero_body_flow_simulate(const aero_body_flow_params *p, double rate,
         free(fx);
         free(fy);
     }
-    (void)first_kept;
     status = 0;
 out:
     if (solver_up) {

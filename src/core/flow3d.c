@@ -167,6 +167,24 @@ static void apply_boundaries(aero_flow3d *s)
            sizeof(float) * pl);
 }
 
+/* the smallest and largest of the 8 lattice values around a sample point
+   (layers a and b, rows j0 and j1, columns i0 and i1): the MacCormack
+   limiter's bounds */
+static inline void corner_range(const float *a, const float *b, int nx,
+                                int i0, int i1, int j0, int j1, float *mm)
+{
+    const float c[8] = {a[j0 * nx + i0], a[j0 * nx + i1], a[j1 * nx + i0],
+                        a[j1 * nx + i1], b[j0 * nx + i0], b[j0 * nx + i1],
+                        b[j1 * nx + i0], b[j1 * nx + i1]};
+    float lo = c[0], hi = c[0];
+    for (int q = 1; q < 8; q++) {
+        lo = fminf(lo, c[q]);
+        hi = fmaxf(hi, c[q]);
+    }
+    mm[0] = lo;
+    mm[1] = hi;
+}
+
 /* trilinear sample of a u- or v-type field (layers -1..nz) at grid
    coordinates (fi, fj, fk) of its own lattice; periodic in i, j. With mm
    (not NULL) also the smallest and largest of the 8 values around it
@@ -201,18 +219,8 @@ static inline float sample_uv(const aero_flow3d *s, const float *f, float fi,
         float b00 = b[j0 * nx + i0] + tx * (b[j0 * nx + i1] - b[j0 * nx + i0]);
         float b10 = b[j1 * nx + i0] + tx * (b[j1 * nx + i1] - b[j1 * nx + i0]);
         float a0 = a00 + ty * (a10 - a00), b0 = b00 + ty * (b10 - b00);
-        if (mm) {
-            float c[8] = {a[j0 * nx + i0], a[j0 * nx + i1], a[j1 * nx + i0],
-                          a[j1 * nx + i1], b[j0 * nx + i0], b[j0 * nx + i1],
-                          b[j1 * nx + i0], b[j1 * nx + i1]};
-            float lo = c[0], hi = c[0];
-            for (int q = 1; q < 8; q++) {
-                lo = fminf(lo, c[q]);
-                hi = fmaxf(hi, c[q]);
-            }
-            mm[0] = lo;
-            mm[1] = hi;
-        }
+        if (mm)
+            corner_range(a, b, nx, i0, i1, j0, j1, mm);
         return a0 + tz * (b0 - a0);
     }
 }
@@ -248,18 +256,8 @@ static inline float sample_w(const aero_flow3d *s, const float *f, float fi,
         float b00 = b[j0 * nx + i0] + tx * (b[j0 * nx + i1] - b[j0 * nx + i0]);
         float b10 = b[j1 * nx + i0] + tx * (b[j1 * nx + i1] - b[j1 * nx + i0]);
         float a0 = a00 + ty * (a10 - a00), b0 = b00 + ty * (b10 - b00);
-        if (mm) {
-            float c[8] = {a[j0 * nx + i0], a[j0 * nx + i1], a[j1 * nx + i0],
-                          a[j1 * nx + i1], b[j0 * nx + i0], b[j0 * nx + i1],
-                          b[j1 * nx + i0], b[j1 * nx + i1]};
-            float lo = c[0], hi = c[0];
-            for (int q = 1; q < 8; q++) {
-                lo = fminf(lo, c[q]);
-                hi = fmaxf(hi, c[q]);
-            }
-            mm[0] = lo;
-            mm[1] = hi;
-        }
+        if (mm)
+            corner_range(a, b, nx, i0, i1, j0, j1, mm);
         return a0 + tz * (b0 - a0);
     }
 }

@@ -3,6 +3,7 @@
 #define AEROTEX_H
 
 #include <omp.h>
+#include <stddef.h>
 
 /* subcommands: each returns the process exit status */
 int aerotex_aeolian(int argc, char **argv, int cavity);
@@ -35,6 +36,18 @@ void aerotex_progress_show(aerotex_progress *p, int final);
    against [lo, hi]: 0, or -1 with a message */
 int aerotex_number(int argc, char **argv, int *i, double lo, double hi,
                    double *x);
+
+/* the command line as one string, "aerotex ARGV..." (the `command`
+   metadata of every texture) */
+void aerotex_command_line(char *buf, size_t len, int argc, char **argv);
+
+/* a seamless loop of about l0 frames: its length is searched in
+   [lmin, lmax] (+-5 %) with xfade frames of cross-fade, so the simulation
+   must deliver lmax + xfade frames */
+typedef struct {
+    int xfade, lmin, lmax, avail;
+} aerotex_loop_plan;
+aerotex_loop_plan aerotex_plan_loop(int l0);
 
 /* messages on stderr, prefixed "aerotex: " */
 void aerotex_error(const char *fmt, ...);

@@ -56,3 +56,22 @@ int aerotex_number(int argc, char **argv, int *i, double lo, double hi,
     }
     return 0;
 }
+
+void aerotex_command_line(char *buf, size_t len, int argc, char **argv)
+{
+    size_t used = 0;
+    buf[0] = 0;
+    for (int i = -1; i < argc && used < len; i++)
+        used += (size_t)snprintf(buf + used, len - used, "%s%s",
+                                 i < 0 ? "aerotex" : " ", i < 0 ? "" : argv[i]);
+}
+
+aerotex_loop_plan aerotex_plan_loop(int l0)
+{
+    aerotex_loop_plan p;
+    p.xfade = l0 / 10 > 8 ? l0 / 10 : 8;
+    p.lmin = (int)floor(0.95 * l0) > 2 ? (int)floor(0.95 * l0) : 2;
+    p.lmax = (int)ceil(1.05 * l0);
+    p.avail = p.lmax + p.xfade;
+    return p;
+}

@@ -85,7 +85,6 @@ static void hook(void *ctx, const aero_flow3d *s, long step, int recording)
     }
 }
 
-
 static int oparse(ojob_t *j, int argc, char **argv)
 {
     double x;
@@ -93,7 +92,7 @@ static int oparse(ojob_t *j, int argc, char **argv)
         const char *a = argv[i];
 #define ONUM(name, lo, hi, field)                                  \
     if (!strcmp(a, name)) {                                        \
-        if (aerotex_number(argc, argv, &i, lo, hi, &x)) return -1;        \
+        if (aerotex_number(argc, argv, &i, lo, hi, &x)) return -1; \
         field = x;                                                 \
         continue;                                                  \
     }
@@ -260,18 +259,14 @@ int aerotex_object(int argc, char **argv)
         aero_body_free(&body);
         return 2;
     }
-    xf = l0 / 10 > 8 ? l0 / 10 : 8;
-    lmin = (int)floor(0.95 * l0) > 2 ? (int)floor(0.95 * l0) : 2;
-    lmax = (int)ceil(1.05 * l0);
-    avail = lmax + xf;
     {
-        size_t used = 0;
-        command[0] = 0;
-        for (int i = -1; i < argc && used < sizeof command; i++)
-            used += (size_t)snprintf(command + used, sizeof command - used,
-                                     "%s%s", i < 0 ? "aerotex" : " ",
-                                     i < 0 ? "" : argv[i]);
+        aerotex_loop_plan lp = aerotex_plan_loop(l0);
+        xf = lp.xfade;
+        lmin = lp.lmin;
+        lmax = lp.lmax;
+        avail = lp.avail;
     }
+    aerotex_command_line(command, sizeof command, argc, argv);
     if (j.png_dir && mkdir(j.png_dir, 0777) && errno != EEXIST) {
         aerotex_error("can't create %s: %s", j.png_dir, strerror(errno));
         aero_body_free(&body);

@@ -36,8 +36,6 @@ typedef struct {
     char err[256];
 } dir_t;
 
-
-
 static int parse(job_t *j, int argc, char **argv)
 {
     double x;
@@ -45,7 +43,7 @@ static int parse(job_t *j, int argc, char **argv)
         const char *a = argv[i];
 #define NUM(name, lo, hi, field)                                    \
     if (!strcmp(a, name)) {                                         \
-        if (aerotex_number(argc, argv, &i, lo, hi, &x)) return -1;          \
+        if (aerotex_number(argc, argv, &i, lo, hi, &x)) return -1; \
         field = x;                                                  \
         continue;                                                   \
     }
@@ -265,10 +263,8 @@ static int make_texture(const job_t *j, dir_t *r, const char *shape_desc,
 {
     const int nd = j->directions, ch = 3 * nd;
     const int l0 = (int)lround(j->duration * j->rate);
-    const int xf = l0 / 10 > 8 ? l0 / 10 : 8;
-    const int lmin = (int)floor(0.95 * l0) > 2 ? (int)floor(0.95 * l0) : 2;
-    const int lmax = (int)ceil(1.05 * l0);
-    const int avail = lmax + xf;
+    const aerotex_loop_plan lp = aerotex_plan_loop(l0);
+    const int xf = lp.xfade, lmin = lp.lmin, lmax = lp.lmax, avail = lp.avail;
     const double tunit = j->d / j->v0;               /* s per d/v0 */
     const double scale = AERO_RHO * j->v0 * j->v0 * j->d; /* F in N/m */
     const double t0 = 20.0 / j->rate;                /* kernel reach */
@@ -515,14 +511,7 @@ int aerotex_aeolian(int argc, char **argv, int cavity)
             r[k].alpha = k * range / j.directions;
         }
     }
-    {
-        size_t used = 0;
-        command[0] = 0;
-        for (int i = -1; i < argc && used < sizeof command; i++)
-            used += (size_t)snprintf(command + used, sizeof command - used,
-                                     "%s%s", i < 0 ? "aerotex" : " ",
-                                     i < 0 ? "" : argv[i]);
-    }
+    aerotex_command_line(command, sizeof command, argc, argv);
     if (j.png_dir && mkdir(j.png_dir, 0777) && errno != EEXIST) {
         aerotex_error("can't create %s: %s", j.png_dir, strerror(errno));
         free(r);

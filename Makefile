@@ -16,6 +16,8 @@ lib.name = aero
 # --- the Pd side: one external per object, plus the single-binary setup ----
 class.sources = $(sort $(wildcard src/pd/*~.c))
 lib.setup.sources = src/pd/aero.c
+# the skeleton every wrapper shares, linked into each external and the lib
+common.sources = src/pd/aero_pd.c
 
 datafiles = $(wildcard help/*.pd) $(wildcard abstractions/*.pd) \
     README.md LICENSE
@@ -89,7 +91,7 @@ lib: all
 
 # the wrappers must also compile for multi-instance libpd
 pdinstance:
-	@for f in $(class.sources) $(lib.setup.sources); do \
+	@for f in $(class.sources) $(lib.setup.sources) $(common.sources); do \
 	    $(CC) -std=c99 -fsyntax-only -Wall -Wextra -Werror \
 	        -DPDINSTANCE -DPDTHREADS -I/usr/include/pd -Isrc/core $$f \
 	        || exit 1; \
@@ -150,7 +152,8 @@ libpd-example: all
 	@test -n "$(LIBPD_DIR)" || { echo "set LIBPD_DIR to a built libpd" >&2; exit 1; }
 	$(CC) -std=c99 -O2 -DPDINSTANCE -DHAVE_LIBPD -I$(LIBPD_DIR)/libpd_wrapper \
 	    -I$(LIBPD_DIR)/pure-data/src -Isrc/core examples/libpd-host.c \
-	    $(class.sources) $(lib.setup.sources) -L$(LIBPD_DIR)/libs -lpd \
+	    $(class.sources) $(lib.setup.sources) $(common.sources) \
+	    -L$(LIBPD_DIR)/libs -lpd \
 	    $(core.lib) -lsndfile -lfftw3f -lm -lpthread -o $(BUILD)/libpd-host
 	@echo "run: $(BUILD)/libpd-host examples"
 
@@ -191,11 +194,11 @@ $(ASAN_DIR)/core/%.o: src/core/%.c $(wildcard src/core/*.h)
 	$(ASAN_CC) $(ASAN_CFLAGS) -c $< -o $@
 $(asan.lib): $(asan.core.objects)
 	rm -f $@; ar rcs $@ $^
-$(ASAN_ROOT)/%~.pd_linux: src/pd/%~.c src/pd/aero_pd.h $(asan.lib)
+$(ASAN_ROOT)/%~.pd_linux: src/pd/%~.c $(common.sources) src/pd/aero_pd.h $(asan.lib)
 	@mkdir -p $(dir $@)
-	$(ASAN_CC) $(ASAN_PD_CFLAGS) $< -o $@ $(asan.lib) -lsndfile -lfftw3f -lm
-$(ASAN_ROOT)/aero.pd_linux: $(lib.setup.sources) $(class.sources) $(asan.lib)
-	$(ASAN_CC) $(ASAN_PD_CFLAGS) $(lib.setup.sources) $(class.sources) -o $@ \
+	$(ASAN_CC) $(ASAN_PD_CFLAGS) $< $(common.sources) -o $@ $(asan.lib) -lsndfile -lfftw3f -lm
+$(ASAN_ROOT)/aero.pd_linux: $(lib.setup.sources) $(class.sources) $(common.sources) $(asan.lib)
+	$(ASAN_CC) $(ASAN_PD_CFLAGS) $(lib.setup.sources) $(class.sources) $(common.sources) -o $@ \
 	    $(asan.lib) -lsndfile -lfftw3f -lm
 $(ASAN_ROOT)/build/aerotex: $(aerotex.sources) $(asan.lib)
 	@mkdir -p $(dir $@)

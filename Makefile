@@ -87,6 +87,33 @@ tools: $(BUILD)/aerotex $(BUILD)/aero-analyze $(unit.binaries)
 lib: all
 	$(MAKE) --no-print-directory make-lib-executable=yes
 
+# --- double precision: the same externals for a Pd built with
+# PD_FLOATSIZE=64, named *.OS-ARCH-64.so as pd-lib-builder's floatsize=64
+# names them (Debian's pd-lib-builder 0.6 predates that, so the rules are
+# here). They sit beside the single-precision ones; each wrapper converts
+# its signals at the boundary, the core archive is the same float core.
+DOUBLE_EXT = $(shell uname -s | tr A-Z a-z)-$(shell uname -m | \
+    sed 's/x86_64/amd64/; s/aarch64/arm64/')-64.so
+double.externals = $(patsubst src/pd/%.c,%.$(DOUBLE_EXT),$(class.sources))
+double.lib = $(lib.name).$(DOUBLE_EXT)
+DOUBLE_CFLAGS = -DPD -DUNIX -DPD_FLOATSIZE=64 -I/usr/include/pd \
+    $(cflags) $(CFLAGS) -fPIC -shared -rdynamic
+%~.$(DOUBLE_EXT): src/pd/%~.c src/pd/aero_pd.h $(core.lib)
+	$(CC) $(DOUBLE_CFLAGS) $< -o $@ $(ldlibs)
+$(double.lib): $(lib.setup.sources) $(class.sources) src/pd/aero_pd.h $(core.lib)
+	$(CC) $(DOUBLE_CFLAGS) $(lib.setup.sources) $(class.sources) -o $@ $(ldlibs)
+.PHONY: double
+double: $(double.externals) $(double.lib)
+
+# make install: besides pd-lib-builder's externals and data, the single
+# binary (for [declare -lib aero]) and the double-precision binaries
+.PHONY: install-aero
+install: install-aero
+install-aero: lib double
+	$(INSTALL_DIR) "$(installpath)"
+	$(INSTALL_PROGRAM) $(lib.name).$(extension) $(double.externals) \
+	    $(double.lib) "$(installpath)"
+
 # the wrappers must also compile for multi-instance libpd
 pdinstance:
 	@for f in $(class.sources) $(lib.setup.sources); do \
@@ -156,7 +183,7 @@ libpd-example: all
 
 clean: clean-aero
 clean-aero:
-	rm -rf $(BUILD) $(BUILD).log
+	rm -rf $(BUILD) $(BUILD).log $(double.externals) $(double.lib)
 
 # ============================================================================
 # --- robustness (issue 10): sanitizers, fuzzing, long runs, globals --------

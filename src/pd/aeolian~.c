@@ -34,6 +34,7 @@ typedef struct _aeolian_tilde {
     int x_warned_clamp;
     t_clock *x_clock;
     t_outlet *x_out[2];
+    aero_pd_scratch x_scratch; /* float signals for a double Pd */
 } t_aeolian_tilde;
 
 #define OBJ "[aeolian~]"
@@ -55,14 +56,19 @@ static int aeolian_tilde_texture_mode(const t_aeolian_tilde *x)
 static t_int *aeolian_tilde_perform(t_int *w)
 {
     t_aeolian_tilde *x = (t_aeolian_tilde *)(w[1]);
-    t_sample *speed = (t_sample *)(w[2]);
-    t_sample *outs[2] = {(t_sample *)(w[3]), (t_sample *)(w[4])};
+    t_sample *pd_outs[2] = {(t_sample *)(w[3]), (t_sample *)(w[4])};
     int n = (int)(w[5]);
     /* the cores read each chunk of speed before writing that chunk of the
      * outputs, so Pd may hand us aliased in and out buffers */
+    const float *speed = aero_pd_signal_in(&x->x_scratch, 0,
+                                           (t_sample *)(w[2]));
+    float *outs[2] = {aero_pd_signal_out(&x->x_scratch, 1, pd_outs[0]),
+                      aero_pd_signal_out(&x->x_scratch, 2, pd_outs[1])};
     int clamped = aeolian_tilde_texture_mode(x)
         ? aero_stick_texture_process(x->x_stick, speed, outs, n)
         : aero_aeolian_model_process(&x->x_model, speed, outs, n);
+    for (int e = 0; e < (x->x_stereo ? 2 : 1); e++)
+        aero_pd_signal_done(&x->x_scratch, 1 + e, pd_outs[e]);
     if (clamped && !x->x_clamped) {
         x->x_clamped = 1;
         clock_delay(x->x_clock, 0);
@@ -76,6 +82,12 @@ static void aeolian_tilde_dsp(t_aeolian_tilde *x, t_signal **sp)
         (x->x_stick &&
          aero_stick_texture_set_sample_rate(x->x_stick, sp[0]->s_sr)))
         pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
+    if (aero_pd_scratch_prepare(&x->x_scratch, sp[0]->s_n)) {
+        pd_error(x, OBJ ": out of memory: silent");
+        for (int e = 0; e < (x->x_stereo ? 2 : 1); e++)
+            dsp_add_zero(sp[1 + e]->s_vec, sp[0]->s_n);
+        return;
+    }
     dsp_add(aeolian_tilde_perform, 5, x, sp[0]->s_vec, sp[1]->s_vec,
             x->x_stereo ? sp[2]->s_vec : sp[1]->s_vec, (t_int)sp[0]->s_n);
 }
@@ -386,6 +398,7 @@ static void *aeolian_tilde_new(t_symbol *s, int argc, t_atom *argv)
 
 static void aeolian_tilde_free(t_aeolian_tilde *x)
 {
+    aero_pd_scratch_free(&x->x_scratch);
     clock_free(x->x_clock);
     if (x->x_stick) {
         aero_stick_texture_free(x->x_stick);

@@ -144,4 +144,95 @@ static inline int aero_pd_find_tree(const t_canvas *canvas,
     return aero_pd_find_file(canvas, cls, name, ".tree", "trees", path, len);
 }
 
+/* --- signals at the wrapper boundary ---------------------------------------
+ * The core computes in float. A double-precision Pd (PD_FLOATSIZE 64) hands
+ * perform double buffers, so each wrapper converts its input signal into
+ * float scratch and its float results back. The scratch is allocated in the
+ * dsp method, never in perform. With single precision t_sample is float and
+ * all of this passes Pd's own buffers through. */
+#define AERO_PD_SIGNALS 3 /* an inlet and up to two outlets */
+
+typedef struct aero_pd_scratch {
+    float *buf; /* AERO_PD_SIGNALS blocks of n floats (double Pd only) */
+    int n;
+} aero_pd_scratch;
+
+#if PD_FLOATSIZE == 32
+static inline int aero_pd_scratch_prepare(aero_pd_scratch *s, int n)
+{
+    s->n = n;
+    return 0;
+}
+static inline void aero_pd_scratch_free(aero_pd_scratch *s) { (void)s; }
+static inline const float *aero_pd_signal_in(aero_pd_scratch *s, int slot,
+                                             const t_sample *in)
+{
+    (void)s;
+    (void)slot;
+    return in;
+}
+static inline float *aero_pd_signal_out(aero_pd_scratch *s, int slot,
+                                        t_sample *out)
+{
+    (void)s;
+    (void)slot;
+    return out;
+}
+static inline void aero_pd_signal_done(const aero_pd_scratch *s, int slot,
+                                       t_sample *out)
+{
+    (void)s;
+    (void)slot;
+    (void)out;
+}
+#else
+/* in the dsp method: room for n frames per signal; 0, or -1 when out of
+ * memory (then the wrapper must not add its perform routine) */
+static inline int aero_pd_scratch_prepare(aero_pd_scratch *s, int n)
+{
+    if (s->buf && s->n == n)
+        return 0;
+    if (s->buf)
+        freebytes(s->buf, sizeof(float) * AERO_PD_SIGNALS * (size_t)s->n);
+    s->n = 0;
+    s->buf = n > 0 ? getbytes(sizeof(float) * AERO_PD_SIGNALS * (size_t)n)
+                   : NULL;
+    if (!s->buf)
+        return -1;
+    s->n = n;
+    return 0;
+}
+static inline void aero_pd_scratch_free(aero_pd_scratch *s)
+{
+    if (s->buf)
+        freebytes(s->buf, sizeof(float) * AERO_PD_SIGNALS * (size_t)s->n);
+    s->buf = NULL;
+    s->n = 0;
+}
+/* the input signal `in` as floats in scratch block `slot` */
+static inline const float *aero_pd_signal_in(aero_pd_scratch *s, int slot,
+                                             const t_sample *in)
+{
+    float *f = s->buf + (size_t)slot * (size_t)s->n;
+    for (int i = 0; i < s->n; i++)
+        f[i] = (float)in[i];
+    return f;
+}
+/* where the core writes the output for `out`: scratch block `slot` */
+static inline float *aero_pd_signal_out(aero_pd_scratch *s, int slot,
+                                        t_sample *out)
+{
+    (void)out;
+    return s->buf + (size_t)slot * (size_t)s->n;
+}
+/* after the core ran: scratch block `slot` back into Pd's `out` */
+static inline void aero_pd_signal_done(const aero_pd_scratch *s, int slot,
+                                       t_sample *out)
+{
+    const float *f = s->buf + (size_t)slot * (size_t)s->n;
+    for (int i = 0; i < s->n; i++)
+        out[i] = f[i];
+}
+#endif
+
 #endif

@@ -19,6 +19,7 @@ typedef struct _cavity_tilde {
     int x_clamped, x_warned_clamp;
     t_clock *x_clock;
     t_outlet *x_out;
+    aero_pd_scratch x_scratch; /* float signals for a double Pd */
 } t_cavity_tilde;
 
 #define OBJ "[cavity~]"
@@ -35,11 +36,16 @@ static void cavity_tilde_report(t_cavity_tilde *x)
 static t_int *cavity_tilde_perform(t_int *w)
 {
     t_cavity_tilde *x = (t_cavity_tilde *)(w[1]);
+    t_sample *pd_out = (t_sample *)(w[3]);
     /* the core reads each chunk of speed before writing it: in and out
      * may be the same buffer */
-    if (aero_cavity_model_process(&x->x_model, (t_sample *)(w[2]),
-                                  (t_sample *)(w[3]), (int)(w[4])) &&
-        !x->x_clamped) {
+    const float *speed = aero_pd_signal_in(&x->x_scratch, 0,
+                                           (t_sample *)(w[2]));
+    float *out = aero_pd_signal_out(&x->x_scratch, 1, pd_out);
+    int clamped = aero_cavity_model_process(&x->x_model, speed, out,
+                                            (int)(w[4]));
+    aero_pd_signal_done(&x->x_scratch, 1, pd_out);
+    if (clamped && !x->x_clamped) {
         x->x_clamped = 1;
         clock_delay(x->x_clock, 0);
     }
@@ -50,6 +56,11 @@ static void cavity_tilde_dsp(t_cavity_tilde *x, t_signal **sp)
 {
     if (aero_cavity_model_set_sample_rate(&x->x_model, sp[0]->s_sr))
         pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
+    if (aero_pd_scratch_prepare(&x->x_scratch, sp[0]->s_n)) {
+        pd_error(x, OBJ ": out of memory: silent");
+        dsp_add_zero(sp[1]->s_vec, sp[0]->s_n);
+        return;
+    }
     dsp_add(cavity_tilde_perform, 4, x, sp[0]->s_vec, sp[1]->s_vec,
             (t_int)sp[0]->s_n);
 }
@@ -203,6 +214,7 @@ static void *cavity_tilde_new(t_symbol *s, int argc, t_atom *argv)
 
 static void cavity_tilde_free(t_cavity_tilde *x)
 {
+    aero_pd_scratch_free(&x->x_scratch);
     clock_free(x->x_clock);
     aero_cavity_model_free(&x->x_model);
     outlet_free(x->x_out);

@@ -52,6 +52,7 @@ typedef struct _fieldsound_tilde {
     int x_was_playing, x_clamped, x_warned_clamp, x_done;
     t_clock *x_poll, *x_report;
     t_outlet *x_out, *x_info;
+    aero_pd_scratch x_scratch; /* float signals for a double Pd */
 } t_fieldsound_tilde;
 
 static double wall_seconds(void)
@@ -274,9 +275,11 @@ static void fieldsound_tilde_report(t_fieldsound_tilde *x)
 static t_int *fieldsound_tilde_perform(t_int *w)
 {
     t_fieldsound_tilde *x = (t_fieldsound_tilde *)(w[1]);
-    t_sample *out = (t_sample *)(w[2]);
+    t_sample *pd_out = (t_sample *)(w[2]);
     int n = (int)(w[3]);
-    int playing = aero_field_render_process(&x->x_render, out, n);
+    int playing = aero_field_render_process(
+        &x->x_render, aero_pd_signal_out(&x->x_scratch, 1, pd_out), n);
+    aero_pd_signal_done(&x->x_scratch, 1, pd_out);
     if ((x->x_was_playing && !playing && x->x_render.src) ||
         (x->x_render.clamped && !x->x_clamped)) {
         if (x->x_was_playing && !playing)
@@ -292,6 +295,11 @@ static void fieldsound_tilde_dsp(t_fieldsound_tilde *x, t_signal **sp)
 {
     if (aero_field_render_set_sample_rate(&x->x_render, sp[0]->s_sr))
         pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
+    if (aero_pd_scratch_prepare(&x->x_scratch, sp[0]->s_n)) {
+        pd_error(x, OBJ ": out of memory: silent");
+        dsp_add_zero(sp[0]->s_vec, sp[0]->s_n);
+        return;
+    }
     dsp_add(fieldsound_tilde_perform, 3, x, sp[0]->s_vec,
             (t_int)sp[0]->s_n);
 }
@@ -548,6 +556,7 @@ static void *fieldsound_tilde_new(t_symbol *s, int argc, t_atom *argv)
 
 static void fieldsound_tilde_free(t_fieldsound_tilde *x)
 {
+    aero_pd_scratch_free(&x->x_scratch);
     fieldsound_tilde_cancel(x);
     clock_free(x->x_poll);
     clock_free(x->x_report);

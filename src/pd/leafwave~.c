@@ -29,6 +29,7 @@ typedef struct _leafwave_tilde {
     int x_clamped, x_warned_clamp;
     t_clock *x_clock;
     t_outlet *x_out[2];
+    aero_pd_scratch x_scratch; /* float signals for a double Pd */
 } t_leafwave_tilde;
 
 #define OBJ "[leafwave~]"
@@ -59,11 +60,11 @@ static t_int *leafwave_tilde_perform(t_int *w)
 {
     t_leafwave_tilde *x = (t_leafwave_tilde *)(w[1]);
     t_sample *speed = (t_sample *)(w[2]);
-    t_sample *outs[2] = {(t_sample *)(w[3]), (t_sample *)(w[4])};
+    t_sample *pd_outs[2] = {(t_sample *)(w[3]), (t_sample *)(w[4])};
     int n = (int)(w[5]);
     if (!x->x_ok) {
         for (int i = 0; i < n; i++)
-            outs[0][i] = outs[1][i] = 0;
+            pd_outs[0][i] = pd_outs[1][i] = 0;
         return w + 6;
     }
     /* the wind, as [treebranch~] takes it: the inlet is the speed along
@@ -74,7 +75,11 @@ static t_int *leafwave_tilde_perform(t_int *w)
         sum += speed[i];
     if (n > 0 && sum / n != x->x_speed)
         leafwave_tilde_apply_wind(x, sum / n);
+    float *outs[2] = {aero_pd_signal_out(&x->x_scratch, 1, pd_outs[0]),
+                      aero_pd_signal_out(&x->x_scratch, 2, pd_outs[1])};
     aero_leafwave_process(&x->x_model, NULL, outs, n);
+    for (int e = 0; e < (x->x_stereo ? 2 : 1); e++)
+        aero_pd_signal_done(&x->x_scratch, 1 + e, pd_outs[e]);
     return w + 6;
 }
 
@@ -82,6 +87,12 @@ static void leafwave_tilde_dsp(t_leafwave_tilde *x, t_signal **sp)
 {
     if (x->x_ok && aero_leafwave_set_sample_rate(&x->x_model, sp[0]->s_sr))
         pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
+    if (aero_pd_scratch_prepare(&x->x_scratch, sp[0]->s_n)) {
+        pd_error(x, OBJ ": out of memory: silent");
+        for (int e = 0; e < (x->x_stereo ? 2 : 1); e++)
+            dsp_add_zero(sp[1 + e]->s_vec, sp[0]->s_n);
+        return;
+    }
     dsp_add(leafwave_tilde_perform, 5, x, sp[0]->s_vec, sp[1]->s_vec,
             x->x_stereo ? sp[2]->s_vec : sp[1]->s_vec, (t_int)sp[0]->s_n);
 }
@@ -385,6 +396,7 @@ static void *leafwave_tilde_new(t_symbol *s, int argc, t_atom *argv)
 
 static void leafwave_tilde_free(t_leafwave_tilde *x)
 {
+    aero_pd_scratch_free(&x->x_scratch);
     clock_free(x->x_clock);
     if (x->x_ok)
         aero_leafwave_free(&x->x_model);

@@ -25,6 +25,7 @@ typedef struct _treebranch_tilde {
     int x_clamped, x_warned_clamp;
     t_clock *x_clock;
     t_outlet *x_out[2];
+    aero_pd_scratch x_scratch; /* float signals for a double Pd */
 } t_treebranch_tilde;
 
 #define OBJ "[treebranch~]"
@@ -67,7 +68,14 @@ static t_int *treebranch_tilde_perform(t_int *w)
         sum += in[i];
     if (n > 0 && sum / n != x->x_speed)
         treebranch_tilde_apply_wind(x, sum / n);
-    aero_treebranch_process(&x->x_tb, out0, out1, n);
+    aero_treebranch_process(&x->x_tb,
+                            aero_pd_signal_out(&x->x_scratch, 1, out0),
+                            out1 ? aero_pd_signal_out(&x->x_scratch, 2, out1)
+                                 : NULL,
+                            n);
+    aero_pd_signal_done(&x->x_scratch, 1, out0);
+    if (out1)
+        aero_pd_signal_done(&x->x_scratch, 2, out1);
     return w + 6;
 }
 
@@ -76,6 +84,12 @@ static void treebranch_tilde_dsp(t_treebranch_tilde *x, t_signal **sp)
     if (aero_treebranch_set_sample_rate(&x->x_tb, sp[0]->s_sr))
         pd_error(x, OBJ ": bad sample rate %g (or out of memory)",
                  sp[0]->s_sr);
+    if (aero_pd_scratch_prepare(&x->x_scratch, sp[0]->s_n)) {
+        pd_error(x, OBJ ": out of memory: silent");
+        for (int e = 0; e < (x->x_stereo ? 2 : 1); e++)
+            dsp_add_zero(sp[1 + e]->s_vec, sp[0]->s_n);
+        return;
+    }
     dsp_add(treebranch_tilde_perform, 5, x, sp[0]->s_vec, sp[1]->s_vec,
             x->x_stereo ? sp[2]->s_vec : sp[1]->s_vec, (t_int)sp[0]->s_n);
 }
@@ -310,6 +324,7 @@ static void *treebranch_tilde_new(t_symbol *s, int argc, t_atom *argv)
 
 static void treebranch_tilde_free(t_treebranch_tilde *x)
 {
+    aero_pd_scratch_free(&x->x_scratch);
     clock_free(x->x_clock);
     aero_treebranch_free(&x->x_tb);
     outlet_free(x->x_out[0]);

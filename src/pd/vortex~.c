@@ -25,6 +25,7 @@ typedef struct _vortex_tilde {
     t_clock *x_clock;
     t_outlet *x_out[2];
     t_sample *x_outs[2];
+    aero_pd_scratch x_scratch; /* float signals for a double Pd */
 } t_vortex_tilde;
 
 #define OBJ "[vortex~]"
@@ -41,12 +42,16 @@ static void vortex_tilde_report(t_vortex_tilde *x)
 static t_int *vortex_tilde_perform(t_int *w)
 {
     t_vortex_tilde *x = (t_vortex_tilde *)(w[1]);
-    t_sample *outs[2];
-    outs[0] = (t_sample *)(w[3]);
-    outs[1] = (t_sample *)(w[4]);
-    if (aero_vortex_player_process(&x->x_player, (t_sample *)(w[2]), outs,
-                                   (int)(w[5])) &&
-        !x->x_clamped) {
+    t_sample *pd_outs[2] = {(t_sample *)(w[3]), (t_sample *)(w[4])};
+    const float *speed = aero_pd_signal_in(&x->x_scratch, 0,
+                                           (t_sample *)(w[2]));
+    float *outs[2] = {aero_pd_signal_out(&x->x_scratch, 1, pd_outs[0]),
+                      aero_pd_signal_out(&x->x_scratch, 2, pd_outs[1])};
+    int clamped = aero_vortex_player_process(&x->x_player, speed, outs,
+                                             (int)(w[5]));
+    for (int e = 0; e < (x->x_stereo ? 2 : 1); e++)
+        aero_pd_signal_done(&x->x_scratch, 1 + e, pd_outs[e]);
+    if (clamped && !x->x_clamped) {
         x->x_clamped = 1;
         clock_delay(x->x_clock, 0);
     }
@@ -57,6 +62,12 @@ static void vortex_tilde_dsp(t_vortex_tilde *x, t_signal **sp)
 {
     if (aero_vortex_player_set_sample_rate(&x->x_player, sp[0]->s_sr))
         pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
+    if (aero_pd_scratch_prepare(&x->x_scratch, sp[0]->s_n)) {
+        pd_error(x, OBJ ": out of memory: silent");
+        for (int e = 0; e < (x->x_stereo ? 2 : 1); e++)
+            dsp_add_zero(sp[1 + e]->s_vec, sp[0]->s_n);
+        return;
+    }
     dsp_add(vortex_tilde_perform, 5, x, sp[0]->s_vec, sp[1]->s_vec,
             x->x_stereo ? sp[2]->s_vec : sp[1]->s_vec, (t_int)sp[0]->s_n);
 }
@@ -269,6 +280,7 @@ static void *vortex_tilde_new(t_symbol *s, int argc, t_atom *argv)
 
 static void vortex_tilde_free(t_vortex_tilde *x)
 {
+    aero_pd_scratch_free(&x->x_scratch);
     clock_free(x->x_clock);
     aero_vortex_player_free(&x->x_player);
     outlet_free(x->x_out[0]);

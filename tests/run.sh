@@ -11,7 +11,7 @@
 #                       replays and compile checks do not depend on which
 #                       Pd runs them (make check-pd056 runs them once)
 ROOT=$(pwd)
-OUT=build/tests/out
+OUT=${TEST_OUT:-build/tests/out} # relative to ROOT
 ANALYZE=build/aero-analyze
 export ROOT OUT
 . tests/pdtest.sh

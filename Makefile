@@ -151,22 +151,33 @@ textures:
 
 # --- packaging: deken packages (the Pd package manager's format) ----------
 # A deken package is a zip archive of the library folder named
-# NAME[vVERSION](OS-ARCH-FLOATSIZE).dek, plus a (Sources) package; the
-# .dek.txt lists the objects, the .sha256 files the checksums. (Debian's
+# NAME[vVERSION](OS-ARCH-FLOATSIZE).dek: one for single-precision Pd
+# (*.pd_linux), one for double precision (*.linux-amd64-64.so), and the
+# (Sources) package; each .dek.txt lists the objects with the DESCRIPTION of
+# their help patch's META, each .sha256 is the archive's checksum
+# (sha256sum -c). The version is the one of help/aero-meta.pd. (Debian's
 # `deken` tool cannot run offline: it fetches its hy runtime from PyPI, so
 # the archives are made here with zip, in the same format.)
-AERO_VERSION = $(shell sed -n 's/.*VERSION \([0-9.]*\);/\1/p' help/aero-meta.pd)
+AERO_VERSION = $(shell sed -n 's/^\#X text [0-9]* [0-9]* VERSION \([0-9][0-9.]*\).*/\1/p' \
+    help/aero-meta.pd | head -n 1)
 DEKEN_DIR = $(BUILD)/deken
-DEKEN_ARCH = $(shell uname -s)-$(shell uname -m | sed 's/x86_64/amd64/; s/aarch64/arm64/')-32
+DEKEN_ARCH = $(shell uname -s)-$(shell uname -m | sed 's/x86_64/amd64/; s/aarch64/arm64/')
+DEKEN_NAME = aero[v$(AERO_VERSION)]
+deken.objects = $(class.sources:src/pd/%.c=%) \
+    $(patsubst abstractions/%.pd,%,$(wildcard abstractions/*.pd))
 deken: all
+	@test -n "$(AERO_VERSION)" || { echo "no VERSION in help/aero-meta.pd" >&2; exit 1; }
 	rm -rf $(DEKEN_DIR)
 	$(MAKE) --no-print-directory -s install PDLIBDIR=$(CURDIR)/$(DEKEN_DIR)/stage
-	cd $(DEKEN_DIR)/stage && zip -q -r "../aero[v$(AERO_VERSION)]($(DEKEN_ARCH)).dek" aero
-	git archive --format=zip --prefix=aero/ -o "$(DEKEN_DIR)/aero[v$(AERO_VERSION)](Sources).dek" HEAD
-	for c in $(class.sources:src/pd/%.c=%) $(patsubst abstractions/%.pd,%,$(wildcard abstractions/*.pd)); do \
-	    printf '%s\t%s\n' "$$c" "aero: physically based aerodynamic sound"; \
-	done >"$(DEKEN_DIR)/aero[v$(AERO_VERSION)]($(DEKEN_ARCH)).dek.txt"
-	cd $(DEKEN_DIR) && for f in *.dek; do sha256sum "$$f" >"$$f.sha256"; done
+	cd $(DEKEN_DIR)/stage && \
+	    zip -q -r "../$(DEKEN_NAME)($(DEKEN_ARCH)-32).dek" aero -x '*-64.so' && \
+	    zip -q -r "../$(DEKEN_NAME)($(DEKEN_ARCH)-64).dek" aero -x '*.pd_linux'
+	git archive --format=zip --prefix=aero/ \
+	    -o "$(DEKEN_DIR)/$(DEKEN_NAME)(Sources).dek" HEAD
+	sh tests/deken-objects.sh $(deken.objects) >$(DEKEN_DIR)/objects.txt
+	cd $(DEKEN_DIR) && for f in *.dek; do \
+	    cp objects.txt "$$f.txt" && sha256sum "$$f" >"$$f.sha256"; done
+	rm -rf $(DEKEN_DIR)/stage $(DEKEN_DIR)/objects.txt
 	@ls -1 $(DEKEN_DIR)/*.dek*
 
 # --- the libpd example: aero linked statically into a host program --------

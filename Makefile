@@ -3,6 +3,10 @@
 #   make            externals (one per object), the core library, aerotex
 #   make lib        the single-binary library aero.pd_linux (aero_setup())
 #   make check      every test CI runs (installs missing dependencies first)
+#   make check-pd056  the Pd tests again under Pd 0.56 (single and double
+#                   precision, 48 kHz), built from ../shared/vendor
+#   make double     the externals for double-precision Pd (*.linux-amd64-64.so)
+#   make deken      deken packages (single, double, sources) in build/deken/
 #   make demo       renders the demo scenes under build/demo/
 #   make bench      benchmarks (not part of check), see BENCHMARKS.md
 #   make deps       installs the Debian packages the project needs
@@ -77,7 +81,7 @@ $(BUILD)/tests/%: tests/unit/%.c tests/unit/unit.h $(core.lib)
 	@mkdir -p $(dir $@)
 	$(CORE_CC) $(CORE_CFLAGS) $< -o $@ $(TOOL_LIBS)
 
-.PHONY: tools lib pdinstance deps check check-only demo bench textures deken libpd-example
+.PHONY: tools lib pdinstance deps check check-only check-pd056 demo bench textures deken libpd-example
 
 all: tools
 tools: $(BUILD)/aerotex $(BUILD)/aero-analyze $(unit.binaries)
@@ -134,6 +138,14 @@ check:
 	@$(MAKE) --no-print-directory -s all lib >$(BUILD).log 2>&1 || \
 	    { cat $(BUILD).log; exit 1; }
 	@sh tests/run.sh
+
+# the Pd tests under Pd 0.56-5 (built in build/pd056 from ../shared/vendor),
+# single and double precision, at 48 kHz
+check-pd056:
+	@$(MAKE) --no-print-directory deps
+	@$(MAKE) --no-print-directory -s all lib double >$(BUILD).log 2>&1 || \
+	    { cat $(BUILD).log; exit 1; }
+	@sh tests/check-pd056.sh
 
 demo:
 	@$(MAKE) --no-print-directory deps

@@ -84,6 +84,12 @@ for t in build/tests/test_*; do
     [ "$status" -ne 0 ] && [ "$f" -eq 0 ] && fail "$t exited $status"
 done
 
+# the fixture the [body~] tests play, written by test_body_texture (which
+# PD_ONLY=1 does not run as a test)
+if [ -n "${PD_ONLY:-}" ] && [ ! -f build/tests/sine-sphere.wav ]; then
+    build/tests/test_body_texture >"$OUT/test_body_texture.txt" 2>&1
+fi
+
 # --- build variants ----------------------------------------------------------
 section "build variants"
 if [ -n "${PD_ONLY:-}" ]; then

@@ -175,6 +175,7 @@ AERO_VERSION = $(shell sed -n 's/^\#X text [0-9]* [0-9]* VERSION \([0-9][0-9.]*\
 DEKEN_DIR = $(BUILD)/deken
 DEKEN_ARCH = $(shell uname -s)-$(shell uname -m | sed 's/x86_64/amd64/; s/aarch64/arm64/')
 DEKEN_NAME = aero[v$(AERO_VERSION)]
+DEB_PACKAGES += unzip # the packaging test unpacks the .dek files
 deken.objects = $(class.sources:src/pd/%.c=%) \
     $(patsubst abstractions/%.pd,%,$(wildcard abstractions/*.pd))
 deken: all

@@ -3,8 +3,8 @@ section "packaging: make deken (single, double, sources), the libpd example"
 
 version=$(sed -n 's/^#X text [0-9]* [0-9]* VERSION \([0-9][0-9.]*\).*/\1/p' help/aero-meta.pd | head -n 1)
 arch="$(uname -s)-$(uname -m | sed 's/x86_64/amd64/; s/aarch64/arm64/')"
-D=build/deken
-if make -s deken >"$OUT/deken.log" 2>&1; then
+D=$OUT/deken # not build/deken: two runs (make check, check-pd056) may overlap
+if make -s deken DEKEN_DIR="$D" >"$OUT/deken.log" 2>&1; then
     pass "make deken (version $version from help/aero-meta.pd)"
 else
     fail "make deken"; tail -5 "$OUT/deken.log"

@@ -3,6 +3,10 @@
 #   make            externals (one per object), the core library, aerotex
 #   make lib        the single-binary library aero.pd_linux (aero_setup())
 #   make check      every test CI runs (installs missing dependencies first)
+#   make check-pd056  the Pd tests again under Pd 0.56 (single and double
+#                   precision, 48 kHz), built from ../shared/vendor
+#   make double     the externals for double-precision Pd (*.linux-amd64-64.so)
+#   make deken      deken packages (single, double, sources) in build/deken/
 #   make demo       renders the demo scenes under build/demo/
 #   make bench      benchmarks (not part of check), see BENCHMARKS.md
 #   make deps       installs the Debian packages the project needs
@@ -79,7 +83,7 @@ $(BUILD)/tests/%: tests/unit/%.c tests/unit/unit.h $(core.lib)
 	@mkdir -p $(dir $@)
 	$(CORE_CC) $(CORE_CFLAGS) $< -o $@ $(TOOL_LIBS)
 
-.PHONY: tools lib pdinstance deps check check-only demo bench textures deken libpd-example
+.PHONY: tools lib pdinstance deps check check-only check-pd056 demo bench textures deken libpd-example
 
 all: tools
 tools: $(BUILD)/aerotex $(BUILD)/aero-analyze $(unit.binaries)
@@ -88,6 +92,35 @@ tools: $(BUILD)/aerotex $(BUILD)/aero-analyze $(unit.binaries)
 # pd-lib-builder pass that reuses the same object files
 lib: all
 	$(MAKE) --no-print-directory make-lib-executable=yes
+
+# --- double precision: the same externals for a Pd built with
+# PD_FLOATSIZE=64, named *.OS-ARCH-64.so as pd-lib-builder's floatsize=64
+# names them (Debian's pd-lib-builder 0.6 predates that, so the rules are
+# here). They sit beside the single-precision ones; each wrapper converts
+# its signals at the boundary, the core archive is the same float core.
+DOUBLE_EXT = $(shell uname -s | tr A-Z a-z)-$(shell uname -m | \
+    sed 's/x86_64/amd64/; s/aarch64/arm64/')-64.so
+double.externals = $(patsubst src/pd/%.c,%.$(DOUBLE_EXT),$(class.sources))
+double.lib = $(lib.name).$(DOUBLE_EXT)
+DOUBLE_CFLAGS = -DPD -DUNIX -DPD_FLOATSIZE=64 -I/usr/include/pd \
+    $(cflags) $(CFLAGS) -fPIC -shared -rdynamic
+%~.$(DOUBLE_EXT): src/pd/%~.c $(common.sources) src/pd/aero_pd.h $(core.lib)
+	$(CC) $(DOUBLE_CFLAGS) $< $(common.sources) -o $@ $(ldlibs)
+$(double.lib): $(lib.setup.sources) $(class.sources) $(common.sources) \
+    src/pd/aero_pd.h $(core.lib)
+	$(CC) $(DOUBLE_CFLAGS) $(lib.setup.sources) $(class.sources) \
+	    $(common.sources) -o $@ $(ldlibs)
+.PHONY: double
+double: $(double.externals) $(double.lib)
+
+# make install: besides pd-lib-builder's externals and data, the single
+# binary (for [declare -lib aero]) and the double-precision binaries
+.PHONY: install-aero
+install: install-aero
+install-aero: lib double
+	$(INSTALL_DIR) "$(installpath)"
+	$(INSTALL_PROGRAM) $(lib.name).$(extension) $(double.externals) \
+	    $(double.lib) "$(installpath)"
 
 # the wrappers must also compile for multi-instance libpd
 pdinstance:
@@ -110,6 +143,14 @@ check:
 	    { cat $(BUILD).log; exit 1; }
 	@sh tests/run.sh
 
+# the Pd tests under Pd 0.56-5 (built in build/pd056 from ../shared/vendor),
+# single and double precision, at 48 kHz
+check-pd056:
+	@$(MAKE) --no-print-directory deps
+	@$(MAKE) --no-print-directory -s all lib double >$(BUILD).log 2>&1 || \
+	    { cat $(BUILD).log; exit 1; }
+	@sh tests/check-pd056.sh
+
 demo:
 	@$(MAKE) --no-print-directory deps
 	@$(MAKE) --no-print-directory -s all >/dev/null
@@ -126,22 +167,34 @@ textures:
 
 # --- packaging: deken packages (the Pd package manager's format) ----------
 # A deken package is a zip archive of the library folder named
-# NAME[vVERSION](OS-ARCH-FLOATSIZE).dek, plus a (Sources) package; the
-# .dek.txt lists the objects, the .sha256 files the checksums. (Debian's
+# NAME[vVERSION](OS-ARCH-FLOATSIZE).dek: one for single-precision Pd
+# (*.pd_linux), one for double precision (*.linux-amd64-64.so), and the
+# (Sources) package; each .dek.txt lists the objects with the DESCRIPTION of
+# their help patch's META, each .sha256 is the archive's checksum
+# (sha256sum -c). The version is the one of help/aero-meta.pd. (Debian's
 # `deken` tool cannot run offline: it fetches its hy runtime from PyPI, so
 # the archives are made here with zip, in the same format.)
-AERO_VERSION = $(shell sed -n 's/.*VERSION \([0-9.]*\);/\1/p' help/aero-meta.pd)
+AERO_VERSION = $(shell sed -n 's/^\#X text [0-9]* [0-9]* VERSION \([0-9][0-9.]*\).*/\1/p' \
+    help/aero-meta.pd | head -n 1)
 DEKEN_DIR = $(BUILD)/deken
-DEKEN_ARCH = $(shell uname -s)-$(shell uname -m | sed 's/x86_64/amd64/; s/aarch64/arm64/')-32
+DEKEN_ARCH = $(shell uname -s)-$(shell uname -m | sed 's/x86_64/amd64/; s/aarch64/arm64/')
+DEKEN_NAME = aero[v$(AERO_VERSION)]
+DEB_PACKAGES += unzip # the packaging test unpacks the .dek files
+deken.objects = $(class.sources:src/pd/%.c=%) \
+    $(patsubst abstractions/%.pd,%,$(wildcard abstractions/*.pd))
 deken: all
+	@test -n "$(AERO_VERSION)" || { echo "no VERSION in help/aero-meta.pd" >&2; exit 1; }
 	rm -rf $(DEKEN_DIR)
 	$(MAKE) --no-print-directory -s install PDLIBDIR=$(CURDIR)/$(DEKEN_DIR)/stage
-	cd $(DEKEN_DIR)/stage && zip -q -r "../aero[v$(AERO_VERSION)]($(DEKEN_ARCH)).dek" aero
-	git archive --format=zip --prefix=aero/ -o "$(DEKEN_DIR)/aero[v$(AERO_VERSION)](Sources).dek" HEAD
-	for c in $(class.sources:src/pd/%.c=%) $(patsubst abstractions/%.pd,%,$(wildcard abstractions/*.pd)); do \
-	    printf '%s\t%s\n' "$$c" "aero: physically based aerodynamic sound"; \
-	done >"$(DEKEN_DIR)/aero[v$(AERO_VERSION)]($(DEKEN_ARCH)).dek.txt"
-	cd $(DEKEN_DIR) && for f in *.dek; do sha256sum "$$f" >"$$f.sha256"; done
+	cd $(DEKEN_DIR)/stage && \
+	    zip -q -r "../$(DEKEN_NAME)($(DEKEN_ARCH)-32).dek" aero -x '*-64.so' && \
+	    zip -q -r "../$(DEKEN_NAME)($(DEKEN_ARCH)-64).dek" aero -x '*.pd_linux'
+	git archive --format=zip --prefix=aero/ \
+	    -o "$(DEKEN_DIR)/$(DEKEN_NAME)(Sources).dek" HEAD
+	sh tests/deken-objects.sh $(deken.objects) >$(DEKEN_DIR)/objects.txt
+	cd $(DEKEN_DIR) && for f in *.dek; do \
+	    cp objects.txt "$$f.txt" && sha256sum "$$f" >"$$f.sha256"; done
+	rm -rf $(DEKEN_DIR)/stage $(DEKEN_DIR)/objects.txt
 	@ls -1 $(DEKEN_DIR)/*.dek*
 
 # --- the libpd example: aero linked statically into a host program --------
@@ -159,7 +212,7 @@ libpd-example: all
 
 clean: clean-aero
 clean-aero:
-	rm -rf $(BUILD) $(BUILD).log
+	rm -rf $(BUILD) $(BUILD).log $(double.externals) $(double.lib)
 
 # ============================================================================
 # --- robustness (issue 10): sanitizers, fuzzing, long runs, globals --------

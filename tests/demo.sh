@@ -25,8 +25,8 @@ for scene in demo/*.pd; do
     printf 'demo: [%d/%d] %s ... ' "$k" "$total" "$name"
     cp "$scene" "$DIR/"
     rm -f "$DIR/$name.wav"
-    (cd "$DIR" && timeout 600 pd -batch -nogui -noaudio -noprefs -stderr \
-        -nostdpath -r 44100 -path "$ROOT" -path "$ROOT/abstractions" \
+    (cd "$DIR" && timeout 600 "${PD:-pd}" -batch -nogui -noaudio -noprefs \
+        -stderr -nostdpath -r "${PD_RATE:-44100}" -path "$ROOT" -path "$ROOT/abstractions" \
         -path "$ROOT/demo/lib" -open "$name.pd" >"$name.log" 2>&1)
     if [ ! -s "$DIR/$name.wav" ]; then
         echo "did not render, see $DIR/$name.log" >&2

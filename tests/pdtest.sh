@@ -6,7 +6,7 @@
 #   receiver aero-speed drives the first object's left inlet, the objects
 #   are chained outlet 0 -> inlet 0, the receiver aero-obj sends messages to
 #   inlet MSGINLET (default 0) of the last one, whose NCH (1 or 2) outlets
-#   are recorded. PD_RATE (default 44100) must match Pd's -r. INIT is a message-box body sent at load, before DSP
+#   are recorded at PD_RATE. INIT is a message-box body sent at load, before DSP
 #   starts (e.g. "; aero-speed 10; aero-obj diameter 0.02"); each EVENT is
 #   "MS ; receiver message..." sent MS ms after recording starts.
 #   Recording starts after 200 ms of settling and lasts DUR_MS.
@@ -14,10 +14,19 @@
 #   generator from tests/pd that sends to aero-obj). Object
 #   boxes are written as given: escape dollars as \$ (e.g. 'expr~ \$v1*2').
 # The Pd log goes to $OUT/NAME.log. Returns Pd's exit status.
+#
+# PD=/path/to/pd runs another Pd (default: Debian's pd, or puredata);
+# PD_RATE (default 44100) is passed to every run as -r: Pd 0.55 and later
+# default to 48 kHz, 0.54 and earlier to 44.1 kHz, and the recordings'
+# headers must say the rate Pd really ran at.
 
 : "${OUT:=build/tests/out}"
 : "${ROOT:=$(pwd)}"
-PD_FLAGS="-batch -nogui -noaudio -noprefs -stderr -nostdpath"
+: "${PD:=$(command -v pd || command -v puredata)}"
+: "${PD_RATE:=44100}"
+export PD PD_RATE
+PD_BASE_FLAGS="-batch -nogui -noaudio -noprefs -stderr -nostdpath"
+PD_FLAGS="$PD_BASE_FLAGS -r $PD_RATE"
 SETTLE_MS=200
 # The render is recorded with [tabwrite~] into arrays and written by
 # [soundfiler] (synchronous). [writesf~] was tried first: it opens and
@@ -39,7 +48,7 @@ pd_render() {
     _wav="$ROOT/$OUT/$_name.wav"
     rm -f "$_wav"
     [ -n "$_init" ] || _init="; aero-nothing bang"
-    _frames=$((_dur * ${PD_RATE:-44100} / 1000))
+    _frames=$((_dur * PD_RATE / 1000))
     _arrays="aero-out0"
     [ "$_nch" -ge 2 ] && _arrays="aero-out0 aero-out1"
     {
@@ -58,7 +67,7 @@ pd_render() {
         echo "#X obj 10 300 tabwrite~ aero-out0;"                  # 11
         echo "#X obj 100 300 tabwrite~ aero-out1;"                 # 12
         echo "#X obj 200 400 delay $((SETTLE_MS + _dur + 10));"    # 13
-        echo "#X msg 200 420 write -bytes 4 -rate ${PD_RATE:-44100} $_wav $_arrays;"
+        echo "#X msg 200 420 write -bytes 4 -rate $PD_RATE $_wav $_arrays;"
         echo "#X obj 200 440 soundfiler;"                          # 15
         echo "#X msg 200 460 \\; pd quit;"                         # 16
         echo "#X obj 10 420 s aero-recording;"                     # 17
@@ -113,7 +122,7 @@ pd_render() {
         done
     } >"$_patch"
     # shellcheck disable=SC2086
-    timeout 300 pd $PD_FLAGS -path "$ROOT" \
+    timeout 300 "$PD" $PD_FLAGS -path "$ROOT" \
         -open "$_patch" >"$OUT/$_name.log" 2>&1
 }
 
@@ -121,15 +130,17 @@ pd_render() {
 # logical time with DSP on, then quit; the log goes to LOG.
 pd_open_log() {
     # shellcheck disable=SC2086
-    timeout 120 pd $PD_FLAGS -path "$ROOT" -path "$ROOT/abstractions" \
+    timeout 120 "$PD" $PD_FLAGS -path "$ROOT" -path "$ROOT/abstractions" \
         -open "$1" -open "$ROOT/tests/pd/run-1s-and-quit.pd" >"$2" 2>&1
 }
 
 # pd_render_sr RATE NAME ...: pd_render at another sample rate
 pd_render_sr() {
-    _saved_flags=$PD_FLAGS
-    PD_FLAGS="$PD_FLAGS -r $1" PD_RATE=$1
+    _saved_rate=$PD_RATE
+    PD_FLAGS="$PD_BASE_FLAGS -r $1" PD_RATE=$1
     shift
     pd_render "$@"
-    PD_FLAGS=$_saved_flags PD_RATE=44100
+    _status=$?
+    PD_FLAGS="$PD_BASE_FLAGS -r $_saved_rate" PD_RATE=$_saved_rate
+    return $_status
 }

@@ -2,9 +2,16 @@
 # aero: everything `make check` runs (and so CI): unit tests of src/core,
 # Pd batch-mode renders judged by build/aero-analyze, every help patch and
 # abstraction opened in Pd. Ends with one line `N passed, N failed`.
-# Run from the repository root after `make all lib`.
+# Run from the repository root after `make all lib` (and `make double`
+# for a double-precision Pd).
+#   PD=/path/to/pd      the Pd to test with (default: Debian's pd)
+#   PD_RATE=48000       its sample rate (default 44100), passed as -r
+#   PD_FLOATSIZE=64     that Pd is a double-precision build
+#   PD_ONLY=1           only the tests that run Pd: the unit tests, fuzz
+#                       replays and compile checks do not depend on which
+#                       Pd runs them (make check-pd056 runs them once)
 ROOT=$(pwd)
-OUT=build/tests/out
+OUT=${TEST_OUT:-build/tests/out} # relative to ROOT
 ANALYZE=build/aero-analyze
 export ROOT OUT
 . tests/pdtest.sh
@@ -58,6 +65,7 @@ reports_at_least() { # LOG OBJECT N: each bad flag/message named the object
 section "unit tests (src/core)"
 for t in build/tests/test_*; do
     [ -x "$t" ] || continue
+    [ -n "${PD_ONLY:-}" ] && break
     only "$t" || continue
     echo "-- $t"
     "$t" >"$OUT/$(basename "$t").txt" 2>&1
@@ -76,16 +84,26 @@ for t in build/tests/test_*; do
     [ "$status" -ne 0 ] && [ "$f" -eq 0 ] && fail "$t exited $status"
 done
 
+# the fixture the [body~] tests play, written by test_body_texture (which
+# PD_ONLY=1 does not run as a test)
+if [ -n "${PD_ONLY:-}" ] && [ ! -f build/tests/sine-sphere.wav ]; then
+    build/tests/test_body_texture >"$OUT/test_body_texture.txt" 2>&1
+fi
+
 # --- build variants ----------------------------------------------------------
 section "build variants"
-if make -s pdinstance >"$OUT/pdinstance.log" 2>&1; then
+if [ -n "${PD_ONLY:-}" ]; then
+    :
+elif make -s pdinstance >"$OUT/pdinstance.log" 2>&1; then
     pass "wrappers compile warning-free with -DPDINSTANCE -DPDTHREADS"
 else
     fail "wrappers with -DPDINSTANCE -DPDTHREADS"; cat "$OUT/pdinstance.log"
 fi
-# the single binary, loaded with -lib, creates every class
+# the single binary, loaded with -lib, creates every class (Pd picks the
+# one of its float size)
 mkdir -p "$OUT/single"
 cp aero.pd_linux "$OUT/single/"
+[ -f aero.linux-amd64-64.so ] && cp aero.linux-amd64-64.so "$OUT/single/"
 classes=$(for c in src/pd/*~.c; do basename "$c" .c; done)
 {
     echo '#N canvas 0 50 450 300 12;'
@@ -93,7 +111,7 @@ classes=$(for c in src/pd/*~.c; do basename "$c" .c; done)
     for c in $classes; do echo "#X obj 10 $y $c;"; y=$((y + 30)); done
 } >"$OUT/single/uses-lib.pd"
 # shellcheck disable=SC2086
-(cd "$OUT/single" && timeout 60 pd $PD_FLAGS -path . -lib aero \
+(cd "$OUT/single" && timeout 60 "$PD" $PD_FLAGS -path . -lib aero \
     -open uses-lib.pd -send "pd quit" >lib.log 2>&1)
 if grep -q "aero: aerodynamic sound library loaded" "$OUT/single/lib.log"; then
     log_clean "$OUT/single/lib.log" "single binary: -lib aero loads and creates $(echo $classes)"
@@ -118,6 +136,9 @@ tone_hz() {
 nan_expr='expr~ \$v1*1e30*1e30 - \$v1*1e30*1e30'
 for object_tests in tests/objects/*.sh; do
     only "$object_tests" || continue
+    case "$object_tests" in # no Pd in these
+        *fuzz-replay.sh | *globals.sh) [ -n "${PD_ONLY:-}" ] && continue ;;
+    esac
     . "$object_tests"
 done
 

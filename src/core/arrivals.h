@@ -31,6 +31,34 @@ static inline void aero_arrivals_add(float *r, long mask, double at, float v)
     r[(ia + 1) & mask] += v * fa;
 }
 
+/* adds v spread evenly over the span [at, at + step) that the sample
+   occupies in arrival time (step: this sample's arrival minus the last
+   one's, 1 for a source at rest), scaled by 1/step. The spans of a moving
+   source tile the ring, so every sample gets the same total weight 1/step
+   (the Doppler compression) whatever the fractions; splitting each sample
+   linearly at its point (aero_arrivals_add) gave every 1/|1 - step|-th
+   sample one contribution too many or too few: a comb of one-sample
+   spikes of |1 - step| times the signal. For step 1 both are the same;
+   steps outside 0.25..4 (a jump, not a motion) fall back to the point. */
+static inline void aero_arrivals_add_span(float *r, long mask, double at,
+                                          double step, float v)
+{
+    if (!(step > 0.25 && step < 4.0)) {
+        aero_arrivals_add(r, mask, at, v);
+        return;
+    }
+    const double end = at + step;
+    const float density = (float)(v / step);
+    long k = (long)at;
+    double lo = at;
+    while (lo < end) {
+        double hi = (double)(k + 1) < end ? (double)(k + 1) : end;
+        r[k & mask] += density * (float)(hi - lo);
+        lo = hi;
+        k++;
+    }
+}
+
 /* moves m arrived samples of every ear to out[e] + offset (NaN/Inf/huge
    as 0), clears them for reuse and advances the head */
 void aero_arrivals_take(aero_arrivals *a, float *const *out, int offset,

@@ -321,8 +321,12 @@ static void advance_pose(aero_body_texture *s, int m)
     double frac, n = 0.0;
     s->pose_elapsed += m;
     frac = s->pose_duration > 0.0 ? s->pose_elapsed / s->pose_duration : 1.0;
-    if (frac > 1.0)
-        frac = 1.0;
+    /* past the target the motion goes on (a pose due now may come a block
+       late): stopping and starting again each time stepped the Doppler
+       shift and gain; held after 1.5 intervals, when the stream counts as
+       stopped */
+    if (frac > 1.5)
+        frac = 1.5;
     for (int i = 0; i < 7; i++)
         s->pose[i] = s->pose_from[i] + frac * (s->pose_to[i] - s->pose_from[i]);
     for (int i = 3; i < 7; i++)
@@ -512,7 +516,7 @@ static void render(aero_body_texture *s, int l, const aero_body_geometry *g,
                 v += cf[q] * tex[q][j];
                 cf[q] += dcf[q];
             }
-            aero_arrivals_add(ring, mask, at, v);
+            aero_arrivals_add_span(ring, mask, at, 1.0 + ddelay, v);
             at += 1.0 + ddelay;
         }
     }

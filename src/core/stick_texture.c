@@ -511,8 +511,12 @@ static void advance_frame(aero_stick_texture *s, int m, double speed,
     s->pose_elapsed += m;
     double frac = s->pose_duration > 0.0 ? s->pose_elapsed / s->pose_duration
                                          : 1.0;
-    if (frac > 1.0)
-        frac = 1.0;
+    /* past the target the motion goes on (a pose due now may come a block
+       late): stopping and starting again each time stepped the Doppler
+       shift and gain; held after 1.5 intervals, when the stream counts as
+       stopped */
+    if (frac > 1.5)
+        frac = 1.5;
     for (int i = 0; i < 6; i++)
         s->pose[i] = s->pose_from[i] + frac * (s->pose_to[i] - s->pose_from[i]);
     /* the stream's velocity, smoothed; zero once the stream has stopped
@@ -650,7 +654,7 @@ static void render_source(aero_stick_texture *s, aero_stick_source *src,
         for (int j = 0; j < m; j++) {
             float v = cf[0] * tex[0][j] + cf[1] * tex[1][j] +
                       cf[2] * tex[2][j] + cf[3] * tex[3][j];
-            aero_arrivals_add(ring, mask, at, v);
+            aero_arrivals_add_span(ring, mask, at, 1.0 + ddelay, v);
             cf[0] += dcf[0];
             cf[1] += dcf[1];
             cf[2] += dcf[2];

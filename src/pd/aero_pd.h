@@ -248,4 +248,5 @@ static inline int aero_pd_find_tree(const t_canvas *canvas,
     return aero_pd_find_file(canvas, cls, name, ".tree", "trees", path, len);
 }
 
+
 #endif

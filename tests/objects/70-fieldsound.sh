@@ -54,7 +54,7 @@ judge $ANALYZE leveldiff "$OUT/fs-r4.wav" "$OUT/fs-slow.wav" --max -6
     echo "#X obj 10 100 t b b;"                                     # 3
     echo "#X msg 100 130 play;"                                     # 4
     echo "#X obj 10 160 tabwrite~ fs-rec;"                          # 5
-    echo "#X obj 200 10 array define fs-rec 88200;"                 # 6
+    echo "#X obj 200 10 array define fs-rec $((2 * PD_RATE));"      # 6
     echo "#X obj 200 70 print ready;"                               # 7
     echo "#X obj 200 100 delay 5000;"                               # 8
     echo "#X msg 200 130 write -bytes 4 $ROOT/$OUT/fs-thread.wav fs-rec;"
@@ -67,7 +67,7 @@ judge $ANALYZE leveldiff "$OUT/fs-r4.wav" "$OUT/fs-slow.wav" --max -6
     done
 } >"$OUT/fs-thread.pd"
 rm -f "$OUT/fs-thread.wav"
-timeout 60 pd -nogui -nosound -noprefs -stderr -nostdpath -path "$ROOT" \
+timeout 60 "$PD" -nogui -nosound -noprefs -stderr -nostdpath -r "$PD_RATE" -path "$ROOT" \
     -open "$OUT/fs-thread.pd" >"$OUT/fs-thread.log" 2>&1
 if grep -q "preprocessed in" "$OUT/fs-thread.log" &&
     grep -q "^ready:" "$OUT/fs-thread.log" &&

@@ -341,7 +341,7 @@ while IFS='|' read -r h_cls h_args h_nout h_file h_new h_msgs; do
         hostile_patch "$HOSTILE/$h_name.pd" "$h_cls" "$h_args" "$h_nout" \
             "$h_file" "$h_new" "$h_msgs"
         # shellcheck disable=SC2086
-        (cd "$HOSTILE" && timeout "${HOSTILE_TIMEOUT:-300}" pd $PD_FLAGS -nrt -r "$h_rate" -path "$ROOT" \
+        (cd "$HOSTILE" && timeout "${HOSTILE_TIMEOUT:-300}" "$PD" $PD_BASE_FLAGS -nrt -r "$h_rate" -path "$ROOT" \
             -open "$h_name.pd" </dev/null >"$h_name.log" 2>&1)
         h_status=$?
         [ "$h_status" -ne 0 ] && { fail "[$h_cls $h_args] at $h_rate Hz: Pd exited $h_status"; tail -5 "$HOSTILE/$h_name.log"; }

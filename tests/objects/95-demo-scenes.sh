@@ -37,7 +37,7 @@ scene_render() {
 #X connect 3 0 0 0;
 EOP
     # shellcheck disable=SC2086
-    (cd "$OUT/scenes" && timeout 300 pd $PD_FLAGS -r 44100 -path "$ROOT" \
+    (cd "$OUT/scenes" && timeout 300 "$PD" $PD_FLAGS -path "$ROOT" \
         -path "$ROOT/abstractions" -path "$ROOT/demo/lib" -open "$1.pd" \
         >"$1.log" 2>&1)
 }

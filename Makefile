@@ -7,6 +7,7 @@
 #                   precision, 48 kHz), built from ../shared/vendor
 #   make double     the externals for double-precision Pd (*.linux-amd64-64.so)
 #   make deken      deken packages (single, double, sources) in build/deken/
+#   make check-gui  the help patches drawn by the Pd GUI (part of check)
 #   make demo       renders the demo scenes under build/demo/
 #   make bench      benchmarks (not part of check), see BENCHMARKS.md
 #   make deps       installs the Debian packages the project needs
@@ -83,7 +84,7 @@ $(BUILD)/tests/%: tests/unit/%.c tests/unit/unit.h $(core.lib)
 	@mkdir -p $(dir $@)
 	$(CORE_CC) $(CORE_CFLAGS) $< -o $@ $(TOOL_LIBS)
 
-.PHONY: tools lib pdinstance deps check check-only check-pd056 demo bench textures deken libpd-example
+.PHONY: tools lib pdinstance deps check check-only check-pd056 check-gui demo bench textures deken libpd-example
 
 all: tools
 tools: $(BUILD)/aerotex $(BUILD)/aero-analyze $(unit.binaries)
@@ -133,6 +134,9 @@ pdinstance:
 # --- dependencies: Debian packages ------------------------------------------
 DEB_PACKAGES = puredata-core puredata-dev pd-lib-builder libfftw3-dev \
     libsndfile1-dev libpng-dev sox gcc make valgrind zip git
+# the GUI check of the help patches (tests/gui): Pd's GUI under Xvfb,
+# screenshots by ImageMagick's import, the font Pd draws its boxes with
+DEB_PACKAGES += puredata-gui xvfb xauth imagemagick fonts-dejavu-core
 deps:
 	@sh tests/deps.sh $(DEB_PACKAGES)
 
@@ -150,6 +154,13 @@ check-pd056:
 	@$(MAKE) --no-print-directory -s all lib double >$(BUILD).log 2>&1 || \
 	    { cat $(BUILD).log; exit 1; }
 	@sh tests/check-pd056.sh
+# only the GUI check of the help patches (part of check): screenshots in
+# build/gui/; check-gui HELP="help/x-help.pd ..." checks some of them
+check-gui:
+	@$(MAKE) --no-print-directory deps
+	@$(MAKE) --no-print-directory -s all >$(BUILD).log 2>&1 || \
+	    { cat $(BUILD).log; exit 1; }
+	@sh tests/gui/check-help.sh $(HELP)
 
 demo:
 	@$(MAKE) --no-print-directory deps

@@ -3,6 +3,7 @@
 #   make            externals (one per object), the core library, aerotex
 #   make lib        the single-binary library aero.pd_linux (aero_setup())
 #   make check      every test CI runs (installs missing dependencies first)
+#   make check-gui  the help patches drawn by the Pd GUI (part of check)
 #   make demo       renders the demo scenes under build/demo/
 #   make bench      benchmarks (not part of check), see BENCHMARKS.md
 #   make deps       installs the Debian packages the project needs
@@ -77,7 +78,7 @@ $(BUILD)/tests/%: tests/unit/%.c tests/unit/unit.h $(core.lib)
 	@mkdir -p $(dir $@)
 	$(CORE_CC) $(CORE_CFLAGS) $< -o $@ $(TOOL_LIBS)
 
-.PHONY: tools lib pdinstance deps check check-only demo bench textures deken libpd-example
+.PHONY: tools lib pdinstance deps check check-only check-gui demo bench textures deken libpd-example
 
 all: tools
 tools: $(BUILD)/aerotex $(BUILD)/aero-analyze $(unit.binaries)
@@ -98,6 +99,9 @@ pdinstance:
 # --- dependencies: Debian packages ------------------------------------------
 DEB_PACKAGES = puredata-core puredata-dev pd-lib-builder libfftw3-dev \
     libsndfile1-dev libpng-dev sox gcc make valgrind zip git
+# the GUI check of the help patches (tests/gui): Pd's GUI under Xvfb,
+# screenshots by ImageMagick's import, the font Pd draws its boxes with
+DEB_PACKAGES += puredata-gui xvfb xauth imagemagick fonts-dejavu-core
 deps:
 	@sh tests/deps.sh $(DEB_PACKAGES)
 
@@ -107,6 +111,14 @@ check:
 	@$(MAKE) --no-print-directory -s all lib >$(BUILD).log 2>&1 || \
 	    { cat $(BUILD).log; exit 1; }
 	@sh tests/run.sh
+
+# only the GUI check of the help patches (part of check): screenshots in
+# build/gui/; check-gui HELP="help/x-help.pd ..." checks some of them
+check-gui:
+	@$(MAKE) --no-print-directory deps
+	@$(MAKE) --no-print-directory -s all >$(BUILD).log 2>&1 || \
+	    { cat $(BUILD).log; exit 1; }
+	@sh tests/gui/check-help.sh $(HELP)
 
 demo:
 	@$(MAKE) --no-print-directory deps

@@ -1,0 +1,46 @@
+#!/bin/sh
+# aero: open help patches in the real Pd GUI under Xvfb and check how they
+# are drawn (tests/gui/aero_guicheck-plugin.tcl measures each window and
+# each subpatch window it opens). One line per window:
+#   ok   NAME[/SUB] (N boxes, N cords) build/gui/NAME[.SUB].png
+#   FAIL NAME[/SUB] overlap: A / B; cord A -> B crosses C; ...
+# Exits 1 if any window fails, 2 if the GUI cannot run at all.
+#   sh tests/gui/check-help.sh [PATCH...]   (default: every help/*-help.pd)
+# PD=/path/to/pd picks the Pd binary (default: pd on the PATH); GUI_OUT the
+# folder for results and screenshots (default: build/gui).
+ROOT=$(pwd)
+PD=${PD:-pd}
+GUI_OUT=${GUI_OUT:-build/gui}
+# a common laptop screen: a help window must fit it
+GUI_SCREEN=${GUI_SCREEN:-1920x1080x24}
+
+for tool in xvfb-run import "$PD"; do
+    if ! command -v "$tool" >/dev/null 2>&1; then
+        echo "FAIL GUI check: $tool not found (make deps installs puredata-gui, xvfb, imagemagick)"
+        exit 2
+    fi
+done
+[ $# -gt 0 ] || set -- help/*-help.pd
+mkdir -p "$GUI_OUT"
+out_abs=$(cd "$GUI_OUT" && pwd)
+
+failed=0
+for patch in "$@"; do
+    name=$(basename "$patch" .pd)
+    case "$patch" in /*) path=$patch ;; *) path=$ROOT/$patch ;; esac
+    rm -f "$out_abs/$name.result" "$out_abs/$name".*png "$out_abs/$name.png"
+    # -noprefs: no user's settings; the plugin quits Pd once it is done
+    AERO_GUICHECK_OUT=$out_abs AERO_GUICHECK_NAME=$name \
+        timeout 120 xvfb-run -a -s "-screen 0 $GUI_SCREEN" \
+        "$PD" -noaudio -nomidi -noprefs -stderr \
+        -path "$ROOT/tests/gui" -path "$ROOT" -path "$ROOT/abstractions" \
+        -open "$path" >"$out_abs/$name.log" 2>&1
+    if [ -s "$out_abs/$name.result" ]; then
+        sed "s|$ROOT/||" "$out_abs/$name.result"
+        grep -q '^FAIL' "$out_abs/$name.result" && failed=$((failed + 1))
+    else
+        echo "FAIL $name: no result (Pd log: $GUI_OUT/$name.log)"
+        failed=$((failed + 1))
+    fi
+done
+[ "$failed" -eq 0 ]

@@ -4,7 +4,9 @@
 # each subpatch window it opens). One line per window:
 #   ok   NAME[/SUB] (N boxes, N cords) build/gui/NAME[.SUB].png
 #   FAIL NAME[/SUB] overlap: A / B; cord A -> B crosses C; ...
-# Exits 1 if any window fails, 2 if the GUI cannot run at all.
+# and for each help patch a line on its parts ([pd reference], see also,
+# "updated for aero VERSION", a [pd META] with DESCRIPTION, AUTHOR, LICENSE
+# and VERSION). Exits 1 if any window fails, 2 if the GUI cannot run at all.
 #   sh tests/gui/check-help.sh [PATCH...]   (default: every help/*-help.pd)
 # PD=/path/to/pd picks the Pd binary (default: pd on the PATH); GUI_OUT the
 # folder for results and screenshots (default: build/gui).
@@ -24,6 +26,24 @@ done
 mkdir -p "$GUI_OUT"
 out_abs=$(cd "$GUI_OUT" && pwd)
 
+# what every help patch holds besides its layout: the reference, see also,
+# the version it was updated for, and a META subpatch as deken reads it
+VERSION=$(sed -n 's/.*VERSION \([0-9.]*\);/\1/p' help/aero-meta.pd)
+help_parts() { # PATCH: prints what is missing, nothing when complete
+    while IFS='|' read -r part pattern; do
+        grep -q -e "$pattern" "$1" || printf ' | no %s' "$part"
+    done <<EOF_PARTS
+[pd reference]|^#X restore [0-9]* [0-9]* pd reference;
+[pd META]|^#X restore [0-9]* [0-9]* pd META;
+see also|see also
+updated for aero $VERSION|updated for aero $VERSION
+META DESCRIPTION (one line of plain text)|^#X text [0-9]* [0-9]* DESCRIPTION [^,;]*;\$
+META AUTHOR|^#X text [0-9]* [0-9]* AUTHOR .*;\$
+META LICENSE|^#X text [0-9]* [0-9]* LICENSE .*;\$
+META VERSION $VERSION|^#X text [0-9]* [0-9]* VERSION $VERSION;\$
+EOF_PARTS
+}
+
 failed=0
 for patch in "$@"; do
     name=$(basename "$patch" .pd)
@@ -42,5 +62,15 @@ for patch in "$@"; do
         echo "FAIL $name: no result (Pd log: $GUI_OUT/$name.log)"
         failed=$((failed + 1))
     fi
+    case "$name" in
+        *-help)
+            missing=$(help_parts "$path")
+            if [ -z "$missing" ]; then
+                echo "ok   $name parts: [pd reference], see also, updated for aero $VERSION, [pd META]"
+            else
+                echo "FAIL $name parts:${missing# |}"
+                failed=$((failed + 1))
+            fi ;;
+    esac
 done
 [ "$failed" -eq 0 ]

@@ -27,6 +27,17 @@ else
     echo "$control" | sed 's/^/        /'
 fi
 
+# a help patch without its parts (reference, META, version) must fail too
+control=$(GUI_OUT=$OUT/gui sh tests/gui/check-help.sh tests/gui/bare-help.pd 2>&1)
+status=$?
+if [ "$status" -eq 1 ] && echo "$control" | grep -q '^ok   bare-help (' &&
+    echo "$control" | grep -q '^FAIL bare-help parts: no \[pd reference\] | no \[pd META\] | no see also | no updated for aero'; then
+    pass "negative control: the GUI check flags a help patch without [pd reference], [pd META], see also and version (tests/gui/bare-help.pd)"
+else
+    fail "negative control: tests/gui/bare-help.pd (exit $status)"
+    echo "$control" | sed 's/^/        /'
+fi
+
 # every window of every help patch: one pass or fail each
 sh tests/gui/check-help.sh >"$OUT/gui-help.txt" 2>&1
 while IFS= read -r line; do

@@ -6,7 +6,7 @@
 #   FAIL NAME[/SUB] overlap: A / B; cord A -> B crosses C; ...
 # and for each help patch a line on its parts ([pd reference], see also,
 # "updated for aero VERSION", a [pd META] with DESCRIPTION, AUTHOR, LICENSE
-# and VERSION). Exits 1 if any window fails, 2 if the GUI cannot run at all.
+# and VERSION, comments at most 80 characters wide). Exits 1 if any window fails, 2 if the GUI cannot run at all.
 #   sh tests/gui/check-help.sh [PATCH...]   (default: every help/*-help.pd)
 # PD=/path/to/pd picks the Pd binary (default: pd on the PATH); GUI_OUT the
 # folder for results and screenshots (default: build/gui).
@@ -42,6 +42,10 @@ META AUTHOR|^#X text [0-9]* [0-9]* AUTHOR .*;\$
 META LICENSE|^#X text [0-9]* [0-9]* LICENSE .*;\$
 META VERSION $VERSION|^#X text [0-9]* [0-9]* VERSION $VERSION;\$
 EOF_PARTS
+    # comments wrapped to a readable width (Pd wraps at 60 without one)
+    wide=$(awk '/^#X text / && match($0, /, f [0-9]+;$/) {
+        if (substr($0, RSTART + 4, RLENGTH - 5) + 0 > 80) n++ } END { print n + 0 }' "$1")
+    [ "$wide" -eq 0 ] || printf ' | %d comments wider than 80 characters' "$wide"
 }
 
 failed=0
@@ -66,7 +70,7 @@ for patch in "$@"; do
         *-help)
             missing=$(help_parts "$path")
             if [ -z "$missing" ]; then
-                echo "ok   $name parts: [pd reference], see also, updated for aero $VERSION, [pd META]"
+                echo "ok   $name parts: [pd reference], see also, updated for aero $VERSION, [pd META], comments <= 80 characters wide"
             else
                 echo "FAIL $name parts:${missing# |}"
                 failed=$((failed + 1))

@@ -31,8 +31,8 @@ fi
 control=$(GUI_OUT=$OUT/gui sh tests/gui/check-help.sh tests/gui/bare-help.pd 2>&1)
 status=$?
 if [ "$status" -eq 1 ] && echo "$control" | grep -q '^ok   bare-help (' &&
-    echo "$control" | grep -q '^FAIL bare-help parts: no \[pd reference\] | no \[pd META\] | no see also | no updated for aero'; then
-    pass "negative control: the GUI check flags a help patch without [pd reference], [pd META], see also and version (tests/gui/bare-help.pd)"
+    echo "$control" | grep -q '^FAIL bare-help parts: no \[pd reference\] | no \[pd META\] | no see also | no updated for aero.* | 1 comments wider than 80'; then
+    pass "negative control: the GUI check flags a help patch without [pd reference], [pd META], see also and version, with a comment 90 characters wide (tests/gui/bare-help.pd)"
 else
     fail "negative control: tests/gui/bare-help.pd (exit $status)"
     echo "$control" | sed 's/^/        /'

@@ -25,7 +25,7 @@ datadirs += $(if $(wildcard trees/*.tree),trees)
 # No -ffast-math: the core relies on NaN checks (x != x) to sanitise input.
 CFLAGS = -Wall -Wextra -Wshadow -O3 -funroll-loops -fomit-frame-pointer
 cflags = -std=c99 -D_POSIX_C_SOURCE=200809L -Isrc/core
-ldlibs = build/libaero_core.a -lsndfile -lfftw3f -lm
+ldlibs = build/libaero_core.a -lsndfile -lfftw3f_threads -lfftw3f -lm
 
 PDLIBBUILDER_DIR ?= $(if $(wildcard pd-lib-builder/Makefile.pdlibbuilder),\
     pd-lib-builder,/usr/share/pd-lib-builder)
@@ -45,7 +45,7 @@ CORE_CFLAGS = -std=c99 -D_POSIX_C_SOURCE=200809L -O3 -fPIC -fopenmp \
 core.sources = $(sort $(wildcard src/core/*.c))
 core.objects = $(patsubst src/core/%.c,$(BUILD)/core/%.o,$(core.sources))
 core.lib = $(BUILD)/libaero_core.a
-TOOL_LIBS = $(core.lib) -lsndfile -lfftw3 -lfftw3f -lpng -lm -fopenmp
+TOOL_LIBS = $(core.lib) -lsndfile -lfftw3 -lfftw3f_threads -lfftw3f -lpng -lm -fopenmp
 
 $(BUILD)/core/%.o: src/core/%.c $(wildcard src/core/*.h)
 	@mkdir -p $(dir $@)
@@ -151,7 +151,7 @@ libpd-example: all
 	$(CC) -std=c99 -O2 -DPDINSTANCE -DHAVE_LIBPD -I$(LIBPD_DIR)/libpd_wrapper \
 	    -I$(LIBPD_DIR)/pure-data/src -Isrc/core examples/libpd-host.c \
 	    $(class.sources) $(lib.setup.sources) -L$(LIBPD_DIR)/libs -lpd \
-	    $(core.lib) -lsndfile -lfftw3f -lm -lpthread -o $(BUILD)/libpd-host
+	    $(core.lib) -lsndfile -lfftw3f_threads -lfftw3f -lm -lpthread -o $(BUILD)/libpd-host
 	@echo "run: $(BUILD)/libpd-host examples"
 
 clean: clean-aero
@@ -193,10 +193,10 @@ $(asan.lib): $(asan.core.objects)
 	rm -f $@; ar rcs $@ $^
 $(ASAN_ROOT)/%~.pd_linux: src/pd/%~.c src/pd/aero_pd.h $(asan.lib)
 	@mkdir -p $(dir $@)
-	$(ASAN_CC) $(ASAN_PD_CFLAGS) $< -o $@ $(asan.lib) -lsndfile -lfftw3f -lm
+	$(ASAN_CC) $(ASAN_PD_CFLAGS) $< -o $@ $(asan.lib) -lsndfile -lfftw3f_threads -lfftw3f -lm
 $(ASAN_ROOT)/aero.pd_linux: $(lib.setup.sources) $(class.sources) $(asan.lib)
 	$(ASAN_CC) $(ASAN_PD_CFLAGS) $(lib.setup.sources) $(class.sources) -o $@ \
-	    $(asan.lib) -lsndfile -lfftw3f -lm
+	    $(asan.lib) -lsndfile -lfftw3f_threads -lfftw3f -lm
 $(ASAN_ROOT)/build/aerotex: $(aerotex.sources) $(asan.lib)
 	@mkdir -p $(dir $@)
 	$(ASAN_CC) $(ASAN_CFLAGS) $(aerotex.sources) -o $@ \

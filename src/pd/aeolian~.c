@@ -166,9 +166,8 @@ static void aeolian_tilde_texture(t_aeolian_tilde *x, t_symbol *name)
         return;
     if (aero_pd_find_texture(x->x_canvas, aeolian_tilde_class, name->s_name,
                              path, sizeof(path))) {
-        pd_error(x, OBJ ": can't find texture '%s' (next to the patch, on "
-                 "the search path or in aero's textures/): using the "
-                 "Strouhal/Reynolds model", name->s_name);
+        pd_error(x, OBJ ": can't find texture '%s' (looked %s): using the "
+                 "Strouhal/Reynolds model", name->s_name, path);
         aero_stick_texture_set_texture(st, NULL, err, sizeof(err));
         return;
     }

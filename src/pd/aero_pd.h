@@ -98,10 +98,45 @@ static inline void aero_pd_parse_flags(void *x, const char *obj,
     }
 }
 
-/* Finds a data file as DESIGN.md says: next to the patch and on Pd's
- * search path (canvas_open), then in the library's own `folder` (textures,
- * trees). `ext` (".wav") is appended unless the name has it. Writes the
- * full path; 0 when found. */
+/* The data folder a host set with aero_set_data_path() (src/pd/aero.h,
+ * defined in aero.c), or NULL. A weak reference: the one-class externals
+ * are built without aero.c, and no host calls them, so there it is NULL. */
+#if defined(__ELF__) || defined(__APPLE__)
+const char *aero_data_path(void) __attribute__((weak));
+static inline const char *aero_pd_host_data_path(void)
+{
+    return aero_data_path ? aero_data_path() : NULL;
+}
+#else
+static inline const char *aero_pd_host_data_path(void) { return NULL; }
+#endif
+
+/* 0 when DIR/FOLDER/NAME+EXT is a readable file (its path in `path`) */
+static inline int aero_pd_try_data_dir(const char *dir, const char *folder,
+                                       const char *name, const char *ext,
+                                       char *path, size_t len)
+{
+    if (!dir || !*dir ||
+        snprintf(path, len, "%s/%s/%s%s", dir, folder, name, ext) >= (int)len)
+        return -1;
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return -1;
+    fclose(f);
+    return 0;
+}
+
+/* Finds a data file (a texture in textures/, a tree in trees/), in this
+ * order (README, "Embedding"):
+ *   1. next to the patch, its [declare -path] folders and Pd's search path
+ *      (canvas_open; a libpd host adds folders with libpd_add_to_search_path)
+ *   2. DIR/`folder` for DIR in the AERO_DATA environment variable
+ *   3. DIR/`folder` for the DIR a host set with aero_set_data_path()
+ *   4. `folder` in the folder aero was loaded from (class_gethelpdir: the
+ *      installed library; empty for classes a host registers itself).
+ * `ext` (".wav") is appended unless the name has it. Writes the full path
+ * and returns 0 when found; else -1 with the places it tried written to
+ * `path`, for the caller's error message. */
 static inline int aero_pd_find_file(const t_canvas *canvas,
                                     const t_class *cls, const char *name,
                                     const char *ext, const char *folder,
@@ -116,17 +151,28 @@ static inline int aero_pd_find_file(const t_canvas *canvas,
         sys_close(fd);
         return snprintf(path, len, "%s/%s", dir, base) < (int)len ? 0 : -1;
     }
-    snprintf(path, len, "%s/%s/%s%s", class_gethelpdir(cls), folder, name,
-             ext);
-    FILE *f = fopen(path, "rb");
-    if (f) {
-        fclose(f);
+    const char *env = getenv("AERO_DATA"), *host = aero_pd_host_data_path();
+    const char *helpdir = class_gethelpdir(cls);
+    if (!aero_pd_try_data_dir(env, folder, name, ext, path, len) ||
+        !aero_pd_try_data_dir(host, folder, name, ext, path, len) ||
+        !aero_pd_try_data_dir(helpdir, folder, name, ext, path, len))
         return 0;
-    }
+    /* not found: say where it looked */
+    t_symbol *patchdir = canvas ? canvas_getdir(canvas) : NULL;
+    snprintf(path, len,
+             "next to the patch (%s), in its declared paths and Pd's search "
+             "path; in $AERO_DATA/%s (%s%s); in aero_set_data_path()/%s "
+             "(%s%s); in aero's own %s/ (%s)",
+             patchdir && *patchdir->s_name ? patchdir->s_name : "no folder",
+             folder, env && *env ? "AERO_DATA=" : "", env && *env ? env :
+             "not set", folder, host && *host ? "set to " : "",
+             host && *host ? host : "not set", folder,
+             helpdir && *helpdir ? helpdir : "no install folder: registered "
+             "by a host");
     return -1;
 }
 
-/* a texture (.wav) next to the patch, on the path or in textures/ */
+/* a texture (.wav): next to the patch, on the path, then in textures/ */
 static inline int aero_pd_find_texture(const t_canvas *canvas,
                                        const t_class *cls, const char *name,
                                        char *path, size_t len)

@@ -74,9 +74,8 @@ static void body_tilde_texture(t_body_tilde *x, t_symbol *name)
     aero_texture *t;
     if (aero_pd_find_texture(x->x_canvas, body_tilde_class, name->s_name,
                              path, sizeof(path))) {
-        pd_error(x, OBJ ": can't find texture '%s' (next to the patch, on "
-                 "the search path or in aero's textures/): silent",
-                 name->s_name);
+        pd_error(x, OBJ ": can't find texture '%s' (looked %s): silent",
+                 name->s_name, path);
         aero_body_texture_set_texture(&x->x_body, NULL, err, sizeof(err));
         return;
     }

@@ -111,8 +111,8 @@ static void cavity_tilde_texture(t_cavity_tilde *x, t_symbol *name)
     char path[MAXPDSTRING], err[256];
     if (aero_pd_find_texture(x->x_canvas, cavity_tilde_class, name->s_name,
                              path, sizeof(path))) {
-        pd_error(x, OBJ ": can't find texture '%s': staying in model mode",
-                 name->s_name);
+        pd_error(x, OBJ ": can't find texture '%s' (looked %s): staying in "
+                 "model mode", name->s_name, path);
         aero_cavity_model_set_texture(&x->x_model, NULL, err, sizeof(err));
         return;
     }

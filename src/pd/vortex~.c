@@ -68,8 +68,8 @@ static void vortex_tilde_texture(t_vortex_tilde *x, t_symbol *name)
     aero_texture *t;
     if (aero_pd_find_texture(x->x_canvas, vortex_tilde_class, name->s_name,
                              path, sizeof(path))) {
-        pd_error(x, OBJ ": can't find texture '%s': silent until a texture "
-                 "is loaded", name->s_name);
+        pd_error(x, OBJ ": can't find texture '%s' (looked %s): silent "
+                 "until a texture is loaded", name->s_name, path);
         return;
     }
     t = getbytes(sizeof(*t));

@@ -191,6 +191,26 @@ for variant in single multi; do
     else
         fail "static and shared example hosts differ"
     fi
+    # README's pitfall: against a shared single-instance libpd, wrappers
+    # built without -fPIC get a copy relocation of Pd's s_signal (libpd,
+    # linked -Bsymbolic, keeps its own) and crash in their DSP routine; the
+    # example's shared build (-fPIC) has no such relocation
+    if [ "$variant" = single ]; then
+        nopic=$OUT/render-single-shared-nopic
+        $CC -std=c99 -D_POSIX_C_SOURCE=200809L -O2 -I$V/libpd_wrapper \
+            -I$V/pure-data/src -Isrc/pd -Isrc/core tests/libpd/render.c $HOST_SRC \
+            -L$V/libs -lpd -Wl,-rpath,"$ROOT/$V/libs" build/libaero_core.a \
+            -lsndfile -lfftw3f_threads -lfftw3f -lm -lpthread -ldl -o "$nopic" 2>/dev/null
+        "$nopic" tests/libpd/tone.pd "$OUT/nopic.wav" >/dev/null 2>&1
+        status=$?
+        if readelf -r "$nopic" | grep -q "_COPY.* s_signal" &&
+            [ "$status" -ne 0 ] &&
+            ! readelf -r "$OUT/libpd-host-single-shared" | grep -q "COPY.* s_signal"; then
+            pass "the pitfall: without -fPIC, a copy relocation of s_signal and exit $status; with -fPIC none"
+        else
+            fail "the copy-relocation pitfall of README did not show (exit $status)"
+        fi
+    fi
     # The swing (examples/libpd-host.c): 20 -> 160 degrees in 300 ms,
     # the blade from r = 0.2 to 1 m, edge first; peak angular speed
     # 140 deg pi / (2 0.3 s). The sword texture's tone St v / d (edge

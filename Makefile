@@ -3,6 +3,8 @@
 #   make            externals (one per object), the core library, aerotex
 #   make lib        the single-binary library aero.pd_linux (aero_setup())
 #   make check      every test CI runs (installs missing dependencies first)
+#   make check-libpd  aero inside libpd 0.16.1 (single, multi-instance,
+#                   threads under helgrind); CI runs it after make check
 #   make demo       renders the demo scenes under build/demo/
 #   make bench      benchmarks (not part of check), see BENCHMARKS.md
 #   make deps       installs the Debian packages the project needs

@@ -32,8 +32,11 @@ mkdir -p "$dest"
 tar xzf "$libpd_tgz" -C "$dest" --strip-components=1 &&
     tar xzf "$pd_tgz" -C "$dest/pure-data" --strip-components=1 || exit 1
 echo "libpd: building $variant ($flags) in $dest"
+# a make of its own: not the flags of a calling make (pd-lib-builder turns
+# the built-in rules off, which libpd's Makefile relies on)
 # shellcheck disable=SC2086
-if ! nice -n 10 make -C "$dest" -j2 $flags >"$dest/build.log" 2>&1; then
+if ! env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL \
+    nice -n 10 make -C "$dest" -j2 $flags >"$dest/build.log" 2>&1; then
     tail -30 "$dest/build.log"
     echo "libpd: the $variant build failed (log: $dest/build.log)" >&2
     exit 1

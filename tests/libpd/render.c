@@ -5,9 +5,11 @@
  * the Pd tests do. Built for a single-instance libpd, or a multi-instance
  * one with -DPDINSTANCE -DPDTHREADS (the main instance is used).
  *
- *   aero-libpd-render [-data DIR] [-seconds S] [-settle S] PATCH OUT.wav
+ *   aero-libpd-render [-data DIR] [-path DIR] [-seconds S] [-settle S]
+ *                     PATCH OUT.wav
  *
- * -data DIR calls aero_set_data_path(DIR). Pd's messages go to stderr. */
+ * -data DIR calls aero_set_data_path(DIR), -path DIR
+ * libpd_add_to_search_path(DIR). Pd's messages go to stderr. */
 #include "z_libpd.h"
 #include "aero.h"
 
@@ -25,12 +27,14 @@ static void print_to_stderr(const char *s)
 
 int main(int argc, char **argv)
 {
-    const char *data = NULL;
+    const char *data = NULL, *path = NULL;
     double seconds = 2.0, settle = 0.2;
     int i = 1;
     for (; i + 1 < argc && argv[i][0] == '-'; i += 2) {
         if (!strcmp(argv[i], "-data"))
             data = argv[i + 1];
+        else if (!strcmp(argv[i], "-path"))
+            path = argv[i + 1];
         else if (!strcmp(argv[i], "-seconds"))
             seconds = atof(argv[i + 1]);
         else if (!strcmp(argv[i], "-settle"))
@@ -40,8 +44,8 @@ int main(int argc, char **argv)
     }
     if (argc - i != 2 || !(seconds > 0 && seconds < 600) ||
         !(settle >= 0 && settle < 60)) {
-        fprintf(stderr, "usage: aero-libpd-render [-data DIR] [-seconds S] "
-                        "[-settle S] PATCH OUT.wav\n");
+        fprintf(stderr, "usage: aero-libpd-render [-data DIR] [-path DIR] "
+                        "[-seconds S] [-settle S] PATCH OUT.wav\n");
         return 2;
     }
     char dir[4096];
@@ -55,6 +59,8 @@ int main(int argc, char **argv)
     aero_setup();
     if (data)
         aero_set_data_path(data);
+    if (path)
+        libpd_add_to_search_path(path);
     libpd_init_audio(0, 2, RATE);
     void *file = libpd_openfile(name, dir);
     if (!file) {

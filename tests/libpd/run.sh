@@ -141,6 +141,25 @@ for variant in single multi; do
     else
         fail "texture next to the patch"; head -5 "$OUT/tx-beside-$variant.log"
     fi
+    # on Pd's search path (libpd_add_to_search_path) and in a folder the
+    # patch declares ([declare -path])
+    "$R" -path "$ROOT/$OUT/beside-$variant" -seconds 1 tests/libpd/texture.pd \
+        "$OUT/tx-path-$variant.wav" 2>"$OUT/tx-path-$variant.log"
+    if same_sound "$OUT/tx-$variant.wav" "$OUT/tx-path-$variant.wav"; then
+        pass "texture found on Pd's search path: the same sound"
+    else
+        fail "texture on Pd's search path"; head -5 "$OUT/tx-path-$variant.log"
+    fi
+    mkdir -p "$OUT/declare-$variant"
+    sed "1a\\
+#X declare -path ../beside-$variant;" tests/libpd/texture.pd >"$OUT/declare-$variant/texture.pd"
+    "$R" -seconds 1 "$OUT/declare-$variant/texture.pd" "$OUT/tx-declare-$variant.wav" \
+        2>"$OUT/tx-declare-$variant.log"
+    if same_sound "$OUT/tx-$variant.wav" "$OUT/tx-declare-$variant.wav"; then
+        pass "texture found through [declare -path]: the same sound"
+    else
+        fail "texture through [declare -path]"; head -5 "$OUT/tx-declare-$variant.log"
+    fi
     # nowhere: the error names every place it looked
     env -u AERO_DATA "$R" -seconds 1 tests/libpd/texture.pd "$OUT/tx-none-$variant.wav" \
         2>"$OUT/tx-none-$variant.log"

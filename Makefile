@@ -8,6 +8,8 @@
 #   make double     the externals for double-precision Pd (*.linux-amd64-64.so)
 #   make deken      deken packages (single, double, sources) in build/deken/
 #   make check-gui  the help patches drawn by the Pd GUI (part of check)
+#   make check-libpd  aero inside libpd 0.16.1 (single, multi-instance,
+#                   threads under helgrind); CI runs it after make check
 #   make demo       renders the demo scenes under build/demo/
 #   make bench      benchmarks (not part of check), see BENCHMARKS.md
 #   make deps       installs the Debian packages the project needs
@@ -32,7 +34,7 @@ datadirs += $(if $(wildcard trees/*.tree),trees)
 # No -ffast-math: the core relies on NaN checks (x != x) to sanitise input.
 CFLAGS = -Wall -Wextra -Wshadow -O3 -funroll-loops -fomit-frame-pointer
 cflags = -std=c99 -D_POSIX_C_SOURCE=200809L -Isrc/core
-ldlibs = build/libaero_core.a -lsndfile -lfftw3f -lm
+ldlibs = build/libaero_core.a -lsndfile -lfftw3f_threads -lfftw3f -lm
 
 PDLIBBUILDER_DIR ?= $(if $(wildcard pd-lib-builder/Makefile.pdlibbuilder),\
     pd-lib-builder,/usr/share/pd-lib-builder)
@@ -52,7 +54,7 @@ CORE_CFLAGS = -std=c99 -D_POSIX_C_SOURCE=200809L -O3 -fPIC -fopenmp \
 core.sources = $(sort $(wildcard src/core/*.c))
 core.objects = $(patsubst src/core/%.c,$(BUILD)/core/%.o,$(core.sources))
 core.lib = $(BUILD)/libaero_core.a
-TOOL_LIBS = $(core.lib) -lsndfile -lfftw3 -lfftw3f -lpng -lm -fopenmp
+TOOL_LIBS = $(core.lib) -lsndfile -lfftw3 -lfftw3f_threads -lfftw3f -lpng -lm -fopenmp
 
 $(BUILD)/core/%.o: src/core/%.c $(wildcard src/core/*.h)
 	@mkdir -p $(dir $@)
@@ -208,18 +210,45 @@ deken: all
 	rm -rf $(DEKEN_DIR)/stage $(DEKEN_DIR)/objects.txt
 	@ls -1 $(DEKEN_DIR)/*.dek*
 
-# --- the libpd example: aero linked statically into a host program --------
-# make libpd-example LIBPD_DIR=/path/to/libpd (a libpd checkout built with
-# -DPDINSTANCE); `make check` only compiles the host against Pd's headers.
+# --- libpd: aero linked into a host program -------------------------------
+#   make libpd-example LIBPD_DIR=/path/to/libpd
+# builds examples/libpd-host.c with every class and aero.c (one
+# aero_setup()) against a built libpd: single-instance (`make STATIC=true`)
+# or multi-instance (`make STATIC=true MULTI=true`), detected from the
+# library (pd_this exists only in a multi-instance build; LIBPD_MULTI=yes|no
+# overrides), linked statically with libs/libpd.a when it exists, else with
+# libpd.so and an rpath (LIBPD_LINK=static|shared overrides). Against a
+# shared single-instance libpd the wrappers must be position-independent
+# (-fPIC): README.md, "Embedding with libpd".
+#   make check-libpd  builds libpd 0.16.1 from ../shared/vendor into
+#                     build/libpd/ (both variants, once) and runs
+#                     tests/libpd/run.sh; skipped without the archives
 LIBPD_DIR ?=
-libpd-example: all
-	@test -n "$(LIBPD_DIR)" || { echo "set LIBPD_DIR to a built libpd" >&2; exit 1; }
-	$(CC) -std=c99 -O2 -DPDINSTANCE -DHAVE_LIBPD -I$(LIBPD_DIR)/libpd_wrapper \
-	    -I$(LIBPD_DIR)/pure-data/src -Isrc/core examples/libpd-host.c \
-	    $(class.sources) $(lib.setup.sources) $(common.sources) \
-	    -L$(LIBPD_DIR)/libs -lpd \
-	    $(core.lib) -lsndfile -lfftw3f -lm -lpthread -o $(BUILD)/libpd-host
-	@echo "run: $(BUILD)/libpd-host examples"
+LIBPD_HOST ?= $(BUILD)/libpd-host
+LIBPD_LINK ?= $(if $(wildcard $(LIBPD_DIR)/libs/libpd.a),static,shared)
+LIBPD_LIB = $(LIBPD_DIR)/libs/libpd.$(if $(filter static,$(LIBPD_LINK)),a,so)
+LIBPD_MULTI ?= $(shell nm $(LIBPD_LIB) 2>/dev/null | grep -qw pd_this && echo yes || echo no)
+libpd.cflags = -std=c99 -D_POSIX_C_SOURCE=200809L -O2 -Wall -Wextra \
+    $(if $(filter yes,$(LIBPD_MULTI)),-DPDINSTANCE -DPDTHREADS) \
+    $(if $(filter shared,$(LIBPD_LINK)),-fPIC) -DHAVE_LIBPD \
+    -I$(LIBPD_DIR)/libpd_wrapper -I$(LIBPD_DIR)/pure-data/src -Isrc/pd -Isrc/core
+libpd.libs = $(if $(filter static,$(LIBPD_LINK)),$(LIBPD_LIB),\
+    -L$(LIBPD_DIR)/libs -lpd -Wl,-rpath,$(abspath $(LIBPD_DIR)/libs)) \
+    $(core.lib) -lsndfile -lfftw3f_threads -lfftw3f -lm -lpthread -ldl
+libpd-example: $(core.lib)
+	@test -f "$(LIBPD_LIB)" || { echo "set LIBPD_DIR to a built libpd" \
+	    "(no $(LIBPD_LIB))" >&2; exit 1; }
+	@echo "libpd: $(LIBPD_DIR), $(if $(filter yes,$(LIBPD_MULTI)),multi-instance,single-instance), $(LIBPD_LINK)"
+	$(CC) $(libpd.cflags) examples/libpd-host.c $(class.sources) \
+	    $(lib.setup.sources) $(common.sources) $(libpd.libs) -o $(LIBPD_HOST)
+	@echo "run: $(LIBPD_HOST) examples . $(BUILD)/sword-swing.wav"
+
+.PHONY: check-libpd
+check-libpd:
+	@$(MAKE) --no-print-directory deps
+	@$(MAKE) --no-print-directory -s all >$(BUILD).log 2>&1 || \
+	    { cat $(BUILD).log; exit 1; }
+	@sh tests/libpd/run.sh
 
 clean: clean-aero
 clean-aero:
@@ -260,10 +289,11 @@ $(asan.lib): $(asan.core.objects)
 	rm -f $@; ar rcs $@ $^
 $(ASAN_ROOT)/%~.pd_linux: src/pd/%~.c $(common.sources) src/pd/aero_pd.h $(asan.lib)
 	@mkdir -p $(dir $@)
-	$(ASAN_CC) $(ASAN_PD_CFLAGS) $< $(common.sources) -o $@ $(asan.lib) -lsndfile -lfftw3f -lm
+	$(ASAN_CC) $(ASAN_PD_CFLAGS) $< $(common.sources) -o $@ $(asan.lib) \
+	    -lsndfile -lfftw3f_threads -lfftw3f -lm
 $(ASAN_ROOT)/aero.pd_linux: $(lib.setup.sources) $(class.sources) $(common.sources) $(asan.lib)
 	$(ASAN_CC) $(ASAN_PD_CFLAGS) $(lib.setup.sources) $(class.sources) $(common.sources) -o $@ \
-	    $(asan.lib) -lsndfile -lfftw3f -lm
+	    $(asan.lib) -lsndfile -lfftw3f_threads -lfftw3f -lm
 $(ASAN_ROOT)/build/aerotex: $(aerotex.sources) $(asan.lib)
 	@mkdir -p $(dir $@)
 	$(ASAN_CC) $(ASAN_CFLAGS) $(aerotex.sources) -o $@ \

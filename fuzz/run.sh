@@ -15,7 +15,7 @@ CC=${FUZZ_CC:-clang}
 FLAGS="-g -O1 -std=gnu99 -fsanitize=fuzzer,address,undefined \
  -fno-sanitize-recover=all -fopenmp -Wall -Wextra -Wno-unknown-pragmas \
  -Isrc/core"
-LIBS="-lsndfile -lfftw3f -lfftw3 -lpng -lm"
+LIBS="-lsndfile -lfftw3f_threads -lfftw3f -lfftw3 -lpng -lm"
 status=0
 : >"$B/summary.txt"
 grep -v -e '^#' -e '^[[:space:]]*$' fuzz/targets.txt | while read -r name extra seeds; do

@@ -6,7 +6,7 @@
 #include "flow2d.h"
 #include "aero_air.h"
 
-#include <fftw3.h>
+#include "aero_fftw.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -123,9 +123,9 @@ int aero_flow2d_init(aero_flow2d *s, const aero_flow2d_params *p, char *err,
             s->sponge[i] = (float)sig;
         }
     }
-    /* FFTW's planner is not thread-safe: one plan at a time. Cosine
-       transforms along x, one per row */
-#pragma omp critical(aero_fftw_plan)
+    /* cosine transforms along x, one per row (planned one at a time
+       process-wide: aero_fftw.h) */
+    aero_fftw_serialise();
     {
         int n = s->nx;
         fftwf_r2r_kind k10 = FFTW_REDFT10, k01 = FFTW_REDFT01;
@@ -166,7 +166,7 @@ int aero_flow2d_init(aero_flow2d *s, const aero_flow2d_params *p, char *err,
 
 void aero_flow2d_free(aero_flow2d *s)
 {
-#pragma omp critical(aero_fftw_plan)
+    aero_fftw_serialise();
     {
         if (s->plan_fwd) fftwf_destroy_plan((fftwf_plan)s->plan_fwd);
         if (s->plan_inv) fftwf_destroy_plan((fftwf_plan)s->plan_inv);

@@ -2,7 +2,7 @@
 #include "flow3d.h"
 #include "aero_air.h"
 
-#include <fftw3.h>
+#include "aero_fftw.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -88,6 +88,7 @@ int aero_flow3d_init(aero_flow3d *s, const aero_flow3d_params *p, char *err,
     }
     {
         int n[2] = {p->ny, p->nx};
+        aero_fftw_serialise(); /* one planner per process: aero_fftw.h */
         s->fwd = fftwf_plan_many_dft_r2c(2, n, p->nz, s->phi, NULL, 1,
                                          (int)s->plane, s->spec, NULL, 1,
                                          nxh * p->ny, FFTW_ESTIMATE);
@@ -125,6 +126,7 @@ int aero_flow3d_init(aero_flow3d *s, const aero_flow3d_params *p, char *err,
 
 void aero_flow3d_free(aero_flow3d *s)
 {
+    aero_fftw_serialise();
     if (s->fwd) fftwf_destroy_plan(s->fwd);
     if (s->inv) fftwf_destroy_plan(s->inv);
     free(s->u);

@@ -4,7 +4,7 @@
 #include "aero_util.h"
 #include "strouhal.h"
 
-#include <fftw3.h>
+#include "aero_fftw.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -53,8 +53,10 @@ static void free_buffers(aero_treebranch *tb)
     free(tb->ola);
     free(tb->ring);
     if (tb->fft) {
-        if (tb->fft->plan)
+        if (tb->fft->plan) {
+            aero_fftw_serialise();
             fftwf_destroy_plan(tb->fft->plan);
+        }
         fftwf_free(tb->fft->spectrum);
         fftwf_free(tb->fft->frame);
         free(tb->fft);
@@ -103,6 +105,7 @@ static int make_buffers(aero_treebranch *tb)
     tb->fft->frame = fftwf_malloc(sizeof(float) * n);
     if (!tb->fft->spectrum || !tb->fft->frame)
         goto fail;
+    aero_fftw_serialise();
     tb->fft->plan = fftwf_plan_dft_c2r_1d(n, tb->fft->spectrum,
                                           tb->fft->frame, FFTW_ESTIMATE);
     if (!tb->fft->plan)

@@ -326,6 +326,69 @@ double aero_pd_block_mean(const float *in, int n)
     return mean == mean && fabs(mean) <= 1e30 ? mean : 0.0;
 }
 
+/* --- files ----------------------------------------------------------------- */
+
+/* The data folder a host set with aero_set_data_path() (src/pd/aero.h,
+ * defined in aero.c), or NULL. A weak reference: the one-class externals
+ * are built without aero.c, and no host calls them, so there it is NULL. */
+#if defined(__ELF__) || defined(__APPLE__)
+const char *aero_data_path(void) __attribute__((weak));
+static const char *host_data_path(void)
+{
+    return aero_data_path ? aero_data_path() : NULL;
+}
+#else
+static const char *host_data_path(void) { return NULL; }
+#endif
+
+/* 0 when DIR/FOLDER/NAME+EXT is a readable file (its path in `path`) */
+static int try_data_dir(const char *dir, const char *folder, const char *name,
+                        const char *ext, char *path, size_t len)
+{
+    if (!dir || !*dir ||
+        snprintf(path, len, "%s/%s/%s%s", dir, folder, name, ext) >= (int)len)
+        return -1;
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return -1;
+    fclose(f);
+    return 0;
+}
+
+int aero_pd_find_file(const t_canvas *canvas, const t_class *cls,
+                      const char *name, const char *ext, const char *folder,
+                      char *path, size_t len)
+{
+    char dir[MAXPDSTRING], *base;
+    size_t n = strlen(name), e = strlen(ext);
+    if (n > e && !strcmp(name + n - e, ext))
+        ext = "";
+    int fd = canvas_open(canvas, name, ext, dir, &base, MAXPDSTRING, 1);
+    if (fd >= 0) {
+        sys_close(fd);
+        return snprintf(path, len, "%s/%s", dir, base) < (int)len ? 0 : -1;
+    }
+    const char *env = getenv("AERO_DATA"), *host = host_data_path();
+    const char *helpdir = class_gethelpdir(cls);
+    if (!try_data_dir(env, folder, name, ext, path, len) ||
+        !try_data_dir(host, folder, name, ext, path, len) ||
+        !try_data_dir(helpdir, folder, name, ext, path, len))
+        return 0;
+    /* not found: say where it looked */
+    t_symbol *patchdir = canvas ? canvas_getdir(canvas) : NULL;
+    snprintf(path, len,
+             "next to the patch (%s), in its declared paths and Pd's search "
+             "path; in $AERO_DATA/%s (%s%s); in aero_set_data_path()/%s "
+             "(%s%s); in aero's own %s/ (%s)",
+             patchdir && *patchdir->s_name ? patchdir->s_name : "no folder",
+             folder, env && *env ? "AERO_DATA=" : "", env && *env ? env :
+             "not set", folder, host && *host ? "set to " : "",
+             host && *host ? host : "not set", folder,
+             helpdir && *helpdir ? helpdir : "no install folder: registered "
+             "by a host");
+    return -1;
+}
+
 /* --- textures -------------------------------------------------------------- */
 
 void aero_pd_load_texture(aero_pd_base *b, t_class *cls, t_symbol *name,
@@ -335,9 +398,8 @@ void aero_pd_load_texture(aero_pd_base *b, t_class *cls, t_symbol *name,
     char path[MAXPDSTRING], err[256];
     if (aero_pd_find_texture(b->canvas, cls, name->s_name, path,
                              sizeof(path))) {
-        pd_error(b->owner, "%s: can't find texture '%s' (next to the patch, "
-                 "on the search path or in aero's textures/): %s", b->obj,
-                 name->s_name, fallback);
+        pd_error(b->owner, "%s: can't find texture '%s' (looked %s): %s",
+                 b->obj, name->s_name, path, fallback);
         set(core, NULL, err, sizeof(err));
         return;
     }

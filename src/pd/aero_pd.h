@@ -202,51 +202,27 @@ int aero_pd_floats(void *x, const char *obj, const char *what, int argc,
 
 /* --- files ----------------------------------------------------------------- */
 
-/* Finds a data file: next to the patch and on Pd's search path
- * (canvas_open), then in the library's own `folder` (textures, trees).
- * `ext` (".wav") is appended unless the name has it. Writes the full
- * path; 0 when found. */
-static inline int aero_pd_find_file(const t_canvas *canvas,
-                                    const t_class *cls, const char *name,
-                                    const char *ext, const char *folder,
-                                    char *path, size_t len)
-{
-    char dir[MAXPDSTRING], *base;
-    size_t n = strlen(name), e = strlen(ext);
-    if (n > e && !strcmp(name + n - e, ext))
-        ext = "";
-    int fd = canvas_open(canvas, name, ext, dir, &base, MAXPDSTRING, 1);
-    if (fd >= 0) {
-        sys_close(fd);
-        return snprintf(path, len, "%s/%s", dir, base) < (int)len ? 0 : -1;
-    }
-    snprintf(path, len, "%s/%s/%s%s", class_gethelpdir(cls), folder, name,
-             ext);
-    FILE *f = fopen(path, "rb");
-    if (f) {
-        fclose(f);
-        return 0;
-    }
-    return -1;
-}
+/* Finds a data file (a texture in textures/, a tree in trees/), in this
+ * order (README, "Embedding"):
+ *   1. next to the patch, its [declare -path] folders and Pd's search path
+ *      (canvas_open; a libpd host adds folders with libpd_add_to_search_path)
+ *   2. DIR/`folder` for DIR in the AERO_DATA environment variable
+ *   3. DIR/`folder` for the DIR a host set with aero_set_data_path()
+ *   4. `folder` in the folder aero was loaded from (class_gethelpdir: the
+ *      installed library; empty for classes a host registers itself).
+ * `ext` (".wav") is appended unless the name has it. Writes the full path
+ * and returns 0 when found; else -1 with the places it tried written to
+ * `path`, for the caller's error message. */
+int aero_pd_find_file(const t_canvas *canvas, const t_class *cls,
+                      const char *name, const char *ext, const char *folder,
+                      char *path, size_t len);
 
-/* a texture (.wav) next to the patch, on the path or in textures/ */
-static inline int aero_pd_find_texture(const t_canvas *canvas,
-                                       const t_class *cls, const char *name,
-                                       char *path, size_t len)
-{
-    return aero_pd_find_file(canvas, cls, name, ".wav", "textures", path,
-                             len);
-}
+/* a texture (.wav): next to the patch, on the path, then in textures/ */
+#define aero_pd_find_texture(canvas, cls, name, path, len)                 \
+    aero_pd_find_file(canvas, cls, name, ".wav", "textures", path, len)
 
-/* a tree file (.tree) the same way, or in trees/ ([treebranch~],
- * [leafwave~]) */
-static inline int aero_pd_find_tree(const t_canvas *canvas,
-                                    const t_class *cls, const char *name,
-                                    char *path, size_t len)
-{
-    return aero_pd_find_file(canvas, cls, name, ".tree", "trees", path, len);
-}
-
+/* a tree file (.tree) the same way, then in trees/ */
+#define aero_pd_find_tree(canvas, cls, name, path, len)                    \
+    aero_pd_find_file(canvas, cls, name, ".tree", "trees", path, len)
 
 #endif

@@ -86,8 +86,8 @@ static void leafwave_tilde_open(t_leafwave_tilde *x, t_symbol *name)
         return;
     if (aero_pd_find_tree(x->x_base.canvas, leafwave_tilde_class, name->s_name,
                           path, sizeof(path))) {
-        pd_error(x, OBJ ": can't find tree file '%s': silent until 'open'",
-                 name->s_name);
+        pd_error(x, OBJ ": can't find tree file '%s' (looked %s): silent "
+                 "until 'open'", name->s_name, path);
         aero_leafwave_clear_tree(&x->x_model);
         return;
     }

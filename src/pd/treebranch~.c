@@ -81,9 +81,8 @@ static void treebranch_tilde_open(t_treebranch_tilde *x, t_symbol *name)
     tree_report_ctx ctx;
     if (aero_pd_find_tree(x->x_base.canvas, treebranch_tilde_class, name->s_name,
                           path, sizeof(path))) {
-        pd_error(x, OBJ ": can't find tree '%s' (looked next to the patch, "
-                 "on the search path and in aero's trees/): silent",
-                 name->s_name);
+        pd_error(x, OBJ ": can't find tree '%s' (looked %s): silent",
+                 name->s_name, path);
         aero_treebranch_set_tree(&x->x_tb, NULL);
         return;
     }

@@ -26,7 +26,7 @@ grep -v -e '^#' -e '^[[:space:]]*$' fuzz/targets.txt | while read -r name extra 
     if [ "$replay_ok" -ne 1 ] || ! ${CC:-cc} -std=gnu99 -O1 -g -DFUZZ_REPLAY \
         -Wall -Wextra -fopenmp $replay_flags -Isrc/core "fuzz/fuzz_$name.c" \
         $extra "$replay_dir"/core/*.o -o "$bin" \
-        -lsndfile -lfftw3f -lfftw3 -lpng -lm >"$OUT/fuzz-$name.build" 2>&1; then
+        -lsndfile -lfftw3f_threads -lfftw3f -lfftw3 -lpng -lm >"$OUT/fuzz-$name.build" 2>&1; then
         echo "  FAIL  fuzz harness $name does not build"
         cat "$OUT/fuzz-core.build" "$OUT/fuzz-$name.build" 2>/dev/null | head -20
         echo "0 passed, 1 failed" >"$OUT/fuzz-$name.txt"

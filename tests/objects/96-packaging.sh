@@ -105,7 +105,7 @@ else
 fi
 # the libpd host must keep compiling against Pd's API with -DPDINSTANCE
 if cc -std=c99 -fsyntax-only -Wall -Wextra -Werror -DPDINSTANCE -DPDTHREADS \
-    -I/usr/include/pd examples/libpd-host.c 2>"$OUT/libpd-example.log"; then
+    -I/usr/include/pd -Isrc/pd examples/libpd-host.c 2>"$OUT/libpd-example.log"; then
     pass "examples/libpd-host.c compiles with -DPDINSTANCE"
 else
     fail "examples/libpd-host.c"; cat "$OUT/libpd-example.log"

@@ -1,13 +1,14 @@
-/* fuzz: aerotex's command line (the option parser of `aerotex aeolian` and
- * `aerotex cavity`, src/tools/aerotex_run.c). The input is split at NUL
- * and newline bytes into argv; the first byte picks the subcommand. Only
- * the parser runs (a valid command line would start a flow simulation).
+/* fuzz: aerotex's command line (the option tables of `aerotex aeolian` and
+ * `aerotex cavity`, src/tools/aerotex_run.c, read by
+ * src/tools/aerotex_options.c). The input is split at NUL and newline
+ * bytes into argv; the first byte picks the subcommand. Only the parser
+ * runs (a valid command line would start a flow simulation).
  * Seeds: fuzz/seeds/aerotex_args/ (the command lines of textures/make.sh). */
 #include "fuzz.h"
 
 #include <stdarg.h>
 
-/* the parser, a static function of aerotex_run.c */
+/* the option tables, static in aerotex_run.c */
 #include "../src/tools/aerotex_run.c"
 
 /* aerotex.c's message function (its main() is not wanted here) */
@@ -36,17 +37,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         *p++ = 0;
     }
     argv[argc] = NULL;
-    job_t j;
-    memset(&j, 0, sizeof j);
-    j.cavity = data[0] & 1;
-    j.directions = 1;
-    if (parse(&j, argc, argv) == 0) {
-        FUZZ_REQUIRE(j.out != NULL, "accepted without an output file");
+    aeolian_job j;
+    if (aerotex_job_parse(data[0] & 1 ? &aerotex_cavity_command
+                                      : &aerotex_aeolian_command,
+                          &j, argc, argv) == 0) {
+        FUZZ_REQUIRE(j.job.out != NULL, "accepted without an output file");
         FUZZ_REQUIRE(j.directions == floor(j.directions) &&
                          j.directions >= 1 && j.directions <= 360,
-                     "directions %g accepted", j.directions);
-        FUZZ_REQUIRE(isfinite(j.v0) && isfinite(j.duration) &&
-                         isfinite(j.rate),
+                     "directions %d accepted", j.directions);
+        FUZZ_REQUIRE(isfinite(j.v0) && isfinite(j.job.duration) &&
+                         isfinite(j.job.rate),
                      "a non-finite number accepted");
     }
     free(text);

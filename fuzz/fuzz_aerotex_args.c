@@ -1,13 +1,14 @@
-/* fuzz: aerotex's command line (the option parser of `aerotex aeolian` and
- * `aerotex cavity`, src/tools/aerotex_run.c). The input is split at NUL
- * and newline bytes into argv; the first byte picks the subcommand. Only
- * the parser runs (a valid command line would start a flow simulation).
+/* fuzz: aerotex's command line (the option tables of every command, read
+ * by src/tools/aerotex_options.c). The input is split at NUL and newline
+ * bytes into argv; the first byte picks the command: bits 1-2 give
+ * aeolian (bit 0: cavity), vortex, object or auralize. Only the parser
+ * runs (a valid command line would start a simulation).
  * Seeds: fuzz/seeds/aerotex_args/ (the command lines of textures/make.sh). */
 #include "fuzz.h"
 
 #include <stdarg.h>
 
-/* the parser, a static function of aerotex_run.c */
+/* the option tables, static in aerotex_run.c */
 #include "../src/tools/aerotex_run.c"
 
 /* aerotex.c's message function (its main() is not wanted here) */
@@ -27,7 +28,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         return 0;
     memcpy(text, data + 1, size - 1);
     text[size - 1] = 0;
-    argv[argc++] = data[0] & 1 ? "cavity" : "aeolian";
+    const aerotex_command *const pick[4] = {
+        data[0] & 1 ? &aerotex_cavity_command : &aerotex_aeolian_command,
+        &aerotex_vortex_command, &aerotex_object_command,
+        &aerotex_auralize_command};
+    const aerotex_command *cmd = pick[(data[0] >> 1) & 3];
+    argv[argc++] = (char *)cmd->name;
     char *p = text, *end = text + size - 1;
     while (p < end && argc < 255) {
         argv[argc++] = p;
@@ -36,18 +42,32 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         *p++ = 0;
     }
     argv[argc] = NULL;
-    job_t j;
-    memset(&j, 0, sizeof j);
-    j.cavity = data[0] & 1;
-    j.directions = 1;
-    if (parse(&j, argc, argv) == 0) {
-        FUZZ_REQUIRE(j.out != NULL, "accepted without an output file");
-        FUZZ_REQUIRE(j.directions == floor(j.directions) &&
-                         j.directions >= 1 && j.directions <= 360,
-                     "directions %g accepted", j.directions);
-        FUZZ_REQUIRE(isfinite(j.v0) && isfinite(j.duration) &&
-                         isfinite(j.rate),
-                     "a non-finite number accepted");
+    if (cmd == &aerotex_auralize_command) {
+        /* not a texture job: parsed into its own job */
+        void *job = malloc(cmd->job_size);
+        if (job) {
+            aerotex_defaults(cmd, job);
+            aerotex_parse(cmd, job, argc, argv);
+        }
+        free(job);
+    } else if (cmd->job_size == sizeof(aeolian_job)) {
+        aeolian_job j;
+        if (aerotex_job_parse(cmd, &j, argc, argv) == 0) {
+            FUZZ_REQUIRE(j.job.out != NULL, "accepted without an output file");
+            FUZZ_REQUIRE(j.directions >= 1 && j.directions <= 360,
+                         "directions %d accepted", j.directions);
+            FUZZ_REQUIRE(isfinite(j.v0) && isfinite(j.job.duration) &&
+                             isfinite(j.job.rate),
+                         "a non-finite number accepted");
+        }
+    } else {
+        /* vortex, object: a job that starts with an aerotex_job */
+        aerotex_job *job = malloc(cmd->job_size);
+        if (job && aerotex_job_parse(cmd, job, argc, argv) == 0)
+            FUZZ_REQUIRE(job->out != NULL && isfinite(job->duration) &&
+                             isfinite(job->rate) && job->threads >= 1,
+                         "a bad job accepted");
+        free(job);
     }
     free(text);
     return 0;

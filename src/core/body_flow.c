@@ -281,6 +281,222 @@ static double lateral_peak(const double *fx, const double *fy, long n,
     return fbest;
 }
 
+/* one simulation: the layout, the solver, the recorded forces */
+typedef struct {
+    const aero_body_flow_params *p;
+    aero_flow3d s;
+    layout L;
+    turn r;
+    int solver_up, nr;
+    float *chi;                 /* solid fraction per cell */
+    int *region;                /* region per cell */
+    double *times, *forces;     /* kept steps: time, 3 nr forces (sample
+                                   frame, per rho) */
+    double *series;             /* one force component, resampled */
+    double force[3 * AERO_BODY_MAX_REGIONS]; /* the solver's, grid frame */
+    double dt, t_keep, fc, d;   /* step; first kept time; cut-off; size */
+    long steps, kept;
+    uint32_t rng;
+} body_run;
+
+/* the grid, the body on it, the solver: 0 or -1 */
+static int open_run(body_run *b, const aero_body_flow_params *p, double rate,
+                    int nout, aero_body_flow_stats *st, void *ctx, char *err,
+                    size_t errlen)
+{
+    aero_flow3d_params fp;
+    size_t cells;
+    memset(b, 0, sizeof *b);
+    b->p = p;
+    b->nr = p->regions;
+    if (check_params(p, rate, nout, err, errlen))
+        return -1;
+    b->r.c = cos(p->angle * AERO_PI / 180.0);
+    b->r.s = sin(p->angle * AERO_PI / 180.0);
+    if (make_layout(p, &b->r, &b->L, err, errlen))
+        return -1;
+    b->d = aero_body_reference_size(p->body);
+    b->dt = step_of(p);
+    b->fc = cutoff_of(p, rate);
+    b->steps = aero_body_flow_steps(p, rate, nout);
+    b->t_keep = p->settle - 8.0 / b->fc - b->dt;
+    cells = (size_t)b->L.nx * b->L.ny * b->L.nz;
+    b->chi = malloc(sizeof(float) * cells);
+    b->region = malloc(sizeof(int) * cells);
+    b->times = malloc(sizeof(double) * (size_t)b->steps);
+    b->forces = malloc(sizeof(double) * (size_t)b->steps * 3 * b->nr);
+    b->series = malloc(sizeof(double) * (size_t)b->steps);
+    if (!b->chi || !b->region || !b->times || !b->forces || !b->series) {
+        snprintf(err, errlen, "out of memory for a %d x %d x %d grid",
+                 b->L.nx, b->L.ny, b->L.nz);
+        return -1;
+    }
+    voxelise(p, &b->r, &b->L, b->chi, b->region, st);
+    if (!(st->solid_volume > 0.0)) {
+        snprintf(err, errlen, "the body fills no cell: a finer grid "
+                 "(cell %g m)", p->cell);
+        return -1;
+    }
+    memset(&fp, 0, sizeof fp);
+    fp.nx = b->L.nx;
+    fp.ny = b->L.ny;
+    fp.nz = b->L.nz;
+    fp.h = p->cell;
+    fp.nu = p->nu;
+    fp.u_ref = p->speed;
+    fp.confinement = p->confinement;
+    fp.advection = AERO_F3_MACCORMACK;
+    fp.sponge = p->downstream > 0.0
+                    ? fmin(0.5, p->sponge * p->downstream /
+                                    (b->L.nz * p->cell))
+                    : 0.0;
+    if (p->plan_lock) p->plan_lock(ctx, 1);
+    b->solver_up = aero_flow3d_init(&b->s, &fp, err, errlen) == 0;
+    if (p->plan_lock) p->plan_lock(ctx, 0);
+    if (!b->solver_up)
+        return -1;
+    st->nx = b->L.nx;
+    st->ny = b->L.ny;
+    st->nz = b->L.nz;
+    st->dt = b->dt;
+    aero_flow3d_set_body(&b->s, b->chi, b->region, b->nr, b->force);
+    return 0;
+}
+
+static void close_run(body_run *b, void *ctx)
+{
+    if (b->solver_up) {
+        if (b->p->plan_lock) b->p->plan_lock(ctx, 1);
+        aero_flow3d_free(&b->s);
+        if (b->p->plan_lock) b->p->plan_lock(ctx, 0);
+    }
+    free(b->chi);
+    free(b->region);
+    free(b->times);
+    free(b->forces);
+    free(b->series);
+}
+
+/* the uniform flow everywhere, made divergence-free around the body */
+static void start_flow(body_run *b)
+{
+    aero_flow3d *s = &b->s;
+    for (size_t c = 0; c < s->plane * (size_t)(s->nz + 1); c++)
+        s->w[c] = (float)b->p->speed;
+    for (size_t c = 0; c < s->plane; c++)
+        s->in_w[c] = (float)b->p->speed;
+    aero_flow3d_project(s);
+    b->rng = b->p->seed ? b->p->seed : 1;
+}
+
+/* every step, the forces from t_keep on: 0 or -1 */
+static int run_flow(body_run *b,
+                    void (*hook)(void *ctx, const aero_flow3d *s, long step,
+                                 int recording),
+                    long hook_every, void *ctx, char *err, size_t errlen)
+{
+    const aero_body_flow_params *p = b->p;
+    aero_flow3d *s = &b->s;
+    const double dt = b->dt;
+    for (long n = 0; n < b->steps; n++) {
+        double t = n * dt;
+        /* a lateral gust (one sine period) during the first quarter of
+           the settling time, then a little seeded noise */
+        double gust = t < 0.25 * p->settle
+                          ? 0.1 * sin(2.0 * AERO_PI * t / (0.25 * p->settle))
+                          : 0.0;
+        float gu = (float)(p->speed * (gust + p->noise * aero_uniform(&b->rng)));
+        float gv = (float)(p->speed * (0.5 * gust +
+                                       p->noise * aero_uniform(&b->rng)));
+        for (size_t c = 0; c < s->plane; c++) {
+            s->in_u[c] = gu;
+            s->in_v[c] = gv;
+        }
+        if (aero_flow3d_step(s, dt)) {
+            snprintf(err, errlen, "the flow blew up at t = %.4g s (step %ld): "
+                     "a smaller --cfl", t, n);
+            return -1;
+        }
+        if (t + dt >= b->t_keep) {
+            b->times[b->kept] = t + dt;
+            /* into the sample frame */
+            for (int l = 0; l < b->nr; l++)
+                to_sample(&b->r, b->force + 3 * l,
+                          b->forces + ((size_t)b->kept * b->nr + l) * 3);
+            b->kept++;
+        }
+        if (hook && hook_every > 0 &&
+            (n % hook_every == 0 || n == b->steps - 1))
+            hook(ctx, s, n, t >= p->settle);
+    }
+    return 0;
+}
+
+/* g_l = rho dF_l/dt, resampled from the settling time on */
+static void radiate(body_run *b, double rate, float *out, int stride,
+                    int nout)
+{
+    const int nr = b->nr;
+    for (int l = 0; l < nr; l++)
+        for (int c = 0; c < 3; c++) {
+            for (long m = 0; m < b->kept; m++)
+                b->series[m] = b->forces[((size_t)m * nr + l) * 3 + c];
+            aero_texture_resample_derivative_fc(
+                b->times, b->series, (int)b->kept, rate, b->fc,
+                b->p->settle, AERO_RHO, out + 3 * l + c, stride, nout);
+        }
+}
+
+/* drag, lateral force and shedding peak over the recorded part, in grid
+   axes (z: drag): 0 or -1 */
+static int statistics(body_run *b, aero_body_flow_stats *st, char *err,
+                      size_t errlen)
+{
+    const aero_body_flow_params *p = b->p;
+    const int nr = b->nr;
+    double *fx = malloc(sizeof(double) * (size_t)b->kept);
+    double *fy = malloc(sizeof(double) * (size_t)b->kept);
+    double drag = 0.0, lat = 0.0, q, mx = 0.0, my = 0.0;
+    long m0 = 0, nrec;
+    while (m0 < b->kept && b->times[m0] < p->settle)
+        m0++;
+    nrec = b->kept - m0;
+    if (!fx || !fy || nrec < 2) {
+        free(fx);
+        free(fy);
+        snprintf(err, errlen, nrec < 2 ? "too short a recording"
+                                       : "out of memory");
+        return -1;
+    }
+    for (long m = 0; m < nrec; m++) {
+        double sx = 0.0, sy = 0.0, sz = 0.0;
+        for (int l = 0; l < nr; l++) {
+            double g[3];
+            to_grid(&b->r, b->forces + ((size_t)(m0 + m) * nr + l) * 3, g);
+            sx += g[0];
+            sy += g[1];
+            sz += g[2];
+        }
+        fx[m] = sx;
+        fy[m] = sy;
+        mx += sx;
+        my += sy;
+        drag += sz;
+    }
+    mx /= nrec;
+    my /= nrec;
+    for (long m = 0; m < nrec; m++)
+        lat += (fx[m] - mx) * (fx[m] - mx) + (fy[m] - my) * (fy[m] - my);
+    q = 0.5 * p->speed * p->speed * st->frontal_area; /* per rho */
+    st->cd = drag / nrec / q;
+    st->cl_rms = sqrt(lat / nrec) / q;
+    st->f_peak = lateral_peak(fx, fy, nrec, b->dt, b->d, p->speed);
+    st->st = st->f_peak * b->d / p->speed;
+    free(fx);
+    free(fy);
+    return 0;
+}
+
 int aero_body_flow_simulate(const aero_body_flow_params *p, double rate,
                             float *out, int stride, int nout,
                             aero_body_flow_stats *st,
@@ -289,174 +505,18 @@ int aero_body_flow_simulate(const aero_body_flow_params *p, double rate,
                             long hook_every, void *ctx, char *err,
                             size_t errlen)
 {
-    aero_flow3d_params fp;
-    aero_flow3d s;
-    layout L;
-    turn r;
-    float *chi = NULL;
-    int *region = NULL;
-    double *times = NULL, *forces = NULL, *series = NULL;
-    double force[3 * AERO_BODY_MAX_REGIONS];
-    const int nr = p->regions;
-    double dt, t_keep, fc, d;
-    long steps, kept = 0;
-    uint32_t rng;
-    int status = -1, solver_up = 0;
-    size_t cells;
-
+    body_run b;
+    int status = -1;
     memset(st, 0, sizeof *st);
-    if (check_params(p, rate, nout, err, errlen))
-        return -1;
-    r.c = cos(p->angle * AERO_PI / 180.0);
-    r.s = sin(p->angle * AERO_PI / 180.0);
-    if (make_layout(p, &r, &L, err, errlen))
-        return -1;
-    d = aero_body_reference_size(p->body);
-    dt = step_of(p);
-    fc = cutoff_of(p, rate);
-    steps = aero_body_flow_steps(p, rate, nout);
-    t_keep = p->settle - 8.0 / fc - dt;
-    cells = (size_t)L.nx * L.ny * L.nz;
-    chi = malloc(sizeof(float) * cells);
-    region = malloc(sizeof(int) * cells);
-    times = malloc(sizeof(double) * (size_t)steps);
-    forces = malloc(sizeof(double) * (size_t)steps * 3 * nr);
-    series = malloc(sizeof(double) * (size_t)steps);
-    if (!chi || !region || !times || !forces || !series) {
-        snprintf(err, errlen, "out of memory for a %d x %d x %d grid", L.nx,
-                 L.ny, L.nz);
-        goto out;
+    if (open_run(&b, p, rate, nout, st, ctx, err, errlen) == 0) {
+        start_flow(&b);
+        if (run_flow(&b, hook, hook_every, ctx, err, errlen) == 0) {
+            st->steps = b.steps;
+            st->max_div = aero_flow3d_max_divergence(&b.s);
+            radiate(&b, rate, out, stride, nout);
+            status = statistics(&b, st, err, errlen);
+        }
     }
-    voxelise(p, &r, &L, chi, region, st);
-    if (!(st->solid_volume > 0.0)) {
-        snprintf(err, errlen, "the body fills no cell: a finer grid "
-                 "(cell %g m)", p->cell);
-        goto out;
-    }
-    memset(&fp, 0, sizeof fp);
-    fp.nx = L.nx;
-    fp.ny = L.ny;
-    fp.nz = L.nz;
-    fp.h = p->cell;
-    fp.nu = p->nu;
-    fp.u_ref = p->speed;
-    fp.confinement = p->confinement;
-    fp.advection = AERO_F3_MACCORMACK;
-    fp.sponge = p->downstream > 0.0
-                    ? fmin(0.5, p->sponge * p->downstream / (L.nz * p->cell))
-                    : 0.0;
-    if (p->plan_lock) p->plan_lock(ctx, 1);
-    solver_up = aero_flow3d_init(&s, &fp, err, errlen) == 0;
-    if (p->plan_lock) p->plan_lock(ctx, 0);
-    if (!solver_up)
-        goto out;
-    st->nx = L.nx;
-    st->ny = L.ny;
-    st->nz = L.nz;
-    st->dt = dt;
-    aero_flow3d_set_body(&s, chi, region, nr, force);
-    /* start: the uniform flow everywhere, made divergence-free around the
-       body */
-    for (size_t c = 0; c < s.plane * (size_t)(s.nz + 1); c++)
-        s.w[c] = (float)p->speed;
-    for (size_t c = 0; c < s.plane; c++)
-        s.in_w[c] = (float)p->speed;
-    aero_flow3d_project(&s);
-    rng = p->seed ? p->seed : 1;
-    for (long n = 0; n < steps; n++) {
-        double t = n * dt;
-        /* a lateral gust (one sine period) during the first quarter of
-           the settling time, then a little seeded noise */
-        double gust = t < 0.25 * p->settle
-                          ? 0.1 * sin(2.0 * AERO_PI * t / (0.25 * p->settle))
-                          : 0.0;
-        float gu = (float)(p->speed * (gust + p->noise * aero_uniform(&rng)));
-        float gv = (float)(p->speed * (0.5 * gust +
-                                       p->noise * aero_uniform(&rng)));
-        for (size_t c = 0; c < s.plane; c++) {
-            s.in_u[c] = gu;
-            s.in_v[c] = gv;
-        }
-        if (aero_flow3d_step(&s, dt)) {
-            snprintf(err, errlen, "the flow blew up at t = %.4g s (step %ld): "
-                     "a smaller --cfl", t, n);
-            goto out;
-        }
-        if (t + dt >= t_keep) {
-            times[kept] = t + dt;
-            /* into the sample frame */
-            for (int l = 0; l < nr; l++)
-                to_sample(&r, force + 3 * l, forces + ((size_t)kept * nr + l) * 3);
-            kept++;
-        }
-        if (hook && hook_every > 0 && (n % hook_every == 0 || n == steps - 1))
-            hook(ctx, &s, n, t >= p->settle);
-    }
-    st->steps = steps;
-    st->max_div = aero_flow3d_max_divergence(&s);
-    /* g_l = rho dF_l/dt, resampled from the settling time on */
-    for (int l = 0; l < nr; l++)
-        for (int c = 0; c < 3; c++) {
-            for (long m = 0; m < kept; m++)
-                series[m] = forces[((size_t)m * nr + l) * 3 + c];
-            aero_texture_resample_derivative_fc(times, series, (int)kept,
-                                                rate, fc, p->settle, AERO_RHO,
-                                                out + 3 * l + c, stride, nout);
-        }
-    /* statistics over the recorded part, in grid axes (z: drag) */
-    {
-        double *fx = malloc(sizeof(double) * (size_t)kept);
-        double *fy = malloc(sizeof(double) * (size_t)kept);
-        double drag = 0.0, lat = 0.0, q, mx = 0.0, my = 0.0;
-        long m0 = 0, nrec;
-        while (m0 < kept && times[m0] < p->settle)
-            m0++;
-        nrec = kept - m0;
-        if (!fx || !fy || nrec < 2) {
-            free(fx);
-            free(fy);
-            snprintf(err, errlen, nrec < 2 ? "too short a recording"
-                                           : "out of memory");
-            goto out;
-        }
-        for (long m = 0; m < nrec; m++) {
-            double sx = 0.0, sy = 0.0, sz = 0.0;
-            for (int l = 0; l < nr; l++) {
-                double g[3];
-                to_grid(&r, forces + ((size_t)(m0 + m) * nr + l) * 3, g);
-                sx += g[0];
-                sy += g[1];
-                sz += g[2];
-            }
-            fx[m] = sx;
-            fy[m] = sy;
-            mx += sx;
-            my += sy;
-            drag += sz;
-        }
-        mx /= nrec;
-        my /= nrec;
-        for (long m = 0; m < nrec; m++)
-            lat += (fx[m] - mx) * (fx[m] - mx) + (fy[m] - my) * (fy[m] - my);
-        q = 0.5 * p->speed * p->speed * st->frontal_area; /* per rho */
-        st->cd = drag / nrec / q;
-        st->cl_rms = sqrt(lat / nrec) / q;
-        st->f_peak = lateral_peak(fx, fy, nrec, dt, d, p->speed);
-        st->st = st->f_peak * d / p->speed;
-        free(fx);
-        free(fy);
-    }
-    status = 0;
-out:
-    if (solver_up) {
-        if (p->plan_lock) p->plan_lock(ctx, 1);
-        aero_flow3d_free(&s);
-        if (p->plan_lock) p->plan_lock(ctx, 0);
-    }
-    free(chi);
-    free(region);
-    free(times);
-    free(forces);
-    free(series);
+    close_run(&b, ctx);
     return status;
 }

@@ -256,35 +256,44 @@ long aero_vortex_steps(const aero_vortex_params *p, double rate, int nout)
     return a + b;
 }
 
-int aero_vortex_simulate(const aero_vortex_params *p, double rate,
-                         float *out, int stride, int nout,
-                         aero_vortex_stats *st, aero_vortex_hook hook,
-                         long every, void *ctx, char *err, size_t errlen)
-{
+/* one simulation: the solver, the inflow's random modes, the recording */
+typedef struct {
+    const aero_vortex_params *p;
     aero_flow3d s;
+    int solver_up, J;           /* J receivers */
+    double dt;
+    long settle, rec, total;    /* steps: start-up, recorded, all */
+    float *win, *tab;           /* the window; the modes' cos and sin */
+    double *rec_s;              /* per recorded step: S_ab (6) or, for
+                                   cells, one value per receiver */
+    double *series, *pj, *pbar; /* one receiver's signal; its pressure;
+                                   the ring average */
+    double (*xh)[3];            /* receiver directions */
+    double sigma[MODES], amp[MODES][3][2], decay, kick;
+    uint32_t rng;
+} vortex_run;
+
+/* the solver and the buffers, the window and the receivers: 0 or -1 */
+static int open_run(vortex_run *v, const aero_vortex_params *p, double rate,
+                    int nout, void *ctx, char *err, size_t errlen)
+{
     aero_flow3d_params fp;
-    double dt, h, tau, decay, kick, sigma_sum = 0.0;
-    double sigma[MODES], amp[MODES][3][2];
-    int mode_x[MODES], mode_y[MODES];
-    long settle, rec, total, m;
-    int J = p->receivers, status = -1;
-    float *win = NULL, *tab = NULL;
-    double *rec_s = NULL, *series = NULL, *pj = NULL, *pbar = NULL;
-    double (*xh)[3] = NULL, dk[2 * D3_HALF + 1];
-    uint32_t rng = p->seed ? p->seed : 1;
-    memset(st, 0, sizeof *st);
+    const int J = p->receivers;
+    memset(v, 0, sizeof *v);
+    v->p = p;
+    v->J = J;
+    v->rng = p->seed ? p->seed : 1;
     if (!(p->speed > 0.0) || !(p->box > 0.0) || p->n < 4 || p->nz < 3 ||
         !(p->cfl > 0.0) || J < 1 || J > 64 || nout < 1 || !(rate > 0.0)) {
         snprintf(err, errlen, "bad simulation parameters");
         return -1;
     }
-    h = p->box / p->n;
-    step_plan(p, rate, nout, &dt, &settle, &rec);
-    total = settle + rec;
+    step_plan(p, rate, nout, &v->dt, &v->settle, &v->rec);
+    v->total = v->settle + v->rec;
     memset(&fp, 0, sizeof fp); /* fields it does not set are off */
     fp.nx = fp.ny = p->n;
     fp.nz = p->nz;
-    fp.h = h;
+    fp.h = p->box / p->n;
     fp.nu = p->nu;
     fp.confinement = p->confinement;
     fp.u_ref = p->speed;
@@ -292,172 +301,233 @@ int aero_vortex_simulate(const aero_vortex_params *p, double rate,
        from 65 %), so the absorbing layer is not heard */
     fp.sponge = 0.15;
     if (p->plan_lock) p->plan_lock(ctx, 1);
-    if (aero_flow3d_init(&s, &fp, err, errlen)) {
-        if (p->plan_lock) p->plan_lock(ctx, 0);
+    v->solver_up = aero_flow3d_init(&v->s, &fp, err, errlen) == 0;
+    if (p->plan_lock) p->plan_lock(ctx, 0);
+    if (!v->solver_up)
+        return -1;
+    v->win = malloc(sizeof(float) * v->s.plane * v->s.nz);
+    v->tab = malloc(sizeof(float) * v->s.plane * MODES * 2);
+    v->rec_s = malloc(sizeof(double) * (size_t)v->rec *
+                      (p->source == AERO_VORTEX_CELLS ? (size_t)J : 6));
+    v->series = malloc(sizeof(double) * (size_t)v->rec);
+    v->pj = malloc(sizeof(double) * (size_t)v->rec);
+    v->pbar = calloc((size_t)v->rec, sizeof(double));
+    v->xh = malloc(sizeof(*v->xh) * J);
+    if (!v->win || !v->tab || !v->rec_s || !v->series || !v->pj ||
+        !v->pbar || !v->xh) {
+        snprintf(err, errlen, "out of memory");
         return -1;
     }
-    if (p->plan_lock) p->plan_lock(ctx, 0);
-    win = malloc(sizeof(float) * s.plane * s.nz);
-    tab = malloc(sizeof(float) * s.plane * MODES * 2);
-    rec_s = malloc(sizeof(double) * (size_t)rec *
-                   (p->source == AERO_VORTEX_CELLS ? (size_t)J : 6));
-    series = malloc(sizeof(double) * (size_t)rec);
-    pj = malloc(sizeof(double) * (size_t)rec);
-    pbar = calloc((size_t)rec, sizeof(double));
-    xh = malloc(sizeof(*xh) * J);
-    if (!win || !tab || !rec_s || !series || !pj || !pbar || !xh) {
-        snprintf(err, errlen, "out of memory");
-        goto done;
-    }
-    aero_vortex_window(&s, win);
+    aero_vortex_window(&v->s, v->win);
     for (int j = 0; j < J; j++) {
         double e = p->elevation * AERO_PI / 180.0, a = 2.0 * AERO_PI * j / J;
-        xh[j][0] = cos(e) * cos(a);
-        xh[j][1] = cos(e) * sin(a);
-        xh[j][2] = sin(e);
+        v->xh[j][0] = cos(e) * cos(a);
+        v->xh[j][1] = cos(e) * sin(a);
+        v->xh[j][2] = sin(e);
     }
+    return 0;
+}
 
-    /* inflow: u (0, 0, U) plus a random field of the 12 Fourier modes
-       with |mx|, |my| <= 2 (wavelengths box and box/2), each amplitude an
-       Ornstein-Uhlenbeck process of correlation time box / (2 U): the
-       eddies of the inflow live about half a flow-through time */
-    {
-        int q = 0;
-        for (int my = -2; my <= 2; my++)
-            for (int mx = -2; mx <= 2; mx++)
-                if (mx > 0 || (mx == 0 && my > 0)) {
-                    mode_x[q] = mx;
-                    mode_y[q] = my;
-                    sigma[q] = 1.0 / sqrt((double)(mx * mx + my * my));
-                    sigma_sum += sigma[q] * sigma[q];
-                    q++;
-                }
-        for (q = 0; q < MODES; q++) {
-            sigma[q] *= p->turbulence * p->speed / sqrt(sigma_sum);
-            for (int c = 0; c < 3; c++)
-                for (int b = 0; b < 2; b++)
-                    amp[q][c][b] = sigma[q] * gauss(&rng);
-            for (int j = 0; j < s.ny; j++)
-                for (int i = 0; i < s.nx; i++) {
-                    double th = 2.0 * AERO_PI * (mode_x[q] * (i + 0.5) / s.nx +
-                                                 mode_y[q] * (j + 0.5) / s.ny);
-                    tab[(size_t)(2 * q) * s.plane + j * s.nx + i] = (float)cos(th);
-                    tab[(size_t)(2 * q + 1) * s.plane + j * s.nx + i] = (float)sin(th);
-                }
-        }
+static void close_run(vortex_run *v, void *ctx)
+{
+    const aero_vortex_params *p = v->p;
+    free(v->win);
+    free(v->tab);
+    free(v->rec_s);
+    free(v->series);
+    free(v->pj);
+    free(v->pbar);
+    free(v->xh);
+    if (v->solver_up) {
+        if (p->plan_lock) p->plan_lock(ctx, 1);
+        aero_flow3d_free(&v->s);
+        if (p->plan_lock) p->plan_lock(ctx, 0);
+    }
+}
+
+/* inflow: u (0, 0, U) plus a random field of the 12 Fourier modes with
+   |mx|, |my| <= 2 (wavelengths box and box/2), each amplitude an
+   Ornstein-Uhlenbeck process of correlation time box / (2 U): the eddies
+   of the inflow live about half a flow-through time. The box starts in
+   uniform flow. */
+static void seed_inflow(vortex_run *v)
+{
+    const aero_vortex_params *p = v->p;
+    aero_flow3d *s = &v->s;
+    int mode_x[MODES], mode_y[MODES], q = 0;
+    double sigma_sum = 0.0, tau;
+    for (int my = -2; my <= 2; my++)
+        for (int mx = -2; mx <= 2; mx++)
+            if (mx > 0 || (mx == 0 && my > 0)) {
+                mode_x[q] = mx;
+                mode_y[q] = my;
+                v->sigma[q] = 1.0 / sqrt((double)(mx * mx + my * my));
+                sigma_sum += v->sigma[q] * v->sigma[q];
+                q++;
+            }
+    for (q = 0; q < MODES; q++) {
+        v->sigma[q] *= p->turbulence * p->speed / sqrt(sigma_sum);
+        for (int c = 0; c < 3; c++)
+            for (int b = 0; b < 2; b++)
+                v->amp[q][c][b] = v->sigma[q] * gauss(&v->rng);
+        for (int j = 0; j < s->ny; j++)
+            for (int i = 0; i < s->nx; i++) {
+                double th = 2.0 * AERO_PI * (mode_x[q] * (i + 0.5) / s->nx +
+                                             mode_y[q] * (j + 0.5) / s->ny);
+                v->tab[(size_t)(2 * q) * s->plane + j * s->nx + i] =
+                    (float)cos(th);
+                v->tab[(size_t)(2 * q + 1) * s->plane + j * s->nx + i] =
+                    (float)sin(th);
+            }
     }
     tau = 0.5 * p->box / p->speed;
-    decay = exp(-dt / tau);
-    kick = sqrt(1.0 - decay * decay);
-    /* the box starts in uniform flow */
-    for (size_t c = 0; c < s.plane * (s.nz + 1); c++)
-        s.w[c] = (float)p->speed;
+    v->decay = exp(-v->dt / tau);
+    v->kick = sqrt(1.0 - v->decay * v->decay);
+    for (size_t c = 0; c < s->plane * (s->nz + 1); c++)
+        s->w[c] = (float)p->speed;
+}
 
-    for (m = 0; m < total; m++) {
-        /* the inflow for this step */
-        for (int q = 0; q < MODES; q++)
-            for (int c = 0; c < 3; c++)
-                for (int b = 0; b < 2; b++)
-                    amp[q][c][b] = decay * amp[q][c][b] +
-                                   kick * sigma[q] * gauss(&rng);
-        for (size_t c = 0; c < s.plane; c++) {
-            double a[3] = {0.0, 0.0, p->speed};
-            for (int q = 0; q < MODES; q++) {
-                double cs = tab[(size_t)(2 * q) * s.plane + c],
-                       sn = tab[(size_t)(2 * q + 1) * s.plane + c];
-                for (int k = 0; k < 3; k++)
-                    a[k] += amp[q][k][0] * cs + amp[q][k][1] * sn;
-            }
-            s.in_u[c] = (float)a[0];
-            s.in_v[c] = (float)a[1];
-            s.in_w[c] = (float)a[2];
+/* the inflow for the next step: the modes' amplitudes advanced */
+static void step_inflow(vortex_run *v)
+{
+    aero_flow3d *s = &v->s;
+    for (int q = 0; q < MODES; q++)
+        for (int c = 0; c < 3; c++)
+            for (int b = 0; b < 2; b++)
+                v->amp[q][c][b] = v->decay * v->amp[q][c][b] +
+                                  v->kick * v->sigma[q] * gauss(&v->rng);
+    for (size_t c = 0; c < s->plane; c++) {
+        double a[3] = {0.0, 0.0, v->p->speed};
+        for (int q = 0; q < MODES; q++) {
+            double cs = v->tab[(size_t)(2 * q) * s->plane + c],
+                   sn = v->tab[(size_t)(2 * q + 1) * s->plane + c];
+            for (int k = 0; k < 3; k++)
+                a[k] += v->amp[q][k][0] * cs + v->amp[q][k][1] * sn;
         }
-        if (aero_flow3d_step(&s, dt)) {
+        s->in_u[c] = (float)a[0];
+        s->in_v[c] = (float)a[1];
+        s->in_w[c] = (float)a[2];
+    }
+}
+
+/* every step; after the start-up, the moment (or the cells' sums) of
+   each: 0 or -1 */
+static int run_flow(vortex_run *v, aero_vortex_hook hook, long every,
+                    void *ctx, char *err, size_t errlen)
+{
+    aero_flow3d *s = &v->s;
+    const int J = v->J;
+    for (long m = 0; m < v->total; m++) {
+        step_inflow(v);
+        if (aero_flow3d_step(s, v->dt)) {
             snprintf(err, errlen, "the flow diverged at step %ld (u = %g m/s): "
-                     "try a smaller --cfl or --confinement", m, p->speed);
-            goto done;
+                     "try a smaller --cfl or --confinement", m, v->p->speed);
+            return -1;
         }
-        if (m >= settle) {
-            long r = m - settle;
-            aero_flow3d_vorticity(&s);
-            if (p->source == AERO_VORTEX_CELLS) {
+        if (m >= v->settle) {
+            long r = m - v->settle;
+            aero_flow3d_vorticity(s);
+            if (v->p->source == AERO_VORTEX_CELLS) {
                 for (int j = 0; j < J; j++)
-                    rec_s[(size_t)r * J + j] =
-                        aero_vortex_cells(&s, xh[j], 3.0);
+                    v->rec_s[(size_t)r * J + j] =
+                        aero_vortex_cells(s, v->xh[j], 3.0);
             } else {
-                aero_vortex_moment(&s, win, rec_s + (size_t)r * 6);
+                aero_vortex_moment(s, v->win, v->rec_s + (size_t)r * 6);
             }
         }
-        if (hook && every > 0 && (m % every == 0 || m == total - 1))
-            hook(ctx, &s, m, m >= settle);
+        if (hook && every > 0 && (m % every == 0 || m == v->total - 1))
+            hook(ctx, s, m, m >= v->settle);
     }
-    st->steps = total;
-    st->dt = dt;
-    st->max_div = aero_flow3d_max_divergence(&s);
-    {
-        double sum = 0.0, wsum = 0.0;
-        for (size_t c = 0; c < s.plane * s.nz; c++)
-            if (win[c] > 0.5f) {
-                sum += s.omag[c];
-                wsum += 1.0;
-            }
-        st->mean_vort = wsum > 0.0 ? sum / wsum : 0.0;
-    }
+    return 0;
+}
 
-    /* each receiver: contract, differentiate three times, average */
-    aero_vortex_d3_kernel(dk, D3_HALF, 0.2, 0.35);
-    {
-        /* Howe: p r = rho0 / (12 pi c0^2) xh xh : S''' (per second^3) */
-        const double scale = AERO_RHO / (12.0 * AERO_PI * AERO_C0 * AERO_C0) /
-                             (dt * dt * dt);
-        const long lo = D3_HALF, hi = rec - D3_HALF; /* valid outputs */
-        double msq = 0.0, bar = 0.0;
-        for (int j = 0; j < J; j++) {
-            double e = 0.0;
-            for (long r = 0; r < rec; r++)
-                series[r] = p->source == AERO_VORTEX_CELLS
-                                ? rec_s[(size_t)r * J + j]
-                                : aero_vortex_contract(rec_s + (size_t)r * 6, xh[j]);
-            for (long r = lo; r < hi; r++) {
-                double acc = 0.0;
-                for (int q = -D3_HALF; q <= D3_HALF; q++)
-                    acc += dk[D3_HALF + q] * series[r - q];
-                pj[r] = acc * scale;
-                pbar[r] += pj[r] / J;
-                e += pj[r] * pj[r];
-            }
-            msq += e / (double)(hi - lo) / J;
+/* steps, dt, divergence and mean vorticity in the window */
+static void measure(const vortex_run *v, aero_vortex_stats *st)
+{
+    const aero_flow3d *s = &v->s;
+    double sum = 0.0, wsum = 0.0;
+    st->steps = v->total;
+    st->dt = v->dt;
+    st->max_div = aero_flow3d_max_divergence(s);
+    for (size_t c = 0; c < s->plane * s->nz; c++)
+        if (v->win[c] > 0.5f) {
+            sum += s->omag[c];
+            wsum += 1.0;
         }
-        for (long r = lo; r < hi; r++)
-            bar += pbar[r] * pbar[r];
-        bar /= (double)(hi - lo);
-        st->receiver_rms = sqrt(msq);
-        st->gain = bar > 0.0 ? sqrt(msq / bar) : 1.0;
-        if (!(st->gain < 1e3)) st->gain = 1e3; /* a cancelled average */
-        for (long r = lo; r < hi; r++)
-            pbar[r] *= st->gain;
-        {
-            double rate_in = 1.0 / dt;
-            double fc = 0.45 * (rate_in < rate ? rate_in : rate);
-            double e = 0.0;
-            aero_vortex_resample(pbar + lo, (int)(hi - lo), rate_in,
-                                 8.0 / fc, rate, out, stride, nout);
-            for (int k = 0; k < nout; k++)
-                e += (double)out[(size_t)k * stride] * out[(size_t)k * stride];
-            st->rms = sqrt(e / nout);
+    st->mean_vort = wsum > 0.0 ? sum / wsum : 0.0;
+}
+
+/* each receiver's pressure: contracted, differentiated three times and
+   averaged over the ring into pbar[lo, hi), rescaled to the receivers'
+   mean square (st->gain) */
+static void ring_pressure(vortex_run *v, long lo, long hi,
+                          aero_vortex_stats *st)
+{
+    /* Howe: p r = rho0 / (12 pi c0^2) xh xh : S''' (per second^3) */
+    const double scale = AERO_RHO / (12.0 * AERO_PI * AERO_C0 * AERO_C0) /
+                         (v->dt * v->dt * v->dt);
+    const int J = v->J;
+    double dk[2 * D3_HALF + 1], msq = 0.0, bar = 0.0;
+    aero_vortex_d3_kernel(dk, D3_HALF, 0.2, 0.35);
+    for (int j = 0; j < J; j++) {
+        double e = 0.0;
+        for (long r = 0; r < v->rec; r++)
+            v->series[r] = v->p->source == AERO_VORTEX_CELLS
+                               ? v->rec_s[(size_t)r * J + j]
+                               : aero_vortex_contract(v->rec_s + (size_t)r * 6,
+                                                      v->xh[j]);
+        for (long r = lo; r < hi; r++) {
+            double acc = 0.0;
+            for (int q = -D3_HALF; q <= D3_HALF; q++)
+                acc += dk[D3_HALF + q] * v->series[r - q];
+            v->pj[r] = acc * scale;
+            v->pbar[r] += v->pj[r] / J;
+            e += v->pj[r] * v->pj[r];
+        }
+        msq += e / (double)(hi - lo) / J;
+    }
+    for (long r = lo; r < hi; r++)
+        bar += v->pbar[r] * v->pbar[r];
+    bar /= (double)(hi - lo);
+    st->receiver_rms = sqrt(msq);
+    st->gain = bar > 0.0 ? sqrt(msq / bar) : 1.0;
+    if (!(st->gain < 1e3)) st->gain = 1e3; /* a cancelled average */
+    for (long r = lo; r < hi; r++)
+        v->pbar[r] *= st->gain;
+}
+
+/* the ring's pressure at the texture rate into out */
+static void radiate(vortex_run *v, double rate, float *out, int stride,
+                    int nout, aero_vortex_stats *st)
+{
+    const long lo = D3_HALF, hi = v->rec - D3_HALF; /* valid outputs */
+    const double rate_in = 1.0 / v->dt;
+    const double fc = 0.45 * (rate_in < rate ? rate_in : rate);
+    double e = 0.0;
+    ring_pressure(v, lo, hi, st);
+    aero_vortex_resample(v->pbar + lo, (int)(hi - lo), rate_in, 8.0 / fc,
+                         rate, out, stride, nout);
+    for (int k = 0; k < nout; k++)
+        e += (double)out[(size_t)k * stride] * out[(size_t)k * stride];
+    st->rms = sqrt(e / nout);
+}
+
+int aero_vortex_simulate(const aero_vortex_params *p, double rate,
+                         float *out, int stride, int nout,
+                         aero_vortex_stats *st, aero_vortex_hook hook,
+                         long every, void *ctx, char *err, size_t errlen)
+{
+    vortex_run v;
+    int status = -1;
+    memset(st, 0, sizeof *st);
+    if (open_run(&v, p, rate, nout, ctx, err, errlen) == 0) {
+        seed_inflow(&v);
+        if (run_flow(&v, hook, every, ctx, err, errlen) == 0) {
+            measure(&v, st);
+            radiate(&v, rate, out, stride, nout, st);
+            status = 0;
         }
     }
-    status = 0;
-done:
-    free(win);
-    free(tab);
-    free(rec_s);
-    free(series);
-    free(pj);
-    free(pbar);
-    free(xh);
-    if (p->plan_lock) p->plan_lock(ctx, 1);
-    aero_flow3d_free(&s);
-    if (p->plan_lock) p->plan_lock(ctx, 0);
+    close_run(&v, ctx);
     return status;
 }

@@ -1,45 +1,121 @@
-/* aerotex: shared declarations of the command-line tool. */
+/* aerotex: shared declarations of the command-line tool.
+ *
+ * Every command is an aerotex_command: a name, a one-line synopsis, what
+ * it makes, and one option table from which both its parser
+ * (aerotex_parse) and its part of `aerotex help` (aerotex_usage) come.
+ * The commands that run solvers share one job (aerotex_job: output,
+ * rate, duration, threads, the loop plan, the progress bar) and one task
+ * per parallel run (aerotex_task: progress, FFTW planner lock, snapshot
+ * schedule, error). */
 #ifndef AEROTEX_H
 #define AEROTEX_H
 
+#include "texture.h"
+
 #include <omp.h>
 #include <stddef.h>
+#include <stdio.h>
 
-/* subcommands: each returns the process exit status */
-int aerotex_aeolian(int argc, char **argv, int cavity);
-int aerotex_info(int argc, char **argv);
-int aerotex_tree(int argc, char **argv); /* aerotex_tree.c */
-int aerotex_vortex(int argc, char **argv); /* aerotex_vortex.c */
-int aerotex_object(int argc, char **argv); /* aerotex_object.c */
-/* field auralization (paper 002): aerotex_field.c */
-int aerotex_field_demo(int argc, char **argv);
-int aerotex_auralize(int argc, char **argv);
+/* --- option tables ----------------------------------------------------- */
 
-/* vorticity picture: w (U/d) on nx x ny cells, solid fraction for the
-   body; writes an RGB PNG (row 0 at the bottom); 0 or -1 */
-int aerotex_png_vorticity(const char *path, const float *w,
-                          const float *solid, int nx, int ny, float wmax);
+typedef enum {
+    AEROTEX_NUMBER,   /* double in [lo, hi] */
+    AEROTEX_POSITIVE, /* double in (0, hi] */
+    AEROTEX_WHOLE,    /* int, a whole number in [lo, hi] */
+    AEROTEX_SEED,     /* uint32_t, a whole number in [0, 4294967295] */
+    AEROTEX_TEXT,     /* const char *: a file or directory name */
+    AEROTEX_CHOICE,   /* int: the index of the value among value "a|b|c" */
+    AEROTEX_SWITCH,   /* int set to lo, no value */
+    AEROTEX_CUSTOM    /* parse() reads the value(s) */
+} aerotex_kind;
 
-/* a progress bar on stderr for solvers running in parallel (OpenMP) */
+typedef struct aerotex_option {
+    const char *name;   /* "--speed"; "" for the positional argument */
+    aerotex_kind kind;
+    const char *value;  /* the value's name in the usage ("m/s"); CHOICE:
+                           the choices, "a|b|c" */
+    double def;         /* the default, set before parsing; NAN: the
+                           command's init sets it (core defaults) */
+    double lo, hi;      /* range of numbers */
+    size_t at;          /* destination: offset in the command's job */
+    const char *help;   /* one line or two, '\n' between them */
+    const char *shown;  /* the default as the usage says it; NULL: the
+                           value at the destination after init */
+    /* CUSTOM: reads argv[*i + 1...] into job, advancing *i; 0 or -1 with
+       a message */
+    int (*parse)(void *job, const char *cmd, int argc, char **argv, int *i);
+} aerotex_option;
+
+/* the last rows of a texture command's table (its job starts with an
+   aerotex_job): what runs in parallel, what --png writes, -q, -o, the end */
+#define AEROTEX_JOB_OPTIONS(runs, png)                                       \
+    {"--threads", AEROTEX_WHOLE, "n", NAN, 1.0, 256.0,                       \
+     offsetof(aerotex_job, threads), runs " run in parallel", "all cores",   \
+     NULL},                                                                  \
+    {"--png", AEROTEX_TEXT, "DIR", NAN, 0, 0, offsetof(aerotex_job, png_dir), \
+     png, NULL, NULL},                                                       \
+    {"-q", AEROTEX_SWITCH, NULL, NAN, 1, 0, offsetof(aerotex_job, quiet),    \
+     "no progress bar", NULL, NULL},                                         \
+    {"-o", AEROTEX_TEXT, "FILE.wav", NAN, 0, 0, offsetof(aerotex_job, out),  \
+     "the texture", NULL, NULL},                                             \
+    {NULL, 0, NULL, 0, 0, 0, 0, NULL, NULL, NULL}
+
+typedef struct aerotex_command {
+    const char *name;       /* "aeolian" */
+    const char *synopsis;   /* after "aerotex NAME " in the usage */
+    const char *about;      /* what it makes, a few lines */
+    const aerotex_option *options; /* ends with name NULL; NULL: none */
+    size_t job_size;        /* the job the options fill */
+    void (*init)(void *job); /* defaults the table does not set (or NULL) */
+    int (*run)(int argc, char **argv); /* the exit status */
+} aerotex_command;
+
+/* the commands (each file defines its own) */
+extern const aerotex_command aerotex_aeolian_command, aerotex_cavity_command,
+    aerotex_vortex_command, aerotex_object_command, aerotex_info_command,
+    aerotex_tree_command, aerotex_field_demo_command,
+    aerotex_auralize_command;
+
+/* the table's defaults, then cmd->init, into job (cmd->job_size bytes) */
+void aerotex_defaults(const aerotex_command *cmd, void *job);
+/* argv[1..argc-1] into job by cmd's table: 0, or -1 with a message that
+   names the option and the command */
+int aerotex_parse(const aerotex_command *cmd, void *job, int argc,
+                  char **argv);
+/* cmd's part of `aerotex help`, from its table */
+void aerotex_usage(FILE *f, const aerotex_command *cmd);
+
+/* the number after argv[*i] into *x (advancing *i), checked against
+   [lo, hi]: 0, or -1 with a message naming cmd and the option opt */
+int aerotex_number(const char *cmd, const char *opt, int argc, char **argv,
+                   int *i, double lo, double hi, double *x);
+
+/* messages on stderr, prefixed "aerotex: " */
+void aerotex_error(const char *fmt, ...);
+
+/* --- clocks and the progress bar ----------------------------------------- */
+
+/* monotonic seconds; processor seconds of this process (benchmark figures,
+   which wall time would inflate on a shared machine) */
+double aerotex_now(void);
+double aerotex_cpu_now(void);
+
+/* a progress bar on stderr, safe from parallel solvers (OpenMP) */
 typedef struct {
-    long total, done;     /* solver steps */
+    const char *what;     /* a label before the bar, or NULL */
+    long total, done;     /* work units (solver steps, frames, samples) */
     double t0, last;      /* aerotex_now() at the start, last drawn */
     int show;             /* draw at all (a terminal, no -q) */
     omp_lock_t plan;      /* FFTW's planner is not thread-safe */
 } aerotex_progress;
-/* monotonic seconds */
-double aerotex_now(void);
-/* draws the bar (at most every 0.25 s unless final) */
-void aerotex_progress_show(aerotex_progress *p, int final);
+void aerotex_progress_start(aerotex_progress *p, const char *what, long total,
+                            int quiet);
+/* n more units done; redraws at most every 0.25 s */
+void aerotex_progress_add(aerotex_progress *p, long n);
+/* the final bar ("took"); releases the lock */
+void aerotex_progress_end(aerotex_progress *p);
 
-/* the number after option argv[*i] into *x (advancing *i), checked
-   against [lo, hi]: 0, or -1 with a message */
-int aerotex_number(int argc, char **argv, int *i, double lo, double hi,
-                   double *x);
-
-/* the command line as one string, "aerotex ARGV..." (the `command`
-   metadata of every texture) */
-void aerotex_command_line(char *buf, size_t len, int argc, char **argv);
+/* --- the job of a texture command ---------------------------------------- */
 
 /* a seamless loop of about l0 frames: its length is searched in
    [lmin, lmax] (+-5 %) with xfade frames of cross-fade, so the simulation
@@ -49,7 +125,65 @@ typedef struct {
 } aerotex_loop_plan;
 aerotex_loop_plan aerotex_plan_loop(int l0);
 
-/* messages on stderr, prefixed "aerotex: " */
-void aerotex_error(const char *fmt, ...);
+typedef struct {
+    const char *name;     /* the command, for messages */
+    const char *out, *png_dir;
+    double duration, rate;
+    int threads, quiet;
+    char command[4096];   /* "aerotex ARGV...", the `command` metadata */
+    aerotex_loop_plan loop;
+    float *raw;           /* loop.avail frames x channels, from the runs */
+    int channels;
+    aerotex_progress prog;
+    double t_start;
+} aerotex_job;
+
+/* the table's defaults, cmd->init and the options into job (which starts
+   with an aerotex_job), then -o required: 0, or -1 with a message */
+int aerotex_job_parse(const aerotex_command *cmd, void *job, int argc,
+                      char **argv);
+/* after the command's own checks: duration * rate of 64 samples or more
+   (else 2), the command line and the loop plan, the --png directory made
+   and raw allocated (else 1), the clock started; 0 when the job can run.
+   aerotex_job_end frees raw. */
+int aerotex_job_start(aerotex_job *j, int argc, char **argv, int channels);
+void aerotex_job_end(aerotex_job *j);
+/* "NAME: message" on stderr: 1 (the exit status of a failed run) */
+int aerotex_job_fail(const aerotex_job *j, const char *message);
+/* the number of threads for n parallel runs */
+int aerotex_job_threads(const aerotex_job *j, int n);
+/* raw made a seamless loop: its length */
+int aerotex_job_loop(aerotex_job *j);
+/* the first len frames of raw into tex->data */
+void aerotex_job_fill(const aerotex_job *j, aero_texture *tex, int len);
+/* the loop's metadata: rate, frames, loop, xfade */
+void aerotex_job_loop_meta(const aerotex_job *j, aero_texture *tex);
+/* the command metadata, then the file: 0, or 1 with a message */
+int aerotex_job_save(const aerotex_job *j, aero_texture *tex);
+
+/* one of a job's parallel runs (a direction, a speed): the first member
+   of a command's run context, which the solver's hooks receive */
+typedef struct {
+    aerotex_job *job;
+    int index;
+    long last_step;       /* progress counted up to this step */
+    long snap_every, snap; /* --png: every snap_every steps; the next */
+    char err[256];
+} aerotex_task;
+/* for the solvers' plan_lock: ctx is an aerotex_task (or starts with one) */
+void aerotex_plan_lock(void *ctx, int on);
+/* progress up to step */
+void aerotex_task_progress(aerotex_task *t, long step);
+/* a --png snapshot is due at step (then counted): 1 or 0 */
+int aerotex_task_snapshot_due(aerotex_task *t, long step);
+
+/* x[0..n-1] as "a,b,c" with fmt per number */
+void aerotex_join(char *buf, size_t len, const double *x, int n,
+                  const char *fmt);
+
+/* vorticity picture: w (U/d) on nx x ny cells, solid fraction for the
+   body; writes an RGB PNG (row 0 at the bottom); 0 or -1 */
+int aerotex_png_vorticity(const char *path, const float *w,
+                          const float *solid, int nx, int ny, float wmax);
 
 #endif

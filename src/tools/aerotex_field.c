@@ -11,129 +11,109 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <time.h>
 
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
-
-/* processor time of this process: the benchmark figures, which wall time
- * would inflate on a machine shared with other jobs */
-static double cpu_now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
+/* --- aerotex field-demo ------------------------------------------------ */
 
 typedef struct {
-    int show;
-    double t0, last;
-    const char *what;
-} bar_t;
+    aero_field_demo d;
+    const char *dir;
+    int quiet;
+} demo_job;
 
-static void bar(bar_t *b, double frac, int final)
+#define AT(field) offsetof(demo_job, field)
+static const aerotex_option demo_options[] = {
+    {"--size", AEROTEX_WHOLE, "N", NAN, 4.0, 512.0, AT(d.size),
+     "vertices along each edge of the cube", NULL, NULL},
+    {"--frames", AEROTEX_WHOLE, "N", NAN, 1.0, 100000.0, AT(d.frames),
+     "frames", NULL, NULL},
+    {"--spacing", AEROTEX_NUMBER, "m", NAN, 1e-5, 1e3, AT(d.spacing),
+     "vertex spacing", NULL, NULL},
+    {"--rate", AEROTEX_NUMBER, "fps", NAN, 1e-3, 1e6, AT(d.rate),
+     "frames per second", NULL, NULL},
+    {"--shell-speed", AEROTEX_NUMBER, "m/s", NAN, 0.0, 1e3,
+     AT(d.shell_speed), "the burst's expansion", NULL, NULL},
+    {"--velocity", AEROTEX_SWITCH, NULL, NAN, 1, 0, AT(d.velocity),
+     "also the fields vx vy vz", NULL, NULL},
+    {"--seed", AEROTEX_SEED, "n", NAN, 0, 0, AT(d.seed), "turbulence seed",
+     NULL, NULL},
+    {"-q", AEROTEX_SWITCH, NULL, NAN, 1, 0, AT(quiet), "no progress bar",
+     NULL, NULL},
+    {"-o", AEROTEX_TEXT, "DIR", NAN, 0, 0, AT(dir), "the volume", NULL, NULL},
+    {NULL, 0, NULL, 0, 0, 0, 0, NULL, NULL, NULL}};
+#undef AT
+
+static void demo_init(void *job)
 {
-    double t = now();
-    int width = 30, fill;
-    if (!b->show || (!final && t - b->last < 0.2))
-        return;
-    b->last = t;
-    if (frac > 1) frac = 1;
-    fill = (int)(frac * width + 0.5);
-    fprintf(stderr, "\r%-14s [%.*s%*s] %3d%%  %.1f s ", b->what, fill,
-            "##############################", width - fill, "",
-            (int)(100 * frac), t - b->t0);
-    if (final)
-        fprintf(stderr, "\n");
-    fflush(stderr);
+    aero_field_demo_default(&((demo_job *)job)->d);
 }
 
-
-/* --- aerotex field-demo ---------------------------------------------------- */
-
-int aerotex_field_demo(int argc, char **argv)
+/* the header and every frame of the volume: the exit status */
+static int write_volume(const demo_job *j, const aero_volume_info *v)
 {
-    aero_field_demo d;
-    aero_volume_info v;
-    const char *dir = NULL;
-    int quiet = 0;
-    double x;
+    aerotex_progress prog;
     char err[512];
-    aero_field_demo_default(&d);
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "-o") && i + 1 < argc) {
-            dir = argv[++i];
-        } else if (!strcmp(a, "--size")) {
-            if (aerotex_number(argc, argv, &i, 4, 512, &x)) return 2;
-            d.size = (int)x;
-        } else if (!strcmp(a, "--frames")) {
-            if (aerotex_number(argc, argv, &i, 1, 100000, &x)) return 2;
-            d.frames = (int)x;
-        } else if (!strcmp(a, "--spacing")) {
-            if (aerotex_number(argc, argv, &i, 1e-5, 1e3, &x)) return 2;
-            d.spacing = x;
-        } else if (!strcmp(a, "--rate")) {
-            if (aerotex_number(argc, argv, &i, 1e-3, 1e6, &x)) return 2;
-            d.rate = x;
-        } else if (!strcmp(a, "--shell-speed")) {
-            if (aerotex_number(argc, argv, &i, 0, 1e3, &x)) return 2;
-            d.shell_speed = x;
-        } else if (!strcmp(a, "--seed")) {
-            if (aerotex_number(argc, argv, &i, 0, 4294967295.0, &x)) return 2;
-            d.seed = (uint32_t)x;
-        } else if (!strcmp(a, "--velocity")) {
-            d.velocity = 1;
-        } else if (!strcmp(a, "-q")) {
-            quiet = 1;
-        } else {
-            aerotex_error("field-demo: unknown option '%s'", a);
-            return 2;
-        }
-    }
-    if (!dir) {
-        aerotex_error("field-demo: no output directory (-o DIR)");
-        return 2;
-    }
-    if (mkdir(dir, 0777) && errno != EEXIST) {
-        aerotex_error("can't make directory %s: %s", dir, strerror(errno));
-        return 1;
-    }
-    aero_field_demo_info(&d, &v);
-    if (strlen(dir) >= sizeof v.dir) {
-        aerotex_error("directory name too long");
-        return 2;
-    }
-    strcpy(v.dir, dir);
-    if (aero_volume_write_header(&v, err, sizeof err)) {
+    float *data;
+    if (aero_volume_write_header(v, err, sizeof err)) {
         aerotex_error("%s", err);
         return 1;
     }
-    float *data = malloc(aero_volume_count(&v) * v.fields * sizeof(float));
+    data = malloc(aero_volume_count(v) * v->fields * sizeof(float));
     if (!data) {
         aerotex_error("out of memory");
         return 1;
     }
-    bar_t b = {!quiet, now(), 0, "field-demo"};
-    for (int k = 0; k < d.frames; k++) {
-        aero_field_demo_frame(&d, k, data);
-        if (aero_volume_write_frame(&v, k, data, err, sizeof err)) {
+    aerotex_progress_start(&prog, "field-demo", j->d.frames, j->quiet);
+    for (int k = 0; k < j->d.frames; k++) {
+        aero_field_demo_frame(&j->d, k, data);
+        if (aero_volume_write_frame(v, k, data, err, sizeof err)) {
             aerotex_error("%s", err);
             free(data);
+            aerotex_progress_end(&prog);
             return 1;
         }
-        bar(&b, (k + 1.0) / d.frames, k + 1 == d.frames);
+        aerotex_progress_add(&prog, 1);
     }
+    aerotex_progress_end(&prog);
     free(data);
-    printf("wrote %s: %d frames of %dx%dx%d (%s), %g m spacing, %g frames/s\n",
-           dir, d.frames, d.size, d.size, d.size,
-           d.velocity ? "density vx vy vz" : "density", d.spacing, d.rate);
     return 0;
 }
+
+static int field_demo_run(int argc, char **argv)
+{
+    demo_job j;
+    aero_volume_info v;
+    aerotex_defaults(&aerotex_field_demo_command, &j);
+    if (aerotex_parse(&aerotex_field_demo_command, &j, argc, argv))
+        return 2;
+    if (!j.dir) {
+        aerotex_error("field-demo: no output directory (-o DIR)");
+        return 2;
+    }
+    if (mkdir(j.dir, 0777) && errno != EEXIST) {
+        aerotex_error("field-demo: can't make directory %s: %s", j.dir,
+                      strerror(errno));
+        return 1;
+    }
+    aero_field_demo_info(&j.d, &v);
+    if (strlen(j.dir) >= sizeof v.dir) {
+        aerotex_error("field-demo: directory name too long");
+        return 2;
+    }
+    strcpy(v.dir, j.dir);
+    if (write_volume(&j, &v))
+        return 1;
+    printf("wrote %s: %d frames of %dx%dx%d (%s), %g m spacing, %g frames/s\n",
+           j.dir, j.d.frames, j.d.size, j.d.size, j.d.size,
+           j.d.velocity ? "density vx vy vz" : "density", j.d.spacing,
+           j.d.rate);
+    return 0;
+}
+
+const aerotex_command aerotex_field_demo_command = {
+    "field-demo", "-o DIR",
+    "writes a synthetic volume (an expanding burst with turbulence) in the\n"
+    "field volume format (src/core/field_volume.h)",
+    demo_options, sizeof(demo_job), demo_init, field_demo_run};
 
 /* --- aerotex auralize --------------------------------------------------- */
 
@@ -228,242 +208,354 @@ static void path_at(const path_point *p, int n, double t, double *x)
         x[a] = p[k].p[a] + (p[k + 1].p[a] - p[k].p[a]) * f;
 }
 
-int aerotex_auralize(int argc, char **argv)
-{
-    const char *dir = NULL, *path_file = NULL, *out_file = NULL;
+typedef struct {
+    const char *dir, *path_file, *out_file;
     aero_field_params par;
     aero_field_demo demo;
-    aero_volume_info info;
-    aero_field_sources src;
-    aero_field_render r;
-    double rate = 48000, speed = 0, duration = 0, gain_db = 0, x;
-    int quiet = 0, direct = 0, use_demo = 0, rc = 1;
-    path_point *path = NULL;
-    int npath = 0;
-    char err[512];
-    aero_field_params_default(&par);
-    aero_field_demo_default(&demo);
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "-o") && i + 1 < argc)
-            out_file = argv[++i];
-        else if (!strcmp(a, "--path") && i + 1 < argc)
-            path_file = argv[++i];
-        else if (!strcmp(a, "--rate")) {
-            if (aerotex_number(argc, argv, &i, 1000, 384000, &rate)) return 2;
-        } else if (!strcmp(a, "--speed")) {
-            if (aerotex_number(argc, argv, &i, 1e-3, 1e6, &speed)) return 2;
-        } else if (!strcmp(a, "--duration")) {
-            if (aerotex_number(argc, argv, &i, 1e-3, 3600, &duration)) return 2;
-        } else if (!strcmp(a, "--gain")) {
-            if (aerotex_number(argc, argv, &i, -200, 120, &gain_db)) return 2;
-        } else if (!strcmp(a, "--threshold")) {
-            for (int t = 0; t < 3; t++)
-                if (aerotex_number(argc, argv, &i, 1e-30, 1e30, &par.threshold[t]))
-                    return 2;
-        } else if (!strcmp(a, "--zero")) {
-            if (aerotex_number(argc, argv, &i, 0, 1, &par.zero)) return 2;
-        } else if (!strcmp(a, "--map")) {
-            if (aerotex_number(argc, argv, &i, -1e30, 1e30, &par.in_lo) ||
-                aerotex_number(argc, argv, &i, -1e30, 1e30, &par.in_hi) ||
-                aerotex_number(argc, argv, &i, 0, 1e6, &par.rho_lo) ||
-                aerotex_number(argc, argv, &i, 0, 1e6, &par.rho_hi))
-                return 2;
-        } else if (!strcmp(a, "--vscale")) {
-            if (aerotex_number(argc, argv, &i, -1e6, 1e6, &par.vscale)) return 2;
-        } else if (!strcmp(a, "--log"))
-            par.log_input = 1;
-        else if (!strcmp(a, "--no-velocity"))
-            par.use_velocity = 0;
-        else if (!strcmp(a, "--direct"))
-            direct = 1;
-        else if (!strcmp(a, "--demo")) {
-            /* the synthetic burst in memory, no files (benchmarks) */
-            use_demo = 1;
-            if (i + 1 < argc && argv[i + 1][0] != '-') {
-                if (aerotex_number(argc, argv, &i, 4, 512, &x)) return 2;
-                demo.size = (int)x;
-            }
-        } else if (!strcmp(a, "-q"))
-            quiet = 1;
-        else if (a[0] == '-') {
-            aerotex_error("auralize: unknown option '%s'", a);
-            return 2;
-        } else if (!dir)
-            dir = a;
-        else {
-            aerotex_error("auralize: one volume directory only ('%s')", a);
-            return 2;
-        }
+    double rate, speed, duration, gain_db;
+    int quiet, direct, use_demo;
+} auralize_job;
+
+/* the volume directory, given once */
+static int parse_dir(void *job, const char *cmd, int argc, char **argv,
+                     int *i)
+{
+    auralize_job *j = job;
+    (void)argc;
+    if (j->dir) {
+        aerotex_error("%s: one volume directory only ('%s')", cmd, argv[*i]);
+        return -1;
     }
-    if (!dir && !use_demo) {
+    j->dir = argv[*i];
+    return 0;
+}
+
+static int parse_threshold(void *job, const char *cmd, int argc, char **argv,
+                           int *i)
+{
+    auralize_job *j = job;
+    for (int t = 0; t < 3; t++)
+        if (aerotex_number(cmd, "--threshold", argc, argv, i, 1e-30, 1e30,
+                           &j->par.threshold[t]))
+            return -1;
+    return 0;
+}
+
+static int parse_map(void *job, const char *cmd, int argc, char **argv,
+                     int *i)
+{
+    auralize_job *j = job;
+    return aerotex_number(cmd, "--map", argc, argv, i, -1e30, 1e30,
+                          &j->par.in_lo) ||
+           aerotex_number(cmd, "--map", argc, argv, i, -1e30, 1e30,
+                          &j->par.in_hi) ||
+           aerotex_number(cmd, "--map", argc, argv, i, 0, 1e6,
+                          &j->par.rho_lo) ||
+           aerotex_number(cmd, "--map", argc, argv, i, 0, 1e6,
+                          &j->par.rho_hi)
+               ? -1 : 0;
+}
+
+/* --demo [N]: the synthetic burst in memory, no files (benchmarks) */
+static int parse_demo(void *job, const char *cmd, int argc, char **argv,
+                      int *i)
+{
+    auralize_job *j = job;
+    double x;
+    j->use_demo = 1;
+    if (*i + 1 < argc && argv[*i + 1][0] != '-') {
+        if (aerotex_number(cmd, "--demo", argc, argv, i, 4, 512, &x))
+            return -1;
+        j->demo.size = (int)x;
+    }
+    return 0;
+}
+
+#define AT(field) offsetof(auralize_job, field)
+static const aerotex_option auralize_options[] = {
+    {"", AEROTEX_CUSTOM, "DIR", NAN, 0, 0, 0, NULL, NULL, parse_dir},
+    {"--path", AEROTEX_TEXT, "FILE", NAN, 0, 0, AT(path_file),
+     "the listener: lines 't x y z', seconds and metres,\nlinear in "
+     "between", NULL, NULL},
+    {"--rate", AEROTEX_NUMBER, "Hz", 48000.0, 1000.0, 384000.0, AT(rate),
+     "sample rate", NULL, NULL},
+    {"--speed", AEROTEX_NUMBER, "fps", 0.0, 1e-3, 1e6, AT(speed),
+     "playback speed", "the data's rate", NULL},
+    {"--threshold", AEROTEX_CUSTOM, "M D Q", NAN, 0, 0, 0,
+     "monopole, dipole and quadrupole thresholds", "40 2e5 2e5",
+     parse_threshold},
+    {"--zero", AEROTEX_NUMBER, "f", NAN, 0.0, 1.0, AT(par.zero),
+     "\"~0\" = below f * threshold", NULL, NULL},
+    {"--map", AEROTEX_CUSTOM, "IN_LO IN_HI RHO_LO RHO_HI", NAN, 0, 0, 0,
+     "the data's range onto air density", "0 1 0 1", parse_map},
+    {"--log", AEROTEX_SWITCH, NULL, NAN, 1, 0, AT(par.log_input),
+     "the data hold log10 of the value", NULL, NULL},
+    {"--vscale", AEROTEX_NUMBER, "k", NAN, -1e6, 1e6, AT(par.vscale),
+     "gradient mapping, m/s per kg/m^4", NULL, NULL},
+    {"--no-velocity", AEROTEX_SWITCH, NULL, NAN, 0, 0, AT(par.use_velocity),
+     "ignore the volume's velocity fields", NULL, NULL},
+    {"--gain", AEROTEX_NUMBER, "dB", 0.0, -200.0, 120.0, AT(gain_db), "gain",
+     NULL, NULL},
+    {"--duration", AEROTEX_NUMBER, "s", 0.0, 1e-3, 3600.0, AT(duration),
+     "length of the sound", "until the last sound arrives", NULL},
+    {"--direct", AEROTEX_SWITCH, NULL, NAN, 1, 0, AT(direct),
+     "per-sample reference sum", NULL, NULL},
+    {"--demo", AEROTEX_CUSTOM, "N", NAN, 0, 0, 0,
+     "the synthetic burst of N^3 in memory instead of DIR", "", parse_demo},
+    {"-q", AEROTEX_SWITCH, NULL, NAN, 1, 0, AT(quiet), "no progress bar",
+     NULL, NULL},
+    {"-o", AEROTEX_TEXT, "OUT.wav", NAN, 0, 0, AT(out_file), "the sound",
+     NULL, NULL},
+    {NULL, 0, NULL, 0, 0, 0, 0, NULL, NULL, NULL}};
+#undef AT
+
+static void auralize_init(void *job)
+{
+    auralize_job *j = job;
+    aero_field_params_default(&j->par);
+    aero_field_demo_default(&j->demo);
+}
+
+/* the options, checked: 0, or 2 with a message */
+static int auralize_args(auralize_job *j, int argc, char **argv)
+{
+    char err[512];
+    aerotex_defaults(&aerotex_auralize_command, j);
+    if (aerotex_parse(&aerotex_auralize_command, j, argc, argv))
+        return 2;
+    if (!j->dir && !j->use_demo) {
         aerotex_error("auralize: no volume directory (aerotex auralize DIR "
                       "--path FILE -o OUT.wav)");
         return 2;
     }
-    if (!path_file) {
+    if (!j->path_file) {
         aerotex_error("auralize: no listener path (--path FILE, lines 't x y "
                       "z')");
         return 2;
     }
-    if (!out_file) {
+    if (!j->out_file) {
         aerotex_error("auralize: no output file (-o OUT.wav)");
         return 2;
     }
-    if (aero_field_params_check(&par, err, sizeof err)) {
-        aerotex_error("%s", err);
+    if (aero_field_params_check(&j->par, err, sizeof err)) {
+        aerotex_error("auralize: %s", err);
         return 2;
     }
-    if (read_path(path_file, &path, &npath))
-        return 2;
-    if (use_demo)
-        aero_field_demo_info(&demo, &info);
-    else if (aero_volume_read_header(dir, &info, err, sizeof err)) {
-        aerotex_error("%s", err);
-        free(path);
-        return 1;
-    }
+    return 0;
+}
 
-    /* preprocessing, timed with and without reading the frames */
+/* processor seconds: preprocessing (with reading or synthesising the
+   frames), its computing alone, rendering */
+typedef struct {
+    double pre, compute, render;
+} timing;
+
+/* every frame read (or synthesised) and preprocessed into src: 0 or 1 */
+static int preprocess(const auralize_job *j, const aero_volume_info *info,
+                      aero_field_sources *src, timing *tm)
+{
     aero_field_pre pre;
-    float *raw = malloc(aero_volume_count(&info) * info.fields *
+    aerotex_progress prog;
+    char err[512];
+    float *raw = malloc(aero_volume_count(info) * info->fields *
                         sizeof(float));
-    double t_start = cpu_now(), t_compute = 0;
-    bar_t b = {!quiet, t_start, 0, "preprocessing"};
-    if (!raw || aero_field_pre_init(&pre, &info, &par, err, sizeof err)) {
+    double t_start = aerotex_cpu_now(), t0;
+    int bad = 0;
+    if (!raw || aero_field_pre_init(&pre, info, &j->par, err, sizeof err)) {
         aerotex_error("%s", raw ? err : "out of memory");
         free(raw);
-        free(path);
         return 1;
     }
-    for (int k = 0; k < info.frames; k++) {
-        if (use_demo)
-            aero_field_demo_frame(&demo, k, raw);
-        else if (aero_volume_read_frame(&info, k, raw, err, sizeof err)) {
-            aerotex_error("%s", err);
-            aero_field_pre_free(&pre);
-            free(raw);
-            free(path);
-            return 1;
+    aerotex_progress_start(&prog, "preprocessing", info->frames, j->quiet);
+    for (int k = 0; k < info->frames && !bad; k++) {
+        if (j->use_demo)
+            aero_field_demo_frame(&j->demo, k, raw);
+        else if (aero_volume_read_frame(info, k, raw, err, sizeof err)) {
+            bad = 1;
+            break;
         }
-        double t0 = cpu_now();
-        if (aero_field_pre_push(&pre, raw, err, sizeof err)) {
-            aerotex_error("%s", err);
-            aero_field_pre_free(&pre);
-            free(raw);
-            free(path);
-            return 1;
-        }
-        t_compute += cpu_now() - t0;
-        bar(&b, (k + 1.0) / info.frames, 0);
+        t0 = aerotex_cpu_now();
+        bad = aero_field_pre_push(&pre, raw, err, sizeof err);
+        tm->compute += aerotex_cpu_now() - t0;
+        aerotex_progress_add(&prog, 1);
     }
-    {
-        double t0 = cpu_now();
-        int bad = aero_field_pre_finish(&pre, &src, err, sizeof err);
-        t_compute += cpu_now() - t0;
-        aero_field_pre_free(&pre);
-        free(raw);
-        if (bad) {
-            aerotex_error("%s", err);
-            free(path);
-            return 1;
-        }
+    if (!bad) {
+        t0 = aerotex_cpu_now();
+        bad = aero_field_pre_finish(&pre, src, err, sizeof err);
+        tm->compute += aerotex_cpu_now() - t0;
     }
-    bar(&b, 1, 1);
-    double t_pre = cpu_now() - t_start;
+    aero_field_pre_free(&pre);
+    free(raw);
+    aerotex_progress_end(&prog);
+    if (bad) {
+        aerotex_error("%s", err);
+        return 1;
+    }
+    tm->pre = aerotex_cpu_now() - t_start;
+    return 0;
+}
 
-    /* rendering */
-    aero_field_render_init(&r, rate);
-    r.direct = direct;
-    if (aero_field_render_set_sources(&r, &src)) {
+/* the sound's length: given, or until the last source is heard from the
+   farthest point of the path */
+static double sound_length(const auralize_job *j,
+                           const aero_field_sources *src, double speed,
+                           const path_point *path, int npath)
+{
+    double far = 0, duration = j->duration;
+    if (duration > 0)
+        return duration;
+    for (int k = 0; k < npath; k++) {
+        double d = sqrt(path[k].p[0] * path[k].p[0] +
+                        path[k].p[1] * path[k].p[1] +
+                        path[k].p[2] * path[k].p[2]);
+        if (d > far)
+            far = d;
+    }
+    duration = aero_field_render_length(src, speed, far);
+    return path[npath - 1].t > duration ? path[npath - 1].t : duration;
+}
+
+/* total samples heard along the path into pcm */
+static void render(const auralize_job *j, aero_field_render *r,
+                   const path_point *path, int npath, float *pcm, long total,
+                   timing *tm)
+{
+    aerotex_progress prog;
+    double p[3];
+    long done = 0;
+    path_at(path, npath, 0, p);
+    aero_field_render_place_listener(r, p[0], p[1], p[2]);
+    aero_field_render_play(r);
+    aerotex_progress_start(&prog, "rendering", total, j->quiet);
+    while (done < total) {
+        int c = total - done < AERO_FIELD_CHUNK ? (int)(total - done)
+                                                : AERO_FIELD_CHUNK;
+        double t0;
+        /* the path, linear between its points, sampled at chunk ends */
+        path_at(path, npath, (done + c) / j->rate, p);
+        memcpy(r->target, p, sizeof p);
+        r->ramp_left = c;
+        t0 = aerotex_cpu_now();
+        aero_field_render_process(r, pcm + done, c);
+        tm->render += aerotex_cpu_now() - t0;
+        done += c;
+        aerotex_progress_add(&prog, c);
+    }
+    aerotex_progress_end(&prog);
+}
+
+/* a mono float WAV: 0 or 1 */
+static int write_wav(const char *file, const float *pcm, long total,
+                     double rate)
+{
+    SF_INFO si;
+    SNDFILE *f;
+    memset(&si, 0, sizeof si);
+    si.samplerate = (int)rate;
+    si.channels = 1;
+    si.format = SF_FORMAT_WAV | SF_FORMAT_FLOAT;
+    f = sf_open(file, SFM_WRITE, &si);
+    if (!f) {
+        aerotex_error("can't write %s: %s", file, sf_strerror(NULL));
+        return 1;
+    }
+    sf_set_string(f, SF_STR_COMMENT, "aerotex auralize (paper 002), "
+                  "sound pressure in Pa");
+    sf_writef_float(f, pcm, total);
+    sf_close(f);
+    return 0;
+}
+
+static void report(const auralize_job *j, const aero_volume_info *info,
+                   const aero_field_sources *src, const aero_field_render *r,
+                   const float *pcm, long total, const timing *tm)
+{
+    double peak = 0;
+    for (long i = 0; i < total; i++)
+        if (fabs(pcm[i]) > peak)
+            peak = fabs(pcm[i]);
+    printf("volume: %dx%dx%d, %d frames at %g frames/s, played at %g\n",
+           info->nx, info->ny, info->nz, info->frames, info->rate,
+           r->speed_target);
+    printf("preprocessing: %.3f s CPU, %.2f ms per frame (%.2f ms computing, "
+           "the rest reading or synthesising)\n", tm->pre,
+           1e3 * tm->pre / info->frames, 1e3 * tm->compute / info->frames);
+    printf("source points over all frames: %ld monopole, %ld dipole, %ld "
+           "quadrupole; %d active vertices\n", src->points[1], src->points[2],
+           src->points[3], src->count);
+    printf("rendering: %ld samples at %g Hz in %.3f s CPU, %.3f us per sample "
+           "(%s)\n", total, j->rate, tm->render, 1e6 * tm->render / total,
+           j->direct ? "per-sample sum" : "chunk polynomials");
+    printf("wrote %s: %.3f s, peak %.4g Pa%s\n", j->out_file, total / j->rate,
+           peak, r->clamped ? " (listener clamped at Mach 0.3)" : "");
+}
+
+/* renders the sources along the path and writes the sound: 0 or 1 */
+static int sound(const auralize_job *j, const aero_volume_info *info,
+                 const aero_field_sources *src, const path_point *path,
+                 int npath, const timing *pre)
+{
+    aero_field_render r;
+    timing tm = *pre;
+    float *pcm = NULL;
+    long total;
+    int rc = 1;
+    aero_field_render_init(&r, j->rate);
+    r.direct = j->direct;
+    if (aero_field_render_set_sources(&r, src)) {
         aerotex_error("out of memory");
         goto done;
     }
-    if (speed > 0)
-        aero_field_render_set_speed(&r, speed);
-    aero_field_render_set_gain_db(&r, gain_db);
-    {
-        double far = 0;
-        for (int k = 0; k < npath; k++) {
-            double d = sqrt(path[k].p[0] * path[k].p[0] +
-                            path[k].p[1] * path[k].p[1] +
-                            path[k].p[2] * path[k].p[2]);
-            if (d > far)
-                far = d;
-        }
-        if (!(duration > 0)) {
-            duration = aero_field_render_length(&src, r.speed_target, far);
-            if (path[npath - 1].t > duration)
-                duration = path[npath - 1].t;
-        }
-    }
-    long total = (long)ceil(duration * rate), done_n = 0;
-    float *pcm = malloc(sizeof(float) * (total > 0 ? total : 1));
+    if (j->speed > 0)
+        aero_field_render_set_speed(&r, j->speed);
+    aero_field_render_set_gain_db(&r, j->gain_db);
+    total = (long)ceil(sound_length(j, src, r.speed_target, path, npath) *
+                       j->rate);
+    pcm = malloc(sizeof(float) * (total > 0 ? total : 1));
     if (!pcm) {
         aerotex_error("out of memory for %ld samples", total);
         goto done;
     }
-    {
-        double p0[3];
-        path_at(path, npath, 0, p0);
-        aero_field_render_place_listener(&r, p0[0], p0[1], p0[2]);
-    }
-    aero_field_render_play(&r);
-    bar_t rb = {!quiet, now(), 0, "rendering"};
-    double t_render = 0, peak = 0;
-    while (done_n < total) {
-        int c = total - done_n < AERO_FIELD_CHUNK ? (int)(total - done_n)
-                                                  : AERO_FIELD_CHUNK;
-        double p1[3];
-        /* the path, linear between its points, sampled at chunk ends */
-        path_at(path, npath, (done_n + c) / rate, p1);
-        memcpy(r.target, p1, sizeof p1);
-        r.ramp_left = c;
-        double t0 = cpu_now();
-        aero_field_render_process(&r, pcm + done_n, c);
-        t_render += cpu_now() - t0;
-        done_n += c;
-        bar(&rb, (double)done_n / total, 0);
-    }
-    bar(&rb, 1, 1);
-    for (long i = 0; i < total; i++)
-        if (fabs(pcm[i]) > peak)
-            peak = fabs(pcm[i]);
-    {
-        SF_INFO si;
-        memset(&si, 0, sizeof si);
-        si.samplerate = (int)rate;
-        si.channels = 1;
-        si.format = SF_FORMAT_WAV | SF_FORMAT_FLOAT;
-        SNDFILE *f = sf_open(out_file, SFM_WRITE, &si);
-        if (!f) {
-            aerotex_error("can't write %s: %s", out_file, sf_strerror(NULL));
-            free(pcm);
-            goto done;
-        }
-        sf_set_string(f, SF_STR_COMMENT, "aerotex auralize (paper 002), "
-                      "sound pressure in Pa");
-        sf_writef_float(f, pcm, total);
-        sf_close(f);
-    }
-    free(pcm);
-    printf("volume: %dx%dx%d, %d frames at %g frames/s, played at %g\n",
-           info.nx, info.ny, info.nz, info.frames, info.rate, r.speed_target);
-    printf("preprocessing: %.3f s CPU, %.2f ms per frame (%.2f ms computing, "
-           "the rest reading or synthesising)\n", t_pre, 1e3 * t_pre / info.frames,
-           1e3 * t_compute / info.frames);
-    printf("source points over all frames: %ld monopole, %ld dipole, %ld "
-           "quadrupole; %d active vertices\n", src.points[1], src.points[2],
-           src.points[3], src.count);
-    printf("rendering: %ld samples at %g Hz in %.3f s CPU, %.3f us per sample "
-           "(%s)\n", total, rate, t_render, 1e6 * t_render / total,
-           direct ? "per-sample sum" : "chunk polynomials");
-    printf("wrote %s: %.3f s, peak %.4g Pa%s\n", out_file, total / rate,
-           peak, r.clamped ? " (listener clamped at Mach 0.3)" : "");
-    rc = 0;
+    render(j, &r, path, npath, pcm, total, &tm);
+    rc = write_wav(j->out_file, pcm, total, j->rate);
+    if (!rc)
+        report(j, info, src, &r, pcm, total, &tm);
 done:
+    free(pcm);
     aero_field_render_free(&r);
+    return rc;
+}
+
+static int auralize_run(int argc, char **argv)
+{
+    auralize_job j;
+    aero_volume_info info;
+    aero_field_sources src;
+    timing tm = {0, 0, 0};
+    path_point *path = NULL;
+    int npath = 0, rc;
+    char err[512];
+    rc = auralize_args(&j, argc, argv);
+    if (rc || read_path(j.path_file, &path, &npath))
+        return 2;
+    if (j.use_demo)
+        aero_field_demo_info(&j.demo, &info);
+    else if (aero_volume_read_header(j.dir, &info, err, sizeof err)) {
+        aerotex_error("%s", err);
+        free(path);
+        return 1;
+    }
+    memset(&src, 0, sizeof src);
+    rc = preprocess(&j, &info, &src, &tm);
+    if (!rc)
+        rc = sound(&j, &info, &src, path, npath, &tm);
     aero_field_sources_free(&src);
     free(path);
     return rc;
 }
+
+const aerotex_command aerotex_auralize_command = {
+    "auralize", "DIR --path FILE -o OUT.wav",
+    "field auralization (paper 002): the sound of volume DIR heard along\n"
+    "a listener path",
+    auralize_options, sizeof(auralize_job), auralize_init, auralize_run};

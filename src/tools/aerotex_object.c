@@ -7,176 +7,118 @@
 #include "body_flow.h"
 #include "texture.h"
 
-#include <errno.h>
 #include <math.h>
-#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #define MAX_DIRECTIONS 91
 #define PNG_ZOOM 3
 
-typedef struct {
-    const char *shape, *mesh, *out, *png_dir;
-    double radius, length, handle, tip;
-    int sources, directions, mirror; /* mirror: -1 default */
-    double speed, grid, duration, rate, settle, cfl;
-    int threads, quiet;
-    unsigned seed;
-} ojob_t;
+enum { SHAPE_NONE = -1, SHAPE_SPHERE, SHAPE_CAPSULE, SHAPE_CLUB };
 
 typedef struct {
-    const ojob_t *job;
-    aerotex_progress *prog;
-    int index;
-    long last_step, snap_every, snap;
+    aerotex_job job;
+    int shape;            /* SHAPE_*, or a --mesh */
+    const char *mesh;
+    double radius, length, handle, tip; /* 0: the shape's default */
+    int sources, directions, mirror;   /* 0, 0, -1: by the body */
+    double speed, grid, settle, cfl;
+    uint32_t seed;
+} object_job;
+
+/* one direction: the first member is its task */
+typedef struct {
+    aerotex_task task;
+    const object_job *oj;
     float *slice, *solid;
-    char err[256];
-} octx_t;
-
-static void plan_lock(void *ctx, int on)
-{
-    octx_t *c = ctx;
-    if (on)
-        omp_set_lock(&c->prog->plan);
-    else
-        omp_unset_lock(&c->prog->plan);
-}
+    aero_body_flow_stats st;
+} direction_task;
 
 /* progress, and the vorticity slices of --png (the mid-plane y, which
    holds the body's axis and the flow) */
 static void hook(void *ctx, const aero_flow3d *s, long step, int recording)
 {
-    octx_t *c = ctx;
-    long add = step - c->last_step;
+    direction_task *c = ctx;
+    char path[4096];
+    int j = s->ny / 2, w = s->nx * PNG_ZOOM, h = s->nz * PNG_ZOOM;
+    float scale = (float)(c->oj->grid * s->p.h / c->oj->speed);
     (void)recording;
-    c->last_step = step;
-#pragma omp atomic
-    c->prog->done += add;
-    if (c->prog->show) {
-#pragma omp critical(aerotex_object_progress)
-        aerotex_progress_show(c->prog, 0);
+    aerotex_task_progress(&c->task, step);
+    if (!aerotex_task_snapshot_due(&c->task, step))
+        return;
+    if (!c->slice) {
+        c->slice = malloc(sizeof(float) * (size_t)w * h);
+        c->solid = malloc(sizeof(float) * (size_t)w * h);
+        if (!c->slice || !c->solid)
+            return;
     }
-    if (c->job->png_dir && step >= c->snap * c->snap_every) {
-        char path[4096];
-        int j = s->ny / 2, w = s->nx * PNG_ZOOM, h = s->nz * PNG_ZOOM;
-        float scale = (float)(c->job->grid * s->p.h / c->job->speed);
-        c->snap = step / c->snap_every + 1;
-        if (!c->slice) {
-            c->slice = malloc(sizeof(float) * (size_t)w * h);
-            c->solid = malloc(sizeof(float) * (size_t)w * h);
-            if (!c->slice || !c->solid)
-                return;
+    aero_flow3d_vorticity((aero_flow3d *)s);
+    for (int k = 0; k < h; k++)
+        for (int i = 0; i < w; i++) {
+            size_t at = AERO_F3_C(s, i / PNG_ZOOM, j, k / PNG_ZOOM);
+            c->slice[(size_t)k * w + i] = s->omag[at] * scale;
+            c->solid[(size_t)k * w + i] = s->solid ? s->solid[at] : 0.0f;
         }
-        aero_flow3d_vorticity((aero_flow3d *)s);
-        for (int k = 0; k < h; k++)
-            for (int i = 0; i < w; i++) {
-                size_t at = AERO_F3_C(s, i / PNG_ZOOM, j, k / PNG_ZOOM);
-                c->slice[(size_t)k * w + i] = s->omag[at] * scale;
-                c->solid[(size_t)k * w + i] = s->solid ? s->solid[at] : 0.0f;
-            }
-        snprintf(path, sizeof path, "%s/dir%02d_%05ld.png",
-                 c->job->png_dir, c->index, step);
-        if (aerotex_png_vorticity(path, c->slice, c->solid, w, h, 8.0f))
-            snprintf(c->err, sizeof c->err, "can't write %.200s", path);
-    }
+    snprintf(path, sizeof path, "%s/dir%02d_%05ld.png", c->oj->job.png_dir,
+             c->task.index, step);
+    if (aerotex_png_vorticity(path, c->slice, c->solid, w, h, 8.0f))
+        snprintf(c->task.err, sizeof c->task.err, "can't write %.200s", path);
 }
 
-static int oparse(ojob_t *j, int argc, char **argv)
-{
-    double x;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-#define ONUM(name, lo, hi, field)                                  \
-    if (!strcmp(a, name)) {                                        \
-        if (aerotex_number(argc, argv, &i, lo, hi, &x)) return -1; \
-        field = x;                                                 \
-        continue;                                                  \
-    }
-        ONUM("--radius", 1e-4, 100.0, j->radius)
-        ONUM("--length", 1e-4, 100.0, j->length)
-        ONUM("--handle", 1e-4, 100.0, j->handle)
-        ONUM("--tip", 1e-4, 100.0, j->tip)
-        ONUM("--speed", 0.01, AERO_MACH_LIMIT * AERO_C0, j->speed)
-        ONUM("--grid", 3.0, 64.0, j->grid)
-        ONUM("--duration", 0.02, 10.0, j->duration)
-        ONUM("--rate", 500.0, 192000.0, j->rate)
-        ONUM("--settle", 0.0, 1000.0, j->settle)
-        ONUM("--cfl", 0.05, 1.5, j->cfl)
-#undef ONUM
-        if (!strcmp(a, "--sources") || !strcmp(a, "--directions") ||
-            !strcmp(a, "--threads") || !strcmp(a, "--seed")) {
-            double hi = !strcmp(a, "--sources") ? AERO_BODY_MAX_REGIONS
-                        : !strcmp(a, "--directions") ? MAX_DIRECTIONS
-                        : !strcmp(a, "--threads") ? 256 : 4294967295.0;
-            if (aerotex_number(argc, argv, &i, !strcmp(a, "--seed") ? 0 : 1, hi,
-                        &x))
-                return -1;
-            if (x != floor(x)) {
-                aerotex_error("%s takes a whole number", a);
-                return -1;
-            }
-            if (!strcmp(a, "--sources")) j->sources = (int)x;
-            else if (!strcmp(a, "--directions")) j->directions = (int)x;
-            else if (!strcmp(a, "--threads")) j->threads = (int)x;
-            else j->seed = (unsigned)x;
-            continue;
-        }
-        if (!strcmp(a, "--mirror") || !strcmp(a, "--no-mirror")) {
-            j->mirror = !strcmp(a, "--mirror");
-            continue;
-        }
-        if (!strcmp(a, "--shape") || !strcmp(a, "--mesh") ||
-            !strcmp(a, "-o") || !strcmp(a, "--png")) {
-            if (i + 1 >= argc) {
-                aerotex_error("%s needs a value", a);
-                return -1;
-            }
-            if (!strcmp(a, "--shape")) j->shape = argv[++i];
-            else if (!strcmp(a, "--mesh")) j->mesh = argv[++i];
-            else if (!strcmp(a, "-o")) j->out = argv[++i];
-            else j->png_dir = argv[++i];
-            continue;
-        }
-        if (!strcmp(a, "-q")) {
-            j->quiet = 1;
-            continue;
-        }
-        aerotex_error("unknown option '%s' for object (see 'aerotex help')",
-                      a);
-        return -1;
-    }
-    if (!j->out) {
-        aerotex_error("no output file: add -o FILE.wav");
-        return -1;
-    }
-    if (!!j->shape == !!j->mesh) {
-        aerotex_error("give either --shape sphere|capsule|club or --mesh "
-                      "FILE");
-        return -1;
-    }
-    if (j->shape && strcmp(j->shape, "sphere") && strcmp(j->shape, "capsule")
-        && strcmp(j->shape, "club")) {
-        aerotex_error("--shape takes sphere, capsule or club (or use --mesh "
-                      "FILE), not '%s'", j->shape);
-        return -1;
-    }
-    return 0;
-}
+#define AT(field) offsetof(object_job, field)
+static const aerotex_option object_options[] = {
+    {"--shape", AEROTEX_CHOICE, "sphere|capsule|club", SHAPE_NONE, 0, 0,
+     AT(shape), "a body of revolution about z (or --mesh)", "", NULL},
+    {"--mesh", AEROTEX_TEXT, "FILE", NAN, 0, 0, AT(mesh),
+     "a closed triangle mesh (v/f lines, OBJ subset;\nsee "
+     "textures/README.md), axis z", NULL, NULL},
+    {"--radius", AEROTEX_NUMBER, "m", 0.0, 1e-4, 100.0, AT(radius),
+     "sphere or capsule radius", "sphere 0.05, capsule 0.02", NULL},
+    {"--length", AEROTEX_NUMBER, "m", 0.0, 1e-4, 100.0, AT(length),
+     "capsule or club length", "capsule 0.3, club 0.8", NULL},
+    {"--handle", AEROTEX_NUMBER, "m", 0.0, 1e-4, 100.0, AT(handle),
+     "club radius at the handle", "0.0125", NULL},
+    {"--tip", AEROTEX_NUMBER, "m", 0.0, 1e-4, 100.0, AT(tip),
+     "club radius at the tip", "0.03", NULL},
+    {"--sources", AEROTEX_WHOLE, "n", 0.0, 1.0, AERO_BODY_MAX_REGIONS,
+     AT(sources), "regions: slices along the axis, sectors around\nthe "
+     "flow for a sphere", "1; club 10", NULL},
+    {"--directions", AEROTEX_WHOLE, "N", 0.0, 1.0, MAX_DIRECTIONS,
+     AT(directions), "flow angles from the axis over 0..180 deg\n(0..90 "
+     "with --mirror)", "1 for a sphere, 5 otherwise", NULL},
+    {"--mirror", AEROTEX_SWITCH, NULL, -1.0, 1, 0, AT(mirror),
+     "the body is symmetric under z -> -z", "yes for a capsule", NULL},
+    {"--no-mirror", AEROTEX_SWITCH, NULL, NAN, 0, 0, AT(mirror), "it is not",
+     NULL, NULL},
+    {"--speed", AEROTEX_NUMBER, "m/s", 10.0, 0.01,
+     AERO_MACH_LIMIT * AERO_C0, AT(speed), "base speed v0", NULL, NULL},
+    {"--grid", AEROTEX_NUMBER, "cells", 10.0, 3.0, 64.0, AT(grid),
+     "cells per reference size d", NULL, NULL},
+    {"--duration", AEROTEX_NUMBER, "s", 0.5, 0.02, 10.0, AT(job.duration),
+     "texture length", NULL, NULL},
+    {"--rate", AEROTEX_NUMBER, "Hz", 4000.0, 500.0, 192000.0, AT(job.rate),
+     "texture rate (the 3D steps resolve ~1 kHz)", NULL, NULL},
+    {"--settle", AEROTEX_NUMBER, "d/v0", 25.0, 0.0, 1000.0, AT(settle),
+     "start-up discarded", NULL, NULL},
+    {"--cfl", AEROTEX_NUMBER, "c", 0.7, 0.05, 1.5, AT(cfl),
+     "step = c h / v0", NULL, NULL},
+    {"--seed", AEROTEX_SEED, "n", 1.0, 0, 0, AT(seed), "start-up noise seed",
+     NULL, NULL},
+    AEROTEX_JOB_OPTIONS("directions",
+                        "|vorticity| slices DIR/dirKK_STEP.png")};
 
-static int make_body(ojob_t *j, aero_body_shape *b)
+/* the body: 0, or -1 with a message */
+static int make_body(const object_job *j, aero_body_shape *b)
 {
     char err[512];
     int r;
     if (j->mesh)
         r = aero_body_mesh_load(b, j->mesh, err, sizeof err);
-    else if (!strcmp(j->shape, "sphere"))
+    else if (j->shape == SHAPE_SPHERE)
         r = aero_body_sphere(b, j->radius > 0 ? j->radius : 0.05, err,
                              sizeof err);
-    else if (!strcmp(j->shape, "capsule"))
+    else if (j->shape == SHAPE_CAPSULE)
         r = aero_body_capsule(b, j->radius > 0 ? j->radius : 0.02,
                               j->length > 0 ? j->length : 0.3, err,
                               sizeof err);
@@ -190,232 +132,231 @@ static int make_body(ojob_t *j, aero_body_shape *b)
     return r;
 }
 
-static void join(char *buf, size_t len, const double *x, int n,
-                 const char *fmt)
+/* what the runs share, the body's defaults resolved */
+typedef struct {
+    object_job *j;
+    aero_body_shape body;
+    aero_body_flow_params base;
+    char desc[256];
+    double d, angles[MAX_DIRECTIONS];
+    int nd, nr, ch, sphere;
+} object_plan;
+
+/* the body, its directions and regions, the flow: 0, or 2 with a message */
+static int plan_object(object_job *j, object_plan *o)
 {
-    size_t used = 0;
-    buf[0] = 0;
-    for (int k = 0; k < n && used < len; k++) {
-        used += (size_t)snprintf(buf + used, len - used, k ? "," : "");
-        if (used < len)
-            used += (size_t)snprintf(buf + used, len - used, fmt, x[k]);
+    if ((j->shape == SHAPE_NONE) == !j->mesh) {
+        aerotex_error("object: give either --shape sphere|capsule|club or "
+                      "--mesh FILE");
+        return 2;
     }
+    if (make_body(j, &o->body))
+        return 2;
+    o->j = j;
+    o->sphere = o->body.kind == AERO_BODY_SPHERE;
+    if (j->mirror < 0)
+        j->mirror = o->body.kind == AERO_BODY_CAPSULE;
+    if (o->sphere && j->directions > 1) {
+        aerotex_error("object: a sphere looks the same from every direction: "
+                      "--directions 1");
+        return 2;
+    }
+    o->nd = j->directions ? j->directions : o->sphere ? 1 : 5;
+    o->nr = j->sources ? j->sources : o->body.kind == AERO_BODY_CLUB ? 10 : 1;
+    o->ch = 3 * o->nd * o->nr;
+    for (int k = 0; k < o->nd; k++)
+        o->angles[k] = o->nd == 1 ? 90.0
+                                  : (j->mirror ? 90.0 : 180.0) * k /
+                                        (o->nd - 1);
+    o->d = aero_body_reference_size(&o->body);
+    aero_body_flow_defaults(&o->base, &o->body);
+    o->base.speed = j->speed;
+    o->base.cell = o->d / j->grid;
+    o->base.regions = o->nr;
+    o->base.cfl = j->cfl;
+    o->base.settle = j->settle * o->d / j->speed;
+    aero_body_describe(&o->body, o->desc, sizeof o->desc);
+    return 0;
 }
 
-int aerotex_object(int argc, char **argv)
+/* every direction in parallel into the job's raw: 0 or 1 */
+static int run_directions(object_plan *o, direction_task *ctx)
 {
-    ojob_t j;
-    aero_body_shape body;
-    aerotex_progress prog;
-    octx_t *ctx = NULL;
-    aero_body_flow_stats *st = NULL;
-    aero_body_flow_params base;
-    aero_texture tex;
-    float *raw = NULL;
-    double angles[MAX_DIRECTIONS], list[MAX_DIRECTIONS], t_start = aerotex_now();
-    char err[512], command[4096], buf[16384], desc[256];
-    int status = 1, nd, nr, ch, l0, xf, lmin, lmax, avail, len, sphere;
-    double d;
-
-    memset(&j, 0, sizeof j);
-    j.mirror = -1;
-    j.speed = 10.0;
-    j.grid = 10.0;
-    j.duration = 0.5;
-    j.rate = 4000.0;
-    j.settle = 25.0;
-    j.cfl = 0.7;
-    j.seed = 1;
-    j.threads = omp_get_max_threads();
-    if (oparse(&j, argc, argv))
-        return 2;
-    if (make_body(&j, &body))
-        return 2;
-    sphere = body.kind == AERO_BODY_SPHERE;
-    if (j.mirror < 0)
-        j.mirror = body.kind == AERO_BODY_CAPSULE;
-    if (sphere && j.directions > 1) {
-        aerotex_error("a sphere looks the same from every direction: "
-                      "--directions 1");
-        aero_body_free(&body);
-        return 2;
-    }
-    nd = j.directions ? j.directions : sphere ? 1 : 5;
-    nr = j.sources ? j.sources : body.kind == AERO_BODY_CLUB ? 10 : 1;
-    for (int k = 0; k < nd; k++)
-        angles[k] = nd == 1 ? 90.0 : (j.mirror ? 90.0 : 180.0) * k / (nd - 1);
-    d = aero_body_reference_size(&body);
-    aero_body_flow_defaults(&base, &body);
-    base.speed = j.speed;
-    base.cell = d / j.grid;
-    base.regions = nr;
-    base.cfl = j.cfl;
-    base.settle = j.settle * d / j.speed;
-    ch = 3 * nd * nr;
-    l0 = (int)lround(j.duration * j.rate);
-    if (l0 < 64) {
-        aerotex_error("--duration %g s at --rate %g Hz is under 64 samples",
-                      j.duration, j.rate);
-        aero_body_free(&body);
-        return 2;
-    }
-    {
-        aerotex_loop_plan lp = aerotex_plan_loop(l0);
-        xf = lp.xfade;
-        lmin = lp.lmin;
-        lmax = lp.lmax;
-        avail = lp.avail;
-    }
-    aerotex_command_line(command, sizeof command, argc, argv);
-    if (j.png_dir && mkdir(j.png_dir, 0777) && errno != EEXIST) {
-        aerotex_error("can't create %s: %s", j.png_dir, strerror(errno));
-        aero_body_free(&body);
-        return 1;
-    }
-    raw = calloc((size_t)avail * ch, sizeof(float));
-    ctx = calloc((size_t)nd, sizeof *ctx);
-    st = calloc((size_t)nd, sizeof *st);
-    if (!raw || !ctx || !st) {
-        aerotex_error("out of memory");
-        goto out;
-    }
-    prog.total = (long)nd * aero_body_flow_steps(&base, j.rate, avail);
-    prog.done = 0;
-    prog.t0 = prog.last = aerotex_now();
-    prog.show = !j.quiet && isatty(fileno(stderr));
-    omp_init_lock(&prog.plan);
-    aero_body_describe(&body, desc, sizeof desc);
-    if (!j.quiet)
+    object_job *j = o->j;
+    const int nd = o->nd, avail = j->job.loop.avail;
+    const int threads = aerotex_job_threads(&j->job, nd);
+    int status = 0;
+    aerotex_progress_start(&j->job.prog, NULL,
+                           (long)nd * aero_body_flow_steps(&o->base,
+                                                           j->job.rate, avail),
+                           j->job.quiet);
+    if (!j->job.quiet)
         fprintf(stderr, "aerotex: object %s, d %g m, v0 %g m/s (Re %.3g), "
                 "%d direction%s, %d region%s, %g cells per d, %ld steps, %d "
-                "thread%s\n", desc, d, j.speed, j.speed * d / AERO_NU, nd,
-                nd > 1 ? "s" : "", nr, nr > 1 ? "s" : "", j.grid, prog.total,
-                j.threads < nd ? j.threads : nd,
-                (j.threads < nd ? j.threads : nd) > 1 ? "s" : "");
-
-#pragma omp parallel for schedule(dynamic, 1) num_threads(j.threads)
+                "thread%s\n", o->desc, o->d, j->speed,
+                j->speed * o->d / AERO_NU, nd, nd > 1 ? "s" : "", o->nr,
+                o->nr > 1 ? "s" : "", j->grid, j->job.prog.total, threads,
+                threads > 1 ? "s" : "");
+#pragma omp parallel for schedule(dynamic, 1) num_threads(j->job.threads)
     for (int k = 0; k < nd; k++) {
-        aero_body_flow_params p = base;
-        octx_t *c = &ctx[k];
-        p.angle = angles[k];
-        p.seed = j.seed * 2654435761u + 7919u * (unsigned)(k + 1);
-        p.plan_lock = plan_lock;
-        c->job = &j;
-        c->prog = &prog;
-        c->index = k;
-        c->snap_every = aero_body_flow_steps(&p, j.rate, avail) / 24 + 1;
-        aero_body_flow_simulate(&p, j.rate, raw + 3 * (size_t)k * nr, ch,
-                                avail, &st[k], hook, 16, c, c->err,
-                                sizeof c->err);
+        aero_body_flow_params p = o->base;
+        direction_task *c = &ctx[k];
+        p.angle = o->angles[k];
+        p.seed = j->seed * 2654435761u + 7919u * (unsigned)(k + 1);
+        p.plan_lock = aerotex_plan_lock;
+        c->task.job = &j->job;
+        c->task.index = k;
+        c->oj = j;
+        c->task.snap_every =
+            aero_body_flow_steps(&p, j->job.rate, avail) / 24 + 1;
+        aero_body_flow_simulate(&p, j->job.rate,
+                                j->job.raw + 3 * (size_t)k * o->nr, o->ch,
+                                avail, &c->st, hook, 16, c, c->task.err,
+                                sizeof c->task.err);
         free(c->slice);
         free(c->solid);
     }
-    aerotex_progress_show(&prog, 1);
-    omp_destroy_lock(&prog.plan);
-    status = 0;
+    aerotex_progress_end(&j->job.prog);
     for (int k = 0; k < nd; k++)
-        if (ctx[k].err[0]) {
-            aerotex_error("direction %g deg: %s", angles[k], ctx[k].err);
+        if (ctx[k].task.err[0]) {
+            aerotex_error("direction %g deg: %s", o->angles[k],
+                          ctx[k].task.err);
             status = 1;
         }
-    if (status)
-        goto out;
-    len = aero_texture_best_loop(raw, ch, lmin, lmax, xf);
-    aero_texture_crossfade(raw, ch, len, xf);
-    if (aero_texture_init_regions(&tex, len, nd, nr, j.rate)) {
-        aerotex_error("out of memory");
-        status = 1;
-        goto out;
-    }
-    memcpy(tex.data, raw, sizeof(float) * (size_t)len * ch);
-    memcpy(tex.angles, angles, sizeof(double) * nd);
-    aero_texture_set(&tex, "kind", "object");
-    {
-        char shape[300];
-        snprintf(shape, sizeof shape, "%s", desc);
-        if (j.mesh)
-            snprintf(shape, sizeof shape, "mesh %s", j.mesh);
-        aero_texture_set(&tex, "shape", shape);
-    }
-    aero_texture_set(&tex, "symmetry", sphere ? "sphere" : "axis");
-    aero_texture_setd(&tex, "mirror", j.mirror);
-    aero_texture_setd(&tex, "diameter", d);
-    aero_texture_setd(&tex, "v0", j.speed);
-    aero_texture_setd(&tex, "rho", AERO_RHO);
-    aero_texture_setd(&tex, "nu", AERO_NU);
-    aero_texture_setd(&tex, "c0", AERO_C0);
-    aero_texture_setd(&tex, "re", j.speed * d / AERO_NU);
-    aero_texture_setd(&tex, "directions", nd);
-    aero_texture_setd(&tex, "regions", nr);
-    join(buf, sizeof buf, angles, nd, "%.6g");
-    aero_texture_set(&tex, "angles", buf);
-    {
-        size_t used = 0;
-        buf[0] = 0;
-        for (int l = 0; l < nr && used < sizeof buf; l++)
-            used += (size_t)snprintf(buf + used, sizeof buf - used,
-                                     "%s%.6g,%.6g,%.6g", l ? ";" : "",
-                                     st[0].centre[3 * l],
-                                     st[0].centre[3 * l + 1],
-                                     st[0].centre[3 * l + 2]);
-        aero_texture_set(&tex, "centres", buf);
-    }
-    aero_texture_setd(&tex, "rate", j.rate);
-    aero_texture_setd(&tex, "frames", len);
-    aero_texture_set(&tex, "loop", "seamless");
-    aero_texture_setd(&tex, "xfade", xf);
-    aero_texture_set(&tex, "frame", "sample frame: the flow arrives along "
-                     "(sin a, 0, cos a) of the body axes, a = angles[k]");
-    aero_texture_set(&tex, "units", "N/s");
-    {
-        /* the direction nearest broadside stands for the object */
-        int kb = 0;
-        for (int k = 1; k < nd; k++)
-            if (fabs(angles[k] - 90.0) < fabs(angles[kb] - 90.0))
-                kb = k;
-        aero_texture_setd(&tex, "st", st[kb].st);
-        aero_texture_setd(&tex, "f", st[kb].f_peak);
-        aero_texture_setd(&tex, "cd", st[kb].cd);
-        aero_texture_setd(&tex, "cl_rms", st[kb].cl_rms);
-    }
-    for (int k = 0; k < nd; k++) list[k] = st[k].st;
-    join(buf, sizeof buf, list, nd, "%.4g");
-    aero_texture_set(&tex, "st_list", buf);
-    for (int k = 0; k < nd; k++) list[k] = st[k].cd;
-    join(buf, sizeof buf, list, nd, "%.4g");
-    aero_texture_set(&tex, "cd_list", buf);
-    for (int k = 0; k < nd; k++) list[k] = st[k].cl_rms;
-    join(buf, sizeof buf, list, nd, "%.4g");
-    aero_texture_set(&tex, "cl_rms_list", buf);
-    aero_texture_setd(&tex, "grid", j.grid);
-    aero_texture_setd(&tex, "cell", base.cell);
-    aero_texture_setd(&tex, "settle", base.settle);
-    aero_texture_setd(&tex, "dt", st[0].dt);
-    aero_texture_set(&tex, "solver", "3D incompressible, MAC grid, MacCormack "
-                     "advection, FFTW + tridiagonal projection, immersed "
-                     "body by direct forcing (force = removed momentum)");
-    aero_texture_set(&tex, "command", command);
-    if (aero_texture_save(j.out, &tex, err, sizeof err)) {
-        aerotex_error("%s", err);
-        status = 1;
-    } else {
-        printf("%s: object %s, d %g m, %d direction%s x %d region%s, %d "
-               "frames (%.3f s at %g Hz)\n", j.out, desc, d, nd,
-               nd > 1 ? "s" : "", nr, nr > 1 ? "s" : "", len, len / j.rate,
-               j.rate);
-        for (int k = 0; k < nd; k++)
-            printf("  %5.1f deg: grid %d x %d x %d, %ld steps of %.3g ms, "
-                   "St %.3f (f %.1f Hz), Cd %.2f, Cl rms %.3f, max |div u| h "
-                   "%.2g m/s\n", angles[k], st[k].nx, st[k].ny, st[k].nz,
-                   st[k].steps, 1e3 * st[k].dt, st[k].st, st[k].f_peak,
-                   st[k].cd, st[k].cl_rms, st[k].max_div);
-        printf("  %.1f s\n", aerotex_now() - t_start);
-    }
-    aero_texture_free(&tex);
-out:
-    free(raw);
-    free(ctx);
-    free(st);
-    aero_body_free(&body);
     return status;
 }
+
+/* the statistic at offset `at` of every direction's stats, joined */
+static void join_stat(char *buf, size_t len, const direction_task *ctx,
+                      int n, size_t at)
+{
+    double list[MAX_DIRECTIONS];
+    for (int k = 0; k < n; k++)
+        list[k] = *(const double *)((const char *)&ctx[k].st + at);
+    aerotex_join(buf, len, list, n, "%.4g");
+}
+
+/* the texture's metadata */
+static void describe(const object_plan *o, const direction_task *ctx,
+                     aero_texture *tex)
+{
+    const object_job *j = o->j;
+    const aero_body_flow_stats *st0 = &ctx[0].st, *stb;
+    char buf[16384], shape[300];
+    size_t used = 0;
+    int kb = 0;
+    aero_texture_set(tex, "kind", "object");
+    snprintf(shape, sizeof shape, "%s", o->desc);
+    if (j->mesh)
+        snprintf(shape, sizeof shape, "mesh %s", j->mesh);
+    aero_texture_set(tex, "shape", shape);
+    aero_texture_set(tex, "symmetry", o->sphere ? "sphere" : "axis");
+    aero_texture_setd(tex, "mirror", j->mirror);
+    aero_texture_setd(tex, "diameter", o->d);
+    aero_texture_setd(tex, "v0", j->speed);
+    aero_texture_setd(tex, "rho", AERO_RHO);
+    aero_texture_setd(tex, "nu", AERO_NU);
+    aero_texture_setd(tex, "c0", AERO_C0);
+    aero_texture_setd(tex, "re", j->speed * o->d / AERO_NU);
+    aero_texture_setd(tex, "directions", o->nd);
+    aero_texture_setd(tex, "regions", o->nr);
+    aerotex_join(buf, sizeof buf, o->angles, o->nd, "%.6g");
+    aero_texture_set(tex, "angles", buf);
+    buf[0] = 0;
+    for (int l = 0; l < o->nr && used < sizeof buf; l++)
+        used += (size_t)snprintf(buf + used, sizeof buf - used,
+                                 "%s%.6g,%.6g,%.6g", l ? ";" : "",
+                                 st0->centre[3 * l], st0->centre[3 * l + 1],
+                                 st0->centre[3 * l + 2]);
+    aero_texture_set(tex, "centres", buf);
+    aerotex_job_loop_meta(&j->job, tex);
+    aero_texture_set(tex, "frame", "sample frame: the flow arrives along "
+                     "(sin a, 0, cos a) of the body axes, a = angles[k]");
+    aero_texture_set(tex, "units", "N/s");
+    /* the direction nearest broadside stands for the object */
+    for (int k = 1; k < o->nd; k++)
+        if (fabs(o->angles[k] - 90.0) < fabs(o->angles[kb] - 90.0))
+            kb = k;
+    stb = &ctx[kb].st;
+    aero_texture_setd(tex, "st", stb->st);
+    aero_texture_setd(tex, "f", stb->f_peak);
+    aero_texture_setd(tex, "cd", stb->cd);
+    aero_texture_setd(tex, "cl_rms", stb->cl_rms);
+    join_stat(buf, sizeof buf, ctx, o->nd, offsetof(aero_body_flow_stats, st));
+    aero_texture_set(tex, "st_list", buf);
+    join_stat(buf, sizeof buf, ctx, o->nd, offsetof(aero_body_flow_stats, cd));
+    aero_texture_set(tex, "cd_list", buf);
+    join_stat(buf, sizeof buf, ctx, o->nd,
+              offsetof(aero_body_flow_stats, cl_rms));
+    aero_texture_set(tex, "cl_rms_list", buf);
+    aero_texture_setd(tex, "grid", j->grid);
+    aero_texture_setd(tex, "cell", o->base.cell);
+    aero_texture_setd(tex, "settle", o->base.settle);
+    aero_texture_setd(tex, "dt", st0->dt);
+    aero_texture_set(tex, "solver", "3D incompressible, MAC grid, MacCormack "
+                     "advection, FFTW + tridiagonal projection, immersed "
+                     "body by direct forcing (force = removed momentum)");
+}
+
+/* the looped texture, saved and reported: the exit status */
+static int write_texture(const object_plan *o, const direction_task *ctx)
+{
+    object_job *j = o->j;
+    const int len = aerotex_job_loop(&j->job), nd = o->nd;
+    aero_texture tex;
+    int status;
+    if (aero_texture_init_regions(&tex, len, nd, o->nr, j->job.rate))
+        return aerotex_job_fail(&j->job, "out of memory");
+    aerotex_job_fill(&j->job, &tex, len);
+    memcpy(tex.angles, o->angles, sizeof(double) * nd);
+    describe(o, ctx, &tex);
+    status = aerotex_job_save(&j->job, &tex);
+    if (!status) {
+        printf("%s: object %s, d %g m, %d direction%s x %d region%s, %d "
+               "frames (%.3f s at %g Hz)\n", j->job.out, o->desc, o->d, nd,
+               nd > 1 ? "s" : "", o->nr, o->nr > 1 ? "s" : "", len,
+               len / j->job.rate, j->job.rate);
+        for (int k = 0; k < nd; k++) {
+            const aero_body_flow_stats *s = &ctx[k].st;
+            printf("  %5.1f deg: grid %d x %d x %d, %ld steps of %.3g ms, "
+                   "St %.3f (f %.1f Hz), Cd %.2f, Cl rms %.3f, max |div u| h "
+                   "%.2g m/s\n", o->angles[k], s->nx, s->ny, s->nz, s->steps,
+                   1e3 * s->dt, s->st, s->f_peak, s->cd, s->cl_rms,
+                   s->max_div);
+        }
+        printf("  %.1f s\n", aerotex_now() - j->job.t_start);
+    }
+    aero_texture_free(&tex);
+    return status;
+}
+
+static int object_run(int argc, char **argv)
+{
+    object_job j;
+    object_plan o;
+    direction_task *ctx = NULL;
+    int status;
+    if (aerotex_job_parse(&aerotex_object_command, &j, argc, argv))
+        return 2;
+    memset(&o, 0, sizeof o);
+    status = plan_object(&j, &o);
+    if (!status)
+        status = aerotex_job_start(&j.job, argc, argv, o.ch);
+    if (!status && !(ctx = calloc((size_t)o.nd, sizeof *ctx)))
+        status = aerotex_job_fail(&j.job, "out of memory");
+    if (!status)
+        status = run_directions(&o, ctx);
+    if (!status)
+        status = write_texture(&o, ctx);
+    free(ctx);
+    aerotex_job_end(&j.job);
+    aero_body_free(&o.body);
+    return status;
+}
+
+const aerotex_command aerotex_object_command = {
+    "object", "--shape <sphere|capsule|club> | --mesh FILE -o FILE.wav",
+    "3D object texture (paper 000, 3D case): 3D incompressible flow past\n"
+    "a body (immersed boundary), the force on each of n regions, g_l =\n"
+    "dF_l/dt per sampled direction; played by [body~]",
+    object_options, sizeof(object_job), NULL, object_run};

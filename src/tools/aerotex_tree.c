@@ -3,28 +3,10 @@
 #include "aerotex.h"
 #include "tree.h"
 
-#include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static int number_arg(int argc, char **argv, int *i, double *v)
-{
-    char *end;
-    if (*i + 1 >= argc) {
-        aerotex_error("tree: %s needs a value", argv[*i]);
-        return -1;
-    }
-    errno = 0;
-    *v = strtod(argv[*i + 1], &end);
-    if (end == argv[*i + 1] || *end || errno || !(*v == *v)) {
-        aerotex_error("tree: %s: '%s' is not a number", argv[*i],
-                      argv[*i + 1]);
-        return -1;
-    }
-    (*i)++;
-    return 0;
-}
 
 static void print_report(void *ctx, int line, const char *message)
 {
@@ -57,110 +39,85 @@ static void describe(const aero_tree *t)
     printf("diameters_m=%.3g..%.3g\n", dmin, dmax);
 }
 
-int aerotex_tree(int argc, char **argv)
-{
+typedef struct {
     aero_tree_shape shape;
+    const char *out, *check;
+    int quiet;
+} tree_job;
+
+#define AT(field) offsetof(tree_job, field)
+static const aerotex_option tree_options[] = {
+    {"--depth", AEROTEX_WHOLE, "N", 4.0, 0.0, 8.0, AT(shape.depth),
+     "levels of branching (depth 6: ~1160 branches)", NULL, NULL},
+    {"--leaves", AEROTEX_WHOLE, "N", 2000.0, 0.0, 1e6, AT(shape.leaves),
+     "leaves over the outermost branches", NULL, NULL},
+    {"--seed", AEROTEX_SEED, "n", 1.0, 0, 0, AT(shape.seed), "the tree's seed",
+     NULL, NULL},
+    {"--height", AEROTEX_POSITIVE, "m", 2.0, 0.0, 1000.0, AT(shape.height),
+     "trunk height", NULL, NULL},
+    {"--diameter", AEROTEX_POSITIVE, "m", 0.2, 0.0, 1000.0,
+     AT(shape.diameter), "trunk diameter at the base", NULL, NULL},
+    {"--leaf-length", AEROTEX_POSITIVE, "m", 0.08, 0.0, 1000.0,
+     AT(shape.leaf_length), "leaf length", NULL, NULL},
+    {"--leaf-width", AEROTEX_POSITIVE, "m", 0.05, 0.0, 1000.0,
+     AT(shape.leaf_width), "leaf width", NULL, NULL},
+    {"--check", AEROTEX_TEXT, "FILE.tree", NAN, 0, 0, AT(check),
+     "instead: reads a tree, reports bad lines with\ntheir numbers, prints "
+     "its size", NULL, NULL},
+    {"-q", AEROTEX_SWITCH, NULL, NAN, 1, 0, AT(quiet), "no report", NULL,
+     NULL},
+    {"-o", AEROTEX_TEXT, "FILE.tree", NAN, 0, 0, AT(out), "the tree", NULL,
+     NULL},
+    {NULL, 0, NULL, 0, 0, 0, 0, NULL, NULL, NULL}};
+
+/* --check FILE: the exit status */
+static int check_tree(const char *file)
+{
     aero_tree t;
-    const char *out = NULL, *check = NULL;
     char err[512];
-    int i, quiet = 0;
-    shape.depth = 4;
-    shape.leaves = 2000;
-    shape.height = 2.0;
-    shape.diameter = 0.2;
-    shape.leaf_length = 0.08;
-    shape.leaf_width = 0.05;
-    shape.seed = 1;
-    for (i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        double v;
-        if (!strcmp(a, "-o") || !strcmp(a, "--check")) {
-            if (i + 1 >= argc) {
-                aerotex_error("tree: %s needs a file", a);
-                return 2;
-            }
-            if (!strcmp(a, "-o"))
-                out = argv[++i];
-            else
-                check = argv[++i];
-            continue;
-        }
-        if (!strcmp(a, "-q")) {
-            quiet = 1;
-            continue;
-        }
-        if (!strcmp(a, "--depth") || !strcmp(a, "--leaves")
-            || !strcmp(a, "--seed") || !strcmp(a, "--height")
-            || !strcmp(a, "--diameter") || !strcmp(a, "--leaf-length")
-            || !strcmp(a, "--leaf-width")) {
-            if (number_arg(argc, argv, &i, &v))
-                return 2;
-            if (!strcmp(a, "--depth")) {
-                if (v < 0 || v > 8 || v != (int)v) {
-                    aerotex_error("tree: --depth %g: an integer 0..8", v);
-                    return 2;
-                }
-                shape.depth = (int)v;
-            } else if (!strcmp(a, "--leaves")) {
-                if (v < 0 || v > 1e6 || v != (int)v) {
-                    aerotex_error("tree: --leaves %g: an integer 0..1000000",
-                                  v);
-                    return 2;
-                }
-                shape.leaves = (int)v;
-            } else if (!strcmp(a, "--seed")) {
-                if (v < 0 || v > 4294967295.0 || v != (double)(long long)v) {
-                    aerotex_error("tree: --seed %g: an integer 0..2^32-1", v);
-                    return 2;
-                }
-                shape.seed = (uint32_t)(long long)v;
-            } else {
-                if (!(v > 0.0) || v > 1000.0) {
-                    aerotex_error("tree: %s %g: a positive length in metres",
-                                  a, v);
-                    return 2;
-                }
-                if (!strcmp(a, "--height"))
-                    shape.height = v;
-                else if (!strcmp(a, "--diameter"))
-                    shape.diameter = v;
-                else if (!strcmp(a, "--leaf-length"))
-                    shape.leaf_length = v;
-                else
-                    shape.leaf_width = v;
-            }
-            continue;
-        }
-        aerotex_error("tree: unknown option '%s' (try 'aerotex help')", a);
+    if (aero_tree_load(file, &t, print_report, (void *)file, err,
+                       sizeof err)) {
+        aerotex_error("%s", err);
+        return 1;
+    }
+    describe(&t);
+    aero_tree_free(&t);
+    return 0;
+}
+
+static int tree_run(int argc, char **argv)
+{
+    tree_job j;
+    aero_tree t;
+    char err[512];
+    aerotex_defaults(&aerotex_tree_command, &j);
+    if (aerotex_parse(&aerotex_tree_command, &j, argc, argv))
         return 2;
-    }
-    if (check) {
-        if (aero_tree_load(check, &t, print_report, (void *)check, err,
-                           sizeof err)) {
-            aerotex_error("%s", err);
-            return 1;
-        }
-        describe(&t);
-        aero_tree_free(&t);
-        return 0;
-    }
-    if (!out) {
+    if (j.check)
+        return check_tree(j.check);
+    if (!j.out) {
         aerotex_error("tree: -o FILE.tree is required");
         return 2;
     }
-    if (aero_tree_generate(&t, &shape)) {
+    if (aero_tree_generate(&t, &j.shape)) {
         aerotex_error("tree: can't generate this tree (out of memory?)");
         return 1;
     }
-    if (aero_tree_save(out, &t, err, sizeof err)) {
+    if (aero_tree_save(j.out, &t, err, sizeof err)) {
         aerotex_error("%s", err);
         aero_tree_free(&t);
         return 1;
     }
-    if (!quiet) {
-        printf("file=%s\n", out);
+    if (!j.quiet) {
+        printf("file=%s\n", j.out);
         describe(&t);
     }
     aero_tree_free(&t);
     return 0;
 }
+
+const aerotex_command aerotex_tree_command = {
+    "tree", "-o FILE.tree [options] | --check FILE.tree",
+    "a tree for [treebranch~] and [leafwave~]: a vertical trunk forking\n"
+    "2-4 ways for N levels, leaves spread over the outermost branches",
+    tree_options, sizeof(tree_job), NULL, tree_run};

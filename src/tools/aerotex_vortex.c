@@ -6,80 +6,56 @@
 #include "texture.h"
 #include "vortex_sound.h"
 
-#include <errno.h>
 #include <math.h>
-#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <time.h>
-#include <unistd.h>
 
 #define MAX_SPEEDS 64
 #define PNG_ZOOM 4
+#define DEFAULT_SPEEDS "1,2,3,4,6,8,12,16"
 
 typedef struct {
+    aerotex_job job;
     aero_vortex_params vp;
     double speeds[MAX_SPEEDS];
     int nspeeds;
-    double duration, rate;
-    int threads, quiet;
-    const char *out, *png_dir;
-} vjob_t;
+} vortex_job;
 
+/* one speed: the first member is its task */
 typedef struct {
-    const vjob_t *job;
-    aerotex_progress *prog;
-    int index;            /* speed index */
-    long last_step, snap_every, snap;
-    float *slice, *zero;
-    char err[256];
-} vctx_t;
-
-static void plan_lock(void *ctx, int on)
-{
-    vctx_t *c = ctx;
-    if (on)
-        omp_set_lock(&c->prog->plan);
-    else
-        omp_unset_lock(&c->prog->plan);
-}
+    aerotex_task task;
+    const vortex_job *vj;
+    float *slice, *zero;  /* --png: |vorticity| of the mid-plane, no body */
+    aero_vortex_stats st;
+} speed_task;
 
 /* progress, and the vorticity slices of --png */
 static void hook(void *ctx, const aero_flow3d *s, long step, int recording)
 {
-    vctx_t *c = ctx;
-    long add = step - c->last_step;
+    speed_task *c = ctx;
+    char path[4096];
+    int j = s->ny / 2;
+    /* the vertical mid-plane y = box/2: |omega| in units of U/box */
+    float scale = (float)(c->vj->vp.box / c->vj->speeds[c->task.index]);
     (void)recording;
-    c->last_step = step;
-#pragma omp atomic
-    c->prog->done += add;
-    if (c->prog->show) {
-#pragma omp critical(aerotex_vortex_progress)
-        aerotex_progress_show(c->prog, 0);
-    }
-    if (c->job->png_dir && c->slice && step >= c->snap * c->snap_every) {
-        /* the vertical mid-plane y = box/2: |omega| in units of U/box */
-        char path[4096];
-        int j = s->ny / 2;
-        float scale = (float)(c->job->vp.box / c->job->speeds[c->index]);
-        c->snap = step / c->snap_every + 1;
-        /* PNG_ZOOM x PNG_ZOOM pixels per cell, so a 32-cell box is
-           visible */
-        for (int k = 0; k < s->nz * PNG_ZOOM; k++)
-            for (int i = 0; i < s->nx * PNG_ZOOM; i++)
-                c->slice[(size_t)k * s->nx * PNG_ZOOM + i] =
-                    s->omag[AERO_F3_C(s, i / PNG_ZOOM, j, k / PNG_ZOOM)] * scale;
-        snprintf(path, sizeof path, "%s/u%02d_%04ld.png", c->job->png_dir,
-                 c->index, step);
-        if (aerotex_png_vorticity(path, c->slice, c->zero, s->nx * PNG_ZOOM,
-                                  s->nz * PNG_ZOOM, 60.0f))
-            snprintf(c->err, sizeof c->err, "can't write %.200s", path);
-    }
+    aerotex_task_progress(&c->task, step);
+    if (!c->slice || !aerotex_task_snapshot_due(&c->task, step))
+        return;
+    /* PNG_ZOOM x PNG_ZOOM pixels per cell, so a 32-cell box is visible */
+    for (int k = 0; k < s->nz * PNG_ZOOM; k++)
+        for (int i = 0; i < s->nx * PNG_ZOOM; i++)
+            c->slice[(size_t)k * s->nx * PNG_ZOOM + i] =
+                s->omag[AERO_F3_C(s, i / PNG_ZOOM, j, k / PNG_ZOOM)] * scale;
+    snprintf(path, sizeof path, "%s/u%02d_%04ld.png", c->vj->job.png_dir,
+             c->task.index, step);
+    if (aerotex_png_vorticity(path, c->slice, c->zero, s->nx * PNG_ZOOM,
+                              s->nz * PNG_ZOOM, 60.0f))
+        snprintf(c->task.err, sizeof c->task.err, "can't write %.200s", path);
 }
 
-static int parse_speeds(vjob_t *j, const char *list)
+/* a comma-separated list of increasing speeds: 0 or -1 with a message */
+static int read_speeds(vortex_job *j, const char *cmd, const char *list)
 {
     const char *p = list;
     j->nspeeds = 0;
@@ -87,316 +63,248 @@ static int parse_speeds(vjob_t *j, const char *list)
         char *end;
         double u = strtod(p, &end);
         if (end == p || !isfinite(u) || !(u > 0.0)) {
-            aerotex_error("--speeds: '%s' is not a list of positive speeds",
-                          list);
+            aerotex_error("%s: --speeds: '%s' is not a list of positive "
+                          "speeds", cmd, list);
             return -1;
         }
         if (j->nspeeds && !(u > j->speeds[j->nspeeds - 1])) {
-            aerotex_error("--speeds must increase (%g after %g)", u,
+            aerotex_error("%s: --speeds must increase (%g after %g)", cmd, u,
                           j->speeds[j->nspeeds - 1]);
             return -1;
         }
         if (u / AERO_C0 > AERO_MACH_LIMIT) {
-            aerotex_error("--speeds: %g m/s is above Mach %g: the "
-                          "incompressible model does not hold", u,
+            aerotex_error("%s: --speeds: %g m/s is above Mach %g: the "
+                          "incompressible model does not hold", cmd, u,
                           AERO_MACH_LIMIT);
             return -1;
         }
         if (j->nspeeds == MAX_SPEEDS) {
-            aerotex_error("--speeds: at most %d speeds", MAX_SPEEDS);
+            aerotex_error("%s: --speeds: at most %d speeds", cmd, MAX_SPEEDS);
             return -1;
         }
         j->speeds[j->nspeeds++] = u;
         p = end;
         if (*p == ',') p++;
         else if (*p) {
-            aerotex_error("--speeds: '%s' is not a comma-separated list", list);
+            aerotex_error("%s: --speeds: '%s' is not a comma-separated list",
+                          cmd, list);
             return -1;
         }
     }
     return j->nspeeds ? 0 : -1;
 }
 
-static int vparse(vjob_t *j, int argc, char **argv)
+static int parse_speeds(void *job, const char *cmd, int argc, char **argv,
+                        int *i)
 {
-    double x;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-#define VNUM(name, lo, hi, field)                                  \
-    if (!strcmp(a, name)) {                                        \
-        if (aerotex_number(argc, argv, &i, lo, hi, &x)) return -1; \
-        field = x;                                                 \
-        continue;                                                  \
-    }
-        VNUM("--box", 1e-3, 10.0, j->vp.box)
-        VNUM("--duration", 0.01, 10.0, j->duration)
-        VNUM("--rate", 1000.0, 192000.0, j->rate)
-        VNUM("--confinement", 0.0, 5.0, j->vp.confinement)
-        VNUM("--turbulence", 0.0, 2.0, j->vp.turbulence)
-        VNUM("--cfl", 0.05, 2.0, j->vp.cfl)
-        VNUM("--settle", 0.0, 100.0, j->vp.settle)
-        VNUM("--elevation", -90.0, 90.0, j->vp.elevation)
-        VNUM("--threads", 1.0, 256.0, j->threads)
-#undef VNUM
-        if (!strcmp(a, "--grid") || !strcmp(a, "--height") ||
-            !strcmp(a, "--receivers") || !strcmp(a, "--seed")) {
-            double lo = !strcmp(a, "--seed") ? 0.0 : !strcmp(a, "--receivers") ? 1.0 : 4.0;
-            double hi = !strcmp(a, "--seed") ? 4294967295.0
-                        : !strcmp(a, "--receivers") ? 64.0 : 256.0;
-            if (aerotex_number(argc, argv, &i, lo, hi, &x)) return -1;
-            if (x != floor(x)) {
-                aerotex_error("%s takes a whole number", a);
-                return -1;
-            }
-            if (!strcmp(a, "--grid")) {
-                if ((int)x & 1) {
-                    aerotex_error("--grid takes an even number of cells");
-                    return -1;
-                }
-                j->vp.n = (int)x;
-            } else if (!strcmp(a, "--height"))
-                j->vp.nz = (int)x;
-            else if (!strcmp(a, "--receivers"))
-                j->vp.receivers = (int)x;
-            else
-                j->vp.seed = (uint32_t)x;
-            continue;
-        }
-        if (!strcmp(a, "--speeds")) {
-            if (i + 1 >= argc) {
-                aerotex_error("--speeds needs a list, e.g. 1,2,4,8");
-                return -1;
-            }
-            if (parse_speeds(j, argv[++i])) return -1;
-            continue;
-        }
-        if (!strcmp(a, "--source")) {
-            if (i + 1 >= argc || (strcmp(argv[i + 1], "window") &&
-                                  strcmp(argv[i + 1], "cells"))) {
-                aerotex_error("--source takes window or cells");
-                return -1;
-            }
-            j->vp.source = !strcmp(argv[++i], "cells") ? AERO_VORTEX_CELLS
-                                                       : AERO_VORTEX_WINDOW;
-            continue;
-        }
-        if (!strcmp(a, "-o") || !strcmp(a, "--png")) {
-            if (i + 1 >= argc) {
-                aerotex_error("%s needs a %s", a, a[1] == 'o' ? "file name"
-                                                              : "directory");
-                return -1;
-            }
-            if (a[1] == 'o') j->out = argv[++i];
-            else j->png_dir = argv[++i];
-            continue;
-        }
-        if (!strcmp(a, "-q")) {
-            j->quiet = 1;
-            continue;
-        }
-        aerotex_error("unknown option '%s' for vortex (see 'aerotex help')", a);
+    if (*i + 1 >= argc) {
+        aerotex_error("%s: --speeds needs a list, e.g. 1,2,4,8", cmd);
         return -1;
     }
-    if (!j->out) {
-        aerotex_error("no output file: add -o FILE.wav");
-        return -1;
-    }
-    return 0;
+    return read_speeds(job, cmd, argv[++*i]);
 }
 
-static void join(char *buf, size_t len, const double *x, int n)
+#define AT(field) offsetof(vortex_job, field)
+static const aerotex_option vortex_options[] = {
+    {"--speeds", AEROTEX_CUSTOM, "u1,...,uN", NAN, 0, 0, 0,
+     "increasing average speeds, m/s", DEFAULT_SPEEDS, parse_speeds},
+    {"--box", AEROTEX_NUMBER, "m", NAN, 1e-3, 10.0, AT(vp.box),
+     "box width, the source volume's size", NULL, NULL},
+    {"--grid", AEROTEX_WHOLE, "n", NAN, 4.0, 256.0, AT(vp.n),
+     "cells across the box, even", NULL, NULL},
+    {"--height", AEROTEX_WHOLE, "n", NAN, 4.0, 256.0, AT(vp.nz),
+     "cells along the flow", "1.5 grid", NULL},
+    {"--duration", AEROTEX_NUMBER, "s", 0.5, 0.01, 10.0, AT(job.duration),
+     "texture length", NULL, NULL},
+    {"--rate", AEROTEX_NUMBER, "Hz", 16000.0, 1000.0, 192000.0, AT(job.rate),
+     "texture sample rate", NULL, NULL},
+    {"--turbulence", AEROTEX_NUMBER, "i", NAN, 0.0, 2.0, AT(vp.turbulence),
+     "rms inflow perturbation / u", NULL, NULL},
+    {"--confinement", AEROTEX_NUMBER, "eps", NAN, 0.0, 5.0,
+     AT(vp.confinement), "vorticity confinement", NULL, NULL},
+    {"--cfl", AEROTEX_NUMBER, "c", NAN, 0.05, 2.0, AT(vp.cfl),
+     "step = c h / u", NULL, NULL},
+    {"--settle", AEROTEX_NUMBER, "n", NAN, 0.0, 100.0, AT(vp.settle),
+     "start-up discarded, flow-through times", NULL, NULL},
+    {"--receivers", AEROTEX_WHOLE, "n", NAN, 1.0, 64.0, AT(vp.receivers),
+     "virtual receivers on a ring", NULL, NULL},
+    {"--elevation", AEROTEX_NUMBER, "deg", NAN, -90.0, 90.0,
+     AT(vp.elevation), "of the ring", NULL, NULL},
+    {"--source", AEROTEX_CHOICE, "window|cells", NAN, 0, 0, AT(vp.source),
+     "Howe integral with a smooth window or the\npaper's integral cells "
+     "(eq. 3-4)", NULL, NULL},
+    {"--seed", AEROTEX_SEED, "n", NAN, 0, 0, AT(vp.seed), "turbulence seed",
+     NULL, NULL},
+    AEROTEX_JOB_OPTIONS("speeds", "|vorticity| slices DIR/uKK_STEP.png")};
+
+static void vortex_init(void *job)
 {
-    size_t used = 0;
-    buf[0] = 0;
-    for (int k = 0; k < n && used < len; k++)
-        used += (size_t)snprintf(buf + used, len - used, "%s%.6g",
-                                 k ? "," : "", x[k]);
+    vortex_job *j = job;
+    aero_vortex_defaults(&j->vp);
+    j->vp.nz = -1;
+    read_speeds(j, "vortex", DEFAULT_SPEEDS);
 }
 
-int aerotex_vortex(int argc, char **argv)
+/* every speed in parallel into the job's raw (one channel each): 0 or 1 */
+static int run_speeds(vortex_job *j, speed_task *ctx)
 {
-    vjob_t j;
-    aerotex_progress prog;
-    vctx_t *ctx;
-    aero_vortex_stats *st;
-    aero_texture tex;
-    float *raw;
-    char err[512], command[4096], buf[8192];
-    double t_start = aerotex_now(), list[MAX_SPEEDS];
-    int status = 1, l0, xf, lmin, lmax, avail, len, ns;
-
-    memset(&j, 0, sizeof j);
-    aero_vortex_defaults(&j.vp);
-    j.vp.nz = -1;
-    j.duration = 0.5;
-    j.rate = 16000.0;
-    j.threads = omp_get_max_threads();
-    parse_speeds(&j, "1,2,3,4,6,8,12,16");
-    if (vparse(&j, argc, argv))
-        return 2;
-    if (j.vp.nz < 0)
-        j.vp.nz = j.vp.n * 3 / 2;
-    ns = j.nspeeds;
-    l0 = (int)lround(j.duration * j.rate);
-    if (l0 < 64) {
-        aerotex_error("--duration %g s at --rate %g Hz is under 64 samples",
-                      j.duration, j.rate);
-        return 2;
-    }
-    {
-        aerotex_loop_plan lp = aerotex_plan_loop(l0);
-        xf = lp.xfade;
-        lmin = lp.lmin;
-        lmax = lp.lmax;
-        avail = lp.avail;
-    }
-    aerotex_command_line(command, sizeof command, argc, argv);
-    if (j.png_dir && mkdir(j.png_dir, 0777) && errno != EEXIST) {
-        aerotex_error("can't create %s: %s", j.png_dir, strerror(errno));
-        return 1;
-    }
-    raw = calloc((size_t)avail * ns, sizeof(float));
-    ctx = calloc((size_t)ns, sizeof *ctx);
-    st = calloc((size_t)ns, sizeof *st);
-    if (!raw || !ctx || !st) {
-        aerotex_error("out of memory");
-        free(raw);
-        free(ctx);
-        free(st);
-        return 1;
-    }
-    prog.total = 0;
+    const int ns = j->nspeeds, avail = j->job.loop.avail;
+    const int threads = aerotex_job_threads(&j->job, ns);
+    long total = 0;
+    int status = 0;
     for (int k = 0; k < ns; k++) {
-        aero_vortex_params p = j.vp;
-        p.speed = j.speeds[k];
-        prog.total += aero_vortex_steps(&p, j.rate, avail);
+        aero_vortex_params p = j->vp;
+        p.speed = j->speeds[k];
+        total += aero_vortex_steps(&p, j->job.rate, avail);
     }
-    prog.done = 0;
-    prog.t0 = prog.last = aerotex_now();
-    prog.show = !j.quiet && isatty(fileno(stderr));
-    omp_init_lock(&prog.plan);
-    if (!j.quiet)
+    aerotex_progress_start(&j->job.prog, NULL, total, j->job.quiet);
+    if (!j->job.quiet)
         fprintf(stderr, "aerotex: vortex box %g m, grid %d x %d x %d, %d "
                 "speed%s (%g..%g m/s), %.3g s, %ld steps, %d thread%s\n",
-                j.vp.box, j.vp.n, j.vp.n, j.vp.nz, ns, ns > 1 ? "s" : "",
-                j.speeds[0], j.speeds[ns - 1], j.duration, prog.total,
-                j.threads < ns ? j.threads : ns,
-                (j.threads < ns ? j.threads : ns) > 1 ? "s" : "");
-
-#pragma omp parallel for schedule(dynamic, 1) num_threads(j.threads)
+                j->vp.box, j->vp.n, j->vp.n, j->vp.nz, ns, ns > 1 ? "s" : "",
+                j->speeds[0], j->speeds[ns - 1], j->job.duration, total,
+                threads, threads > 1 ? "s" : "");
+#pragma omp parallel for schedule(dynamic, 1) num_threads(j->job.threads)
     for (int q = 0; q < ns; q++) {
         /* the fastest speeds take the most steps: start them first */
         int k = ns - 1 - q;
-        aero_vortex_params p = j.vp;
-        vctx_t *c = &ctx[k];
+        aero_vortex_params p = j->vp;
+        speed_task *c = &ctx[k];
         long steps;
-        p.speed = j.speeds[k];
+        p.speed = j->speeds[k];
         /* independent turbulence per speed */
-        p.seed = j.vp.seed * 2654435761u + 7919u * (uint32_t)(k + 1);
-        p.plan_lock = plan_lock;
-        c->job = &j;
-        c->prog = &prog;
-        c->index = k;
-        steps = aero_vortex_steps(&p, j.rate, avail);
-        c->snap_every = steps / 24 + 1;
-        if (j.png_dir) {
-            c->slice = malloc(sizeof(float) * (size_t)p.n * p.nz * PNG_ZOOM *
-                              PNG_ZOOM);
-            c->zero = calloc((size_t)p.n * p.nz * PNG_ZOOM * PNG_ZOOM,
-                             sizeof(float));
+        p.seed = j->vp.seed * 2654435761u + 7919u * (uint32_t)(k + 1);
+        p.plan_lock = aerotex_plan_lock;
+        c->task.job = &j->job;
+        c->task.index = k;
+        c->vj = j;
+        steps = aero_vortex_steps(&p, j->job.rate, avail);
+        c->task.snap_every = steps / 24 + 1;
+        if (j->job.png_dir) {
+            size_t pixels = (size_t)p.n * p.nz * PNG_ZOOM * PNG_ZOOM;
+            c->slice = malloc(sizeof(float) * pixels);
+            c->zero = calloc(pixels, sizeof(float));
         }
-        if (aero_vortex_simulate(&p, j.rate, raw + k, ns, avail, &st[k], hook,
-                                 64, c, c->err, sizeof c->err) == 0) {
-#pragma omp atomic
-            prog.done += steps - 1 - c->last_step;
-        }
+        if (aero_vortex_simulate(&p, j->job.rate, j->job.raw + k, ns, avail,
+                                 &c->st, hook, 64, c, c->task.err,
+                                 sizeof c->task.err) == 0)
+            aerotex_task_progress(&c->task, steps - 1);
         free(c->slice);
         free(c->zero);
     }
-    aerotex_progress_show(&prog, 1);
-    omp_destroy_lock(&prog.plan);
-
-    status = 0;
+    aerotex_progress_end(&j->job.prog);
     for (int k = 0; k < ns; k++)
-        if (ctx[k].err[0]) {
-            aerotex_error("speed %g m/s: %s", j.speeds[k], ctx[k].err);
+        if (ctx[k].task.err[0]) {
+            aerotex_error("speed %g m/s: %s", j->speeds[k], ctx[k].task.err);
             status = 1;
         }
-    if (status)
-        goto out;
-    len = aero_texture_best_loop(raw, ns, lmin, lmax, xf);
-    aero_texture_crossfade(raw, ns, len, xf);
-    if (aero_texture_init_speeds(&tex, len, ns, j.speeds, j.rate)) {
-        aerotex_error("out of memory");
-        status = 1;
-        goto out;
-    }
-    memcpy(tex.data, raw, sizeof(float) * (size_t)len * ns);
-    aero_texture_set(&tex, "formula", "Howe compact vortex sound: Q = rho0 / "
+    return status;
+}
+
+/* the texture's metadata; rms: each channel's, Pa at 1 m */
+static void describe(const vortex_job *j, const speed_task *ctx,
+                     const double *rms, aero_texture *tex)
+{
+    const int ns = j->nspeeds;
+    double list[MAX_SPEEDS];
+    char buf[8192];
+    aero_texture_set(tex, "formula", "Howe compact vortex sound: Q = rho0 / "
                      "(12 pi c0^2) xh_a xh_b d3/dt3 INT y_a (y x omega)_b dy; "
                      "p = Q(u, t - r/c0) / r");
-    aero_texture_set(&tex, "units", "Pa at 1 m");
-    aero_texture_setd(&tex, "box", j.vp.box);
-    aero_texture_setd(&tex, "grid", j.vp.n);
-    aero_texture_setd(&tex, "height", j.vp.nz);
-    aero_texture_setd(&tex, "rho", AERO_RHO);
-    aero_texture_setd(&tex, "c0", AERO_C0);
-    aero_texture_setd(&tex, "nu", j.vp.nu);
-    aero_texture_setd(&tex, "confinement", j.vp.confinement);
-    aero_texture_setd(&tex, "turbulence", j.vp.turbulence);
-    aero_texture_setd(&tex, "cfl", j.vp.cfl);
-    aero_texture_setd(&tex, "settle", j.vp.settle);
-    aero_texture_set(&tex, "source", j.vp.source == AERO_VORTEX_CELLS
-                                         ? "cells (paper eq. 3-4, alpha 3)"
-                                         : "window");
-    aero_texture_setd(&tex, "receivers", j.vp.receivers);
-    aero_texture_setd(&tex, "elevation", j.vp.elevation);
-    aero_texture_setd(&tex, "seed", j.vp.seed);
-    aero_texture_setd(&tex, "rate", j.rate);
-    aero_texture_setd(&tex, "frames", len);
-    aero_texture_set(&tex, "loop", "seamless");
-    aero_texture_setd(&tex, "xfade", xf);
+    aero_texture_set(tex, "units", "Pa at 1 m");
+    aero_texture_setd(tex, "box", j->vp.box);
+    aero_texture_setd(tex, "grid", j->vp.n);
+    aero_texture_setd(tex, "height", j->vp.nz);
+    aero_texture_setd(tex, "rho", AERO_RHO);
+    aero_texture_setd(tex, "c0", AERO_C0);
+    aero_texture_setd(tex, "nu", j->vp.nu);
+    aero_texture_setd(tex, "confinement", j->vp.confinement);
+    aero_texture_setd(tex, "turbulence", j->vp.turbulence);
+    aero_texture_setd(tex, "cfl", j->vp.cfl);
+    aero_texture_setd(tex, "settle", j->vp.settle);
+    aero_texture_set(tex, "source", j->vp.source == AERO_VORTEX_CELLS
+                                        ? "cells (paper eq. 3-4, alpha 3)"
+                                        : "window");
+    aero_texture_setd(tex, "receivers", j->vp.receivers);
+    aero_texture_setd(tex, "elevation", j->vp.elevation);
+    aero_texture_setd(tex, "seed", j->vp.seed);
+    aerotex_job_loop_meta(&j->job, tex);
+    aerotex_join(buf, sizeof buf, rms, ns, "%.6g");
+    aero_texture_set(tex, "rms", buf);
+    for (int k = 0; k < ns; k++) list[k] = ctx[k].st.dt;
+    aerotex_join(buf, sizeof buf, list, ns, "%.6g");
+    aero_texture_set(tex, "dt", buf);
+    for (int k = 0; k < ns; k++) list[k] = ctx[k].st.gain;
+    aerotex_join(buf, sizeof buf, list, ns, "%.6g");
+    aero_texture_set(tex, "receiver_gain", buf);
+    aero_texture_set(tex, "solver", "3D incompressible, MAC grid, "
+                     "semi-Lagrangian advection, vorticity confinement, "
+                     "FFTW + tridiagonal projection");
+}
+
+/* the looped texture, saved and reported: the exit status */
+static int write_texture(vortex_job *j, const speed_task *ctx)
+{
+    const int ns = j->nspeeds, len = aerotex_job_loop(&j->job);
+    double rms[MAX_SPEEDS];
+    aero_texture tex;
+    int status;
+    if (aero_texture_init_speeds(&tex, len, ns, j->speeds, j->job.rate))
+        return aerotex_job_fail(&j->job, "out of memory");
+    aerotex_job_fill(&j->job, &tex, len);
     for (int k = 0; k < ns; k++) {
         double e = 0.0;
         for (int n = 0; n < len; n++)
-            e += (double)tex.data[(size_t)n * ns + k] * tex.data[(size_t)n * ns + k];
-        list[k] = sqrt(e / len);
+            e += (double)tex.data[(size_t)n * ns + k] *
+                 tex.data[(size_t)n * ns + k];
+        rms[k] = sqrt(e / len);
     }
-    join(buf, sizeof buf, list, ns);
-    aero_texture_set(&tex, "rms", buf);
-    for (int k = 0; k < ns; k++) list[k] = st[k].dt;
-    join(buf, sizeof buf, list, ns);
-    aero_texture_set(&tex, "dt", buf);
-    for (int k = 0; k < ns; k++) list[k] = st[k].gain;
-    join(buf, sizeof buf, list, ns);
-    aero_texture_set(&tex, "receiver_gain", buf);
-    aero_texture_set(&tex, "solver", "3D incompressible, MAC grid, "
-                     "semi-Lagrangian advection, vorticity confinement, "
-                     "FFTW + tridiagonal projection");
-    aero_texture_set(&tex, "command", command);
-    if (aero_texture_save(j.out, &tex, err, sizeof err)) {
-        aerotex_error("%s", err);
-        status = 1;
-    } else {
+    describe(j, ctx, rms, &tex);
+    status = aerotex_job_save(&j->job, &tex);
+    if (!status) {
         printf("%s: vortex sound, box %g m, grid %d x %d x %d, %d speeds, %d "
-               "frames (%.3f s at %g Hz)\n", j.out, j.vp.box, j.vp.n, j.vp.n,
-               j.vp.nz, ns, len, len / j.rate, j.rate);
-        for (int k = 0; k < ns; k++) {
-            double e = 0.0;
-            for (int n = 0; n < len; n++)
-                e += (double)tex.data[(size_t)n * ns + k] * tex.data[(size_t)n * ns + k];
-            e = sqrt(e / len);
+               "frames (%.3f s at %g Hz)\n", j->job.out, j->vp.box, j->vp.n,
+               j->vp.n, j->vp.nz, ns, len, len / j->job.rate, j->job.rate);
+        for (int k = 0; k < ns; k++)
             printf("  %6.3g m/s: rms %.3g Pa at 1 m (%.1f dB SPL), %ld steps "
-                   "of %.3g ms, max |div u| h %.2g m/s\n", j.speeds[k], e,
-                   20.0 * log10(e / 2e-5 + 1e-30), st[k].steps,
-                   1e3 * st[k].dt, st[k].max_div);
-        }
-        printf("  %.1f s\n", aerotex_now() - t_start);
+                   "of %.3g ms, max |div u| h %.2g m/s\n", j->speeds[k],
+                   rms[k], 20.0 * log10(rms[k] / 2e-5 + 1e-30),
+                   ctx[k].st.steps, 1e3 * ctx[k].st.dt, ctx[k].st.max_div);
+        printf("  %.1f s\n", aerotex_now() - j->job.t_start);
     }
     aero_texture_free(&tex);
-out:
-    free(raw);
-    free(ctx);
-    free(st);
     return status;
 }
+
+static int vortex_run(int argc, char **argv)
+{
+    vortex_job j;
+    speed_task *ctx = NULL;
+    int status;
+    if (aerotex_job_parse(&aerotex_vortex_command, &j, argc, argv))
+        return 2;
+    if (j.vp.n & 1) {
+        aerotex_error("vortex: --grid takes an even number of cells");
+        return 2;
+    }
+    if (j.vp.nz < 0)
+        j.vp.nz = j.vp.n * 3 / 2;
+    status = aerotex_job_start(&j.job, argc, argv, j.nspeeds);
+    if (!status && !(ctx = calloc((size_t)j.nspeeds, sizeof *ctx)))
+        status = aerotex_job_fail(&j.job, "out of memory");
+    if (!status)
+        status = run_speeds(&j, ctx);
+    if (!status)
+        status = write_texture(&j, ctx);
+    free(ctx);
+    aerotex_job_end(&j.job);
+    return status;
+}
+
+const aerotex_command aerotex_vortex_command = {
+    "vortex", "--speeds <u1,...,uN> -o FILE.wav",
+    "vortex-sound texture Q(u, t) of a turbulent box of air (fire, jets;\n"
+    "paper 004): 3D incompressible flow with a randomly perturbed inflow\n"
+    "at the bottom, periodic sides, open top; Howe's vortex sound at 1 m,\n"
+    "one channel per speed (p = Q / r)",
+    vortex_options, sizeof(vortex_job), vortex_init, vortex_run};

@@ -24,7 +24,7 @@ static int run(const char *args)
 /* does OUT contain s? */
 static int said(const char *s)
 {
-    char buf[8192];
+    char buf[16384]; /* the whole usage */
     size_t n;
     FILE *f = fopen(OUT, "r");
     if (!f) return 0;
@@ -67,6 +67,23 @@ int main(void)
     bad("cavity --length 0.02 -o x.wav", "--depth");
     bad("cavity --length 0.02 --depth 1 -o x.wav", "depth/length");
     bad("info /nonexistent.wav", "can't open");
+    /* every command's options come from its table: the usage lists them,
+       an error names the command and the option */
+    UNIT_CHECK(run("help") == 0 && said("--speeds") && said("--mesh") &&
+                   said("--leaf-width") && said("--threshold") &&
+                   said("(default 16000)"),
+               "help lists every command's options and defaults");
+    bad("vortex --receivers 65 -o x.wav",
+        "vortex: --receivers 65 is out of range [1, 64]");
+    bad("vortex --source fog -o x.wav",
+        "vortex: --source takes window or cells");
+    bad("object --shape sphere --sources 2.5 -o x.wav",
+        "object: --sources takes a whole number");
+    bad("cavity --diameter 0.01 -o x.wav",
+        "cavity: unknown option '--diameter'");
+    bad("tree --depth 9 -o x.tree", "tree: --depth 9 is out of range");
+    bad("auralize d --map 0 1 -1 1 --path p.txt -o x.wav",
+        "auralize: --map -1 is out of range");
     {
         /* a tiny, coarse texture and its metadata */
         int r = run("aeolian --shape circle --re 80 --grid 8 --duration 0.01 "

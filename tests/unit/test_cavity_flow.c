@@ -18,6 +18,7 @@
  * a Rossiter mode. ~10 s on one core. */
 #include "unit.h"
 #include "aero_air.h"
+#include "aeolian_flow.h"
 #include "flow2d.h"
 #include "shape2d.h"
 
@@ -50,6 +51,7 @@ int main(void)
 {
     const double len = 0.02, depth = 0.01, u0 = 10.0;
     const double re = u0 * len / AERO_NU, mach = u0 / AERO_C0;
+    aero_aeolian_flow_params flow = {0};
     aero_flow2d_params p;
     aero_flow2d s;
     aero_shape2d sh;
@@ -61,16 +63,19 @@ int main(void)
     int diverged = 0;
 
     printf("test_cavity_flow: cavity L/D = 2, Re_L %.0f, M %.3f\n", re, mach);
-    aero_flow2d_defaults(&p, re);
-    p.grid = 48.0; /* as aerotex_run.c sets up a cavity */
-    p.xmin = -0.3;
-    p.xmax = 3.5;
-    p.ymin = -depth / len - 0.25;
-    p.ymax = 1.5;
-    p.spin = 0.15;
-    p.spin_time = 2.0;
     aero_shape2d_cavity(&sh, 1.0, depth / len);
-    if (!cl || aero_flow2d_init(&s, &p, err, sizeof err) ||
+    /* the domain `aerotex cavity` uses (aeolian_flow.h), the solver's
+       default step factor */
+    aero_flow2d_defaults(&p, re);
+    flow.shape = &sh;
+    flow.cavity = 1;
+    flow.size = len;
+    flow.depth = depth;
+    flow.re = re;
+    flow.grid = 48.0;
+    flow.cfl = p.cfl;
+    if (!cl || aero_aeolian_flow_domain(&flow, &p, err, sizeof err) ||
+        aero_flow2d_init(&s, &p, err, sizeof err) ||
         aero_flow2d_set_body(&s, &sh, 0.0, err, sizeof err)) {
         UNIT_CHECK(0, "set-up: %s", cl ? err : "out of memory");
         return unit_summary();

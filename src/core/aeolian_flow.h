@@ -1,0 +1,71 @@
+/* aero: the sound source function of a 2D cross-section in a uniform flow
+ * (paper 000, Dobashi et al. 2003: g = dF/dt of the force per unit span),
+ * the offline half of the aeolian and cavity textures.
+ *
+ * One flow direction per call: the 2D solver of flow2d.h runs past the
+ * shape (a stick's cross-section, or a cavity in a wall), the start-up is
+ * discarded, the force is recorded, and its derivative is low-passed and
+ * resampled at the texture rate (texture.c). The 3D counterpart is
+ * body_flow.h. No globals. */
+#ifndef AERO_AEOLIAN_FLOW_H
+#define AERO_AEOLIAN_FLOW_H
+
+#include "flow2d.h"
+#include "shape2d.h"
+
+#include <stddef.h>
+
+typedef struct {
+    const aero_shape2d *shape; /* aero_shape2d_cavity() for a cavity */
+    int cavity;          /* the shape is a cavity in a wall */
+    double size;         /* reference size d, m (a cavity: its length) */
+    double depth;        /* a cavity's depth, m */
+    double speed;        /* v0, m/s */
+    double re;           /* Reynolds number v0 d / nu */
+    double grid;         /* cells per d */
+    double cfl;          /* flow2d.h's step factor */
+    double settle;       /* start-up discarded, d/v0 */
+    double duration;     /* the texture's length, s: the recording covers
+                            it with the loop search, cross-fade and the
+                            resampling kernel's reach */
+    double angle;        /* flow direction in the shape's frame, deg */
+} aero_aeolian_flow_params;
+
+/* the solver's domain for p (units of d): room around tall shapes, the
+   space over a cavity's wall; -1 with a message when the shape is under
+   1.5 cells thin on this grid */
+int aero_aeolian_flow_domain(const aero_aeolian_flow_params *p,
+                             aero_flow2d_params *fp, char *err,
+                             size_t errlen);
+
+/* what a run will take, from a trial grid: its size, the first step and
+   the end time (d/v0), and about how many steps */
+typedef struct {
+    int nx, ny;
+    double dt, t_end;
+    long steps;
+} aero_aeolian_flow_plan;
+int aero_aeolian_flow_estimate(const aero_aeolian_flow_params *p, double rate,
+                               aero_aeolian_flow_plan *plan, char *err,
+                               size_t errlen);
+
+/* what a run measured: the force statistics (flow2d.h), the first step */
+typedef struct {
+    aero_flowstats flow;
+    double dt;           /* d/v0 */
+} aero_aeolian_flow_stats;
+
+/* called every `every` steps (may be NULL): progress and snapshots */
+typedef void (*aero_aeolian_flow_hook)(void *ctx, const aero_flow2d *s,
+                                       long step);
+
+/* Runs one direction and writes nout samples of g = dF/dt (N/(m s)) at
+   `rate` Hz: the x component (along the flow) to out[k * stride], y to
+   out[k * stride + 1]. 0, or -1 with a message in err. */
+int aero_aeolian_flow_simulate(const aero_aeolian_flow_params *p,
+                               double rate, float *out, int stride, int nout,
+                               aero_aeolian_flow_stats *st,
+                               aero_aeolian_flow_hook hook, long every,
+                               void *ctx, char *err, size_t errlen);
+
+#endif

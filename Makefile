@@ -33,7 +33,10 @@ datadirs += $(if $(wildcard trees/*.tree),trees)
 
 # No -ffast-math: the core relies on NaN checks (x != x) to sanitise input.
 CFLAGS = -Wall -Wextra -Wshadow -O3 -funroll-loops -fomit-frame-pointer
-cflags = -std=c99 -D_POSIX_C_SOURCE=200809L -Isrc/core
+# src/core by role: common (shared data and laws), solve (the flow solvers
+# and the drivers that make textures), play (the real-time players)
+CORE_INCLUDES = -Isrc/core/common -Isrc/core/solve -Isrc/core/play
+cflags = -std=c99 -D_POSIX_C_SOURCE=200809L $(CORE_INCLUDES)
 ldlibs = build/libaero_core.a -lsndfile -lfftw3f_threads -lfftw3f -lm
 
 PDLIBBUILDER_DIR ?= $(if $(wildcard pd-lib-builder/Makefile.pdlibbuilder),\
@@ -50,13 +53,13 @@ endif
 BUILD = build
 CORE_CC = $(CC)
 CORE_CFLAGS = -std=c99 -D_POSIX_C_SOURCE=200809L -O3 -fPIC -fopenmp \
-    -Wall -Wextra -Wshadow -Isrc/core
-core.sources = $(sort $(wildcard src/core/*.c))
+    -Wall -Wextra -Wshadow $(CORE_INCLUDES)
+core.sources = $(sort $(wildcard src/core/*/*.c))
 core.objects = $(patsubst src/core/%.c,$(BUILD)/core/%.o,$(core.sources))
 core.lib = $(BUILD)/libaero_core.a
 TOOL_LIBS = $(core.lib) -lsndfile -lfftw3 -lfftw3f_threads -lfftw3f -lpng -lm -fopenmp
 
-$(BUILD)/core/%.o: src/core/%.c $(wildcard src/core/*.h)
+$(BUILD)/core/%.o: src/core/%.c $(wildcard src/core/*/*.h)
 	@mkdir -p $(dir $@)
 	$(CORE_CC) $(CORE_CFLAGS) -c $< -o $@
 
@@ -129,7 +132,7 @@ install-aero: lib double
 pdinstance:
 	@for f in $(class.sources) $(lib.setup.sources) $(common.sources); do \
 	    $(CC) -std=c99 -fsyntax-only -Wall -Wextra -Werror \
-	        -DPDINSTANCE -DPDTHREADS -I/usr/include/pd -Isrc/core $$f \
+	        -DPDINSTANCE -DPDTHREADS -I/usr/include/pd $(CORE_INCLUDES) $$f \
 	        || exit 1; \
 	done; echo "wrappers compile with -DPDINSTANCE -DPDTHREADS"
 
@@ -231,7 +234,7 @@ LIBPD_MULTI ?= $(shell nm $(LIBPD_LIB) 2>/dev/null | grep -qw pd_this && echo ye
 libpd.cflags = -std=c99 -D_POSIX_C_SOURCE=200809L -O2 -Wall -Wextra \
     $(if $(filter yes,$(LIBPD_MULTI)),-DPDINSTANCE -DPDTHREADS) \
     $(if $(filter shared,$(LIBPD_LINK)),-fPIC) -DHAVE_LIBPD \
-    -I$(LIBPD_DIR)/libpd_wrapper -I$(LIBPD_DIR)/pure-data/src -Isrc/pd -Isrc/core
+    -I$(LIBPD_DIR)/libpd_wrapper -I$(LIBPD_DIR)/pure-data/src -Isrc/pd $(CORE_INCLUDES)
 libpd.libs = $(if $(filter static,$(LIBPD_LINK)),$(LIBPD_LIB),\
     -L$(LIBPD_DIR)/libs -lpd -Wl,-rpath,$(abspath $(LIBPD_DIR)/libs)) \
     $(core.lib) -lsndfile -lfftw3f_threads -lfftw3f -lm -lpthread -ldl
@@ -273,7 +276,7 @@ ASAN_CC = gcc
 ASAN_FLAGS = -g -O1 -fno-omit-frame-pointer -fsanitize=address,undefined \
     -fsanitize=float-cast-overflow -fno-sanitize-recover=undefined,float-cast-overflow
 ASAN_CFLAGS = -std=c99 -D_POSIX_C_SOURCE=200809L -fPIC -fopenmp \
-    -Wall -Wextra -Wshadow -Isrc/core $(ASAN_FLAGS)
+    -Wall -Wextra -Wshadow $(CORE_INCLUDES) $(ASAN_FLAGS)
 ASAN_ROOT = $(ASAN_DIR)/root
 asan.core.objects = $(patsubst src/core/%.c,$(ASAN_DIR)/core/%.o,$(core.sources))
 asan.lib = $(ASAN_DIR)/libaero_core.a
@@ -282,7 +285,7 @@ asan.tools = $(ASAN_ROOT)/build/aerotex $(ASAN_ROOT)/build/aero-analyze \
     $(patsubst tests/unit/%.c,$(ASAN_ROOT)/build/tests/%,$(unit.sources))
 ASAN_PD_CFLAGS = -DPD -DUNIX -I/usr/include/pd -shared $(ASAN_CFLAGS)
 
-$(ASAN_DIR)/core/%.o: src/core/%.c $(wildcard src/core/*.h)
+$(ASAN_DIR)/core/%.o: src/core/%.c $(wildcard src/core/*/*.h)
 	@mkdir -p $(dir $@)
 	$(ASAN_CC) $(ASAN_CFLAGS) -c $< -o $@
 $(asan.lib): $(asan.core.objects)

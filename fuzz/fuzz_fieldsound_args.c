@@ -8,7 +8,7 @@
  * seeds: every byte string is a valid program. */
 #include "fuzz.h"
 
-#include "field_sound.h"
+#include "field_render.h"
 #include "field_volume.h"
 
 #define MAXN 1024

@@ -1,4 +1,4 @@
-/* fuzz: the tree file parser (src/core/tree.c, the .tree files of
+/* fuzz: the tree file parser (src/core/common/tree.c, the .tree files of
  * [treebranch~] and [leafwave~]). Invariants of a tree that loaded: at
  * least one branch; every parent index earlier than its child or -1;
  * every leaf on an existing branch; every number finite, every size > 0,

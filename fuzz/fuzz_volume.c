@@ -1,4 +1,4 @@
-/* fuzz: the volume header parser and frame reader (src/core/field_volume.c,
+/* fuzz: the volume header parser and frame reader (src/core/common/field_volume.c,
  * the volume directories of [fieldsound~]). The input is the text of
  * volume.txt, then a NUL byte, then the bytes of the frame files (frame k
  * gets the k-th slice of the frame size; a short slice makes a truncated
@@ -12,7 +12,7 @@
  * which a memory-backed file cannot be). Seeds: fuzz/seeds/volume/. */
 #include "fuzz.h"
 
-#include "field_sound.h"
+#include "field_render.h"
 #include "field_volume.h"
 
 #include <sys/stat.h>

@@ -14,7 +14,7 @@ mkdir -p "$B"
 CC=${FUZZ_CC:-clang}
 FLAGS="-g -O1 -std=gnu99 -fsanitize=fuzzer,address,undefined \
  -fno-sanitize-recover=all -fopenmp -Wall -Wextra -Wno-unknown-pragmas \
- -Isrc/core"
+ -Isrc/core/common -Isrc/core/solve -Isrc/core/play"
 LIBS="-lsndfile -lfftw3f_threads -lfftw3f -lfftw3 -lpng -lm"
 status=0
 : >"$B/summary.txt"
@@ -25,7 +25,7 @@ grep -v -e '^#' -e '^[[:space:]]*$' fuzz/targets.txt | while read -r name extra 
     bin=$B/fuzz_$name
     echo "== fuzz $name: build"
     # shellcheck disable=SC2086
-    $CC $FLAGS "fuzz/fuzz_$name.c" src/core/*.c $extra -o "$bin" $LIBS \
+    $CC $FLAGS "fuzz/fuzz_$name.c" src/core/*/*.c $extra -o "$bin" $LIBS \
         >"$B/$name.build.log" 2>&1 || { cat "$B/$name.build.log"; exit 1; }
     corpus=$B/corpus/$name
     art=$B/artifacts/$name

@@ -1,7 +1,7 @@
 /* [aeolian~]: the aeolian tone of a cylinder in a flow (wind past a wire, a
  * rod, a branch), or, with a texture, of any stick that moves and turns (a
  * sword, a thrown stick, a fence rail). Thin Pd wrapper around
- * src/core/aeolian (the Strouhal/Reynolds model, or a texture once one is
+ * src/core/play/aeolian (the Strouhal/Reynolds model, or a texture once one is
  * loaded).
  *
  *   [aeolian~ -d 0.01 -l 0.5 -gain 0 -seed 1 -ramp 20 -stereo]

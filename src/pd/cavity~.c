@@ -1,5 +1,5 @@
 /* [cavity~]: cavity tones (a draft through a gap, wind over a hollow, a
- * bottle). Thin Pd wrapper around src/core/cavity_model.
+ * bottle). Thin Pd wrapper around src/core/play/cavity_model.
  *
  *   [cavity~ -L 0.02 -D 0.01 -W 0.05 -texture cavity -exponent 2]
  *   inlet 1 (signal): flow speed over the opening, m/s

@@ -1,5 +1,5 @@
 /* [fieldsound~]: field auralization of time-varying volume data (paper
- * 002) in real time. Thin Pd wrapper around src/core/field_sound: the
+ * 002) in real time. Thin Pd wrapper around src/core/play/field_render: the
  * volume is preprocessed in a worker thread (no Pd calls in it), the
  * sources are swapped in by a clock in Pd's thread, perform only renders.
  *

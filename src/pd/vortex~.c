@@ -1,6 +1,6 @@
 /* [vortex~]: vortex sound of turbulent air (fire, flamethrowers, jets,
  * explosions) from a vortex texture Q(u, t) made by `aerotex vortex`
- * (paper 004). Thin Pd wrapper around src/core/vortex_player.
+ * (paper 004). Thin Pd wrapper around src/core/play/vortex_player.
  *
  *   [vortex~ -texture fire -n 8 -stereo -clip 20 -gain 0]
  *   inlet 1 (signal): average flow speed, m/s, added to each source's own

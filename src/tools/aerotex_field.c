@@ -1,8 +1,8 @@
 /* aerotex field-demo and aerotex auralize: field auralization of volume
- * data offline (paper 002). The method is in src/core/field_sound.h, the
- * volume format in src/core/field_volume.h. */
+ * data offline (paper 002). The method is in src/core/play/field_render.h, the
+ * volume format in src/core/common/field_volume.h. */
 #include "aerotex.h"
-#include "field_sound.h"
+#include "field_render.h"
 
 #include <errno.h>
 #include <math.h>
@@ -112,7 +112,7 @@ static int field_demo_run(int argc, char **argv)
 const aerotex_command aerotex_field_demo_command = {
     "field-demo", "-o DIR",
     "writes a synthetic volume (an expanding burst with turbulence) in the\n"
-    "field volume format (src/core/field_volume.h)",
+    "field volume format (src/core/common/field_volume.h)",
     demo_options, sizeof(demo_job), demo_init, field_demo_run};
 
 /* --- aerotex auralize --------------------------------------------------- */

@@ -1,7 +1,7 @@
 /* aerotex object: 3D object textures (paper 000, the 3D case): the sound
  * source function of each region of a body, per sampled flow direction,
  * the directions simulated in parallel. The physics is in
- * src/core/body_flow.c, the shapes in src/core/body_shape.c. */
+ * src/core/solve/body_flow.c, the shapes in src/core/common/body_shape.c. */
 #include "aerotex.h"
 #include "aero_air.h"
 #include "body_flow.h"

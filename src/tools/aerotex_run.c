@@ -1,7 +1,7 @@
 /* aerotex aeolian / cavity: the texture of a 2D cross-section, one
  * channel triple per sampled flow direction, the directions simulated in
- * parallel. The physics is in src/core/aeolian_flow.c, the shapes in
- * src/core/shape2d.c. */
+ * parallel. The physics is in src/core/solve/aeolian_flow.c, the shapes in
+ * src/core/common/shape2d.c. */
 #include "aerotex.h"
 #include "aeolian_flow.h"
 #include "aero_air.h"

@@ -1,4 +1,4 @@
-/* aerotex tree: generates a .tree file (src/core/tree.h) for [treebranch~]
+/* aerotex tree: generates a .tree file (src/core/common/tree.h) for [treebranch~]
  * and [leafwave~], or checks one. */
 #include "aerotex.h"
 #include "tree.h"

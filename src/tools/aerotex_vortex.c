@@ -1,6 +1,6 @@
 /* aerotex vortex: vortex-sound textures Q(u, t) of a turbulent box of air
  * (paper 004), one channel per average flow speed, the speeds simulated in
- * parallel. The physics is in src/core/vortex_sound.c. */
+ * parallel. The physics is in src/core/solve/vortex_sound.c. */
 #include "aerotex.h"
 #include "aero_air.h"
 #include "texture.h"

@@ -80,7 +80,7 @@ st_cyl=$(build/aerotex info textures/cylinder.wav | sed -n 's/^st=//p')
 st_tone() { awk -v st="$st_cyl" -v v="$1" -v d="$2" 'BEGIN { printf "%.6g\n", st * v / d }'; }
 
 CC=${CC:-cc}
-HOST_SRC="src/pd/*~.c src/pd/aero.c"
+HOST_SRC="src/pd/*~.c src/pd/aero.c src/pd/aero_pd.c"
 # host_build VARIANT OUT SOURCE [EXTRA...]: a test host linked statically
 host_build() {
     _v=$1 _out=$2 _src=$3
@@ -90,7 +90,7 @@ host_build() {
     [ "$_v" = multi ] && _d="-DPDINSTANCE -DPDTHREADS"
     # shellcheck disable=SC2086
     $CC -std=c99 -D_POSIX_C_SOURCE=200809L -O2 -g -Wall -Wextra -Werror $_d \
-        -I$_l/libpd_wrapper -I$_l/pure-data/src -Isrc/pd -Isrc/core \
+        -I$_l/libpd_wrapper -I$_l/pure-data/src -Isrc/pd -Isrc/core/common -Isrc/core/solve -Isrc/core/play \
         "$_src" $HOST_SRC "$@" $_l/libs/libpd.a build/libaero_core.a \
         -lsndfile -lfftw3f_threads -lfftw3f -lm -lpthread -ldl -o "$_out" \
         >"$_out.build.log" 2>&1 || { cat "$_out.build.log"; return 1; }
@@ -217,7 +217,7 @@ for variant in single multi; do
     if [ "$variant" = single ]; then
         nopic=$OUT/render-single-shared-nopic
         $CC -std=c99 -D_POSIX_C_SOURCE=200809L -O2 -I$V/libpd_wrapper \
-            -I$V/pure-data/src -Isrc/pd -Isrc/core tests/libpd/render.c $HOST_SRC \
+            -I$V/pure-data/src -Isrc/pd -Isrc/core/common -Isrc/core/solve -Isrc/core/play tests/libpd/render.c $HOST_SRC \
             -L$V/libs -lpd -Wl,-rpath,"$ROOT/$V/libs" build/libaero_core.a \
             -lsndfile -lfftw3f_threads -lfftw3f -lm -lpthread -ldl -o "$nopic" 2>/dev/null
         "$nopic" tests/libpd/tone.pd "$OUT/nopic.wav" >/dev/null 2>&1
@@ -281,8 +281,8 @@ if host_build multi "$T" tests/libpd/threads.c; then
 else
     fail "threads host"
 fi
-$CC -std=c99 -D_POSIX_C_SOURCE=200809L -O3 -fPIC -Isrc/core -DAERO_FFTW_UNSERIALISED \
-    -c src/core/treebranch.c -o "$OUT/treebranch-unserialised.o"
+$CC -std=c99 -D_POSIX_C_SOURCE=200809L -O3 -fPIC -Isrc/core/common -Isrc/core/solve -Isrc/core/play -DAERO_FFTW_UNSERIALISED \
+    -c src/core/play/treebranch.c -o "$OUT/treebranch-unserialised.o"
 host_build multi "$T-unserialised" tests/libpd/threads.c "$OUT/treebranch-unserialised.o" ||
     fail "threads host, negative control"
 if ! command -v valgrind >/dev/null; then

@@ -95,7 +95,7 @@ hostile_files_tree() { # tree files (trees/README.md)
     } >"$HOSTILE/short.tree"
     hostile_bad="$hostile_bad_common /no/such/folder/x.tree 12"
 }
-hostile_files_volume() { # volume directories (src/core/field_volume.h)
+hostile_files_volume() { # volume directories (src/core/common/field_volume.h)
     for _v in dir empty truncated garbage plain short unreadable huge pattern \
         nan; do
         [ -d "$HOSTILE/$_v" ] && chmod -R u+rwx "$HOSTILE/$_v"

@@ -9,11 +9,12 @@ section "fuzz regressions: seeds and saved crashes replayed (fuzz/targets.txt)"
 # stays caught, as do overflows and leaks.
 replay_flags=${FUZZ_REPLAY_FLAGS:--fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all}
 replay_dir=build/fuzz-replay
+rm -rf "$replay_dir/core" # no object of a source that is gone
 mkdir -p "$replay_dir/core"
 replay_ok=1
-for c in src/core/*.c; do
+for c in src/core/*/*.c; do
     # shellcheck disable=SC2086
-    ${CC:-cc} -std=gnu99 -O1 -g -fopenmp -Isrc/core $replay_flags -c "$c" \
+    ${CC:-cc} -std=gnu99 -O1 -g -fopenmp -Isrc/core/common -Isrc/core/solve -Isrc/core/play $replay_flags -c "$c" \
         -o "$replay_dir/core/$(basename "$c" .c).o" 2>>"$OUT/fuzz-core.build" ||
         replay_ok=0
 done
@@ -24,7 +25,7 @@ grep -v -e '^#' -e '^[[:space:]]*$' fuzz/targets.txt | while read -r name extra 
     bin=$replay_dir/$name
     # shellcheck disable=SC2086
     if [ "$replay_ok" -ne 1 ] || ! ${CC:-cc} -std=gnu99 -O1 -g -DFUZZ_REPLAY \
-        -Wall -Wextra -fopenmp $replay_flags -Isrc/core "fuzz/fuzz_$name.c" \
+        -Wall -Wextra -fopenmp $replay_flags -Isrc/core/common -Isrc/core/solve -Isrc/core/play "fuzz/fuzz_$name.c" \
         $extra "$replay_dir"/core/*.o -o "$bin" \
         -lsndfile -lfftw3f_threads -lfftw3f -lfftw3 -lpng -lm >"$OUT/fuzz-$name.build" 2>&1; then
         echo "  FAIL  fuzz harness $name does not build"

@@ -14,12 +14,12 @@
 #   aero_data_dir in src/pd/aero.o  the data folder a libpd host sets
 #                       once with aero_set_data_path() (aero.h), before
 #                       opening patches; the one process setting of aero.
-# (FFTW's planner is serialised by FFTW's own lock: src/core/aero_fftw.h.)
-# Usage: globals.sh [OBJECT...] (default: build/core/*.o src/pd/*.o);
+# (FFTW's planner is serialised by FFTW's own lock: src/core/common/aero_fftw.h.)
+# Usage: globals.sh [OBJECT...] (default: build/core/*/*.o src/pd/*.o);
 # exit 1 when a writable global appears. Run by `make check-globals` and
 # by `make check` (tests/objects/96-globals.sh, with a negative control).
 set -u
-[ $# -eq 0 ] && set -- build/core/*.o src/pd/*.o
+[ $# -eq 0 ] && set -- build/core/*/*.o src/pd/*.o
 found=0
 for obj in "$@"; do
     [ -f "$obj" ] || { echo "globals: no object $obj (build first)" >&2; exit 2; }

@@ -1,4 +1,4 @@
-/* Unit tests of src/core/strouhal and src/core/aeolian_model: the published
+/* Unit tests of src/core/common/strouhal and src/core/play/aeolian_model: the published
  * laws (written here again, independently of the core) and the behaviour at
  * the edges: silence below onset, bad input, block-size independence. */
 #include "aeolian_model.h"

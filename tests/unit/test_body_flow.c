@@ -1,4 +1,4 @@
-/* Unit tests of src/core/body_shape and src/core/body_flow: closed 3D
+/* Unit tests of src/core/common/body_shape and src/core/solve/body_flow: closed 3D
  * bodies (analytic shapes and meshes, with the errors a bad mesh must
  * give), and the 3D flow past a sphere against published values. */
 #include <stdlib.h>

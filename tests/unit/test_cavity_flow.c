@@ -1,4 +1,4 @@
-/* aero: the 2D flow over a cavity (src/core/flow2d.c, shape2d.c) oscillates
+/* aero: the 2D flow over a cavity (src/core/solve/flow2d.c, shape2d.c) oscillates
  * by itself at a Rossiter mode, as `aerotex cavity` relies on.
  *
  * Reference: Rossiter (1964), "Wind-tunnel experiments on the flow over

@@ -1,4 +1,4 @@
-/* Unit tests of src/core/cavity_model: Rossiter and quarter-wave laws
+/* Unit tests of src/core/play/cavity_model: Rossiter and quarter-wave laws
  * (written here again from their sources), lock-in, bad input. */
 #include "cavity_model.h"
 #include "unit.h"

@@ -1,9 +1,9 @@
-/* Unit tests of src/core/field_volume and field_sound (paper 002): the
+/* Unit tests of src/core/common/field_volume and field_sound (paper 002): the
  * volume format and its errors, the 1/r law and the arrival delay r/c0 of
  * a pulsating point, silence until the radiation arrives, the dipole class
  * of a translating density, the chunk polynomials against the per-sample
  * sum. Files go to build/tests/field/. */
-#include "field_sound.h"
+#include "field_render.h"
 #include "unit.h"
 
 #include <math.h>

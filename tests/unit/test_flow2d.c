@@ -1,4 +1,4 @@
-/* aero: tests of the 2D flow solver (src/core/flow2d.c, shape2d.c) against
+/* aero: tests of the 2D flow solver (src/core/solve/flow2d.c, shape2d.c) against
  * published cylinder data, and of the texture made from its force.
  *
  * Reference values:

@@ -1,4 +1,4 @@
-/* aero: tests of the 3D box flow solver (src/core/flow3d.c) on tiny grids:
+/* aero: tests of the 3D box flow solver (src/core/solve/flow3d.c) on tiny grids:
  * the projection is exact for its discrete operator (a random field
  * becomes divergence-free, a divergence-free field is left alone, a pure
  * gradient is removed), a uniform inflow stays uniform (no spurious

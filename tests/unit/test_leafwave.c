@@ -1,8 +1,8 @@
-/* unit tests of src/core/leafwave.c: the leaves of paper 003 (wave tables
+/* unit tests of src/core/play/leafwave.c: the leaves of paper 003 (wave tables
  * f_i = fm 2^(i/N), the per-pair state machine of fig. 12, collisions as
  * onsets, wind dependence, determinism by seed, neighbour lists by hashing
  * against brute force, 1/r and the cardioid microphone). */
-#include "../../src/core/leafwave.h"
+#include "../../src/core/play/leafwave.h"
 #include "unit.h"
 
 #include <fftw3.h>

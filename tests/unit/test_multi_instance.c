@@ -12,7 +12,7 @@
 #include "aeolian_model.h"
 #include "body_texture.h"
 #include "cavity_model.h"
-#include "field_sound.h"
+#include "field_render.h"
 #include "field_volume.h"
 #include "leafwave.h"
 #include "stick_texture.h"

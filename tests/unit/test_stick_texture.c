@@ -1,4 +1,4 @@
-/* Unit tests of src/core/stick_texture: the player of aeolian textures for
+/* Unit tests of src/core/play/stick_texture: the player of aeolian textures for
  * moving sticks, on synthetic textures whose content is known exactly. */
 #include <stdlib.h>
 #include <string.h>

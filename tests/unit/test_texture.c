@@ -1,5 +1,5 @@
 /* aero: tests of the texture files and the signal steps that make them
- * (src/core/texture.c): round trip of data and metadata, rejection of
+ * (src/core/common/texture.c): round trip of data and metadata, rejection of
  * missing, truncated, corrupt and inconsistent files, the derivative and
  * low-pass resampling, the loop search and cross-fade. */
 #include "unit.h"

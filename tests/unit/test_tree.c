@@ -1,6 +1,6 @@
-/* unit tests of src/core/tree.c: the .tree parser (bad lines reported with
+/* unit tests of src/core/common/tree.c: the .tree parser (bad lines reported with
  * their numbers and skipped), save/load round trip, the generator. */
-#include "../../src/core/tree.h"
+#include "../../src/core/common/tree.h"
 #include "unit.h"
 
 #include <stdlib.h>

@@ -1,8 +1,8 @@
-/* unit tests of src/core/tree_motion.c: the cantilever springs of paper 003
+/* unit tests of src/core/play/tree_motion.c: the cantilever springs of paper 003
  * (eqs. 1-4), accumulation from the root, independence from the caller's
  * step size, determinism from the seed. */
-#include "../../src/core/tree.h"
-#include "../../src/core/tree_motion.h"
+#include "../../src/core/common/tree.h"
+#include "../../src/core/play/tree_motion.h"
 #include "unit.h"
 
 #include <fftw3.h>

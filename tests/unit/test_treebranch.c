@@ -1,8 +1,8 @@
-/* unit tests of src/core/treebranch.c: branch sound of paper 003 with the
+/* unit tests of src/core/play/treebranch.c: branch sound of paper 003 with the
  * corrections of DESIGN.md (amplitude ~ U^3 sqrt(l) / r). */
-#include "../../src/core/aero_air.h"
-#include "../../src/core/strouhal.h"
-#include "../../src/core/treebranch.h"
+#include "../../src/core/common/aero_air.h"
+#include "../../src/core/common/strouhal.h"
+#include "../../src/core/play/treebranch.h"
 #include "unit.h"
 
 #include <stdlib.h>

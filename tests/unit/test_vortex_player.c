@@ -1,4 +1,4 @@
-/* aero: tests of the vortex texture player (src/core/vortex_player.c) with
+/* aero: tests of the vortex texture player (src/core/play/vortex_player.c) with
  * synthetic textures: 1/r, the Doppler factor of a moving source and of a
  * moving listener, speed interpolation and the u^4 law below the smallest
  * speed, clip, n sources adding in power, hostile input. */

@@ -1,4 +1,4 @@
-/* aero: tests of the vortex-sound textures (src/core/vortex_sound.c):
+/* aero: tests of the vortex-sound textures (src/core/solve/vortex_sound.c):
  * the third-derivative filter and the resampler against analytic signals,
  * Howe's moment of a known vorticity field, the paper's integral cells
  * cancelling in the interior (why they are not the default), and the

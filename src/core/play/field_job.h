@@ -6,7 +6,7 @@
 #ifndef AERO_FIELD_JOB_H
 #define AERO_FIELD_JOB_H
 
-#include "field_sound.h"
+#include "field_render.h"
 
 typedef struct aero_field_job aero_field_job;
 

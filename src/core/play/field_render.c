@@ -1,0 +1,329 @@
+/* aero: field auralization, the real-time half (see field_render.h):
+ * Catmull-Rom strengths between frames, summed at the listener at the
+ * retarded time. */
+#include "field_render.h"
+
+
+#include "aero_air.h"
+#include "aero_util.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* --- rendering ------------------------------------------------------------ */
+
+void aero_field_render_init(aero_field_render *r, double sample_rate)
+{
+    memset(r, 0, sizeof *r);
+    r->sample_rate = sample_rate > 0 && sample_rate < 1e7 ? sample_rate
+                                                           : 44100;
+    r->speed = r->speed_target = 0;
+    r->ramp_ms = 20;
+    r->gain = 1;
+    r->phase = -2;
+}
+
+void aero_field_render_free(aero_field_render *r)
+{
+    free(r->dist);
+    r->dist = NULL;
+    r->src = NULL;
+}
+
+int aero_field_render_set_sources(aero_field_render *r,
+                                  const aero_field_sources *s)
+{
+    free(r->dist);
+    r->dist = NULL;
+    r->src = NULL;
+    r->playing = 0;
+    r->envelope = 0;
+    r->dist_valid = 0;
+    if (!s)
+        return 0;
+    r->dist = malloc(sizeof(float) * (s->count ? s->count : 1));
+    if (!r->dist)
+        return -1;
+    r->src = s;
+    if (!(r->speed_target > 0))
+        r->speed = r->speed_target = s->rate;
+    return 0;
+}
+
+int aero_field_render_set_sample_rate(aero_field_render *r, double sr)
+{
+    if (!(sr > 0 && sr < 1e7))
+        return -1;
+    r->sample_rate = sr;
+    return 0;
+}
+
+int aero_field_render_set_speed(aero_field_render *r, double fps)
+{
+    if (!(fps > 0 && fps <= 1e6))
+        return -1;
+    r->speed_target = fps;
+    if (!r->playing)
+        r->speed = fps;
+    return 0;
+}
+
+static int position_ok(double x, double y, double z)
+{
+    return aero_is_finite(x) && aero_is_finite(y) && aero_is_finite(z) &&
+           fabs(x) <= 1e5 && fabs(y) <= 1e5 && fabs(z) <= 1e5;
+}
+
+int aero_field_render_set_listener(aero_field_render *r, double x, double y,
+                                   double z)
+{
+    if (!position_ok(x, y, z))
+        return -1;
+    r->target[0] = x, r->target[1] = y, r->target[2] = z;
+    r->ramp_left = r->ramp_ms * 0.001 * r->sample_rate;
+    if (r->ramp_left < 1)
+        r->ramp_left = 1;
+    return 0;
+}
+
+int aero_field_render_place_listener(aero_field_render *r, double x,
+                                     double y, double z)
+{
+    if (!position_ok(x, y, z))
+        return -1;
+    r->target[0] = r->listener[0] = x;
+    r->target[1] = r->listener[1] = y;
+    r->target[2] = r->listener[2] = z;
+    r->ramp_left = 0;
+    r->dist_valid = 0;
+    return 0;
+}
+
+int aero_field_render_set_ramp_ms(aero_field_render *r, double ms)
+{
+    if (!(ms >= 0 && ms <= 600000))
+        return -1;
+    r->ramp_ms = ms;
+    return 0;
+}
+
+int aero_field_render_set_gain_db(aero_field_render *r, double db)
+{
+    if (!(db >= -200 && db <= 120))
+        return -1;
+    r->gain = pow(10.0, db / 20.0);
+    return 0;
+}
+
+void aero_field_render_play(aero_field_render *r)
+{
+    if (!r->src)
+        return;
+    /* frame time -2 at the start: the first cubic piece that reaches
+     * frame 0 (Catmull-Rom looks two frames ahead) begins at u = -2, so
+     * nothing is heard before D/c0 (the interpolation's latency is two
+     * frames) */
+    r->phase = -2;
+    r->speed = r->speed_target;
+    r->playing = 1;
+    r->envelope = 1;
+}
+
+void aero_field_render_stop(aero_field_render *r)
+{
+    r->playing = 0;
+}
+
+double aero_field_render_length(const aero_field_sources *s, double speed,
+                                double distance)
+{
+    if (!s || !(speed > 0))
+        return 0;
+    return (s->frames + 3) / speed + (s->max_reach + distance) / AERO_C0;
+}
+
+/* Catmull-Rom coefficients of the piece [m, m+1) of source row g (zero
+ * outside the frames), each value scaled by its type's factor */
+static void piece(const float *g, const unsigned char *type, int frames,
+                  int m, const double *scale, double c[4])
+{
+    double p[4];
+    for (int k = 0; k < 4; k++) {
+        int f = m - 1 + k;
+        p[k] = f >= 0 && f < frames ? g[f] * scale[type[f]] : 0.0;
+    }
+    c[0] = p[1];
+    c[1] = 0.5 * (p[2] - p[0]);
+    c[2] = p[0] - 2.5 * p[1] + 2 * p[2] - 0.5 * p[3];
+    c[3] = 0.5 * (p[3] - p[0]) + 1.5 * (p[1] - p[2]);
+}
+
+/* one chunk of c <= AERO_FIELD_CHUNK samples */
+static int render_chunk(aero_field_render *r, float *out, int c)
+{
+    const aero_field_sources *s = r->src;
+    const double sr = r->sample_rate, inv_c0 = 1.0 / AERO_C0;
+    double l0[3], l1[3], scale[4], env0 = r->envelope, env1;
+    double s0 = r->speed, s1, ph0 = r->phase, ph1;
+    int remaining = 0;
+
+    /* the listener: linear ramp toward the target, at most Mach 0.3 */
+    memcpy(l0, r->listener, sizeof l0);
+    if (r->ramp_left > 0) {
+        double f = c >= r->ramp_left ? 1.0 : c / r->ramp_left;
+        for (int a = 0; a < 3; a++)
+            l1[a] = l0[a] + (r->target[a] - l0[a]) * f;
+        r->ramp_left -= c;
+        if (r->ramp_left < 0)
+            r->ramp_left = 0;
+    } else
+        memcpy(l1, r->target, sizeof l1);
+    {
+        double d[3], len = 0, lim = AERO_MACH_LIMIT * AERO_C0 * c / sr;
+        for (int a = 0; a < 3; a++)
+            d[a] = l1[a] - l0[a], len += d[a] * d[a];
+        len = sqrt(len);
+        if (len > lim) {
+            /* faster than Mach 0.3: go on toward the target next chunk */
+            for (int a = 0; a < 3; a++)
+                l1[a] = l0[a] + d[a] * lim / len;
+            r->clamped = 1;
+            if (r->ramp_left < c)
+                r->ramp_left = c;
+        }
+    }
+    memcpy(r->listener, l1, sizeof l1);
+
+    /* playhead and speed: the speed glides to its target in ~10 ms */
+    {
+        double glide = c / (0.01 * sr);
+        s1 = s0 + (r->speed_target - s0) * (glide > 1 ? 1 : glide);
+    }
+    ph1 = ph0 + 0.5 * (s0 + s1) * c / sr;
+    env1 = r->playing ? 1.0 : 0.0;
+    if (!s || (env0 <= 0 && env1 <= 0)) {
+        memset(out, 0, sizeof(float) * c);
+        r->speed = s1;
+        r->envelope = env1;
+        r->dist_valid = 0;
+        return 0;
+    }
+    {
+        double sm = 0.5 * (s0 + s1) / s->rate;
+        for (int t = 0; t < 4; t++)
+            scale[t] = t ? r->gain / (4 * AERO_PI) * pow(sm, s->exponent[t])
+                         : 0;
+    }
+    double *acc = r->acc;
+    memset(acc, 0, sizeof(double) * 5 * (c + 1));
+    const int frames = s->frames;
+    const double dmin = s->min_distance;
+    for (int k = 0; k < s->count; k++) {
+        const float *pos = s->pos + 3 * k;
+        double e1[3] = {l1[0] - pos[0], l1[1] - pos[1], l1[2] - pos[2]};
+        double d1 = sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]), d0;
+        if (r->dist_valid)
+            d0 = r->dist[k];
+        else {
+            double e0[3] = {l0[0] - pos[0], l0[1] - pos[1], l0[2] - pos[2]};
+            d0 = sqrt(e0[0] * e0[0] + e0[1] * e0[1] + e0[2] * e0[2]);
+        }
+        r->dist[k] = (float)d1;
+        /* retarded frame time at both ends of the chunk: the radiation
+         * leaving the source at frame u arrives D/c0 later */
+        double u0 = ph0 - s0 * d0 * inv_c0, u1 = ph1 - s1 * d1 * inv_c0;
+        if (u0 < s->last[k] + 2)
+            remaining = 1;
+        if (u1 < s->first[k] - 2 || u0 >= s->last[k] + 2)
+            continue; /* not reached yet, or heard out */
+        double b = (u1 - u0) / c;
+        if (!(b > 1e-12))
+            b = 1e-12;
+        double w0 = 1 / (d0 > dmin ? d0 : dmin);
+        double w1 = 1 / (d1 > dmin ? d1 : dmin);
+        double wd = (w1 - w0) / c;
+        const float *g = s->g + (size_t)k * frames;
+        const unsigned char *ty = s->type + (size_t)k * frames;
+        int m_lo = (int)floor(u0), m_hi = (int)floor(u1);
+        if (m_lo < s->first[k] - 2)
+            m_lo = s->first[k] - 2;
+        if (m_hi > s->last[k] + 1)
+            m_hi = s->last[k] + 1;
+        for (int m = m_lo; m <= m_hi; m++) {
+            int is = m <= u0 ? 0 : (int)ceil((m - u0) / b);
+            int ie = m + 1 > u1 ? c : (int)ceil((m + 1 - u0) / b);
+            if (is < 0) is = 0;
+            if (ie > c) ie = c;
+            if (ie <= is)
+                continue;
+            double cf[4];
+            piece(g, ty, frames, m, scale, cf);
+            if (cf[0] == 0 && cf[1] == 0 && cf[2] == 0 && cf[3] == 0)
+                continue;
+            double al = u0 - m;
+            if (r->direct) {
+                /* the reference: every sample evaluated on its own */
+                for (int i = is; i < ie; i++) {
+                    double x = al + b * i;
+                    double v = ((cf[3] * x + cf[2]) * x + cf[1]) * x + cf[0];
+                    acc[5 * i] += v * (w0 + wd * i);
+                }
+                continue;
+            }
+            /* the piece as a cubic in the sample index i (x = al + b i),
+             * times 1/D = w0 + wd i: a quartic, added from is to ie */
+            double g0 = ((cf[3] * al + cf[2]) * al + cf[1]) * al + cf[0];
+            double g1 = ((3 * cf[3] * al + 2 * cf[2]) * al + cf[1]) * b;
+            double g2 = (3 * cf[3] * al + cf[2]) * b * b;
+            double g3 = cf[3] * b * b * b;
+            double f[5] = {g0 * w0, g1 * w0 + g0 * wd, g2 * w0 + g1 * wd,
+                           g3 * w0 + g2 * wd, g3 * wd};
+            double *a_s = acc + 5 * is, *a_e = acc + 5 * ie;
+            for (int j = 0; j < 5; j++) {
+                a_s[j] += f[j];
+                a_e[j] -= f[j];
+            }
+        }
+    }
+    r->dist_valid = 1;
+    if (r->direct) {
+        for (int i = 0; i < c; i++) {
+            double e = env0 + (env1 - env0) * i / c;
+            out[i] = (float)(acc[5 * i] * e);
+        }
+    } else {
+        double p[5] = {0, 0, 0, 0, 0};
+        for (int i = 0; i < c; i++) {
+            for (int j = 0; j < 5; j++)
+                p[j] += acc[5 * i + j];
+            double x = i;
+            double v = (((p[4] * x + p[3]) * x + p[2]) * x + p[1]) * x + p[0];
+            double e = env0 + (env1 - env0) * i / c;
+            out[i] = (float)(v * e);
+        }
+    }
+    for (int i = 0; i < c; i++)
+        if (!aero_is_finite(out[i]))
+            out[i] = 0;
+    r->phase = ph1;
+    r->speed = s1;
+    r->envelope = env1;
+    if (r->playing && !remaining)
+        r->playing = 0; /* every source has been heard */
+    return r->playing;
+}
+
+int aero_field_render_process(aero_field_render *r, float *out, int n)
+{
+    int playing = 0;
+    while (n > 0) {
+        int c = n < AERO_FIELD_CHUNK ? n : AERO_FIELD_CHUNK;
+        playing = render_chunk(r, out, c);
+        out += c;
+        n -= c;
+    }
+    return playing;
+}

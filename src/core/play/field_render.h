@@ -1,0 +1,54 @@
+/* aero: field auralization, the real-time half: the retarded-time sum of
+ * the sources field_prepare.h found, heard by a moving listener (Shin and
+ * Bajaj; the method and where it departs from the paper: field_prepare.h). */
+#ifndef AERO_FIELD_RENDER_H
+#define AERO_FIELD_RENDER_H
+
+#include "field_prepare.h"
+
+/* --- rendering ----------------------------------------------------------- */
+#define AERO_FIELD_CHUNK 64
+
+typedef struct aero_field_render {
+    const aero_field_sources *src; /* not owned */
+    double sample_rate;
+    double speed, speed_target;    /* playback, frames per second */
+    double phase;                  /* playhead, data frames */
+    int playing;
+    double envelope;               /* 0..1, fades on stop */
+    double listener[3], target[3];
+    double ramp_ms, ramp_left;     /* samples left of the listener ramp */
+    double gain;                   /* linear */
+    float *dist;                   /* per source, at the last chunk end */
+    int dist_valid;
+    int direct;                    /* per-sample reference sum */
+    int clamped;                   /* listener faster than Mach 0.3 */
+    double acc[5 * (AERO_FIELD_CHUNK + 1)];
+} aero_field_render;
+
+/* Defaults: listener at (0, 0, 0) ... set it; speed = the data's rate
+ * once sources are set; ramp 20 ms; gain 0 dB; stopped. */
+void aero_field_render_init(aero_field_render *r, double sample_rate);
+void aero_field_render_free(aero_field_render *r);
+/* new sources (NULL: silence); 0, or -1 when out of memory. Stops. */
+int aero_field_render_set_sources(aero_field_render *r,
+                                  const aero_field_sources *s);
+int aero_field_render_set_sample_rate(aero_field_render *r, double sr);
+int aero_field_render_set_speed(aero_field_render *r, double fps);
+int aero_field_render_set_listener(aero_field_render *r, double x, double y,
+                                   double z);
+/* jump there at once (offline paths start here) */
+int aero_field_render_place_listener(aero_field_render *r, double x,
+                                     double y, double z);
+int aero_field_render_set_ramp_ms(aero_field_render *r, double ms);
+int aero_field_render_set_gain_db(aero_field_render *r, double db);
+void aero_field_render_play(aero_field_render *r);
+void aero_field_render_stop(aero_field_render *r);
+/* n samples of pressure (Pa) into out. Returns 1 while playing. */
+int aero_field_render_process(aero_field_render *r, float *out, int n);
+/* seconds until every source has been heard, from play, at the current
+ * speed, for a listener at most `distance` m from the origin */
+double aero_field_render_length(const aero_field_sources *s, double speed,
+                                double distance);
+
+#endif

@@ -18,6 +18,8 @@ lib.name = aero
 # --- the Pd side: one external per object, plus the single-binary setup ----
 class.sources = $(sort $(wildcard src/pd/*~.c))
 lib.setup.sources = src/pd/aero.c
+# the skeleton every wrapper shares, linked into each external and the lib
+common.sources = src/pd/aero_pd.c
 
 datafiles = $(wildcard help/*.pd) $(wildcard abstractions/*.pd) \
     README.md LICENSE
@@ -91,7 +93,7 @@ lib: all
 
 # the wrappers must also compile for multi-instance libpd
 pdinstance:
-	@for f in $(class.sources) $(lib.setup.sources); do \
+	@for f in $(class.sources) $(lib.setup.sources) $(common.sources); do \
 	    $(CC) -std=c99 -fsyntax-only -Wall -Wextra -Werror \
 	        -DPDINSTANCE -DPDTHREADS -I/usr/include/pd -Isrc/core $$f \
 	        || exit 1; \
@@ -174,7 +176,7 @@ libpd-example: $(core.lib)
 	    "(no $(LIBPD_LIB))" >&2; exit 1; }
 	@echo "libpd: $(LIBPD_DIR), $(if $(filter yes,$(LIBPD_MULTI)),multi-instance,single-instance), $(LIBPD_LINK)"
 	$(CC) $(libpd.cflags) examples/libpd-host.c $(class.sources) \
-	    $(lib.setup.sources) $(libpd.libs) -o $(LIBPD_HOST)
+	    $(lib.setup.sources) $(common.sources) $(libpd.libs) -o $(LIBPD_HOST)
 	@echo "run: $(LIBPD_HOST) examples . $(BUILD)/sword-swing.wav"
 
 .PHONY: check-libpd
@@ -221,11 +223,11 @@ $(ASAN_DIR)/core/%.o: src/core/%.c $(wildcard src/core/*.h)
 	$(ASAN_CC) $(ASAN_CFLAGS) -c $< -o $@
 $(asan.lib): $(asan.core.objects)
 	rm -f $@; ar rcs $@ $^
-$(ASAN_ROOT)/%~.pd_linux: src/pd/%~.c src/pd/aero_pd.h $(asan.lib)
+$(ASAN_ROOT)/%~.pd_linux: src/pd/%~.c $(common.sources) src/pd/aero_pd.h $(asan.lib)
 	@mkdir -p $(dir $@)
-	$(ASAN_CC) $(ASAN_PD_CFLAGS) $< -o $@ $(asan.lib) -lsndfile -lfftw3f_threads -lfftw3f -lm
-$(ASAN_ROOT)/aero.pd_linux: $(lib.setup.sources) $(class.sources) $(asan.lib)
-	$(ASAN_CC) $(ASAN_PD_CFLAGS) $(lib.setup.sources) $(class.sources) -o $@ \
+	$(ASAN_CC) $(ASAN_PD_CFLAGS) $< $(common.sources) -o $@ $(asan.lib) -lsndfile -lfftw3f_threads -lfftw3f -lm
+$(ASAN_ROOT)/aero.pd_linux: $(lib.setup.sources) $(class.sources) $(common.sources) $(asan.lib)
+	$(ASAN_CC) $(ASAN_PD_CFLAGS) $(lib.setup.sources) $(class.sources) $(common.sources) -o $@ \
 	    $(asan.lib) -lsndfile -lfftw3f_threads -lfftw3f -lm
 $(ASAN_ROOT)/build/aerotex: $(aerotex.sources) $(asan.lib)
 	@mkdir -p $(dir $@)

@@ -1299,7 +1299,7 @@ static double mic_factor(const aero_leafwave *lw, const double ear[3])
 }
 
 int aero_leafwave_process(aero_leafwave *lw, const float *speed,
-                          float **outs, int n)
+                          float *const *outs, int n)
 {
     int clamped = 0;
     /* the inlet speed: mean of the block, read before any output */

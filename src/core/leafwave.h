@@ -231,7 +231,7 @@ const float *aero_leafwave_table(const aero_leafwave *lw, int i);
  * frame; outs[ear] get the pressure in Pa. speed may alias outs[0].
  * Returns 1 if a speed was clamped (Mach 0.3). */
 int aero_leafwave_process(aero_leafwave *lw, const float *speed,
-                          float **outs, int n);
+                          float *const *outs, int n);
 
 /* number of pairs in each state now (tests, inspection) */
 void aero_leafwave_count_states(const aero_leafwave *lw, int counts[5]);

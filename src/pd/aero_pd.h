@@ -1,5 +1,11 @@
-/* aero: helpers shared by the Pd wrappers (header-only, static: each
- * external is built from its own source file). */
+/* aero: the skeleton every Pd wrapper shares (src/pd/aero_pd.c).
+ *
+ * A wrapper is its struct, one table of messages, perform, dsp, new and
+ * free. The table drives everything that used to be written per object:
+ * class_addmethod for each message, the creation flags (`-name args` is the
+ * message `name args`), and the list of flags named in errors. The base
+ * struct holds what every object has: its canvas, mono or stereo, the
+ * outlets and the Mach 0.3 clamp report. */
 #ifndef AERO_PD_H
 #define AERO_PD_H
 
@@ -7,29 +13,171 @@
 #include "g_canvas.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "aero.h"
+#include "texture.h"
+
+/* --- one table per object: its messages, each also a creation flag ------ */
+
+typedef enum {
+    AERO_PD_BANG,   /* fn(x) */
+    AERO_PD_FLOAT,  /* fn(x, t_floatarg) */
+    AERO_PD_SYMBOL, /* fn(x, t_symbol *) */
+    AERO_PD_LIST,   /* fn(x, t_symbol *selector, int argc, t_atom *argv);
+                       as a flag it takes `count` numbers */
+    AERO_PD_SWITCH  /* a creation flag alone, no message (-stereo): new
+                       reads it with aero_pd_has_flag */
+} aero_pd_args;
+
+enum {
+    AERO_PD_EARLY = 1, /* as a flag, applied before all others (-d before
+                          -texture, -n before -speeds) */
+    AERO_PD_MESSAGE_ONLY = 2 /* no creation flag */
+};
+
+typedef struct {
+    const char *name; /* the message; "-name" is its creation flag */
+    aero_pd_args args;
+    int count;        /* AERO_PD_LIST: how many numbers the flag takes */
+    t_method fn;
+    int options;      /* AERO_PD_EARLY, AERO_PD_MESSAGE_ONLY */
+} aero_pd_method;
+
+/* An object's class and its table. `name` is the Pd name ("cavity~"),
+ * `first` a leading non-flag argument named in errors ("<treefile>") or
+ * NULL. */
+typedef struct {
+    const char *name;
+    const aero_pd_method *methods;
+    int count;
+    const char *first;
+} aero_pd_spec;
+
+#define AERO_PD_COUNT(a) ((int)(sizeof(a) / sizeof((a)[0])))
+
+/* class_new with the table's methods, `dsp`, the help symbol, and the
+ * main signal inlet's float at `f_offset` (-1: no signal inlet) */
+t_class *aero_pd_class_new(const aero_pd_spec *spec, t_newmethod new_fn,
+                           t_method free_fn, size_t size, int f_offset,
+                           t_method dsp_fn);
+
+/* Applies the creation flags: `-name args` calls the table's method as
+ * the message `name args` would (EARLY ones first). Unknown flags and
+ * missing or wrong values are reported, naming the object and its flags,
+ * and skipped: the object is still created. */
+void aero_pd_parse_flags(void *x, const aero_pd_spec *spec, int argc,
+                         t_atom *argv);
+
+/* is `-name` among the creation arguments (a SWITCH such as -stereo)? */
+int aero_pd_has_flag(const char *name, int argc, const t_atom *argv);
+
+/* A leading argument that is not a flag (a tree file, a volume folder):
+ * returned and consumed, or NULL. */
+t_symbol *aero_pd_first_symbol(int *argc, t_atom **argv);
+
+/* --- the base every object embeds ----------------------------------------- */
+
+/* An object's block: renders n samples in float from `in` (the main signal
+ * inlet, NULL without one) into out[0] (and out[1] with -stereo, else
+ * NULL); returns 1 when the core clamped a speed above Mach 0.3. */
+typedef int (*aero_pd_process)(void *x, const float *in, float *const *out,
+                               int n);
+
+typedef struct {
+    t_object *owner;
+    const char *obj;  /* "[cavity~]", for messages */
+    t_canvas *canvas; /* where files are looked for first */
+    int stereo;       /* created with -stereo: two outlets, `ears` */
+    int clamped;      /* set by perform, reported once by the clock */
+    int warned_clamp;
+    t_clock *clock;
+    t_outlet *out[2];
+    aero_pd_process process;
+    float *scratch;   /* float signals for a double-precision Pd */
+    int scratch_n;
+} aero_pd_base;
+
+/* Reads -stereo, keeps the current canvas, makes the clamp clock. */
+void aero_pd_base_init(aero_pd_base *b, void *owner, const aero_pd_spec *spec,
+                       int argc, const t_atom *argv);
+/* one signal outlet, two with -stereo */
+void aero_pd_base_outlets(aero_pd_base *b);
+void aero_pd_base_free(aero_pd_base *b);
+
+/* The dsp method's common part, after the object set its sample rate:
+ * adds the one perform routine of every aero object, which calls
+ * `process` on each block. `inlet`: the object has a main signal inlet.
+ * The core computes in float: a double-precision Pd (PD_FLOATSIZE 64)
+ * hands double buffers, converted here through float scratch allocated in
+ * dsp, never in perform; with single precision Pd's own buffers pass
+ * through (in and out may then be the same buffer: every core reads a
+ * chunk of its input before it writes that chunk of its output). */
+void aero_pd_dsp(aero_pd_base *b, t_signal **sp, int inlet,
+                 aero_pd_process process);
+
+/* Called by perform when the core clamped a speed above Mach 0.3: the
+ * warning is posted once, from the clock (never from perform). */
+static inline void aero_pd_clamped(aero_pd_base *b)
+{
+    if (!b->clamped) {
+        b->clamped = 1;
+        clock_delay(b->clock, 0);
+    }
+}
+
+/* `listener x y z` (mono) or `ears lx ly lz rx ry rz` (-stereo): checks the
+ * selector against the object's outlets and reads the numbers into v.
+ * Returns the number of ears (1 or 2), or 0 after reporting an error. */
+int aero_pd_ears(aero_pd_base *b, t_symbol *s, int argc, const t_atom *argv,
+                 double v[6]);
+
+/* the error for a listener or ears setter that refused the positions */
+void aero_pd_bad_ears(aero_pd_base *b, int ears);
+
+/* --- a wind along a direction ([treebranch~], [leafwave~]) ---------------
+ * The inlet is the speed along the direction of the last `wind vx vy vz`
+ * (+x until then), taken as the block's mean. */
+typedef struct {
+    double dir[3]; /* unit vector */
+    double speed;  /* the speed last applied, m/s */
+} aero_pd_wind;
+
+void aero_pd_wind_init(aero_pd_wind *w);
+/* `wind vx vy vz`: keeps its direction (unless zero) and returns its
+ * speed, or -1 after reporting an error */
+double aero_pd_wind_message(aero_pd_base *b, aero_pd_wind *w, t_symbol *s,
+                            int argc, const t_atom *argv);
+/* the block's mean speed (finite; 0 without an input), read before any
+ * output is written */
+double aero_pd_block_mean(const float *in, int n);
+
+/* --- textures: one loader, one failure policy ------------------------------
+ * A texture that can't be found or read is reported once (the name, the
+ * places looked in, the reason) and the object falls back to what it plays
+ * without one (`fallback`: "using the Strouhal/Reynolds model", "silent"):
+ * it never keeps a texture the user asked to replace. The loaded texture
+ * is malloc'd: the core takes it and releases it with free(). */
+typedef int (*aero_pd_set_texture)(void *core, aero_texture *t, char *err,
+                                   size_t len);
+
+void aero_pd_load_texture(aero_pd_base *b, t_class *cls, t_symbol *name,
+                          aero_pd_set_texture set, void *core,
+                          const char *fallback);
+
+/* --- numbers from a patch ------------------------------------------------- */
+
 /* A default seed that differs between objects but is the same every time
  * the patch is loaded: from $0 and the object's index in its canvas. */
-static inline uint32_t aero_pd_default_seed(void)
-{
-    t_glist *canvas = canvas_getcurrent();
-    uint32_t seed = 1;
-    if (canvas) {
-        t_symbol *dollar0 = canvas_realizedollar(canvas, gensym("$0"));
-        seed += (uint32_t)atoi(dollar0->s_name) * 7919u;
-        for (t_gobj *g = canvas->gl_list; g; g = g->g_next)
-            seed += 104729u;
-    }
-    return seed;
-}
+uint32_t aero_pd_default_seed(void);
 
 /* A number from a patch as a 32-bit seed: any finite value wraps; NaN,
  * infinities and beyond +-9.2e18 give 0 (converting those to an integer
- * type is undefined behaviour in C; UBSan caught it, issue 10). */
+ * type is undefined behaviour in C). */
 static inline uint32_t aero_pd_seed(t_float f)
 {
     if (!(f > -9.2e18f && f < 9.2e18f))
@@ -40,8 +188,7 @@ static inline uint32_t aero_pd_seed(t_float f)
 /* A number from a patch as a whole number in lo..hi: 0 with *n set, else
  * -1. NaN, infinities, fractions and numbers out of range are refused
  * before any conversion (a float outside int's range converted to int is
- * undefined behaviour: [vortex~ n inf], [leafwave~ voices nan] and
- * [fieldsound~ demo nan] did that, issue 10). */
+ * undefined behaviour). */
 static inline int aero_pd_whole(t_float f, int lo, int hi, int *n)
 {
     if (!(f >= lo && f <= hi) || f != floor(f))
@@ -51,65 +198,10 @@ static inline int aero_pd_whole(t_float f, int lo, int hi, int *n)
 }
 
 /* exactly `want` numbers from a message, else an error naming the object */
-static inline int aero_pd_floats(void *x, const char *obj, const char *what,
-                                 int argc, const t_atom *argv, int want,
-                                 double *v)
-{
-    if (argc != want) {
-        pd_error(x, "%s: '%s' takes %d numbers, got %d", obj, what, want,
-                 argc);
-        return -1;
-    }
-    for (int i = 0; i < want; i++) {
-        if (argv[i].a_type != A_FLOAT) {
-            pd_error(x, "%s: '%s' takes numbers only", obj, what);
-            return -1;
-        }
-        v[i] = argv[i].a_w.w_float;
-    }
-    return 0;
-}
+int aero_pd_floats(void *x, const char *obj, const char *what, int argc,
+                   const t_atom *argv, int want, double *v);
 
-/* Reads creation flags: `flag(x, symbol, argc, argv)` handles one flag and
- * returns how many atoms it used (0: unknown). Anything unknown is reported
- * with the object's name and the list of its flags, then skipped. */
-typedef int (*aero_pd_flag_fn)(void *x, t_symbol *flag, int argc,
-                               t_atom *argv);
-
-static inline void aero_pd_parse_flags(void *x, const char *obj,
-                                       const char *known, aero_pd_flag_fn flag,
-                                       int argc, t_atom *argv)
-{
-    while (argc > 0) {
-        int used = 0;
-        if (argv->a_type == A_SYMBOL)
-            used = flag(x, argv->a_w.w_symbol, argc - 1, argv + 1);
-        if (!used) {
-            char buf[MAXPDSTRING];
-            atom_string(argv, buf, sizeof(buf));
-            pd_error(x, "%s: unknown argument '%s' ignored (flags: %s)", obj,
-                     buf, known);
-            used = 1;
-        }
-        if (used > argc)
-            used = argc;
-        argc -= used;
-        argv += used;
-    }
-}
-
-/* The data folder a host set with aero_set_data_path() (src/pd/aero.h,
- * defined in aero.c), or NULL. A weak reference: the one-class externals
- * are built without aero.c, and no host calls them, so there it is NULL. */
-#if defined(__ELF__) || defined(__APPLE__)
-const char *aero_data_path(void) __attribute__((weak));
-static inline const char *aero_pd_host_data_path(void)
-{
-    return aero_data_path ? aero_data_path() : NULL;
-}
-#else
-static inline const char *aero_pd_host_data_path(void) { return NULL; }
-#endif
+/* --- files ----------------------------------------------------------------- */
 
 /* 0 when DIR/FOLDER/NAME+EXT is a readable file (its path in `path`) */
 static inline int aero_pd_try_data_dir(const char *dir, const char *folder,
@@ -127,11 +219,11 @@ static inline int aero_pd_try_data_dir(const char *dir, const char *folder,
 }
 
 /* Finds a data file (a texture in textures/, a tree in trees/), in this
- * order (README, "Embedding"):
+ * order (README, "Embedding with libpd"):
  *   1. next to the patch, its [declare -path] folders and Pd's search path
  *      (canvas_open; a libpd host adds folders with libpd_add_to_search_path)
  *   2. DIR/`folder` for DIR in the AERO_DATA environment variable
- *   3. DIR/`folder` for the DIR a host set with aero_set_data_path()
+ *   3. DIR/`folder` for the DIR a host set with aero_set_data_path() (aero.h)
  *   4. `folder` in the folder aero was loaded from (class_gethelpdir: the
  *      installed library; empty for classes a host registers itself).
  * `ext` (".wav") is appended unless the name has it. Writes the full path
@@ -151,7 +243,7 @@ static inline int aero_pd_find_file(const t_canvas *canvas,
         sys_close(fd);
         return snprintf(path, len, "%s/%s", dir, base) < (int)len ? 0 : -1;
     }
-    const char *env = getenv("AERO_DATA"), *host = aero_pd_host_data_path();
+    const char *env = getenv("AERO_DATA"), *host = aero_data_path();
     const char *helpdir = class_gethelpdir(cls);
     if (!aero_pd_try_data_dir(env, folder, name, ext, path, len) ||
         !aero_pd_try_data_dir(host, folder, name, ext, path, len) ||

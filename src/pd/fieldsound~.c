@@ -8,113 +8,35 @@
  *   outlet 1 (signal): sound pressure at the listener, Pa
  *   outlet 2: progress <0..1>, ready <active vertices> <seconds>, done
  */
-#ifndef _POSIX_C_SOURCE
-#define _POSIX_C_SOURCE 200809L /* clock_gettime, pthreads */
-#endif
 #include "aero_pd.h"
 
-#include "field_sound.h"
-
-#include <pthread.h>
-#include <time.h>
+#include "field_job.h"
 
 static t_class *fieldsound_tilde_class;
 
 #define OBJ "[fieldsound~]"
 
-/* one preprocessing run; shared with its worker under `lock` */
-typedef struct field_job {
-    pthread_mutex_t lock;
-    int done_frames, total_frames;
-    int finished;          /* 0 running, 1 ok, -1 failed */
-    int cancel;
-    char err[512];
-    aero_volume_info info;
-    aero_field_demo demo;
-    int use_demo;
-    aero_field_params par;
-    aero_field_sources result;
-    double seconds;
-} field_job;
-
 typedef struct _fieldsound_tilde {
     t_object x_obj;
+    aero_pd_base x_base;           /* canvas and table; own outlets */
     aero_field_render x_render;
     aero_field_sources x_sources;  /* what x_render plays */
     aero_field_params x_par;
-    t_canvas *x_canvas;
+    int x_creating;                /* flags read: preprocess once, after */
     t_symbol *x_dir;               /* as given, or NULL for the demo */
     int x_demo_size;
     int x_sync, x_pending_play, x_reported_progress;
-    field_job *x_job;
-    pthread_t x_thread;
-    int x_thread_live;
+    aero_field_job *x_job;         /* preprocessing in a worker thread */
+    aero_volume_info x_job_info;   /* what it preprocesses */
     int x_was_playing, x_clamped, x_warned_clamp, x_done;
     t_clock *x_poll, *x_report;
     t_outlet *x_out, *x_info;
 } t_fieldsound_tilde;
 
-static double wall_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
-
-/* --- the worker: core calls only ---------------------------------------- */
-
-static int job_progress(void *ctx, int done, int total)
-{
-    field_job *j = ctx;
-    int cancel;
-    pthread_mutex_lock(&j->lock);
-    j->done_frames = done;
-    j->total_frames = total;
-    cancel = j->cancel;
-    pthread_mutex_unlock(&j->lock);
-    return cancel;
-}
-
-static void job_run(field_job *j)
-{
-    double t0 = wall_seconds();
-    char err[512] = "";
-    int rc = aero_field_prepare(&j->info, j->use_demo ? &j->demo : NULL,
-                                &j->par, &j->result, job_progress, j, err,
-                                sizeof err);
-    pthread_mutex_lock(&j->lock);
-    j->seconds = wall_seconds() - t0;
-    j->finished = rc ? -1 : 1;
-    memcpy(j->err, err, sizeof err);
-    pthread_mutex_unlock(&j->lock);
-}
-
-static void *job_thread(void *arg)
-{
-    job_run(arg);
-    return NULL;
-}
-
-static void job_free(field_job *j)
-{
-    if (j->finished == 1)
-        aero_field_sources_free(&j->result);
-    pthread_mutex_destroy(&j->lock);
-    freebytes(j, sizeof *j);
-}
-
-/* stops a running job (waits for its current frame) and frees it */
+/* stops a running job (waits for its current frame) */
 static void fieldsound_tilde_cancel(t_fieldsound_tilde *x)
 {
-    if (!x->x_job)
-        return;
-    pthread_mutex_lock(&x->x_job->lock);
-    x->x_job->cancel = 1;
-    pthread_mutex_unlock(&x->x_job->lock);
-    if (x->x_thread_live)
-        pthread_join(x->x_thread, NULL);
-    x->x_thread_live = 0;
-    job_free(x->x_job);
+    aero_field_job_cancel(x->x_job);
     x->x_job = NULL;
     clock_unset(x->x_poll);
 }
@@ -133,58 +55,50 @@ static const char *fieldsound_tilde_name(t_fieldsound_tilde *x, char *buf,
  * so perform never sees a half-made set) */
 static void fieldsound_tilde_install(t_fieldsound_tilde *x)
 {
-    field_job *j = x->x_job;
-    char name[MAXPDSTRING];
+    char name[MAXPDSTRING], err[512];
+    aero_field_sources fresh;
+    double seconds;
+    const aero_volume_info *info = &x->x_job_info;
     fieldsound_tilde_name(x, name, sizeof name);
-    if (j->finished < 0) {
-        pd_error(x, OBJ ": %s: %s", name, j->err);
-    } else {
-        aero_field_sources old = x->x_sources;
-        x->x_sources = j->result;
-        j->finished = 0; /* the sources are ours now */
-        if (aero_field_render_set_sources(&x->x_render, &x->x_sources)) {
-            pd_error(x, OBJ ": out of memory");
-            aero_field_sources_free(&x->x_sources);
-            aero_field_render_set_sources(&x->x_render, NULL);
-        }
-        aero_field_sources_free(&old);
-        const aero_field_sources *s = &x->x_sources;
-        post(OBJ ": %s: %d frames of %dx%dx%d preprocessed in %.3f s "
-             "(%.2f ms per frame): %ld monopole, %ld dipole, %ld quadrupole "
-             "source points, %d active vertices", name, j->info.frames,
-             j->info.nx, j->info.ny, j->info.nz, j->seconds,
-             1e3 * j->seconds / j->info.frames, s->points[1], s->points[2],
-             s->points[3], s->count);
-        t_atom a[2];
-        SETFLOAT(a, (t_float)s->count);
-        SETFLOAT(a + 1, (t_float)j->seconds);
-        outlet_anything(x->x_info, gensym("ready"), 2, a);
-        if (x->x_pending_play) {
-            aero_field_render_play(&x->x_render);
-            x->x_done = 0;
-        }
+    int rc = aero_field_job_take(x->x_job, &fresh, &seconds, err, sizeof err);
+    x->x_job = NULL;
+    if (rc) {
+        pd_error(x, OBJ ": %s: %s", name, err);
+        x->x_pending_play = 0;
+        return;
+    }
+    aero_field_sources old = x->x_sources;
+    x->x_sources = fresh;
+    if (aero_field_render_set_sources(&x->x_render, &x->x_sources)) {
+        pd_error(x, OBJ ": out of memory");
+        aero_field_sources_free(&x->x_sources);
+        aero_field_render_set_sources(&x->x_render, NULL);
+    }
+    aero_field_sources_free(&old);
+    const aero_field_sources *s = &x->x_sources;
+    post(OBJ ": %s: %d frames of %dx%dx%d preprocessed in %.3f s "
+         "(%.2f ms per frame): %ld monopole, %ld dipole, %ld quadrupole "
+         "source points, %d active vertices", name, info->frames, info->nx,
+         info->ny, info->nz, seconds, 1e3 * seconds / info->frames,
+         s->points[1], s->points[2], s->points[3], s->count);
+    t_atom a[2];
+    SETFLOAT(a, (t_float)s->count);
+    SETFLOAT(a + 1, (t_float)seconds);
+    outlet_anything(x->x_info, gensym("ready"), 2, a);
+    if (x->x_pending_play) {
+        aero_field_render_play(&x->x_render);
+        x->x_done = 0;
     }
     x->x_pending_play = 0;
-    if (x->x_thread_live)
-        pthread_join(x->x_thread, NULL);
-    x->x_thread_live = 0;
-    job_free(j);
-    x->x_job = NULL;
 }
 
 /* polls the worker: progress in the Pd window, then the swap */
 static void fieldsound_tilde_poll(t_fieldsound_tilde *x)
 {
-    field_job *j = x->x_job;
-    int finished, done, total;
-    if (!j)
+    int done, total;
+    if (!x->x_job)
         return;
-    pthread_mutex_lock(&j->lock);
-    finished = j->finished;
-    done = j->done_frames;
-    total = j->total_frames;
-    pthread_mutex_unlock(&j->lock);
-    if (finished) {
+    if (aero_field_job_poll(x->x_job, &done, &total)) {
         fieldsound_tilde_install(x);
         return;
     }
@@ -209,51 +123,49 @@ static void fieldsound_tilde_poll(t_fieldsound_tilde *x)
 static void fieldsound_tilde_prepare(t_fieldsound_tilde *x)
 {
     char err[512], name[MAXPDSTRING];
+    aero_field_demo demo, *use_demo = NULL;
+    aero_volume_info *info = &x->x_job_info;
     fieldsound_tilde_cancel(x);
     if (!x->x_dir && x->x_demo_size <= 0)
         return;
-    field_job *j = getbytes(sizeof *j);
-    pthread_mutex_init(&j->lock, NULL);
-    j->par = x->x_par;
     if (x->x_dir) {
         char dir[MAXPDSTRING], path[MAXPDSTRING], *base;
         const char *want = x->x_dir->s_name;
         snprintf(path, sizeof path, "%s/volume", want);
-        int fd = canvas_open(x->x_canvas, path, ".txt", dir, &base,
+        int fd = canvas_open(x->x_base.canvas, path, ".txt", dir, &base,
                              MAXPDSTRING, 1);
         if (fd < 0) {
             pd_error(x, OBJ ": can't find volume '%s' (a directory with "
                      "volume.txt, next to the patch or on Pd's path)", want);
-            job_free(j);
             return;
         }
         sys_close(fd);
-        if (aero_volume_read_header(dir, &j->info, err, sizeof err)) {
+        if (aero_volume_read_header(dir, info, err, sizeof err)) {
             pd_error(x, OBJ ": %s", err);
-            job_free(j);
             return;
         }
     } else {
-        aero_field_demo_default(&j->demo);
-        j->demo.size = x->x_demo_size;
+        aero_field_demo_default(&demo);
+        demo.size = x->x_demo_size;
         /* the same 1.28 m burst at any resolution */
-        j->demo.spacing = 1.28 / x->x_demo_size;
-        aero_field_demo_info(&j->demo, &j->info);
-        j->use_demo = 1;
+        demo.spacing = 1.28 / x->x_demo_size;
+        aero_field_demo_info(&demo, info);
+        use_demo = &demo;
     }
-    x->x_job = j;
     x->x_reported_progress = 0;
     post(OBJ ": preprocessing %s (%d frames of %dx%dx%d)%s",
-         fieldsound_tilde_name(x, name, sizeof name), j->info.frames,
-         j->info.nx, j->info.ny, j->info.nz,
-         x->x_sync ? " in Pd's thread" : "");
-    if (x->x_sync || pthread_create(&x->x_thread, NULL, job_thread, j)) {
-        job_run(j);
-        fieldsound_tilde_install(x);
+         fieldsound_tilde_name(x, name, sizeof name), info->frames,
+         info->nx, info->ny, info->nz, x->x_sync ? " in Pd's thread" : "");
+    x->x_job = aero_field_job_start(info, use_demo, &x->x_par, !x->x_sync);
+    if (!x->x_job) {
+        pd_error(x, OBJ ": out of memory");
         return;
     }
-    x->x_thread_live = 1;
-    clock_delay(x->x_poll, 20);
+    int done, total;
+    if (aero_field_job_poll(x->x_job, &done, &total))
+        fieldsound_tilde_install(x);
+    else
+        clock_delay(x->x_poll, 20);
 }
 
 /* --- perform and its reports ----------------------------------------------- */
@@ -271,12 +183,12 @@ static void fieldsound_tilde_report(t_fieldsound_tilde *x)
     }
 }
 
-static t_int *fieldsound_tilde_perform(t_int *w)
+static int fieldsound_tilde_process(void *obj, const float *in,
+                                    float *const *out, int n)
 {
-    t_fieldsound_tilde *x = (t_fieldsound_tilde *)(w[1]);
-    t_sample *out = (t_sample *)(w[2]);
-    int n = (int)(w[3]);
-    int playing = aero_field_render_process(&x->x_render, out, n);
+    t_fieldsound_tilde *x = obj;
+    (void)in;
+    int playing = aero_field_render_process(&x->x_render, out[0], n);
     if ((x->x_was_playing && !playing && x->x_render.src) ||
         (x->x_render.clamped && !x->x_clamped)) {
         if (x->x_was_playing && !playing)
@@ -285,15 +197,14 @@ static t_int *fieldsound_tilde_perform(t_int *w)
         clock_delay(x->x_report, 0);
     }
     x->x_was_playing = playing;
-    return w + 4;
+    return 0; /* its own report: the listener, not a flow, is too fast */
 }
 
 static void fieldsound_tilde_dsp(t_fieldsound_tilde *x, t_signal **sp)
 {
     if (aero_field_render_set_sample_rate(&x->x_render, sp[0]->s_sr))
         pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
-    dsp_add(fieldsound_tilde_perform, 3, x, sp[0]->s_vec,
-            (t_int)sp[0]->s_n);
+    aero_pd_dsp(&x->x_base, sp, 0, fieldsound_tilde_process);
 }
 
 /* --- messages -------------------------------------------------------------- */
@@ -318,8 +229,10 @@ static void fieldsound_tilde_demo(t_fieldsound_tilde *x, t_symbol *s,
             size = 32;
         }
     }
-    x->x_dir = NULL;
     x->x_demo_size = size;
+    if (x->x_creating) /* a volume folder given too wins */
+        return;
+    x->x_dir = NULL;
     fieldsound_tilde_prepare(x);
 }
 
@@ -345,11 +258,10 @@ static void fieldsound_tilde_stop(t_fieldsound_tilde *x)
 static void fieldsound_tilde_listener(t_fieldsound_tilde *x, t_symbol *s,
                                       int argc, t_atom *argv)
 {
-    double v[3];
-    if (aero_pd_floats(x, OBJ, s->s_name, argc, argv, 3, v))
-        return;
-    if (aero_field_render_set_listener(&x->x_render, v[0], v[1], v[2]))
-        pd_error(x, OBJ ": listener position must be finite, within 1e5 m");
+    double v[6];
+    if (aero_pd_ears(&x->x_base, s, argc, argv, v) &&
+        aero_field_render_set_listener(&x->x_render, v[0], v[1], v[2]))
+        aero_pd_bad_ears(&x->x_base, 1);
 }
 
 static void fieldsound_tilde_speed(t_fieldsound_tilde *x, t_floatarg f)
@@ -376,11 +288,12 @@ static void fieldsound_tilde_reparam(t_fieldsound_tilde *x,
 {
     char err[256];
     if (aero_field_params_check(p, err, sizeof err)) {
-        pd_error(x, OBJ ": %s: keeping the old setting", err);
+        pd_error(x, OBJ ": %s: keeping the %s setting", err,
+                 x->x_creating ? "default" : "old");
         return;
     }
     x->x_par = *p;
-    if (x->x_dir || x->x_demo_size > 0)
+    if (!x->x_creating && (x->x_dir || x->x_demo_size > 0))
         fieldsound_tilde_prepare(x);
 }
 
@@ -437,89 +350,37 @@ static void fieldsound_tilde_velocity(t_fieldsound_tilde *x, t_floatarg f)
 
 /* --- creation --------------------------------------------------------- */
 
-static int fieldsound_tilde_flag(void *obj, t_symbol *flag, int argc,
-                                 t_atom *argv)
-{
-    t_fieldsound_tilde *x = obj;
-    static const struct {
-        const char *name;
-        int count;
-    } flags[] = {{"-listener", 3}, {"-speed", 1},  {"-gain", 1},
-                 {"-ramp", 1},     {"-threshold", 3}, {"-map", 4},
-                 {"-zero", 1},     {"-vscale", 1}, {"-log", 1},
-                 {"-velocity", 1}, {"-demo", 1},   {"-sync", 0}};
-    const char *f = flag->s_name;
-    if (f[0] != '-')
-        return 0;
-    for (size_t k = 0; k < sizeof(flags) / sizeof(flags[0]); k++) {
-        if (strcmp(f, flags[k].name))
-            continue;
-        int count = flags[k].count;
-        if (argc < count) {
-            pd_error(x, OBJ ": flag %s needs %d value(s)", f, count);
-            return argc + 1;
-        }
-        for (int i = 0; i < count; i++)
-            if (argv[i].a_type != A_FLOAT) {
-                pd_error(x, OBJ ": flag %s needs numbers", f);
-                return count + 1;
-            }
-        t_float v = count ? atom_getfloat(argv) : 0;
-        t_symbol *name = gensym(f + 1);
-        if (!strcmp(f, "-listener"))
-            fieldsound_tilde_listener(x, name, 3, argv);
-        else if (!strcmp(f, "-speed"))
-            fieldsound_tilde_speed(x, v);
-        else if (!strcmp(f, "-gain"))
-            fieldsound_tilde_gain(x, v);
-        else if (!strcmp(f, "-ramp"))
-            fieldsound_tilde_ramp(x, v);
-        else if (!strcmp(f, "-demo")) {
-            if (aero_pd_whole(v, 4, 128, &x->x_demo_size)) {
-                pd_error(x, OBJ ": demo size must be a whole number "
-                         "4..128, using 32");
-                x->x_demo_size = 32;
-            }
-        } else if (!strcmp(f, "-sync"))
-            x->x_sync = 1;
-        else {
-            /* mapping flags: set without preprocessing (done once after
-             * all flags are read) */
-            aero_field_params p = x->x_par;
-            char err[256];
-            double d[4];
-            for (int i = 0; i < count; i++)
-                d[i] = atom_getfloat(argv + i);
-            if (!strcmp(f, "-threshold"))
-                p.threshold[0] = d[0], p.threshold[1] = d[1],
-                p.threshold[2] = d[2];
-            else if (!strcmp(f, "-map"))
-                p.in_lo = d[0], p.in_hi = d[1], p.rho_lo = d[2],
-                p.rho_hi = d[3];
-            else if (!strcmp(f, "-zero"))
-                p.zero = d[0];
-            else if (!strcmp(f, "-vscale"))
-                p.vscale = d[0];
-            else if (!strcmp(f, "-log"))
-                p.log_input = d[0] != 0;
-            else if (!strcmp(f, "-velocity"))
-                p.use_velocity = d[0] != 0;
-            if (aero_field_params_check(&p, err, sizeof err))
-                pd_error(x, OBJ ": %s: using the default", err);
-            else
-                x->x_par = p;
-        }
-        return count + 1;
-    }
-    return 0;
-}
+static const aero_pd_method fieldsound_tilde_methods[] = {
+    {"sync", AERO_PD_SWITCH, 0, NULL, 0},
+    {"listener", AERO_PD_LIST, 3, (t_method)fieldsound_tilde_listener, 0},
+    {"speed", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_speed, 0},
+    {"gain", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_gain, 0},
+    {"ramp", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_ramp, 0},
+    {"threshold", AERO_PD_LIST, 3, (t_method)fieldsound_tilde_threshold, 0},
+    {"map", AERO_PD_LIST, 4, (t_method)fieldsound_tilde_map, 0},
+    {"zero", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_zero, 0},
+    {"vscale", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_vscale, 0},
+    {"log", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_log, 0},
+    {"velocity", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_velocity, 0},
+    {"demo", AERO_PD_LIST, 1, (t_method)fieldsound_tilde_demo, 0},
+    {"open", AERO_PD_SYMBOL, 0, (t_method)fieldsound_tilde_open,
+     AERO_PD_MESSAGE_ONLY},
+    {"play", AERO_PD_BANG, 0, (t_method)fieldsound_tilde_play,
+     AERO_PD_MESSAGE_ONLY},
+    {"stop", AERO_PD_BANG, 0, (t_method)fieldsound_tilde_stop,
+     AERO_PD_MESSAGE_ONLY},
+};
+
+static const aero_pd_spec fieldsound_tilde_spec = {
+    "fieldsound~", fieldsound_tilde_methods,
+    AERO_PD_COUNT(fieldsound_tilde_methods), "<volume dir>"};
 
 static void *fieldsound_tilde_new(t_symbol *s, int argc, t_atom *argv)
 {
     (void)s;
     t_fieldsound_tilde *x = (t_fieldsound_tilde *)pd_new(
         fieldsound_tilde_class);
-    x->x_canvas = canvas_getcurrent();
+    aero_pd_base_init(&x->x_base, x, &fieldsound_tilde_spec, argc, argv);
     aero_field_params_default(&x->x_par);
     aero_field_render_init(&x->x_render, sys_getsr());
     aero_field_render_place_listener(&x->x_render, 1, 0, 0);
@@ -528,14 +389,11 @@ static void *fieldsound_tilde_new(t_symbol *s, int argc, t_atom *argv)
     x->x_out = outlet_new(&x->x_obj, &s_signal);
     x->x_info = outlet_new(&x->x_obj, 0);
     /* the volume directory is the first argument that is not a flag */
-    if (argc > 0 && argv[0].a_type == A_SYMBOL &&
-        argv[0].a_w.w_symbol->s_name[0] != '-') {
-        x->x_dir = argv[0].a_w.w_symbol;
-        argc--, argv++;
-    }
-    aero_pd_parse_flags(x, OBJ, "<volume dir> -listener -speed -gain -ramp "
-                        "-threshold -map -zero -vscale -log -velocity -demo "
-                        "-sync", fieldsound_tilde_flag, argc, argv);
+    x->x_dir = aero_pd_first_symbol(&argc, &argv);
+    x->x_sync = aero_pd_has_flag("-sync", argc, argv);
+    x->x_creating = 1;
+    aero_pd_parse_flags(x, &fieldsound_tilde_spec, argc, argv);
+    x->x_creating = 0;
     /* the listener starts where it was put, not ramped from (1, 0, 0) */
     aero_field_render_place_listener(&x->x_render, x->x_render.target[0],
                                      x->x_render.target[1],
@@ -549,6 +407,7 @@ static void *fieldsound_tilde_new(t_symbol *s, int argc, t_atom *argv)
 static void fieldsound_tilde_free(t_fieldsound_tilde *x)
 {
     fieldsound_tilde_cancel(x);
+    aero_pd_base_free(&x->x_base);
     clock_free(x->x_poll);
     clock_free(x->x_report);
     aero_field_render_free(&x->x_render);
@@ -559,39 +418,8 @@ static void fieldsound_tilde_free(t_fieldsound_tilde *x)
 
 void fieldsound_tilde_setup(void)
 {
-    fieldsound_tilde_class = class_new(
-        gensym("fieldsound~"), (t_newmethod)(t_method)fieldsound_tilde_new,
-        (t_method)fieldsound_tilde_free, sizeof(t_fieldsound_tilde),
-        CLASS_DEFAULT, A_GIMME, 0);
-    class_addmethod(fieldsound_tilde_class, (t_method)fieldsound_tilde_dsp,
-                    gensym("dsp"), A_CANT, 0);
-    static const struct {
-        const char *name;
-        t_method fn;
-    } floats[] = {{"speed", (t_method)fieldsound_tilde_speed},
-                  {"gain", (t_method)fieldsound_tilde_gain},
-                  {"ramp", (t_method)fieldsound_tilde_ramp},
-                  {"zero", (t_method)fieldsound_tilde_zero},
-                  {"vscale", (t_method)fieldsound_tilde_vscale},
-                  {"log", (t_method)fieldsound_tilde_log},
-                  {"velocity", (t_method)fieldsound_tilde_velocity}};
-    for (size_t k = 0; k < sizeof(floats) / sizeof(floats[0]); k++)
-        class_addmethod(fieldsound_tilde_class, floats[k].fn,
-                        gensym(floats[k].name), A_FLOAT, 0);
-    class_addmethod(fieldsound_tilde_class,
-                    (t_method)fieldsound_tilde_listener, gensym("listener"),
-                    A_GIMME, 0);
-    class_addmethod(fieldsound_tilde_class,
-                    (t_method)fieldsound_tilde_threshold,
-                    gensym("threshold"), A_GIMME, 0);
-    class_addmethod(fieldsound_tilde_class, (t_method)fieldsound_tilde_map,
-                    gensym("map"), A_GIMME, 0);
-    class_addmethod(fieldsound_tilde_class, (t_method)fieldsound_tilde_open,
-                    gensym("open"), A_SYMBOL, 0);
-    class_addmethod(fieldsound_tilde_class, (t_method)fieldsound_tilde_demo,
-                    gensym("demo"), A_GIMME, 0);
-    class_addmethod(fieldsound_tilde_class, (t_method)fieldsound_tilde_play,
-                    gensym("play"), 0);
-    class_addmethod(fieldsound_tilde_class, (t_method)fieldsound_tilde_stop,
-                    gensym("stop"), 0);
+    fieldsound_tilde_class = aero_pd_class_new(
+        &fieldsound_tilde_spec, (t_newmethod)(t_method)fieldsound_tilde_new,
+        (t_method)fieldsound_tilde_free, sizeof(t_fieldsound_tilde), -1,
+        (t_method)fieldsound_tilde_dsp);
 }

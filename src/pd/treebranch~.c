@@ -17,58 +17,35 @@ static t_class *treebranch_tilde_class;
 typedef struct _treebranch_tilde {
     t_object x_obj;
     t_float x_f;
+    aero_pd_base x_base;
+    aero_pd_wind x_wind;
     aero_treebranch x_tb;
-    t_canvas *x_canvas;
-    double x_dir[3];        /* unit wind direction */
-    double x_speed;         /* the last block's speed, m/s */
-    int x_stereo;
-    int x_clamped, x_warned_clamp;
-    t_clock *x_clock;
-    t_outlet *x_out[2];
 } t_treebranch_tilde;
 
 #define OBJ "[treebranch~]"
 
-static void treebranch_tilde_report(t_treebranch_tilde *x)
-{
-    if (x->x_clamped && !x->x_warned_clamp) {
-        pd_error(x, OBJ ": wind above Mach 0.3 clamped to %g m/s (the model "
-                 "does not hold there)", 0.3 * 343.0);
-        x->x_warned_clamp = 1;
-    }
-}
-
-static void treebranch_tilde_apply_wind(t_treebranch_tilde *x, double speed)
+/* the wind along its direction at `speed`; 1 when clamped at Mach 0.3 */
+static int treebranch_tilde_apply_wind(t_treebranch_tilde *x, double speed)
 {
     double w[3];
-    int k;
-    if (!(speed == speed) || fabs(speed) > 1e30)
-        speed = 0.0;
-    for (k = 0; k < 3; k++)
-        w[k] = x->x_dir[k] * speed;
-    x->x_speed = speed;
-    if (aero_treebranch_set_wind(&x->x_tb, w) == 1 && !x->x_clamped) {
-        x->x_clamped = 1;
-        clock_delay(x->x_clock, 0);
-    }
+    for (int k = 0; k < 3; k++)
+        w[k] = x->x_wind.dir[k] * speed;
+    x->x_wind.speed = speed;
+    return aero_treebranch_set_wind(&x->x_tb, w) == 1;
 }
 
-static t_int *treebranch_tilde_perform(t_int *w)
+static int treebranch_tilde_process(void *obj, const float *in,
+                                    float *const *out, int n)
 {
-    t_treebranch_tilde *x = (t_treebranch_tilde *)(w[1]);
-    t_sample *in = (t_sample *)(w[2]);
-    t_sample *out0 = (t_sample *)(w[3]);
-    t_sample *out1 = x->x_stereo ? (t_sample *)(w[4]) : NULL;
-    int n = (int)(w[5]), i;
-    double sum = 0.0;
+    t_treebranch_tilde *x = obj;
     /* the wind speed is the block's mean (frames are ~10 ms apart); read
        before writing: in and out may share a buffer */
-    for (i = 0; i < n; i++)
-        sum += in[i];
-    if (n > 0 && sum / n != x->x_speed)
-        treebranch_tilde_apply_wind(x, sum / n);
-    aero_treebranch_process(&x->x_tb, out0, out1, n);
-    return w + 6;
+    double speed = aero_pd_block_mean(in, n);
+    int clamped = 0;
+    if (n > 0 && speed != x->x_wind.speed)
+        clamped = treebranch_tilde_apply_wind(x, speed);
+    aero_treebranch_process(&x->x_tb, out[0], out[1], n);
+    return clamped;
 }
 
 static void treebranch_tilde_dsp(t_treebranch_tilde *x, t_signal **sp)
@@ -76,8 +53,7 @@ static void treebranch_tilde_dsp(t_treebranch_tilde *x, t_signal **sp)
     if (aero_treebranch_set_sample_rate(&x->x_tb, sp[0]->s_sr))
         pd_error(x, OBJ ": bad sample rate %g (or out of memory)",
                  sp[0]->s_sr);
-    dsp_add(treebranch_tilde_perform, 5, x, sp[0]->s_vec, sp[1]->s_vec,
-            x->x_stereo ? sp[2]->s_vec : sp[1]->s_vec, (t_int)sp[0]->s_n);
+    aero_pd_dsp(&x->x_base, sp, 1, treebranch_tilde_process);
 }
 
 /* bad lines of a tree file, with their line numbers */
@@ -103,7 +79,7 @@ static void treebranch_tilde_open(t_treebranch_tilde *x, t_symbol *name)
     char path[MAXPDSTRING], err[MAXPDSTRING + 100];
     aero_tree t;
     tree_report_ctx ctx;
-    if (aero_pd_find_tree(x->x_canvas, treebranch_tilde_class, name->s_name,
+    if (aero_pd_find_tree(x->x_base.canvas, treebranch_tilde_class, name->s_name,
                           path, sizeof(path))) {
         pd_error(x, OBJ ": can't find tree '%s' (looked %s): silent",
                  name->s_name, path);
@@ -126,23 +102,14 @@ static void treebranch_tilde_open(t_treebranch_tilde *x, t_symbol *name)
 static void treebranch_tilde_wind(t_treebranch_tilde *x, t_symbol *s,
                                   int argc, t_atom *argv)
 {
-    double v[3], speed;
-    if (aero_pd_floats(x, OBJ, s->s_name, argc, argv, 3, v))
+    double speed = aero_pd_wind_message(&x->x_base, &x->x_wind, s, argc, argv);
+    if (speed < 0.0)
         return;
-    if (!(fabs(v[0]) < 1e30 && fabs(v[1]) < 1e30 && fabs(v[2]) < 1e30)) {
-        pd_error(x, OBJ ": wind must be finite");
-        return;
-    }
-    speed = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    if (speed > 0.0) {
-        x->x_dir[0] = v[0] / speed;
-        x->x_dir[1] = v[1] / speed;
-        x->x_dir[2] = v[2] / speed;
-    }
     /* the inlet's float is the speed along the direction (a connected
        signal overrides it) */
     x->x_f = (t_float)speed;
-    treebranch_tilde_apply_wind(x, speed);
+    if (treebranch_tilde_apply_wind(x, speed))
+        aero_pd_clamped(&x->x_base);
 }
 
 static void treebranch_tilde_listener(t_treebranch_tilde *x, t_symbol *s,
@@ -161,7 +128,7 @@ static void treebranch_tilde_ears(t_treebranch_tilde *x, t_symbol *s,
     double v[6];
     if (aero_pd_floats(x, OBJ, s->s_name, argc, argv, 6, v))
         return;
-    if (!x->x_stereo)
+    if (!x->x_base.stereo)
         pd_error(x, OBJ ": 'ears' needs -stereo (the left ear is used)");
     if (aero_treebranch_set_ears(&x->x_tb, v, v + 3))
         pd_error(x, OBJ ": ear positions must be finite, within 1e5 m");
@@ -223,132 +190,56 @@ static void treebranch_tilde_seed(t_treebranch_tilde *x, t_floatarg f)
         pd_error(x, OBJ ": out of memory restarting the tree: silent");
 }
 
-static int treebranch_tilde_flag(void *obj, t_symbol *flag, int argc,
-                                 t_atom *argv)
-{
-    t_treebranch_tilde *x = obj;
-    static const struct {
-        const char *name;
-        int count;
-    } flags[] = {{"-stereo", 0},   {"-seed", 1},     {"-gain", 1},
-                 {"-stiffness", 1}, {"-beta", 1},    {"-alpha", 1},
-                 {"-k", 1},        {"-ramp", 1},     {"-mic", 3},
-                 {"-listener", 3}, {"-ears", 6},     {"-wind", 3}};
-    for (size_t k = 0; k < sizeof(flags) / sizeof(flags[0]); k++) {
-        if (strcmp(flag->s_name, flags[k].name))
-            continue;
-        int count = flags[k].count;
-        const char *name = flags[k].name + 1;
-        if (argc < count) {
-            pd_error(x, OBJ ": flag %s needs %d value(s)", flag->s_name, count);
-            return argc + 1;
-        }
-        for (int i = 0; i < count; i++)
-            if (argv[i].a_type != A_FLOAT) {
-                pd_error(x, OBJ ": flag %s needs numbers", flag->s_name);
-                return count + 1;
-            }
-        t_float f = count ? atom_getfloat(argv) : 0;
-        if (!strcmp(name, "stereo"))
-            ; /* read before the outlets were made */
-        else if (!strcmp(name, "seed"))
-            treebranch_tilde_seed(x, f);
-        else if (!strcmp(name, "gain"))
-            treebranch_tilde_gain(x, f);
-        else if (!strcmp(name, "stiffness"))
-            treebranch_tilde_stiffness(x, f);
-        else if (!strcmp(name, "beta"))
-            treebranch_tilde_beta(x, f);
-        else if (!strcmp(name, "alpha"))
-            treebranch_tilde_alpha(x, f);
-        else if (!strcmp(name, "k"))
-            treebranch_tilde_k(x, f);
-        else if (!strcmp(name, "ramp"))
-            treebranch_tilde_ramp(x, f);
-        else
-            (!strcmp(name, "mic") ? treebranch_tilde_mic
-             : !strcmp(name, "listener") ? treebranch_tilde_listener
-             : !strcmp(name, "ears") ? treebranch_tilde_ears
-                                     : treebranch_tilde_wind)(
-                x, gensym(name), count, argv);
-        return count + 1;
-    }
-    return 0;
-}
+static const aero_pd_method treebranch_tilde_methods[] = {
+    {"stereo", AERO_PD_SWITCH, 0, NULL, 0},
+    {"seed", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_seed, 0},
+    {"gain", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_gain, 0},
+    {"stiffness", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_stiffness, 0},
+    {"beta", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_beta, 0},
+    {"alpha", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_alpha, 0},
+    {"k", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_k, 0},
+    {"ramp", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_ramp, 0},
+    {"mic", AERO_PD_LIST, 3, (t_method)treebranch_tilde_mic, 0},
+    {"listener", AERO_PD_LIST, 3, (t_method)treebranch_tilde_listener, 0},
+    {"ears", AERO_PD_LIST, 6, (t_method)treebranch_tilde_ears, 0},
+    {"wind", AERO_PD_LIST, 3, (t_method)treebranch_tilde_wind, 0},
+    {"open", AERO_PD_SYMBOL, 0, (t_method)treebranch_tilde_open,
+     AERO_PD_MESSAGE_ONLY},
+};
+
+static const aero_pd_spec treebranch_tilde_spec = {
+    "treebranch~", treebranch_tilde_methods,
+    AERO_PD_COUNT(treebranch_tilde_methods), "<treefile>"};
 
 static void *treebranch_tilde_new(t_symbol *s, int argc, t_atom *argv)
 {
     (void)s;
     t_treebranch_tilde *x =
         (t_treebranch_tilde *)pd_new(treebranch_tilde_class);
-    x->x_canvas = canvas_getcurrent();
-    x->x_dir[0] = 1.0; /* default wind direction: +x */
-    x->x_clock = clock_new(x, (t_method)treebranch_tilde_report);
+    aero_pd_base_init(&x->x_base, x, &treebranch_tilde_spec, argc, argv);
+    aero_pd_wind_init(&x->x_wind);
     if (aero_treebranch_init(&x->x_tb, sys_getsr(), aero_pd_default_seed()))
         pd_error(x, OBJ ": out of memory: silent");
-    for (int i = 0; i < argc; i++)
-        if (argv[i].a_type == A_SYMBOL
-            && !strcmp(argv[i].a_w.w_symbol->s_name, "-stereo"))
-            x->x_stereo = 1;
-    aero_treebranch_set_stereo(&x->x_tb, x->x_stereo);
+    aero_treebranch_set_stereo(&x->x_tb, x->x_base.stereo);
     /* the tree file: the first argument, when it is not a flag */
-    if (argc > 0 && argv[0].a_type == A_SYMBOL
-        && argv[0].a_w.w_symbol->s_name[0] != '-') {
-        treebranch_tilde_open(x, argv[0].a_w.w_symbol);
-        argc--;
-        argv++;
-    }
-    aero_pd_parse_flags(x, OBJ, "<treefile> -stereo -seed -gain -stiffness "
-                        "-beta -alpha -k -ramp -mic -listener -ears -wind",
-                        treebranch_tilde_flag, argc, argv);
-    x->x_out[0] = outlet_new(&x->x_obj, &s_signal);
-    if (x->x_stereo)
-        x->x_out[1] = outlet_new(&x->x_obj, &s_signal);
+    t_symbol *file = aero_pd_first_symbol(&argc, &argv);
+    if (file)
+        treebranch_tilde_open(x, file);
+    aero_pd_parse_flags(x, &treebranch_tilde_spec, argc, argv);
+    aero_pd_base_outlets(&x->x_base);
     return x;
 }
 
 static void treebranch_tilde_free(t_treebranch_tilde *x)
 {
-    clock_free(x->x_clock);
+    aero_pd_base_free(&x->x_base);
     aero_treebranch_free(&x->x_tb);
-    outlet_free(x->x_out[0]);
-    if (x->x_out[1])
-        outlet_free(x->x_out[1]);
 }
 
 void treebranch_tilde_setup(void)
 {
-    treebranch_tilde_class =
-        class_new(gensym("treebranch~"),
-                  (t_newmethod)(t_method)treebranch_tilde_new,
-                  (t_method)treebranch_tilde_free, sizeof(t_treebranch_tilde),
-                  CLASS_DEFAULT, A_GIMME, 0);
-    CLASS_MAINSIGNALIN(treebranch_tilde_class, t_treebranch_tilde, x_f);
-    class_addmethod(treebranch_tilde_class, (t_method)treebranch_tilde_dsp,
-                    gensym("dsp"), A_CANT, 0);
-    static const struct {
-        const char *name;
-        t_method fn;
-    } floats[] = {{"gain", (t_method)treebranch_tilde_gain},
-                  {"ramp", (t_method)treebranch_tilde_ramp},
-                  {"seed", (t_method)treebranch_tilde_seed},
-                  {"stiffness", (t_method)treebranch_tilde_stiffness},
-                  {"beta", (t_method)treebranch_tilde_beta},
-                  {"alpha", (t_method)treebranch_tilde_alpha},
-                  {"k", (t_method)treebranch_tilde_k}};
-    for (size_t k = 0; k < sizeof(floats) / sizeof(floats[0]); k++)
-        class_addmethod(treebranch_tilde_class, floats[k].fn,
-                        gensym(floats[k].name), A_FLOAT, 0);
-    static const struct {
-        const char *name;
-        t_method fn;
-    } lists[] = {{"wind", (t_method)treebranch_tilde_wind},
-                 {"listener", (t_method)treebranch_tilde_listener},
-                 {"ears", (t_method)treebranch_tilde_ears},
-                 {"mic", (t_method)treebranch_tilde_mic}};
-    for (size_t k = 0; k < sizeof(lists) / sizeof(lists[0]); k++)
-        class_addmethod(treebranch_tilde_class, lists[k].fn,
-                        gensym(lists[k].name), A_GIMME, 0);
-    class_addmethod(treebranch_tilde_class, (t_method)treebranch_tilde_open,
-                    gensym("open"), A_SYMBOL, 0);
+    treebranch_tilde_class = aero_pd_class_new(
+        &treebranch_tilde_spec, (t_newmethod)(t_method)treebranch_tilde_new,
+        (t_method)treebranch_tilde_free, sizeof(t_treebranch_tilde),
+        offsetof(t_treebranch_tilde, x_f), (t_method)treebranch_tilde_dsp);
 }

@@ -9,6 +9,7 @@
  */
 #include "aero_pd.h"
 
+#include "aero_air.h"
 #include "vortex_player.h"
 
 #include <math.h>
@@ -18,68 +19,37 @@ static t_class *vortex_tilde_class;
 typedef struct _vortex_tilde {
     t_object x_obj;
     t_float x_f;
+    aero_pd_base x_base;
     aero_vortex_player x_player;
-    t_canvas *x_canvas;
-    int x_stereo;
-    int x_clamped, x_warned_clamp;
-    t_clock *x_clock;
-    t_outlet *x_out[2];
-    t_sample *x_outs[2];
 } t_vortex_tilde;
 
 #define OBJ "[vortex~]"
 
-static void vortex_tilde_report(t_vortex_tilde *x)
+static int vortex_tilde_process(void *obj, const float *in,
+                                float *const *out, int n)
 {
-    if (x->x_clamped && !x->x_warned_clamp) {
-        pd_error(x, OBJ ": flow speed above Mach 0.3 clamped to %g m/s "
-                 "(the model does not hold there)", 0.3 * 343.0);
-        x->x_warned_clamp = 1;
-    }
-}
-
-static t_int *vortex_tilde_perform(t_int *w)
-{
-    t_vortex_tilde *x = (t_vortex_tilde *)(w[1]);
-    t_sample *outs[2];
-    outs[0] = (t_sample *)(w[3]);
-    outs[1] = (t_sample *)(w[4]);
-    if (aero_vortex_player_process(&x->x_player, (t_sample *)(w[2]), outs,
-                                   (int)(w[5])) &&
-        !x->x_clamped) {
-        x->x_clamped = 1;
-        clock_delay(x->x_clock, 0);
-    }
-    return w + 6;
+    t_vortex_tilde *x = obj;
+    return aero_vortex_player_process(&x->x_player, in, out, n);
 }
 
 static void vortex_tilde_dsp(t_vortex_tilde *x, t_signal **sp)
 {
     if (aero_vortex_player_set_sample_rate(&x->x_player, sp[0]->s_sr))
         pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
-    dsp_add(vortex_tilde_perform, 5, x, sp[0]->s_vec, sp[1]->s_vec,
-            x->x_stereo ? sp[2]->s_vec : sp[1]->s_vec, (t_int)sp[0]->s_n);
+    aero_pd_dsp(&x->x_base, sp, 1, vortex_tilde_process);
+}
+
+static int vortex_tilde_set_texture(void *core, aero_texture *t, char *err,
+                                    size_t len)
+{
+    return aero_vortex_player_set_texture(core, t, err, len);
 }
 
 /* file I/O here, in the message domain, never in perform */
 static void vortex_tilde_texture(t_vortex_tilde *x, t_symbol *name)
 {
-    char path[MAXPDSTRING], err[256];
-    aero_texture *t;
-    if (aero_pd_find_texture(x->x_canvas, vortex_tilde_class, name->s_name,
-                             path, sizeof(path))) {
-        pd_error(x, OBJ ": can't find texture '%s' (looked %s): silent "
-                 "until a texture is loaded", name->s_name, path);
-        return;
-    }
-    t = getbytes(sizeof(*t));
-    if (aero_texture_load(path, t, err, sizeof(err)) ||
-        aero_vortex_player_set_texture(&x->x_player, t, err, sizeof(err))) {
-        pd_error(x, OBJ ": texture %s: %s: keeping the previous one", path,
-                 err);
-        aero_texture_free(t);
-        freebytes(t, sizeof(*t));
-    }
+    aero_pd_load_texture(&x->x_base, vortex_tilde_class, name,
+                         vortex_tilde_set_texture, &x->x_player, "silent");
 }
 
 static void vortex_tilde_n(t_vortex_tilde *x, t_floatarg f)
@@ -118,7 +88,8 @@ static void vortex_tilde_speeds(t_vortex_tilde *x, t_symbol *s, int argc,
     double *v = getbytes(sizeof(double) * (size_t)(argc > 0 ? argc : 1));
     count = float_list(x, s->s_name, argc, argv, 1, v, n);
     if (count > 0 && aero_vortex_player_set_speeds(&x->x_player, v, count))
-        pd_error(x, OBJ ": speeds must be 0..%g m/s (Mach 0.3)", 0.3 * 343.0);
+        pd_error(x, OBJ ": speeds must be 0..%g m/s (Mach 0.3)",
+                 AERO_MACH_LIMIT * AERO_C0);
     freebytes(v, sizeof(double) * (size_t)(argc > 0 ? argc : 1));
 }
 
@@ -137,29 +108,13 @@ static void vortex_tilde_positions(t_vortex_tilde *x, t_symbol *s, int argc,
 static void vortex_tilde_listener(t_vortex_tilde *x, t_symbol *s, int argc,
                                   t_atom *argv)
 {
-    double v[3];
-    if (x->x_stereo) {
-        pd_error(x, OBJ ": created with -stereo: use 'ears lx ly lz rx ry rz'");
-        return;
-    }
-    if (aero_pd_floats(x, OBJ, s->s_name, argc, argv, 3, v))
-        return;
-    if (aero_vortex_player_set_listener(&x->x_player, v[0], v[1], v[2]))
-        pd_error(x, OBJ ": listener position must be finite, within 1e5 m");
-}
-
-static void vortex_tilde_ears(t_vortex_tilde *x, t_symbol *s, int argc,
-                              t_atom *argv)
-{
     double v[6];
-    if (!x->x_stereo) {
-        pd_error(x, OBJ ": 'ears' needs -stereo; use 'listener x y z'");
-        return;
-    }
-    if (aero_pd_floats(x, OBJ, s->s_name, argc, argv, 6, v))
-        return;
-    if (aero_vortex_player_set_ears(&x->x_player, v))
-        pd_error(x, OBJ ": ear positions must be finite, within 1e5 m");
+    int ears = aero_pd_ears(&x->x_base, s, argc, argv, v);
+    if (ears == 1 &&
+        aero_vortex_player_set_listener(&x->x_player, v[0], v[1], v[2]))
+        aero_pd_bad_ears(&x->x_base, 1);
+    else if (ears == 2 && aero_vortex_player_set_ears(&x->x_player, v))
+        aero_pd_bad_ears(&x->x_base, 2);
 }
 
 static void vortex_tilde_gain(t_vortex_tilde *x, t_floatarg f)
@@ -185,127 +140,49 @@ static void vortex_tilde_seed(t_vortex_tilde *x, t_floatarg f)
     aero_vortex_player_set_seed(&x->x_player, aero_pd_seed(f));
 }
 
-static int vortex_tilde_flag(void *obj, t_symbol *flag, int argc,
-                             t_atom *argv)
-{
-    t_vortex_tilde *x = obj;
-    static const struct {
-        const char *name;
-        int count;
-    } flags[] = {{"-texture", 1}, {"-n", 1},     {"-gain", 1},
-                 {"-clip", 1},    {"-ramp", 1},  {"-seed", 1},
-                 {"-listener", 3}, {"-ears", 6}, {"-stereo", 0}};
-    for (size_t k = 0; k < sizeof(flags) / sizeof(flags[0]); k++) {
-        if (strcmp(flag->s_name, flags[k].name))
-            continue;
-        int count = flags[k].count;
-        const char *name = flags[k].name + 1;
-        if (argc < count) {
-            pd_error(x, OBJ ": flag %s needs %d value(s)", flag->s_name, count);
-            return argc + 1;
-        }
-        if (!strcmp(name, "stereo"))
-            return 1; /* handled in new */
-        if (!strcmp(name, "texture")) {
-            if (argv[0].a_type != A_SYMBOL) {
-                pd_error(x, OBJ ": flag -texture needs a name");
-                return 2;
-            }
-            vortex_tilde_texture(x, argv[0].a_w.w_symbol);
-            return 2;
-        }
-        for (int i = 0; i < count; i++)
-            if (argv[i].a_type != A_FLOAT) {
-                pd_error(x, OBJ ": flag %s needs numbers", flag->s_name);
-                return count + 1;
-            }
-        t_float f = atom_getfloat(argv);
-        if (!strcmp(name, "n"))
-            vortex_tilde_n(x, f);
-        else if (!strcmp(name, "gain"))
-            vortex_tilde_gain(x, f);
-        else if (!strcmp(name, "clip"))
-            vortex_tilde_clip(x, f);
-        else if (!strcmp(name, "ramp"))
-            vortex_tilde_ramp(x, f);
-        else if (!strcmp(name, "seed"))
-            vortex_tilde_seed(x, f);
-        else if (!strcmp(name, "listener"))
-            vortex_tilde_listener(x, gensym("listener"), 3, argv);
-        else if (!strcmp(name, "ears"))
-            vortex_tilde_ears(x, gensym("ears"), 6, argv);
-        return count + 1;
-    }
-    return 0;
-}
+static const aero_pd_method vortex_tilde_methods[] = {
+    {"stereo", AERO_PD_SWITCH, 0, NULL, 0},
+    /* -n first, so -texture and the rest see every source */
+    {"n", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_n, AERO_PD_EARLY},
+    {"texture", AERO_PD_SYMBOL, 0, (t_method)vortex_tilde_texture, 0},
+    {"gain", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_gain, 0},
+    {"clip", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_clip, 0},
+    {"ramp", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_ramp, 0},
+    {"seed", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_seed, 0},
+    {"listener", AERO_PD_LIST, 3, (t_method)vortex_tilde_listener, 0},
+    {"ears", AERO_PD_LIST, 6, (t_method)vortex_tilde_listener, 0},
+    {"speeds", AERO_PD_LIST, 0, (t_method)vortex_tilde_speeds,
+     AERO_PD_MESSAGE_ONLY},
+    {"positions", AERO_PD_LIST, 0, (t_method)vortex_tilde_positions,
+     AERO_PD_MESSAGE_ONLY},
+};
+
+static const aero_pd_spec vortex_tilde_spec = {
+    "vortex~", vortex_tilde_methods, AERO_PD_COUNT(vortex_tilde_methods),
+    NULL};
 
 static void *vortex_tilde_new(t_symbol *s, int argc, t_atom *argv)
 {
     (void)s;
     t_vortex_tilde *x = (t_vortex_tilde *)pd_new(vortex_tilde_class);
-    x->x_canvas = canvas_getcurrent();
-    /* -stereo decides the outlets, so look for it first */
-    for (int i = 0; i < argc; i++)
-        if (argv[i].a_type == A_SYMBOL &&
-            !strcmp(argv[i].a_w.w_symbol->s_name, "-stereo"))
-            x->x_stereo = 1;
-    aero_vortex_player_init(&x->x_player, sys_getsr(), x->x_stereo,
+    aero_pd_base_init(&x->x_base, x, &vortex_tilde_spec, argc, argv);
+    aero_vortex_player_init(&x->x_player, sys_getsr(), x->x_base.stereo,
                             aero_pd_default_seed());
-    x->x_clock = clock_new(x, (t_method)vortex_tilde_report);
-    /* -n first, so -texture and the rest see every source */
-    for (int i = 0; i + 1 < argc; i++)
-        if (argv[i].a_type == A_SYMBOL &&
-            !strcmp(argv[i].a_w.w_symbol->s_name, "-n") &&
-            argv[i + 1].a_type == A_FLOAT)
-            vortex_tilde_n(x, argv[i + 1].a_w.w_float);
-    aero_pd_parse_flags(x, OBJ, "-texture -n -stereo -gain -clip -ramp "
-                        "-seed -listener -ears", vortex_tilde_flag, argc,
-                        argv);
-    x->x_out[0] = outlet_new(&x->x_obj, &s_signal);
-    if (x->x_stereo)
-        x->x_out[1] = outlet_new(&x->x_obj, &s_signal);
+    aero_pd_parse_flags(x, &vortex_tilde_spec, argc, argv);
+    aero_pd_base_outlets(&x->x_base);
     return x;
 }
 
 static void vortex_tilde_free(t_vortex_tilde *x)
 {
-    clock_free(x->x_clock);
+    aero_pd_base_free(&x->x_base);
     aero_vortex_player_free(&x->x_player);
-    outlet_free(x->x_out[0]);
-    if (x->x_out[1])
-        outlet_free(x->x_out[1]);
 }
 
 void vortex_tilde_setup(void)
 {
-    /* via t_method, the generic function type of Pd's API */
-    vortex_tilde_class = class_new(gensym("vortex~"),
-                                   (t_newmethod)(t_method)vortex_tilde_new,
-                                   (t_method)vortex_tilde_free,
-                                   sizeof(t_vortex_tilde), CLASS_DEFAULT,
-                                   A_GIMME, 0);
-    CLASS_MAINSIGNALIN(vortex_tilde_class, t_vortex_tilde, x_f);
-    class_addmethod(vortex_tilde_class, (t_method)vortex_tilde_dsp,
-                    gensym("dsp"), A_CANT, 0);
-    static const struct {
-        const char *name;
-        t_method fn;
-    } floats[] = {{"n", (t_method)vortex_tilde_n},
-                  {"gain", (t_method)vortex_tilde_gain},
-                  {"clip", (t_method)vortex_tilde_clip},
-                  {"ramp", (t_method)vortex_tilde_ramp},
-                  {"seed", (t_method)vortex_tilde_seed}};
-    for (size_t k = 0; k < sizeof(floats) / sizeof(floats[0]); k++)
-        class_addmethod(vortex_tilde_class, floats[k].fn,
-                        gensym(floats[k].name), A_FLOAT, 0);
-    class_addmethod(vortex_tilde_class, (t_method)vortex_tilde_speeds,
-                    gensym("speeds"), A_GIMME, 0);
-    class_addmethod(vortex_tilde_class, (t_method)vortex_tilde_positions,
-                    gensym("positions"), A_GIMME, 0);
-    class_addmethod(vortex_tilde_class, (t_method)vortex_tilde_listener,
-                    gensym("listener"), A_GIMME, 0);
-    class_addmethod(vortex_tilde_class, (t_method)vortex_tilde_ears,
-                    gensym("ears"), A_GIMME, 0);
-    class_addmethod(vortex_tilde_class, (t_method)vortex_tilde_texture,
-                    gensym("texture"), A_SYMBOL, 0);
+    vortex_tilde_class = aero_pd_class_new(
+        &vortex_tilde_spec, (t_newmethod)(t_method)vortex_tilde_new,
+        (t_method)vortex_tilde_free, sizeof(t_vortex_tilde),
+        offsetof(t_vortex_tilde, x_f), (t_method)vortex_tilde_dsp);
 }

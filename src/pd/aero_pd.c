@@ -1,0 +1,411 @@
+/* aero: the skeleton every Pd wrapper shares (see aero_pd.h). Built into
+ * each external and into the single-binary library. */
+#include "aero_pd.h"
+
+#include "aero_air.h"
+
+/* --- the table ----------------------------------------------------------- */
+
+t_class *aero_pd_class_new(const aero_pd_spec *spec, t_newmethod new_fn,
+                           t_method free_fn, size_t size, int f_offset,
+                           t_method dsp_fn)
+{
+    t_class *c = class_new(gensym(spec->name), new_fn, free_fn, size,
+                           CLASS_DEFAULT, A_GIMME, 0);
+    if (f_offset >= 0)
+        class_domainsignalin(c, f_offset);
+    class_addmethod(c, dsp_fn, gensym("dsp"), A_CANT, 0);
+    for (int k = 0; k < spec->count; k++) {
+        const aero_pd_method *m = spec->methods + k;
+        t_symbol *sel = gensym(m->name);
+        switch (m->args) {
+        case AERO_PD_BANG:
+            class_addmethod(c, m->fn, sel, A_NULL);
+            break;
+        case AERO_PD_FLOAT:
+            class_addmethod(c, m->fn, sel, A_FLOAT, A_NULL);
+            break;
+        case AERO_PD_SYMBOL:
+            class_addmethod(c, m->fn, sel, A_SYMBOL, A_NULL);
+            break;
+        case AERO_PD_LIST:
+            class_addmethod(c, m->fn, sel, A_GIMME, A_NULL);
+            break;
+        case AERO_PD_SWITCH:
+            break;
+        }
+    }
+    class_sethelpsymbol(c, gensym(spec->name));
+    return c;
+}
+
+/* the flags of an object, for an error message: "-d -l -gain ..." */
+static void flag_list(const aero_pd_spec *spec, char *buf, size_t len)
+{
+    size_t used = 0;
+    buf[0] = 0;
+    if (spec->first)
+        used += snprintf(buf, len, "%s", spec->first);
+    for (int k = 0; k < spec->count && used < len; k++) {
+        if (spec->methods[k].options & AERO_PD_MESSAGE_ONLY)
+            continue;
+        used += snprintf(buf + used, len - used, "%s-%s", used ? " " : "",
+                         spec->methods[k].name);
+    }
+}
+
+static const aero_pd_method *find_flag(const aero_pd_spec *spec,
+                                       const t_atom *a)
+{
+    if (a->a_type != A_SYMBOL || a->a_w.w_symbol->s_name[0] != '-')
+        return NULL;
+    for (int k = 0; k < spec->count; k++)
+        if (!(spec->methods[k].options & AERO_PD_MESSAGE_ONLY) &&
+            !strcmp(a->a_w.w_symbol->s_name + 1, spec->methods[k].name))
+            return spec->methods + k;
+    return NULL;
+}
+
+typedef void (*bang_fn)(void *x);
+typedef void (*float_fn)(void *x, t_floatarg f);
+typedef void (*symbol_fn)(void *x, t_symbol *s);
+typedef void (*list_fn)(void *x, t_symbol *s, int argc, t_atom *argv);
+
+/* One flag with the atoms after it: calls its method (when `apply`) and
+ * returns how many atoms it used, itself included. */
+static int apply_flag(void *x, const char *obj, const aero_pd_method *m,
+                      int argc, t_atom *argv, int apply)
+{
+    int want = m->args == AERO_PD_FLOAT || m->args == AERO_PD_SYMBOL ? 1
+        : m->args == AERO_PD_LIST ? m->count : 0;
+    int have = 0;
+    while (have < want && have < argc &&
+           argv[have].a_type == (m->args == AERO_PD_SYMBOL ? A_SYMBOL
+                                                             : A_FLOAT))
+        have++;
+    if (have < want) {
+        if (apply)
+            pd_error(x, "%s: flag -%s needs %d %s", obj, m->name, want,
+                     m->args == AERO_PD_SYMBOL ? "name"
+                     : want == 1 ? "number" : "numbers");
+        return 1 + have;
+    }
+    if (!apply)
+        return 1 + want;
+    switch (m->args) {
+    case AERO_PD_BANG:
+        ((bang_fn)m->fn)(x);
+        break;
+    case AERO_PD_FLOAT:
+        ((float_fn)m->fn)(x, atom_getfloat(argv));
+        break;
+    case AERO_PD_SYMBOL:
+        ((symbol_fn)m->fn)(x, argv[0].a_w.w_symbol);
+        break;
+    case AERO_PD_LIST:
+        ((list_fn)m->fn)(x, gensym(m->name), want, argv);
+        break;
+    case AERO_PD_SWITCH:
+        break;
+    }
+    return 1 + want;
+}
+
+/* one pass over the flags: the EARLY ones (early = 1) or the others */
+static void flag_pass(void *x, const aero_pd_spec *spec, int argc,
+                      t_atom *argv, int early)
+{
+    char name[MAXPDSTRING];
+    snprintf(name, sizeof(name), "[%s]", spec->name);
+    while (argc > 0) {
+        const aero_pd_method *m = find_flag(spec, argv);
+        int used = 1;
+        if (m)
+            used = apply_flag(x, name, m, argc - 1, argv + 1,
+                              !(m->options & AERO_PD_EARLY) == !early);
+        else if (!early) {
+            char buf[MAXPDSTRING], flags[MAXPDSTRING];
+            atom_string(argv, buf, sizeof(buf));
+            flag_list(spec, flags, sizeof(flags));
+            pd_error(x, "%s: unknown argument '%s' ignored (flags: %s)",
+                     name, buf, flags);
+        }
+        if (used > argc)
+            used = argc;
+        argc -= used;
+        argv += used;
+    }
+}
+
+void aero_pd_parse_flags(void *x, const aero_pd_spec *spec, int argc,
+                         t_atom *argv)
+{
+    flag_pass(x, spec, argc, argv, 1);
+    flag_pass(x, spec, argc, argv, 0);
+}
+
+int aero_pd_has_flag(const char *name, int argc, const t_atom *argv)
+{
+    for (int i = 0; i < argc; i++)
+        if (argv[i].a_type == A_SYMBOL &&
+            !strcmp(argv[i].a_w.w_symbol->s_name, name))
+            return 1;
+    return 0;
+}
+
+t_symbol *aero_pd_first_symbol(int *argc, t_atom **argv)
+{
+    if (*argc > 0 && (*argv)[0].a_type == A_SYMBOL &&
+        (*argv)[0].a_w.w_symbol->s_name[0] != '-') {
+        t_symbol *s = (*argv)[0].a_w.w_symbol;
+        (*argc)--;
+        (*argv)++;
+        return s;
+    }
+    return NULL;
+}
+
+/* --- the base -------------------------------------------------------------- */
+
+static void base_report(aero_pd_base *b)
+{
+    if (b->clamped && !b->warned_clamp) {
+        pd_error(b->owner, "%s: flow speed above Mach 0.3 clamped to %g m/s "
+                 "(the model does not hold there)", b->obj,
+                 AERO_MACH_LIMIT * AERO_C0);
+        b->warned_clamp = 1;
+    }
+}
+
+void aero_pd_base_init(aero_pd_base *b, void *owner, const aero_pd_spec *spec,
+                       int argc, const t_atom *argv)
+{
+    memset(b, 0, sizeof(*b));
+    b->owner = owner;
+    b->canvas = canvas_getcurrent();
+    for (int k = 0; k < spec->count; k++)
+        if (spec->methods[k].args == AERO_PD_SWITCH &&
+            !strcmp(spec->methods[k].name, "stereo"))
+            b->stereo = aero_pd_has_flag("-stereo", argc, argv);
+    b->clock = clock_new(b, (t_method)base_report);
+    /* "[name]" for messages: a symbol too, so it outlives this call */
+    char buf[MAXPDSTRING];
+    snprintf(buf, sizeof(buf), "[%s]", spec->name);
+    b->obj = gensym(buf)->s_name;
+}
+
+void aero_pd_base_outlets(aero_pd_base *b)
+{
+    b->out[0] = outlet_new(b->owner, &s_signal);
+    if (b->stereo)
+        b->out[1] = outlet_new(b->owner, &s_signal);
+}
+
+void aero_pd_base_free(aero_pd_base *b)
+{
+    if (b->scratch)
+        freebytes(b->scratch, sizeof(float) * (size_t)b->scratch_n);
+    if (b->clock)
+        clock_free(b->clock);
+    for (int i = 0; i < 2; i++)
+        if (b->out[i])
+            outlet_free(b->out[i]);
+}
+
+/* --- perform ---------------------------------------------------------------- */
+
+static t_int *aero_pd_perform(t_int *w)
+{
+    aero_pd_base *b = (aero_pd_base *)(w[1]);
+    t_sample *in = (t_sample *)(w[2]);
+    t_sample *pd_out[2] = {(t_sample *)(w[3]), (t_sample *)(w[4])};
+    int n = (int)(w[5]);
+#if PD_FLOATSIZE == 32
+    float *out[2] = {pd_out[0], pd_out[1]};
+    if (b->process(b->owner, in, out, n))
+        aero_pd_clamped(b);
+#else
+    float *f_in = b->scratch, *out[2] = {b->scratch + n, NULL};
+    if (pd_out[1])
+        out[1] = b->scratch + 2 * n;
+    for (int i = 0; in && i < n; i++)
+        f_in[i] = (float)in[i];
+    if (b->process(b->owner, in ? f_in : NULL, out, n))
+        aero_pd_clamped(b);
+    for (int c = 0; c < 2; c++)
+        for (int i = 0; pd_out[c] && i < n; i++)
+            pd_out[c][i] = out[c][i];
+#endif
+    return w + 6;
+}
+
+void aero_pd_dsp(aero_pd_base *b, t_signal **sp, int inlet,
+                 aero_pd_process process)
+{
+    int n = sp[0]->s_n;
+    t_signal **outs = sp + (inlet ? 1 : 0);
+    b->process = process;
+#if PD_FLOATSIZE != 32
+    if (b->scratch_n != 3 * n) {
+        if (b->scratch)
+            freebytes(b->scratch, sizeof(float) * (size_t)b->scratch_n);
+        b->scratch = getbytes(sizeof(float) * 3 * (size_t)n);
+        b->scratch_n = b->scratch ? 3 * n : 0;
+    }
+    if (!b->scratch) {
+        pd_error(b->owner, "%s: out of memory: silent", b->obj);
+        for (int c = 0; c < (b->stereo ? 2 : 1); c++)
+            dsp_add_zero(outs[c]->s_vec, n);
+        return;
+    }
+#endif
+    dsp_add(aero_pd_perform, 5, b, inlet ? sp[0]->s_vec : NULL,
+            outs[0]->s_vec, b->stereo ? outs[1]->s_vec : NULL, (t_int)n);
+}
+
+int aero_pd_ears(aero_pd_base *b, t_symbol *s, int argc, const t_atom *argv,
+                 double v[6])
+{
+    int ears = strcmp(s->s_name, "ears") ? 1 : 2;
+    if (ears == 1 && b->stereo) {
+        pd_error(b->owner, "%s: created with -stereo: use 'ears lx ly lz rx "
+                 "ry rz'", b->obj);
+        return 0;
+    }
+    if (ears == 2 && !b->stereo) {
+        pd_error(b->owner, "%s: 'ears' needs -stereo; use 'listener x y z'",
+                 b->obj);
+        return 0;
+    }
+    if (aero_pd_floats(b->owner, b->obj, s->s_name, argc, argv, 3 * ears, v))
+        return 0;
+    return ears;
+}
+
+void aero_pd_bad_ears(aero_pd_base *b, int ears)
+{
+    pd_error(b->owner, ears == 2 ? "%s: ear positions must be finite, within "
+             "1e5 m" : "%s: listener position must be finite, within 1e5 m",
+             b->obj);
+}
+
+/* --- wind ----------------------------------------------------------------- */
+
+void aero_pd_wind_init(aero_pd_wind *w)
+{
+    w->dir[0] = 1.0;
+    w->dir[1] = w->dir[2] = 0.0;
+    w->speed = 0.0;
+}
+
+double aero_pd_wind_message(aero_pd_base *b, aero_pd_wind *w, t_symbol *s,
+                            int argc, const t_atom *argv)
+{
+    double v[3];
+    if (aero_pd_floats(b->owner, b->obj, s->s_name, argc, argv, 3, v))
+        return -1.0;
+    if (!(fabs(v[0]) < 1e30 && fabs(v[1]) < 1e30 && fabs(v[2]) < 1e30)) {
+        pd_error(b->owner, "%s: wind must be finite", b->obj);
+        return -1.0;
+    }
+    double speed = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (speed > 0.0)
+        for (int k = 0; k < 3; k++)
+            w->dir[k] = v[k] / speed;
+    return speed;
+}
+
+double aero_pd_block_mean(const float *in, int n)
+{
+    double sum = 0.0;
+    if (!in)
+        return 0.0;
+    for (int i = 0; i < n; i++)
+        sum += in[i];
+    double mean = n > 0 ? sum / n : 0.0;
+    return mean == mean && fabs(mean) <= 1e30 ? mean : 0.0;
+}
+
+/* --- the host's data folder (aero.h) -------------------------------------- */
+
+/* The one piece of process state in aero: the folder a libpd host set with
+ * aero_set_data_path(), before opening patches; objects only read it, when
+ * they look for a file (aero_pd_find_file). Allowed by name in
+ * tests/robust/globals.sh. */
+static char aero_data_dir[MAXPDSTRING];
+
+void aero_set_data_path(const char *dir)
+{
+    size_t n = dir ? strlen(dir) : 0;
+    if (n >= sizeof(aero_data_dir)) {
+        pd_error(NULL, "aero: data path of %zu bytes is too long (max %zu): "
+                 "unset", n, sizeof(aero_data_dir) - 1);
+        n = 0;
+    }
+    memcpy(aero_data_dir, dir ? dir : "", n);
+    aero_data_dir[n] = '\0';
+}
+
+const char *aero_data_path(void)
+{
+    return aero_data_dir[0] ? aero_data_dir : NULL;
+}
+
+/* --- textures -------------------------------------------------------------- */
+
+void aero_pd_load_texture(aero_pd_base *b, t_class *cls, t_symbol *name,
+                          aero_pd_set_texture set, void *core,
+                          const char *fallback)
+{
+    char path[MAXPDSTRING], err[256];
+    if (aero_pd_find_texture(b->canvas, cls, name->s_name, path,
+                             sizeof(path))) {
+        pd_error(b->owner, "%s: can't find texture '%s' (looked %s): %s",
+                 b->obj, name->s_name, path, fallback);
+        set(core, NULL, err, sizeof(err));
+        return;
+    }
+    aero_texture *t = calloc(1, sizeof(*t));
+    if (!t || aero_texture_load(path, t, err, sizeof(err)) ||
+        set(core, t, err, sizeof(err))) {
+        pd_error(b->owner, "%s: texture %s: %s: %s", b->obj, path,
+                 t ? err : "out of memory", fallback);
+        if (t)
+            aero_texture_free(t);
+        free(t);
+        set(core, NULL, err, sizeof(err));
+    }
+}
+
+/* --- numbers --------------------------------------------------------------- */
+
+uint32_t aero_pd_default_seed(void)
+{
+    t_glist *canvas = canvas_getcurrent();
+    uint32_t seed = 1;
+    if (canvas) {
+        t_symbol *dollar0 = canvas_realizedollar(canvas, gensym("$0"));
+        seed += (uint32_t)atoi(dollar0->s_name) * 7919u;
+        for (t_gobj *g = canvas->gl_list; g; g = g->g_next)
+            seed += 104729u;
+    }
+    return seed;
+}
+
+int aero_pd_floats(void *x, const char *obj, const char *what, int argc,
+                   const t_atom *argv, int want, double *v)
+{
+    if (argc != want) {
+        pd_error(x, "%s: '%s' takes %d numbers, got %d", obj, what, want,
+                 argc);
+        return -1;
+    }
+    for (int i = 0; i < want; i++) {
+        if (argv[i].a_type != A_FLOAT) {
+            pd_error(x, "%s: '%s' takes numbers only", obj, what);
+            return -1;
+        }
+        v[i] = argv[i].a_w.w_float;
+    }
+    return 0;
+}

@@ -251,7 +251,7 @@ static inline int aero_pd_find_file(const t_canvas *canvas,
         return 0;
     /* not found: say where it looked */
     t_symbol *patchdir = canvas ? canvas_getdir(canvas) : NULL;
-    snprintf(path, len,
+    int full = snprintf(path, len,
              "next to the patch (%s), in its declared paths and Pd's search "
              "path; in $AERO_DATA/%s (%s%s); in aero_set_data_path()/%s "
              "(%s%s); in aero's own %s/ (%s)",
@@ -261,6 +261,8 @@ static inline int aero_pd_find_file(const t_canvas *canvas,
              host && *host ? host : "not set", folder,
              helpdir && *helpdir ? helpdir : "no install folder: registered "
              "by a host");
+    if (full >= (int)len && len > 4)
+        memcpy(path + len - 4, "...", 4); /* long paths: the list is cut */
     return -1;
 }
 

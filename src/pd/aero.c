@@ -4,30 +4,6 @@
 #include "m_pd.h"
 #include "aero.h"
 
-#include <string.h>
-
-/* The one piece of process state in aero: the host's data folder (aero.h).
- * A host sets it before opening patches; objects only read it, when they
- * look for a file. Allowed by name in tests/robust/globals.sh. */
-static char aero_data_dir[MAXPDSTRING];
-
-void aero_set_data_path(const char *dir)
-{
-    size_t n = dir ? strlen(dir) : 0;
-    if (n >= sizeof(aero_data_dir)) {
-        pd_error(NULL, "aero: data path of %zu bytes is too long (max %zu): "
-                 "unset", n, sizeof(aero_data_dir) - 1);
-        n = 0;
-    }
-    memcpy(aero_data_dir, dir ? dir : "", n);
-    aero_data_dir[n] = '\0';
-}
-
-const char *aero_data_path(void)
-{
-    return aero_data_dir[0] ? aero_data_dir : NULL;
-}
-
 void aeolian_tilde_setup(void);
 void cavity_tilde_setup(void);
 void treebranch_tilde_setup(void);

@@ -1,6 +1,7 @@
 /* aero: the skeleton every Pd wrapper shares (see aero_pd.h). Built into
  * each external and into the single-binary library. */
 #include "aero_pd.h"
+#include "aero.h"
 
 #include "aero_air.h"
 
@@ -326,20 +327,32 @@ double aero_pd_block_mean(const float *in, int n)
     return mean == mean && fabs(mean) <= 1e30 ? mean : 0.0;
 }
 
-/* --- files ----------------------------------------------------------------- */
+/* --- the host's data folder (aero.h) -------------------------------------- */
 
-/* The data folder a host set with aero_set_data_path() (src/pd/aero.h,
- * defined in aero.c), or NULL. A weak reference: the one-class externals
- * are built without aero.c, and no host calls them, so there it is NULL. */
-#if defined(__ELF__) || defined(__APPLE__)
-const char *aero_data_path(void) __attribute__((weak));
-static const char *host_data_path(void)
+/* The one piece of process state in aero: the folder a libpd host set with
+ * aero_set_data_path(), before opening patches; objects only read it, when
+ * they look for a file (aero_pd_find_file). Allowed by name in
+ * tests/robust/globals.sh. */
+static char aero_data_dir[MAXPDSTRING];
+
+void aero_set_data_path(const char *dir)
 {
-    return aero_data_path ? aero_data_path() : NULL;
+    size_t n = dir ? strlen(dir) : 0;
+    if (n >= sizeof(aero_data_dir)) {
+        pd_error(NULL, "aero: data path of %zu bytes is too long (max %zu): "
+                 "unset", n, sizeof(aero_data_dir) - 1);
+        n = 0;
+    }
+    memcpy(aero_data_dir, dir ? dir : "", n);
+    aero_data_dir[n] = '\0';
 }
-#else
-static const char *host_data_path(void) { return NULL; }
-#endif
+
+const char *aero_data_path(void)
+{
+    return aero_data_dir[0] ? aero_data_dir : NULL;
+}
+
+/* --- files ----------------------------------------------------------------- */
 
 /* 0 when DIR/FOLDER/NAME+EXT is a readable file (its path in `path`) */
 static int try_data_dir(const char *dir, const char *folder, const char *name,
@@ -368,7 +381,7 @@ int aero_pd_find_file(const t_canvas *canvas, const t_class *cls,
         sys_close(fd);
         return snprintf(path, len, "%s/%s", dir, base) < (int)len ? 0 : -1;
     }
-    const char *env = getenv("AERO_DATA"), *host = host_data_path();
+    const char *env = getenv("AERO_DATA"), *host = aero_data_path();
     const char *helpdir = class_gethelpdir(cls);
     if (!try_data_dir(env, folder, name, ext, path, len) ||
         !try_data_dir(host, folder, name, ext, path, len) ||
@@ -376,7 +389,7 @@ int aero_pd_find_file(const t_canvas *canvas, const t_class *cls,
         return 0;
     /* not found: say where it looked */
     t_symbol *patchdir = canvas ? canvas_getdir(canvas) : NULL;
-    snprintf(path, len,
+    int full = snprintf(path, len,
              "next to the patch (%s), in its declared paths and Pd's search "
              "path; in $AERO_DATA/%s (%s%s); in aero_set_data_path()/%s "
              "(%s%s); in aero's own %s/ (%s)",
@@ -386,6 +399,8 @@ int aero_pd_find_file(const t_canvas *canvas, const t_class *cls,
              host && *host ? host : "not set", folder,
              helpdir && *helpdir ? helpdir : "no install folder: registered "
              "by a host");
+    if (full >= (int)len && len > 4)
+        memcpy(path + len - 4, "...", 4); /* long paths: the list is cut */
     return -1;
 }
 

@@ -19,6 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "aero.h"
 #include "texture.h"
 
 /* --- one table per object: its messages, each also a creation flag ------ */
@@ -203,11 +204,11 @@ int aero_pd_floats(void *x, const char *obj, const char *what, int argc,
 /* --- files ----------------------------------------------------------------- */
 
 /* Finds a data file (a texture in textures/, a tree in trees/), in this
- * order (README, "Embedding"):
+ * order (README, "Embedding with libpd"):
  *   1. next to the patch, its [declare -path] folders and Pd's search path
  *      (canvas_open; a libpd host adds folders with libpd_add_to_search_path)
  *   2. DIR/`folder` for DIR in the AERO_DATA environment variable
- *   3. DIR/`folder` for the DIR a host set with aero_set_data_path()
+ *   3. DIR/`folder` for the DIR a host set with aero_set_data_path() (aero.h)
  *   4. `folder` in the folder aero was loaded from (class_gethelpdir: the
  *      installed library; empty for classes a host registers itself).
  * `ext` (".wav") is appended unless the name has it. Writes the full path

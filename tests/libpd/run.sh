@@ -80,7 +80,7 @@ st_cyl=$(build/aerotex info textures/cylinder.wav | sed -n 's/^st=//p')
 st_tone() { awk -v st="$st_cyl" -v v="$1" -v d="$2" 'BEGIN { printf "%.6g\n", st * v / d }'; }
 
 CC=${CC:-cc}
-HOST_SRC="src/pd/*~.c src/pd/aero.c src/pd/aero_pd.c"
+HOST_SRC="src/pd/*.c"
 # host_build VARIANT OUT SOURCE [EXTRA...]: a test host linked statically
 host_build() {
     _v=$1 _out=$2 _src=$3

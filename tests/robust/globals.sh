@@ -11,7 +11,7 @@
 #                       function when the library loads; Pd shares classes
 #                       between instances by design (m_pd.h), objects
 #                       never write it.
-#   aero_data_dir in src/pd/aero.o  the data folder a libpd host sets
+#   aero_data_dir in src/pd/aero_pd.o  the data folder a libpd host sets
 #                       once with aero_set_data_path() (aero.h), before
 #                       opening patches; the one process setting of aero.
 # (FFTW's planner is serialised by FFTW's own lock: src/core/common/aero_fftw.h.)
@@ -33,7 +33,7 @@ for obj in "$@"; do
                        sec !~ /^\.data\.rel\.ro/
             if (!writable) next
             if (obj ~ /src\/pd\// && name ~ /_class$/) next
-            if (obj ~ /src\/pd\/aero\.o$/ && name == "aero_data_dir") next
+            if (obj ~ /src\/pd\/aero_pd\.o$/ && name == "aero_data_dir") next
             print obj ": " name " in " sec
         }')
     if [ -n "$bad" ]; then

@@ -16,8 +16,8 @@
 # screen. Each window is saved as NAME[.SUB...].png (ImageMagick's import).
 #
 # Works from the items' tags: Pd 0.53 and 0.56 both tag a box's text
-# {TAG ...} and its border {TAGR obj|msg|atom}, an IEM GUI's items
-# {PTR[_]BASE*|LABEL|...}, a patch cord {TAG cord}.
+# {TAG ...} and its border {TAGR ...} (0.53 adds obj, msg or atom), an IEM
+# GUI's items {PTR[_]BASE*|LABEL|...}, a patch cord {TAG cord}.
 
 if {![info exists ::env(AERO_GUICHECK_OUT)]} { return }
 
@@ -143,12 +143,21 @@ proc ::aero_guicheck::measure {c} {
             if {$bb ne ""} {
                 lappend texts [list $tag0 [$c itemcget $i -text] $bb]
             }
-        } elseif {[string match *R $tag0] && [llength $tags] >= 2} {
+        } elseif {[string match *R $tag0] && $type in {line polygon}} {
+            # Pd 0.53 names the kind in the second tag; 0.56 does not, but
+            # the outline tells: a rectangle, a message's flag, an atom's
+            # cut corner
+            set coords [$c coords $i]
             set kind [lindex $tags 1]
-            if {$kind in {obj msg atom}} {
-                set border([string range $tag0 0 end-1]) \
-                    [list $kind [rect_of_coords [$c coords $i]]]
+            if {$kind ni {obj msg atom}} {
+                switch [llength $coords] {
+                    14 {set kind msg}
+                    12 {set kind atom}
+                    default {set kind obj}
+                }
             }
+            set border([string range $tag0 0 end-1]) \
+                [list $kind [rect_of_coords $coords]]
         }
     }
     set boxes {}

@@ -69,6 +69,11 @@ for patch in "$@"; do
     case "$name" in
         *-help)
             missing=$(help_parts "$path")
+            # the plugin must have opened and measured both subpatches
+            for sub in reference META; do
+                grep -q "^[a-zA-Z]* *$name/$sub " "$out_abs/$name.result" 2>/dev/null ||
+                    missing="$missing | [pd $sub] window not measured"
+            done
             if [ -z "$missing" ]; then
                 echo "ok   $name parts: [pd reference], see also, updated for aero $VERSION, [pd META], comments <= 80 characters wide"
             else

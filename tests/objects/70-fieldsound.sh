@@ -44,8 +44,10 @@ judge $ANALYZE leveldiff "$OUT/fs-r4.wav" "$OUT/fs-slow.wav" --max -6
 
 # 4. the worker thread: preprocessing does not block Pd; progress and the
 # total time are posted, the right outlet says `ready`, which starts the
-# recording and `play`. Batch mode runs logical time far ahead of any
-# thread, so this one runs Pd in real time (-nosound, 5 s of wall time).
+# recording and `play`; 2.5 s later the recording is written and Pd
+# quits. Batch mode runs logical time far ahead of any thread, so this one
+# runs Pd in real time (-nosound), as long as the preprocessing takes (a
+# fixed 5 s was not always enough on a busy machine), at most 60 s.
 {
     echo "#N canvas 0 50 450 300 12;"
     echo "#X obj 10 10 loadbang;"                                   # 0
@@ -56,12 +58,12 @@ judge $ANALYZE leveldiff "$OUT/fs-r4.wav" "$OUT/fs-slow.wav" --max -6
     echo "#X obj 10 160 tabwrite~ fs-rec;"                          # 5
     echo "#X obj 200 10 array define fs-rec $((2 * PD_RATE));"      # 6
     echo "#X obj 200 70 print ready;"                               # 7
-    echo "#X obj 200 100 delay 5000;"                               # 8
+    echo "#X obj 200 100 delay 2500;"                               # 8
     echo "#X msg 200 130 write -bytes 4 $ROOT/$OUT/fs-thread.wav fs-rec;"
     echo "#X obj 200 160 soundfiler;"                               # 10
     echo "#X msg 200 190 \\; pd quit;"                             # 11
     echo "#X msg 300 10 \\; pd dsp 1;"                             # 12
-    for c in "0 0 12 0" "0 0 8 0" "1 1 2 0" "2 0 3 0" "2 0 7 0" "3 0 5 0" \
+    for c in "0 0 12 0" "3 0 8 0" "1 1 2 0" "2 0 3 0" "2 0 7 0" "3 0 5 0" \
         "3 1 4 0" "4 0 1 0" "1 0 5 0" "8 0 9 0" "9 0 10 0" "10 0 11 0"; do
         echo "#X connect $c;"
     done

@@ -19,12 +19,30 @@ judge $ANALYZE width "$OUT/peak-u2-d0.0005.wav" --fmin 300 --fmax 900 --max 0.01
 judge $ANALYZE width "$OUT/peak-u10-d0.01.wav" --fmin 100 --fmax 300 --min 0.03
 judge $ANALYZE width "$OUT/peak-u30-d0.003.wav" --fmin 1000 --fmax 3000 --min 0.03
 
-# 2. level: +18 dB per doubling of speed (p ~ U^3), twice
+# Sectional rms lift coefficient C_L'(Re) of a circular cylinder, Norberg's
+# (2003, J. Fluids Struct. 17) fits for 1600 < Re < 2.25e5
+norberg_lift_rms() {
+    awk -v re="$1" 'BEGIN { x = log(re / 1600) / log(10)
+        if (re < 5400) c = 0.045 + 3 * x^4.6; else c = 0.52 - 0.06 * x^-2.6
+        printf "%.5f", c }'
+}
+speed_re() { awk -v u="$1" -v d="$2" 'BEGIN { printf "%.1f", 1.225 * u * d / 1.81e-5 }'; }
+
+# 2. level: p ~ U^3 C_L'(Re) St(Re): +18 dB per doubling of speed at a
+# constant C_L', plus the rise of the sectional lift with Re (Norberg 2003:
+# 0.11 at Re 3400, 0.32 at 6800, 0.44 at 13500), twice
 pd_render lvl-u5 "aeolian~ -d 0.01" 1 3000 "; aero-speed 5"
 pd_render lvl-u10 "aeolian~ -d 0.01" 1 3000 "; aero-speed 10"
 pd_render lvl-u20 "aeolian~ -d 0.01" 1 3000 "; aero-speed 20"
-judge $ANALYZE leveldiff "$OUT/lvl-u5.wav" "$OUT/lvl-u10.wav" --expect 18 --tol 1.5
-judge $ANALYZE leveldiff "$OUT/lvl-u10.wav" "$OUT/lvl-u20.wav" --expect 18 --tol 1.5
+for pair in "5 10" "10 20"; do
+    set -- $pair
+    expect=$(awk -v c1="$(norberg_lift_rms "$(speed_re "$1" 0.01)")" \
+        -v c2="$(norberg_lift_rms "$(speed_re "$2" 0.01)")" \
+        -v r1="$(speed_re "$1" 0.01)" -v r2="$(speed_re "$2" 0.01)" \
+        'BEGIN { s1 = 1 - 19.7 / r1; s2 = 1 - 19.7 / r2
+                 printf "%.2f", 20 * log(8 * c2 * s2 / (c1 * s1)) / log(10) }')
+    judge $ANALYZE leveldiff "$OUT/lvl-u$1.wav" "$OUT/lvl-u$2.wav" --expect "$expect" --tol 1.5
+done
 
 # 3. level: -6 dB per doubling of distance (p ~ 1/r)
 pd_render dist-1 "aeolian~ -d 0.01 -l 0.2" 1 3000 "; aero-speed 10; aero-obj listener 0 1 0"
@@ -34,10 +52,10 @@ judge $ANALYZE leveldiff "$OUT/dist-1.wav" "$OUT/dist-2.wav" --expect -6 --tol 1
 judge $ANALYZE leveldiff "$OUT/dist-2.wav" "$OUT/dist-4.wav" --expect -6 --tol 1
 
 # 4. absolute level (Curle): p_rms = rho U^3 St C_L' L_c sqrt(N) / (4 c0 r)
-# with C_L' = 0.45 (Norberg 2003), L_c = 3 d, N = l / L_c segments; a short
-# cylinder (l = 3 d, one segment) 2 m away across the flow
-expect_db=$(awk 'BEGIN { u = 10; d = 0.01; re = 1.225 * u * d / 1.81e-5
-    st = 0.198 * (1 - 19.7 / re); p = 1.225 * u^3 * st * 0.45 * 3 * d / (4 * 343 * 2)
+# with C_L'(Re) of Norberg's (2003) fit, L_c = 3 d, N = l / L_c segments; a
+# short cylinder (l = 3 d, one segment) 2 m away across the flow
+expect_db=$(awk -v cl="$(norberg_lift_rms "$(speed_re 10 0.01)")" 'BEGIN { u = 10; d = 0.01; re = 1.225 * u * d / 1.81e-5
+    st = 0.198 * (1 - 19.7 / re); p = 1.225 * u^3 * st * cl * 3 * d / (4 * 343 * 2)
     printf "%.3f", 20 * log(p / 20e-6) / log(10) }')
 pd_render abs-level "aeolian~ -d 0.01 -l 0.03" 1 3000 "; aero-speed 10; aero-obj listener 0 2 0"
 judge $ANALYZE level "$OUT/abs-level.wav" --expect "$expect_db" --tol 1

@@ -69,6 +69,35 @@ static void test_strouhal(void)
                "step %.5f per unit Re", worst_jump);
 }
 
+/* Norberg (2003, J. Fluids Struct. 17): sectional rms lift coefficient of a
+ * circular cylinder. Points read from his fits (laminar 47-190, 260-1600,
+ * 1600-5400, 5400-2.25e5); the measured values scatter by ~10-20 % around
+ * them, the tolerance here is the arithmetic of the fit (1 %). */
+static void test_lift_rms(void)
+{
+    UNIT_CHECK(aero_lift_rms(40) == 0.0, "no lift below onset");
+    UNIT_NEAR_REL(aero_lift_rms(100), 0.227, 0.01,
+                  "C_L'(100) = 0.227 (laminar fit; Norberg's data 0.23)");
+    UNIT_NEAR_REL(aero_lift_rms(1000), 0.0577, 0.01,
+                  "C_L'(1000) = 0.058 (the minimum near Re 1e3-3e3)");
+    UNIT_NEAR_REL(aero_lift_rms(6768), 0.3175, 0.01,
+                  "C_L'(6768) = 0.318 (steep rise, 5400 < Re < 2.25e5 fit)");
+    UNIT_NEAR_REL(aero_lift_rms(2e4), 0.473, 0.01, "C_L'(2e4) = 0.47");
+    UNIT_NEAR_REL(aero_lift_rms(1e5), 0.507, 0.01, "C_L'(1e5) = 0.51");
+    /* continuous where the fits meet */
+    double jump_5400 = fabs(aero_lift_rms(5399.9) - aero_lift_rms(5400.1));
+    double jump_1600 = fabs(aero_lift_rms(1599.9) - aero_lift_rms(1600.1));
+    UNIT_CHECK(jump_5400 < 0.005 && jump_1600 < 0.005,
+               "fits meet at Re 1600 (%.4f) and 5400 (%.4f)", jump_1600, jump_5400);
+    double worst = 0;
+    for (double re = 48; re < 3e5; re *= 1.01) {
+        double c = aero_lift_rms(re);
+        if (!(c > 0 && c < 0.7))
+            worst = c;
+    }
+    UNIT_CHECK(worst == 0, "0 < C_L' < 0.7 from onset to 3e5 (bad %g)", worst);
+}
+
 static void test_onset_and_level(void)
 {
     aero_aeolian_model m;
@@ -82,14 +111,14 @@ static void test_onset_and_level(void)
     UNIT_CHECK(above > 0.0, "sound above the onset (rms %g Pa)", above);
 
     /* Curle, incoherent segments: p_rms = rho U^3 St C_L' L_c / (4 c0 r)
-     * for one segment (l = 3 d) across the flow at r = 3 m, C_L' = 0.45
-     * (Norberg 2003) */
+     * for one segment (l = 3 d) across the flow at r = 3 m, C_L'(6768) =
+     * 0.3175 (Norberg 2003) */
     aero_aeolian_model_init(&m, SR, 1, 2);
     aero_aeolian_model_set_diameter(&m, 0.01);
     aero_aeolian_model_set_length(&m, 0.03);
     aero_aeolian_model_set_ear(&m, 0, 0, 3, 0);
     double re = aero_reynolds(10, 0.01);
-    double want = 1.225 * 1000 * roshko(re) * 0.45 * 0.03 / (4 * 343 * 3);
+    double want = 1.225 * 1000 * roshko(re) * 0.3175 * 0.03 / (4 * 343 * 3);
     double got = render_rms(&m, 10.0f, 2.0, 64, &bad);
     UNIT_CHECK(fabs(20 * log10(got / want)) < 1.0,
                "absolute level: %.4g Pa, Curle gives %.4g Pa", got, want);
@@ -169,6 +198,7 @@ static void test_bad_input(void)
 int main(void)
 {
     test_strouhal();
+    test_lift_rms();
     test_onset_and_level();
     test_block_sizes();
     test_bad_input();

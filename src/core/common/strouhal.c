@@ -56,3 +56,37 @@ double aero_wake_turbulence(double re)
     double q = transition_re / re;
     return 1.0 / (1.0 + q * q);
 }
+
+static double lift_rms_laminar(double re)
+{
+    double e = (re - AERO_RE_ONSET) / AERO_RE_ONSET;
+    return sqrt(e / 30.0 + e * e / 90.0);
+}
+
+static double lift_rms_transitional(double re)
+{
+    return 0.045 + 1.05 * pow(1.0 - re / 1600.0, 4.5);
+}
+
+double aero_lift_rms(double re)
+{
+    const double laminar_end = 190.0, transitional_start = 260.0;
+    const double subcritical_end = 2.25e5;
+    if (!(re > AERO_RE_ONSET))
+        return 0.0;
+    if (re <= laminar_end)
+        return lift_rms_laminar(re);
+    if (re < transitional_start) {
+        double s = (re - laminar_end) / (transitional_start - laminar_end);
+        return (1.0 - s) * lift_rms_laminar(laminar_end) +
+               s * lift_rms_transitional(transitional_start);
+    }
+    if (re < 1600.0)
+        return lift_rms_transitional(re);
+    if (re > subcritical_end)
+        re = subcritical_end;
+    double x = log10(re / 1600.0);
+    if (re < 5400.0)
+        return 0.045 + 3.0 * pow(x, 4.6);
+    return 0.52 - 0.06 * pow(x, -2.6);
+}

@@ -26,6 +26,18 @@ double aero_strouhal(double re);
  * about half of the subcritical value (0.23 vs 0.45, Norberg 2003). */
 double aero_shedding_strength(double re);
 
+/* Sectional rms lift coefficient C_L'(Re) of a circular cylinder, the fits
+ * of Norberg (2003, J. Fluids Struct. 17, eqs. for the four ranges):
+ *   47 < Re < 190:     sqrt(e/30 + e^2/90), e = (Re - 47)/47 (laminar,
+ *                      the Hopf growth of the lift from onset),
+ *   260 < Re < 1600:   0.045 + 1.05 (1 - Re/1600)^4.5,
+ *   1600 < Re < 5400:  0.045 + 3 x^4.6,       x = log10(Re/1600),
+ *   5400 < Re < 2.25e5: 0.52 - 0.06 x^-2.6.
+ * Between 190 and 260 (mode A/B transition, where the measured values
+ * scatter most) it interpolates linearly; above 2.25e5, where the fits end
+ * (the drag crisis), it holds the last value. 0 below onset. */
+double aero_lift_rms(double re);
+
 /* How turbulent the wake is, 0 (laminar, Re << 400) to 1 (Re >> 400): a
  * continuous logistic law in log Re centred on the wake transition range
  * (Re ~ 190..1000). Drives the width of the shedding peak. */

@@ -9,10 +9,6 @@
 #include <math.h>
 #include <string.h>
 
-/* Sectional rms lift coefficient in the subcritical range 5e3 < Re < 1e5:
- * C_L' ~ 0.45 (Norberg 2003, "Fluctuating lift on a circular cylinder:
- * review and new measurements", J. Fluids Struct. 17). */
-#define LIFT_RMS 0.45
 /* The fluctuating drag is about an order of magnitude weaker (DESIGN.md). */
 #define DRAG_TO_LIFT 0.1
 /* Spanwise correlation length, in diameters (paper 000, point-source
@@ -202,7 +198,8 @@ static void update_chunk_laws(aero_aeolian_model *m, double speed, int n)
         return;
     double re = aero_reynolds(speed, d);
     m->st = aero_strouhal(re);
-    double strength = aero_shedding_strength(re);
+    /* sectional C_L'(Re), Norberg (2003): it already rises from 0 at onset */
+    double lift_rms = aero_lift_rms(re);
     double turbulence = aero_wake_turbulence(re);
     double depth = ENVELOPE_DEPTH * turbulence;
 
@@ -211,12 +208,12 @@ static void update_chunk_laws(aero_aeolian_model *m, double speed, int n)
      * turns rms into the sine's amplitude; the envelope's power is divided
      * out. */
     double segment = fmin(CORRELATION_DIAMETERS * d, l);
-    double source = AERO_RHO * m->st * strength * segment / (4.0 * AERO_C0) *
+    double source = AERO_RHO * m->st * segment / (4.0 * AERO_C0) *
                     sqrt(2.0) / sqrt(1.0 + depth * depth) * m->ctl[AERO_CTL_GAIN];
     for (int e = 0; e < m->n_ears; e++) {
-        m->lift_level[e] = source * LIFT_RMS * m->lift_geometry[e];
+        m->lift_level[e] = source * lift_rms * m->lift_geometry[e];
         /* drag at 2f: twice the rate, C_D' = 0.1 C_L' */
-        m->drag_level[e] = source * 2.0 * DRAG_TO_LIFT * LIFT_RMS *
+        m->drag_level[e] = source * 2.0 * DRAG_TO_LIFT * lift_rms *
                            m->drag_geometry[e];
     }
 

@@ -6,7 +6,8 @@
  * the fluctuating lift (a dipole along y) radiates at f, the fluctuating drag
  * (a dipole along x, ~10x weaker) at 2f. Far field of a compact force (Curle):
  *     p = x_i dF_i/dt / (4 pi c0 r^2),
- * per unit span F' = 1/2 rho U^2 d C_L', dF/dt ~ 2 pi f F', so the pressure
+ * per unit span F' = 1/2 rho U^2 d C_L' (C_L'(Re) from Norberg's 2003 fits,
+ * strouhal.h), dF/dt ~ 2 pi f F', so the pressure
  * amplitude grows as U^3 (not U^6, the intensity law the papers apply to
  * amplitude). The span is split into incoherent segments of ~3 d (the
  * spanwise correlation length, paper 000): their powers add.

@@ -55,6 +55,24 @@ int main(void)
     UNIT_CHECK(20 * log10(locked / shallow) > 10,
                "lock-in: +%.1f dB when the depth mode meets mode 2",
                20 * log10(locked / shallow));
+    /* the locked tone holds a frequency plateau on the depth mode while the
+       speed moves +-2 % (Elder 1978: deep cavities lock onto their depth
+       mode over a range of speeds); away from it, Rossiter's law */
+    {
+        double depth = 343.0 / (4 * f2) - 0.82 * a;
+        double fd = aero_cavity_depth_hz(depth, 0.02, 0.05, 1), worst = 0;
+        for (double s = 9.8; s <= 10.201; s += 0.05) {
+            double f = aero_cavity_locked_hz(aero_cavity_rossiter_hz(s, 0.02, 2),
+                                             depth, 0.02, 0.05);
+            worst = fmax(worst, fabs(f / fd - 1));
+        }
+        UNIT_CHECK(worst < 0.002, "plateau: mode 2 within %.2f %% of the depth "
+                   "mode over 9.8-10.2 m/s (Rossiter's law moves it 4 %%)",
+                   100 * worst);
+        double far = aero_cavity_rossiter_hz(7, 0.02, 2);
+        UNIT_NEAR_REL(aero_cavity_locked_hz(far, depth, 0.02, 0.05), far, 0.002,
+                      "unlocked at 7 m/s: Rossiter's mode 2");
+    }
     aero_cavity_model_free(&m);
 
     aero_cavity_model_init(&m, SR, 2);

@@ -51,6 +51,22 @@ double aero_cavity_rossiter_hz(double speed, double length, int mode)
            (mach + 1.0 / ROSSITER_KAPPA);
 }
 
+double aero_cavity_locked_hz(double f, double depth, double length,
+                             double width)
+{
+    double pulled = f, best = 0.0;
+    for (int j = 1; j <= AERO_CAVITY_DEPTH_MODES; j++) {
+        double fd = aero_cavity_depth_hz(depth, length, width, j);
+        double x = (f - fd) / (LOCK_WIDTH * fd), x4 = x * x * x * x;
+        double pull = 1.0 / (1.0 + x4);
+        if (pull > best) {
+            best = pull;
+            pulled = f - (f - fd) * pull;
+        }
+    }
+    return pulled;
+}
+
 double aero_cavity_depth_hz(double depth, double length, double width, int n)
 {
     double radius = sqrt(length * width / AERO_PI);
@@ -240,6 +256,9 @@ static void process_model(aero_cavity_model *m, const float *u, float *out,
             lock = fmax(lock, 1.0 / (1.0 + x * x));
         }
         double grow = 1.0 + LOCK_GAIN * lock;
+        /* the locked tone's frequency holds on the depth mode */
+        if (f > 0.0)
+            m->freq_factor[k] *= aero_cavity_locked_hz(f, d, l, w) / f;
         gain_end[k] = level * sqrt(2.0) * mode_weight[k] / sqrt(weight_sum) *
                       grow;
         /* a locked tone is purer: the width shrinks as it grows */

@@ -9,7 +9,8 @@
  * m = 1..4, M = U / c0; the cavity's depth resonance (quarter wave)
  *     f_n = (2n - 1) c0 / (4 (D + delta)),  delta = 0.82 a  (flanged end
  * correction, a = sqrt(L W / pi) the radius of the same opening area),
- * and a Rossiter mode near a depth mode locks in and grows (the whistle of
+ * and a Rossiter mode near a depth mode locks in: it grows and its frequency
+ * holds on the depth mode over a range of speeds (the whistle of
  * a bottle or a window gap); the others stay weak. Broadband shear-layer
  * noise lies under the tones. The pressure amplitude grows as U^n, n = 2 by
  * default (Dobashi's "amplitude ~ v^4" is an intensity law), and falls as
@@ -88,6 +89,12 @@ int aero_cavity_model_set_texture(aero_cavity_model *m, aero_texture *t,
 
 /* Rossiter frequency of mode m (1..4) at speed U, Hz. */
 double aero_cavity_rossiter_hz(double speed, double length, int mode);
+/* The frequency a shear-layer tone at f (Hz) sounds at in a cavity: near a
+ * depth mode fd it locks onto it (f - fd shrinks by x^4 / (1 + x^4),
+ * x = (f - fd) / (0.04 fd)), so the tone holds a plateau at fd over a range
+ * of speeds, as deep cavities do (Elder 1978), instead of gliding through. */
+double aero_cavity_locked_hz(double f, double depth, double length,
+                             double width);
 /* Quarter-wave depth resonance n (1, 2, ...) with the end correction, Hz. */
 double aero_cavity_depth_hz(double depth, double length, double width,
                             int n);

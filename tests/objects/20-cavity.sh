@@ -58,6 +58,13 @@ pd_render cav-tex-u20 "cavity~ -texture cavity" 1 3000 "; aero-speed 20"
 log_clean "$OUT/cav-tex-u10.log" "[cavity~ -texture cavity] loads the shipped texture"
 judge $ANALYZE finite "$OUT/cav-tex-u10.wav"
 judge $ANALYZE leveldiff "$OUT/cav-tex-u10.wav" "$OUT/cav-tex-u20.wav" --expect 12 --tol 1.5
+# texture mode honours -L: the shear-layer tone sits at St_L = f L / v
+# (Rossiter 1964), so a cavity twice as long (the texture's L0 = 2 cm)
+# sounds an octave lower at the same speed
+pd_render cav-tex-L2 "cavity~ -L 0.02 -texture cavity -seed 3" 1 3000 "; aero-speed 10"
+pd_render cav-tex-L4 "cavity~ -L 0.04 -texture cavity -seed 3" 1 3000 "; aero-speed 10"
+judge $ANALYZE peakratio "$OUT/cav-tex-L2.wav" "$OUT/cav-tex-L4.wav" \
+    --expect 0.5 --tol 0.05 --fmin 100 --fmax 1500 --smooth 15
 
 # 5. a missing texture: a clear error, and the model still sounds
 pd_render cav-missing "cavity~ -texture no-such-texture" 1 3000 "; aero-speed 10"

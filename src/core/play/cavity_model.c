@@ -200,6 +200,8 @@ int aero_cavity_model_set_texture(aero_cavity_model *m, aero_texture *t,
             return -1;
         }
         m->texture_v0 = v0;
+        double l0 = aero_texture_getd(t, "length", 0.0);
+        m->texture_length = l0 > 0.0 && l0 < 100.0 ? l0 : 0.0;
         m->texture_pos = fmod(fabs(m->texture_pos) * t->frames, t->frames);
     }
     aero_cavity_model_free(m);
@@ -307,8 +309,11 @@ static void process_model(aero_cavity_model *m, const float *u, float *out,
             m->noise_state[k] = 0; /* no denormals */
 }
 
-/* Texture mode: the texture coordinate advances by v/v0 (paper 000 eq. 3),
- * amplitude (v/v0)^n, Curle dipole p = (x . g) W / (4 pi c0 r^2). */
+/* Texture mode: the texture coordinate advances by (v/v0)(L0/L) (paper 000
+ * eq. 3: the shear-layer modes sit at St_L = f L / v, so the pitch follows
+ * the cavity's length as an aeolian texture's follows d0/d), amplitude
+ * (v/v0)^n (g = dF/dt per unit width: F ~ v^2 L, f ~ v/L), Curle dipole
+ * p = (x . g) W / (4 pi c0 r^2). */
 static void process_texture(aero_cavity_model *m, const float *u, float *out,
                             int n)
 {
@@ -319,7 +324,8 @@ static void process_texture(aero_cavity_model *m, const float *u, float *out,
     double radiation = w / (4.0 * AERO_PI * AERO_C0 * r * r) *
                        m->ctl[AERO_CAV_GAIN];
     double cx = e[0] * radiation, cy = e[1] * radiation;
-    double step = t->rate / m->sample_rate / m->texture_v0;
+    double step = t->rate / m->sample_rate / m->texture_v0 *
+                  (m->texture_length > 0.0 ? m->texture_length / l : 1.0);
     for (int i = 0; i < n; i++) {
         double v = u[i] / m->texture_v0;
         long k = (long)m->texture_pos;

@@ -60,6 +60,7 @@ typedef struct aero_cavity_model {
     /* texture mode */
     aero_texture *texture;   /* NULL: model mode */
     double texture_v0;
+    double texture_length; /* L0 the texture was made for, m (0: unknown) */
     double texture_pos;      /* frames */
 } aero_cavity_model;
 

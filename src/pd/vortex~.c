@@ -1,8 +1,9 @@
 /* [vortex~]: vortex sound of turbulent air (fire, flamethrowers, jets,
  * explosions) from a vortex texture Q(u, t) made by `aerotex vortex`
- * (paper 004). Thin Pd wrapper around src/core/vortex_player.
+ * (paper 004), plus the combustion noise of a flame (`power` in kW).
+ * Thin Pd wrapper around src/core/vortex_player.
  *
- *   [vortex~ -texture fire -n 8 -stereo -clip 20 -gain 0]
+ *   [vortex~ -texture fire -n 8 -stereo -power 30 -length 0.02 -clip 20]
  *   inlet 1 (signal): average flow speed, m/s, added to each source's own
  *                     speed (`speeds`)
  *   outlet 1 (and 2 with -stereo): sound pressure at the listener, Pa
@@ -180,6 +181,40 @@ static void vortex_tilde_ramp(t_vortex_tilde *x, t_floatarg f)
         pd_error(x, OBJ ": ramp %g ms out of range (0..600000)", f);
 }
 
+/* combustion noise (combustion_noise.h): the flame's mean heat release */
+static void vortex_tilde_power(t_vortex_tilde *x, t_floatarg f)
+{
+    if (aero_combustion_set_power_kw(&x->x_player.combustion, f))
+        pd_error(x, OBJ ": power %g kW out of range (0 = no combustion "
+                 "noise, up to 1e6)", f);
+}
+
+static void vortex_tilde_length(t_vortex_tilde *x, t_floatarg f)
+{
+    if (aero_combustion_set_length(&x->x_player.combustion, f))
+        pd_error(x, OBJ ": length %g m out of range (0.001..100)", f);
+}
+
+static void vortex_tilde_strouhal(t_vortex_tilde *x, t_floatarg f)
+{
+    if (aero_combustion_set_strouhal(&x->x_player.combustion, f))
+        pd_error(x, OBJ ": strouhal %g out of range (0.01..100)", f);
+}
+
+static void vortex_tilde_fluctuation(t_vortex_tilde *x, t_floatarg f)
+{
+    if (aero_combustion_set_fluctuation(&x->x_player.combustion, f))
+        pd_error(x, OBJ ": fluctuation %g out of range (0..1)", f);
+}
+
+static void vortex_tilde_falloff(t_vortex_tilde *x, t_floatarg f)
+{
+    if ((f != 1 && f != 3) ||
+        aero_vortex_player_set_falloff(&x->x_player, (int)f))
+        pd_error(x, OBJ ": falloff %g: 1 (p ~ 1/r, the far field) or 3 "
+                 "(the paper's 1/r^3)", f);
+}
+
 static void vortex_tilde_seed(t_vortex_tilde *x, t_floatarg f)
 {
     aero_vortex_player_set_seed(&x->x_player, aero_pd_seed(f));
@@ -194,7 +229,9 @@ static int vortex_tilde_flag(void *obj, t_symbol *flag, int argc,
         int count;
     } flags[] = {{"-texture", 1}, {"-n", 1},     {"-gain", 1},
                  {"-clip", 1},    {"-ramp", 1},  {"-seed", 1},
-                 {"-listener", 3}, {"-ears", 6}, {"-stereo", 0}};
+                 {"-listener", 3}, {"-ears", 6}, {"-stereo", 0},
+                 {"-power", 1},   {"-length", 1}, {"-strouhal", 1},
+                 {"-fluctuation", 1}, {"-falloff", 1}};
     for (size_t k = 0; k < sizeof(flags) / sizeof(flags[0]); k++) {
         if (strcmp(flag->s_name, flags[k].name))
             continue;
@@ -230,6 +267,16 @@ static int vortex_tilde_flag(void *obj, t_symbol *flag, int argc,
             vortex_tilde_ramp(x, f);
         else if (!strcmp(name, "seed"))
             vortex_tilde_seed(x, f);
+        else if (!strcmp(name, "power"))
+            vortex_tilde_power(x, f);
+        else if (!strcmp(name, "length"))
+            vortex_tilde_length(x, f);
+        else if (!strcmp(name, "strouhal"))
+            vortex_tilde_strouhal(x, f);
+        else if (!strcmp(name, "fluctuation"))
+            vortex_tilde_fluctuation(x, f);
+        else if (!strcmp(name, "falloff"))
+            vortex_tilde_falloff(x, f);
         else if (!strcmp(name, "listener"))
             vortex_tilde_listener(x, gensym("listener"), 3, argv);
         else if (!strcmp(name, "ears"))
@@ -259,7 +306,8 @@ static void *vortex_tilde_new(t_symbol *s, int argc, t_atom *argv)
             argv[i + 1].a_type == A_FLOAT)
             vortex_tilde_n(x, argv[i + 1].a_w.w_float);
     aero_pd_parse_flags(x, OBJ, "-texture -n -stereo -gain -clip -ramp "
-                        "-seed -listener -ears", vortex_tilde_flag, argc,
+                        "-seed -listener -ears -power -length -strouhal "
+                        "-fluctuation -falloff", vortex_tilde_flag, argc,
                         argv);
     x->x_out[0] = outlet_new(&x->x_obj, &s_signal);
     if (x->x_stereo)
@@ -294,7 +342,12 @@ void vortex_tilde_setup(void)
                   {"gain", (t_method)vortex_tilde_gain},
                   {"clip", (t_method)vortex_tilde_clip},
                   {"ramp", (t_method)vortex_tilde_ramp},
-                  {"seed", (t_method)vortex_tilde_seed}};
+                  {"seed", (t_method)vortex_tilde_seed},
+                  {"power", (t_method)vortex_tilde_power},
+                  {"length", (t_method)vortex_tilde_length},
+                  {"strouhal", (t_method)vortex_tilde_strouhal},
+                  {"fluctuation", (t_method)vortex_tilde_fluctuation},
+                  {"falloff", (t_method)vortex_tilde_falloff}};
     for (size_t k = 0; k < sizeof(floats) / sizeof(floats[0]); k++)
         class_addmethod(vortex_tilde_class, floats[k].fn,
                         gensym(floats[k].name), A_FLOAT, 0);

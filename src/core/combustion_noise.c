@@ -163,19 +163,25 @@ static void make_filter(aero_combustion *m, double fp)
     const double sr = m->sample_rate, c = 2.0 * sr;
     double K = tan(AERO_PI * fp / sr), norm = 1.0 / (1.0 + sqrt(2.0) * K + K * K);
     double p = TILT_START * fp;
-    m->b[0][0] = K * K * norm;
-    m->b[0][1] = 2.0 * m->b[0][0];
-    m->b[0][2] = m->b[0][0];
+    /* (s / w_p) times the Butterworth low-pass: its output is
+       (dxi/dt) / w_p, so no difference of samples multiplies a filter's
+       glitch by the sample rate */
+    m->b[0][0] = K * norm;
+    m->b[0][1] = 0.0;
+    m->b[0][2] = -K * norm;
     m->a[0][0] = 2.0 * (K * K - 1.0) * norm;
     m->a[0][1] = (1.0 - sqrt(2.0) * K + K * K) * norm;
     m->nsec = 1;
     for (int k = 0; k < AERO_COMBUSTION_TILTS; k++, p *= 10.0) {
         double z = p * TILT_RATIO, wp, wz, d0;
         int s = m->nsec;
-        if (p > 0.45 * sr)
-            break; /* out of band: it shapes nothing heard */
+        double pk = p;
+        /* corners above the band are held just below Nyquist rather than
+           dropped, so that a gliding peak never adds or removes a section
+           (a section joining with an empty state clicks) */
+        if (pk > 0.47 * sr) pk = 0.47 * sr;
         if (z > 0.49 * sr) z = 0.49 * sr;
-        wp = c * tan(AERO_PI * p / sr);
+        wp = c * tan(AERO_PI * pk / sr);
         wz = c * tan(AERO_PI * z / sr);
         d0 = 1.0 + c / wp;
         m->b[s][0] = (1.0 + c / wz) / d0;
@@ -185,8 +191,6 @@ static void make_filter(aero_combustion *m, double fp)
         m->a[s][1] = 0.0;
         m->nsec++;
     }
-    for (int s = m->nsec; s <= AERO_COMBUSTION_TILTS; s++)
-        m->z[s][0] = m->z[s][1] = 0.0;
     /* white noise of variance v through H has variance 2 v fp I0 / sr */
     m->noise_scale = sqrt(sr / (2.0 * fp * m->shape_i0));
     m->peak = fp;
@@ -203,13 +207,20 @@ void aero_combustion_process(aero_combustion *m, double u, const double src[3],
                              float *const *out, int n)
 {
     const double sr = m->sample_rate;
-    const double dq_scale = m->fluctuation * m->power * sr; /* W/s per unit dxi */
     int start = m->line_pos;
     if (n <= 0 || !m->line || n > m->line_len / 2)
         return;
     if (nears > 2) nears = 2;
     {
         double fp = aero_combustion_peak_hz(m, u);
+        if (m->peak > 0.0) {
+            /* the flame's time scale glides (3 % per 64 samples, an
+               e-fold in ~50 ms at 44.1 kHz): a filter re-made far from
+               its state rings, and dQ/dt turns the ring into a click */
+            double most = pow(1.03, n / 64.0);
+            if (fp > m->peak * most) fp = m->peak * most;
+            if (fp < m->peak / most) fp = m->peak / most;
+        }
         if (m->peak <= 0.0 || fabs(fp - m->peak) > 0.005 * m->peak)
             make_filter(m, fp);
     }
@@ -223,10 +234,12 @@ void aero_combustion_process(aero_combustion *m, double u, const double src[3],
         m->dist[0] = m->dist[1] = -1.0;
         return;
     }
-    /* dQ/dt at the flame, into the line */
+    /* dQ/dt = eps P dxi/dt at the flame, into the line */
+    {
+    const double dq_scale = m->fluctuation * m->power * 2.0 * AERO_PI * m->peak;
     for (int k = 0; k < n; k++) {
         double x = (aero_uniform(&m->rng) + aero_uniform(&m->rng) +
-                    aero_uniform(&m->rng)) * m->noise_scale, d;
+                    aero_uniform(&m->rng)) * m->noise_scale;
         for (int s = 0; s < m->nsec; s++) {
             /* transposed direct form II */
             double y = m->b[s][0] * x + m->z[s][0];
@@ -238,11 +251,10 @@ void aero_combustion_process(aero_combustion *m, double u, const double src[3],
             x = 0.0;
             memset(m->z, 0, sizeof m->z);
         }
-        d = (x - m->xi_prev) * dq_scale;
-        m->xi_prev = x;
-        m->line[m->line_pos] = (float)d;
+        m->line[m->line_pos] = (float)(x * dq_scale);
         if (++m->line_pos == m->line_len)
             m->line_pos = 0;
+    }
     }
     /* heard at t - r/c0 by each ear, 1/r */
     for (int e = 0; e < nears; e++) {

@@ -20,12 +20,13 @@
  *
  * xi is white noise through a 2nd-order Butterworth low-pass at f_p (the
  * f^-4) and a tilt of pole-zero pairs one per decade above it (the f^-0.5
- * more), made from the analogue prototype by the bilinear transform with
- * pre-warping, re-made when f_p moves by more than 0.5 %. dQ/dt is the
- * first difference times the sample rate. The retarded time is a delay
- * line of dQ/dt (1 s: listeners beyond 343 m hear it 1 s late) read with
- * linear interpolation at t - r/c0 for each ear; a distance that changes
- * over a block slides the read point (Doppler).
+ * more); dxi/dt comes out of the same filter with s / w_p on the
+ * low-pass (a band-pass), made from the analogue prototype by the
+ * bilinear transform with pre-warping, re-made when f_p moves by more
+ * than 0.5 % (f_p glides at most 3 % per 64 samples). The retarded time
+ * is a delay line of dQ/dt (1 s: listeners beyond 343 m hear it 1 s
+ * late) read with linear interpolation at t - r/c0 for each ear; a
+ * distance that changes over a block slides the read point (Doppler).
  *
  * Life cycle: init, set_*, process, free. No globals; no allocation in
  * process (init and set_sample_rate allocate). */
@@ -52,7 +53,6 @@ typedef struct aero_combustion {
     double peak;         /* f_p the filter was made for, Hz (0: none yet) */
     double noise_scale;  /* input rms that gives unit-rms xi */
     double shape_i0;     /* INT |H(x)|^2 dx of the prototype */
-    double xi_prev;
     /* delay line of dQ/dt, W/s */
     float *line;
     int line_len, line_pos;

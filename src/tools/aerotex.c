@@ -67,7 +67,7 @@ static void usage(FILE *f)
 "      --duration <s>       texture length (default 0.5)\n"
 "      --rate <Hz>          texture sample rate (default 16000)\n"
 "      --turbulence <i>     rms inflow perturbation / u (default 0.3)\n"
-"      --confinement <eps>  vorticity confinement (default 0.3)\n"
+"      --confinement <eps>  vorticity confinement eps h / box (default 9.6)\n"
 "      --cfl <c>            step = c h / u (default 0.5)\n"
 "      --settle <n>         start-up discarded, flow-through times (default 3)\n"
 "      --receivers <n>      virtual receivers on a ring (default 8)\n"

@@ -4,6 +4,7 @@
 #include "aerotex.h"
 #include "aero_air.h"
 #include "texture.h"
+#include "bandwidth_extension.h"
 #include "vortex_sound.h"
 
 #include <errno.h>
@@ -24,6 +25,7 @@ typedef struct {
     double speeds[MAX_SPEEDS];
     int nspeeds;
     double duration, rate;
+    double extend;        /* f_top of the bandwidth extension, Hz (0: off) */
     int threads, quiet;
     const char *out, *png_dir;
 } vjob_t;
@@ -137,6 +139,7 @@ static int vparse(vjob_t *j, int argc, char **argv)
         VNUM("--settle", 0.0, 100.0, j->vp.settle)
         VNUM("--elevation", -90.0, 90.0, j->vp.elevation)
         VNUM("--threads", 1.0, 256.0, j->threads)
+        VNUM("--extend", 0.0, 96000.0, j->extend)
 #undef VNUM
         if (!strcmp(a, "--grid") || !strcmp(a, "--height") ||
             !strcmp(a, "--receivers") || !strcmp(a, "--seed")) {
@@ -222,7 +225,8 @@ int aerotex_vortex(int argc, char **argv)
     aero_texture tex;
     float *raw;
     char err[512], command[4096], buf[8192];
-    double t_start = aerotex_now(), list[MAX_SPEEDS];
+    double t_start = aerotex_now(), list[MAX_SPEEDS], ext_from[MAX_SPEEDS];
+    aero_bandext_info ext[MAX_SPEEDS];
     int status = 1, l0, xf, lmin, lmax, avail, len, ns;
 
     memset(&j, 0, sizeof j);
@@ -234,6 +238,11 @@ int aerotex_vortex(int argc, char **argv)
     parse_speeds(&j, "1,2,3,4,6,8,12,16");
     if (vparse(&j, argc, argv))
         return 2;
+    if (j.extend > 0.0 && !(j.extend * 1.1 < 0.5 * j.rate)) {
+        aerotex_error("--extend %g Hz: 1.1 x it must stay below half the "
+                      "--rate (%g Hz)", j.extend, 0.5 * j.rate);
+        return 2;
+    }
     if (j.vp.nz < 0)
         j.vp.nz = j.vp.n * 3 / 2;
     ns = j.nspeeds;
@@ -255,6 +264,8 @@ int aerotex_vortex(int argc, char **argv)
         aerotex_error("can't create %s: %s", j.png_dir, strerror(errno));
         return 1;
     }
+    memset(ext, 0, sizeof ext);
+    memset(ext_from, 0, sizeof ext_from);
     raw = calloc((size_t)avail * ns, sizeof(float));
     ctx = calloc((size_t)ns, sizeof *ctx);
     st = calloc((size_t)ns, sizeof *st);
@@ -326,6 +337,22 @@ int aerotex_vortex(int argc, char **argv)
         goto out;
     len = aero_texture_best_loop(raw, ns, lmin, lmax, xf);
     aero_texture_crossfade(raw, ns, len, xf);
+    /* above the band each speed's grid resolves, the bandwidth extension
+       (bandwidth_extension.h): the third derivative's taper runs from 0.2
+       to 0.35 of the step rate (vortex_sound.h), the resampling cuts at
+       0.45 of the lower rate */
+    for (int k = 0; k < ns && j.extend > 0.0; k++) {
+        double steprate = 1.0 / st[k].dt;
+        double f2 = fmin(0.35 * steprate, 0.45 * fmin(steprate, j.rate));
+        double f1 = fmin(0.2 * steprate, 0.8 * f2);
+        if (f2 >= j.extend) {
+            ext_from[k] = 0.0; /* resolved up to the top already */
+            continue;
+        }
+        aero_bandext_apply(raw + k, len, ns, j.rate, f1, f2, j.extend,
+                           j.vp.seed * 40503u + (uint32_t)k + 1u, &ext[k]);
+        ext_from[k] = ext[k].extended ? f1 : 0.0;
+    }
     if (aero_texture_init_speeds(&tex, len, ns, j.speeds, j.rate)) {
         aerotex_error("out of memory");
         status = 1;
@@ -370,6 +397,19 @@ int aerotex_vortex(int argc, char **argv)
     for (int k = 0; k < ns; k++) list[k] = st[k].gain;
     join(buf, sizeof buf, list, ns);
     aero_texture_set(&tex, "receiver_gain", buf);
+    if (j.extend > 0.0) {
+        aero_texture_set(&tex, "extension", "spectral bandwidth extension "
+                         "(Chadwick & James 2011): above extend_from, noise "
+                         "with the band's envelope and the power law fitted "
+                         "on its top two octaves (extend_slope, |X|^2 ~ "
+                         "f^s), up to extend_top; 0: not extended");
+        aero_texture_setd(&tex, "extend_top", j.extend);
+        join(buf, sizeof buf, ext_from, ns);
+        aero_texture_set(&tex, "extend_from", buf);
+        for (int k = 0; k < ns; k++) list[k] = ext[k].slope;
+        join(buf, sizeof buf, list, ns);
+        aero_texture_set(&tex, "extend_slope", buf);
+    }
     aero_texture_set(&tex, "solver", "3D incompressible, MAC grid, "
                      "semi-Lagrangian advection, vorticity confinement, "
                      "FFTW + tridiagonal projection");

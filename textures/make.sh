@@ -24,6 +24,7 @@ $T cavity --length 0.02 --depth 0.01 --speed 10 --grid 48 \
 # fire / jet vortex sound (paper 004): a 10 cm box of turbulent air, 8
 # average speeds 1..16 m/s, Howe's vortex sound at 1 m, one channel each
 $T vortex --speeds 1,2,3,4,6,8,12,16 --box 0.1 --grid 32 --duration 0.5 \
+    --rate 32000 --extend 14000 \
     -o textures/fire.wav
 # 3D object textures (paper 000, 3D case): the paper's sphere (radius
 # 5 cm) and a club (handle 12.5 mm, tip 30 mm, 0.8 m) with 10 regions and

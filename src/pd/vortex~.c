@@ -1,8 +1,9 @@
 /* [vortex~]: vortex sound of turbulent air (fire, flamethrowers, jets,
  * explosions) from a vortex texture Q(u, t) made by `aerotex vortex`
- * (paper 004). Thin Pd wrapper around src/core/play/vortex_player.
+ * (paper 004), plus the combustion noise of a flame (`power` in kW).
+ * Thin Pd wrapper around src/core/play/vortex_player.
  *
- *   [vortex~ -texture fire -n 8 -stereo -clip 20 -gain 0]
+ *   [vortex~ -texture fire -n 8 -stereo -power 30 -length 0.02 -clip 20]
  *   inlet 1 (signal): average flow speed, m/s, added to each source's own
  *                     speed (`speeds`)
  *   outlet 1 (and 2 with -stereo): sound pressure at the listener, Pa
@@ -135,6 +136,40 @@ static void vortex_tilde_ramp(t_vortex_tilde *x, t_floatarg f)
         pd_error(x, OBJ ": ramp %g ms out of range (0..600000)", f);
 }
 
+/* combustion noise (combustion_noise.h): the flame's mean heat release */
+static void vortex_tilde_power(t_vortex_tilde *x, t_floatarg f)
+{
+    if (aero_combustion_set_power_kw(&x->x_player.combustion, f))
+        pd_error(x, OBJ ": power %g kW out of range (0 = no combustion "
+                 "noise, up to 1e6)", f);
+}
+
+static void vortex_tilde_length(t_vortex_tilde *x, t_floatarg f)
+{
+    if (aero_combustion_set_length(&x->x_player.combustion, f))
+        pd_error(x, OBJ ": length %g m out of range (0.001..100)", f);
+}
+
+static void vortex_tilde_strouhal(t_vortex_tilde *x, t_floatarg f)
+{
+    if (aero_combustion_set_strouhal(&x->x_player.combustion, f))
+        pd_error(x, OBJ ": strouhal %g out of range (0.01..100)", f);
+}
+
+static void vortex_tilde_fluctuation(t_vortex_tilde *x, t_floatarg f)
+{
+    if (aero_combustion_set_fluctuation(&x->x_player.combustion, f))
+        pd_error(x, OBJ ": fluctuation %g out of range (0..1)", f);
+}
+
+static void vortex_tilde_falloff(t_vortex_tilde *x, t_floatarg f)
+{
+    if ((f != 1 && f != 3) ||
+        aero_vortex_player_set_falloff(&x->x_player, (int)f))
+        pd_error(x, OBJ ": falloff %g: 1 (p ~ 1/r, the far field) or 3 "
+                 "(the paper's 1/r^3)", f);
+}
+
 static void vortex_tilde_seed(t_vortex_tilde *x, t_floatarg f)
 {
     aero_vortex_player_set_seed(&x->x_player, aero_pd_seed(f));
@@ -149,6 +184,11 @@ static const aero_pd_method vortex_tilde_methods[] = {
     {"clip", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_clip, 0},
     {"ramp", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_ramp, 0},
     {"seed", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_seed, 0},
+    {"power", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_power, 0},
+    {"length", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_length, 0},
+    {"strouhal", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_strouhal, 0},
+    {"fluctuation", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_fluctuation, 0},
+    {"falloff", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_falloff, 0},
     {"listener", AERO_PD_LIST, 3, (t_method)vortex_tilde_listener, 0},
     {"ears", AERO_PD_LIST, 6, (t_method)vortex_tilde_listener, 0},
     {"speeds", AERO_PD_LIST, 0, (t_method)vortex_tilde_speeds,

@@ -4,6 +4,7 @@
 #include "aerotex.h"
 #include "aero_air.h"
 #include "texture.h"
+#include "bandwidth_extension.h"
 #include "vortex_sound.h"
 
 #include <math.h>
@@ -20,6 +21,9 @@ typedef struct {
     aero_vortex_params vp;
     double speeds[MAX_SPEEDS];
     int nspeeds;
+    double extend;        /* f_top of the bandwidth extension, Hz (0: off) */
+    double ext_from[MAX_SPEEDS];    /* where each speed's extension starts */
+    aero_bandext_info ext[MAX_SPEEDS];
 } vortex_job;
 
 /* one speed: the first member is its task */
@@ -120,8 +124,12 @@ static const aerotex_option vortex_options[] = {
      "texture sample rate", NULL, NULL},
     {"--turbulence", AEROTEX_NUMBER, "i", NAN, 0.0, 2.0, AT(vp.turbulence),
      "rms inflow perturbation / u", NULL, NULL},
-    {"--confinement", AEROTEX_NUMBER, "eps", NAN, 0.0, 5.0,
-     AT(vp.confinement), "vorticity confinement", NULL, NULL},
+    {"--extend", AEROTEX_NUMBER, "Hz", 0.0, 0.0, 96000.0, AT(extend),
+     "spectral bandwidth extension (Chadwick &\nJames 2011) from the "
+     "resolved band up to\nthis (1.1 x it below rate / 2; 0: off)", NULL,
+     NULL},
+    {"--confinement", AEROTEX_NUMBER, "eps", NAN, 0.0, 200.0,
+     AT(vp.confinement), "vorticity confinement eps h / box", NULL, NULL},
     {"--cfl", AEROTEX_NUMBER, "c", NAN, 0.05, 2.0, AT(vp.cfl),
      "step = c h / u", NULL, NULL},
     {"--settle", AEROTEX_NUMBER, "n", NAN, 0.0, 100.0, AT(vp.settle),
@@ -201,6 +209,26 @@ static int run_speeds(vortex_job *j, speed_task *ctx)
     return status;
 }
 
+/* Above the band each speed's grid resolves, the bandwidth extension
+ * (bandwidth_extension.h) on the looped raw texture: the third
+ * derivative's taper runs from 0.2 to 0.35 of the step rate
+ * (vortex_sound.h), the resampling cuts at 0.45 of the lower rate. */
+static void extend_band(vortex_job *j, const speed_task *ctx, int len)
+{
+    const int ns = j->nspeeds;
+    for (int k = 0; k < ns && j->extend > 0.0; k++) {
+        double steprate = 1.0 / ctx[k].st.dt;
+        double f2 = fmin(0.35 * steprate, 0.45 * fmin(steprate, j->job.rate));
+        double f1 = fmin(0.2 * steprate, 0.8 * f2);
+        if (f2 >= j->extend)
+            continue; /* resolved up to the top already */
+        aero_bandext_apply(j->job.raw + k, len, ns, j->job.rate, f1, f2,
+                           j->extend, j->vp.seed * 40503u + (uint32_t)k + 1u,
+                           &j->ext[k]);
+        j->ext_from[k] = j->ext[k].extended ? f1 : 0.0;
+    }
+}
+
 /* the texture's metadata; rms: each channel's, Pa at 1 m */
 static void describe(const vortex_job *j, const speed_task *ctx,
                      const double *rms, aero_texture *tex)
@@ -237,6 +265,19 @@ static void describe(const vortex_job *j, const speed_task *ctx,
     for (int k = 0; k < ns; k++) list[k] = ctx[k].st.gain;
     aerotex_join(buf, sizeof buf, list, ns, "%.6g");
     aero_texture_set(tex, "receiver_gain", buf);
+    if (j->extend > 0.0) {
+        aero_texture_set(tex, "extension", "spectral bandwidth extension "
+                         "(Chadwick & James 2011): above extend_from, noise "
+                         "with the band's envelope and the power law fitted "
+                         "on its top two octaves (extend_slope, |X|^2 ~ "
+                         "f^s), up to extend_top; 0: not extended");
+        aero_texture_setd(tex, "extend_top", j->extend);
+        aerotex_join(buf, sizeof buf, j->ext_from, ns, "%.6g");
+        aero_texture_set(tex, "extend_from", buf);
+        for (int k = 0; k < ns; k++) list[k] = j->ext[k].slope;
+        aerotex_join(buf, sizeof buf, list, ns, "%.6g");
+        aero_texture_set(tex, "extend_slope", buf);
+    }
     aero_texture_set(tex, "solver", "3D incompressible, MAC grid, "
                      "semi-Lagrangian advection, vorticity confinement, "
                      "FFTW + tridiagonal projection");
@@ -249,6 +290,7 @@ static int write_texture(vortex_job *j, const speed_task *ctx)
     double rms[MAX_SPEEDS];
     aero_texture tex;
     int status;
+    extend_band(j, ctx, len);
     if (aero_texture_init_speeds(&tex, len, ns, j->speeds, j->job.rate))
         return aerotex_job_fail(&j->job, "out of memory");
     aerotex_job_fill(&j->job, &tex, len);
@@ -285,6 +327,11 @@ static int vortex_run(int argc, char **argv)
         return 2;
     if (j.vp.n & 1) {
         aerotex_error("vortex: --grid takes an even number of cells");
+        return 2;
+    }
+    if (j.extend > 0.0 && !(j.extend * 1.1 < 0.5 * j.job.rate)) {
+        aerotex_error("vortex: --extend %g Hz: 1.1 x it must stay below half "
+                      "the --rate (%g Hz)", j.extend, 0.5 * j.job.rate);
         return 2;
     }
     if (j.vp.nz < 0)

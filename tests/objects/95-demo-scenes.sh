@@ -43,7 +43,8 @@ EOP
 }
 S="$OUT/scenes"
 # a fire burns louder as its flames run faster: intensity 2 -> 4 m/s (the
-# roar follows [vortex~]'s u^4, hiss and lapping (u/3)^2, crackles u/3)
+# roar is combustion noise of a power ~ u peaking at f_p ~ u, p ~ u^2 (Hurle
+# et al. 1968; Rajaram & Lieuwen 2009), hiss and lapping (u/3)^2, crackles u/3)
 scene_render fire-u2 "aero.fire~ 0.4 2 5" "flicker 0.5" 4
 scene_render fire-u4 "aero.fire~ 0.4 4 5" "flicker 0.5" 4
 judge $ANALYZE leveldiff "$S/fire-u2.wav" "$S/fire-u4.wav" --min 6

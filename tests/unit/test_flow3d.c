@@ -3,7 +3,9 @@
  * becomes divergence-free, a divergence-free field is left alone, a pure
  * gradient is removed), a uniform inflow stays uniform (no spurious
  * vorticity), a perturbed inflow stays finite and bounded with the
- * absorbing top layer, the vorticity of a known shear flow. */
+ * absorbing top layer, the vorticity of a known shear flow, and the
+ * vorticity confinement eps h (Fedkiw, Stam & Jensen 2001): grid-scale
+ * eddies of one speed get the same forcing at n and 2n cells. */
 #include "unit.h"
 #include "aero_air.h"
 #include "aero_util.h"
@@ -227,8 +229,87 @@ static void test_bad_params(void)
                "negative cell size refused: %s", err);
 }
 
+/* rms of the acceleration vorticity confinement gives a random
+   grid-scale field (velocity rms ~1 m/s on 2 m/s) in a 0.1 m box of n
+   cells across: one step with and one without it, from the same state */
+static double confinement_accel(int n, double eps, double length)
+{
+    aero_flow3d a, b;
+    aero_flow3d_params p;
+    char err[256];
+    uint32_t rng = 99;
+    const double dt = 1e-5;
+    double sum = 0.0;
+    long count = 0;
+    memset(&p, 0, sizeof p);
+    p.nx = p.ny = n;
+    p.nz = n + n / 2;
+    p.h = 0.1 / n;
+    p.u_ref = 2.0;
+    p.confinement = eps;
+    p.confinement_length = length;
+    if (aero_flow3d_init(&a, &p, err, sizeof err)) {
+        printf("  init failed: %s\n", err);
+        return -1.0;
+    }
+    p.confinement = 0.0;
+    if (aero_flow3d_init(&b, &p, err, sizeof err)) {
+        aero_flow3d_free(&a);
+        return -1.0;
+    }
+    {
+        size_t uvn = a.plane * (a.nz + 2), wn = a.plane * (a.nz + 1);
+        for (size_t k = 0; k < uvn; k++) {
+            a.u[k] = (float)(1.7 * aero_uniform(&rng));
+            a.v[k] = (float)(1.7 * aero_uniform(&rng));
+        }
+        for (size_t k = 0; k < wn; k++)
+            a.w[k] = (float)(2.0 + 1.7 * aero_uniform(&rng));
+        for (size_t k = 0; k < a.plane; k++) {
+            a.in_u[k] = b.in_u[k] = 0.0f;
+            a.in_v[k] = b.in_v[k] = 0.0f;
+            a.in_w[k] = b.in_w[k] = 2.0f;
+        }
+        aero_flow3d_project(&a);
+        memcpy(b.u, a.u, sizeof(float) * uvn);
+        memcpy(b.v, a.v, sizeof(float) * uvn);
+        memcpy(b.w, a.w, sizeof(float) * wn);
+    }
+    aero_flow3d_step(&a, dt);
+    aero_flow3d_step(&b, dt);
+    /* the lower 3/4 (below the absorbing layer), away from the inflow */
+    for (int k = 2; k < 3 * a.nz / 4; k++)
+        for (size_t c = 0; c < a.plane; c++) {
+            size_t i = (size_t)k * a.plane + c;
+            double d = (a.u[i] - b.u[i]) / dt;
+            sum += d * d;
+            count++;
+        }
+    aero_flow3d_free(&a);
+    aero_flow3d_free(&b);
+    return sqrt(sum / count);
+}
+
+static void test_confinement_scales_with_h(void)
+{
+    double a16, a32, o16, o32;
+    printf("vorticity confinement eps h (FSJ01)\n");
+    a16 = confinement_accel(16, 4.8, 0.1);
+    a32 = confinement_accel(32, 4.8, 0.1);
+    UNIT_CHECK(a16 > 0.0 && a32 / a16 > 0.8 && a32 / a16 < 1.25,
+               "grid-scale eddies at 32 vs 16 cells: forcing ratio %.3f "
+               "(the same: 1 +- 0.25)", a32 / a16);
+    /* the older form, eps U (N x omega), forced them as 1 / h */
+    o16 = confinement_accel(16, 0.3, 0.0);
+    o32 = confinement_accel(32, 0.3, 0.0);
+    UNIT_CHECK(o32 / o16 > 1.6,
+               "without h the forcing ratio is %.3f (~2: grows as 1/h)",
+               o32 / o16);
+}
+
 int main(void)
 {
+    test_confinement_scales_with_h();
     test_projection();
     test_gradient_removed();
     test_uniform_flow();

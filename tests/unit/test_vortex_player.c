@@ -1,7 +1,8 @@
 /* aero: tests of the vortex texture player (src/core/play/vortex_player.c) with
  * synthetic textures: 1/r, the Doppler factor of a moving source and of a
  * moving listener, speed interpolation and the u^4 law below the smallest
- * speed, clip, n sources adding in power, hostile input. */
+ * speed, clip, n sources adding in power, hostile input, the paper's 1/r^3
+ * option and combustion noise through the player. */
 #include "unit.h"
 #include "aero_air.h"
 #include "aero_util.h"
@@ -212,8 +213,66 @@ static void test_hostile(void)
     aero_vortex_player_free(&m);
 }
 
+/* the paper's 1/r^3 (Dobashi et al. 2004, eq. 5) as an option: -18.06 dB
+   per doubling of the distance, the same level at 1 m */
+static void test_falloff(void)
+{
+    const double amp[2] = {1.0, 3.0};
+    aero_vortex_player m;
+    enum { N = 48000 };
+    static float a[N], b[N], c[N];
+    printf("falloff 3: the paper's 1/r^3\n");
+    setup(&m, synthetic(500.0, amp, 16000), 1);
+    UNIT_CHECK(aero_vortex_player_set_falloff(&m, 2) == -1 &&
+                   aero_vortex_player_set_falloff(&m, 0) == -1,
+               "falloff other than 1 or 3 refused");
+    aero_vortex_player_set_listener(&m, 0.0, 1.0, 0.0);
+    render(&m, 3.0f, a, 4800);
+    render(&m, 3.0f, a, N);
+    aero_vortex_player_set_falloff(&m, 3);
+    render(&m, 3.0f, c, N);
+    UNIT_NEAR_REL(rms(c, N), rms(a, N), 0.002, "1/r^3 and 1/r agree at 1 m");
+    aero_vortex_player_set_listener(&m, 0.0, 2.0, 0.0);
+    render(&m, 3.0f, b, 4800);
+    render(&m, 3.0f, b, N);
+    UNIT_NEAR_REL(rms(b, N) / rms(a, N), 0.125, 0.002,
+                  "1/r^3: level ratio at 2 m over 1 m");
+    aero_vortex_player_free(&m);
+}
+
+/* combustion noise through the player: off by default; with a power, the
+   law of combustion_noise.h at the listener, with or without a texture */
+static void test_combustion(void)
+{
+    aero_vortex_player m;
+    enum { N = 8 * 48000 };
+    static float a[N];
+    double xyz[6] = {0.1, 0.0, 0.0, -0.1, 0.0, 0.0}, want, got;
+    printf("combustion noise in the player\n");
+    aero_vortex_player_init(&m, SR, 0, 42);
+    aero_vortex_player_set_count(&m, 2);
+    aero_vortex_player_set_positions(&m, xyz, 2);
+    aero_vortex_player_set_listener(&m, 0.0, 2.0, 0.0);
+    render(&m, 3.0f, a, N);
+    UNIT_CHECK(rms(a, N) == 0.0, "no texture, no power: silent");
+    aero_combustion_set_power_kw(&m.combustion, 30.0);
+    aero_combustion_set_length(&m.combustion, 0.02);
+    render(&m, 3.0f, a, 9600);
+    render(&m, 3.0f, a, N);
+    got = rms(a, N);
+    want = aero_combustion_rms_law(&m.combustion, 3.0, 2.0);
+    UNIT_NEAR_REL(got, want, 0.05, "30 kW at 2 m, 3 m/s: p_rms (Pa)");
+    aero_vortex_player_set_gain_db(&m, -20.0);
+    render(&m, 3.0f, a, 9600);
+    render(&m, 3.0f, a, N);
+    UNIT_NEAR_REL(rms(a, N), 0.1 * want, 0.05, "gain -20 dB scales it");
+    aero_vortex_player_free(&m);
+}
+
 int main(void)
 {
+    test_falloff();
+    test_combustion();
     test_distance_and_speed();
     test_doppler();
     test_clip_and_sources();

@@ -32,6 +32,10 @@ int aero_vortex_player_init(aero_vortex_player *m, double sample_rate,
     m->gain = m->gain_target = 1.0;
     m->clip = 0.0;
     m->r_min = 0.05;
+    m->falloff = 1;
+    if (aero_combustion_init(&m->combustion, m->sample_rate,
+                             m->rng ^ 0x9e3779b9u))
+        return -1;
     aero_vortex_player_set_ramp_ms(m, 20.0);
     m->ear[0] = m->ear_target[0] = stereo ? -0.1 : 0.0;
     m->ear[1] = m->ear_target[1] = 1.0;
@@ -54,12 +58,15 @@ void aero_vortex_player_free(aero_vortex_player *m)
     free(m->xyz_target);
     free(m->dist);
     free(m->rd);
+    aero_combustion_free(&m->combustion);
     memset(m, 0, sizeof *m);
 }
 
 int aero_vortex_player_set_sample_rate(aero_vortex_player *m, double sr)
 {
     if (!(sr >= 1000.0 && sr <= 1e6))
+        return -1;
+    if (aero_combustion_set_sample_rate(&m->combustion, sr))
         return -1;
     if (sr != m->sample_rate) {
         double ms = m->ramp_samples / m->sample_rate * 1000.0;
@@ -188,9 +195,18 @@ int aero_vortex_player_set_ramp_ms(aero_vortex_player *m, double ms)
     return 0;
 }
 
+int aero_vortex_player_set_falloff(aero_vortex_player *m, int exponent)
+{
+    if (exponent != 1 && exponent != 3)
+        return -1;
+    m->falloff = exponent;
+    return 0;
+}
+
 void aero_vortex_player_set_seed(aero_vortex_player *m, uint32_t seed)
 {
     m->rng = seed ? seed : 1;
+    aero_combustion_set_seed(&m->combustion, m->rng ^ 0x9e3779b9u);
     randomise_offsets(m, 0);
     for (int i = 0; i < 2 * m->n; i++)
         m->dist[i] = -1.0; /* read positions restart from the offsets */
@@ -349,10 +365,7 @@ int aero_vortex_player_process(aero_vortex_player *m, const float *speed,
                 m->xyz[3 * i + k] += (m->xyz_target[3 * i + k] - m->xyz[3 * i + k]) * frac;
             m->dist[2 * i] = m->dist[2 * i + 1] = -1.0;
         }
-        m->gain += (m->gain_target - m->gain) * frac;
-        return clamped;
-    }
-    {
+    } else {
         const int F = m->frames, stride = F + PAD_BEFORE + PAD_AFTER;
         const double step = m->rate / m->sample_rate;   /* frames/sample */
         const double delay = m->rate / AERO_C0;         /* frames per m */
@@ -411,6 +424,10 @@ int aero_vortex_player_process(aero_vortex_player *m, const float *speed,
                         continue;
                     g0 = 1.0 / r0;
                     g1 = 1.0 / r1;
+                    if (m->falloff == 3) {
+                        g0 *= g0 * g0;
+                        g1 *= g1 * g1;
+                    }
                     {
                         const float dwa = (float)((wa1 - wa0) * inv_n),
                                     dwb = (float)((wb1 - wb0) * inv_n),
@@ -439,6 +456,19 @@ int aero_vortex_player_process(aero_vortex_player *m, const float *speed,
             if (m->pos[i] >= F)
                 m->pos[i] = fmod(m->pos[i], (double)F);
         }
+    }
+    /* the flame's roar: a monopole at the volumes' centre, at their mean
+       speed */
+    {
+        double c[3] = {0.0, 0.0, 0.0}, u = 0.0;
+        for (int i = 0; i < m->n; i++) {
+            for (int k = 0; k < 3; k++) c[k] += m->xyz[3 * i + k];
+            u += u_in1 + m->speed[i];
+        }
+        for (int k = 0; k < 3; k++) c[k] /= m->n;
+        u /= m->n;
+        if (u > AERO_MACH_LIMIT * AERO_C0) u = AERO_MACH_LIMIT * AERO_C0;
+        aero_combustion_process(&m->combustion, u, c, m->ear, nout, out, n);
     }
     /* microphone limit (on the pressure), then the gain; no NaN leaves */
     {

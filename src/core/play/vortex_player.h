@@ -20,6 +20,11 @@
  *    source moving through still air, heard by a moving listener);
  *  - the texture is a seamless loop (aerotex cross-fades its ends), read
  *    modulo its length;
+ *  - `falloff 3` renders the paper's 1/r^3 (Dobashi et al. 2004, eq. 5)
+ *    instead of the far field's 1/r (the default);
+ *  - combustion noise (combustion_noise.h), off until a `power` is set:
+ *    one monopole of the flame's unsteady heat release at the mean of the
+ *    volumes' positions, its gas speed the mean of their speeds u_i;
  *  - `clip` limits |p| at the microphone (the paper's treatment of
  *    explosions), then `gain` scales the result.
  * Speeds, positions, the listener and the gain glide linearly over
@@ -30,6 +35,7 @@
 #ifndef AERO_VORTEX_PLAYER_H
 #define AERO_VORTEX_PLAYER_H
 
+#include "combustion_noise.h"
 #include "texture.h"
 
 #include <stddef.h>
@@ -45,6 +51,8 @@ typedef struct aero_vortex_player {
     double clip;                /* Pa; 0 = off */
     double ramp_samples, ramp_left;
     double r_min;               /* distances below are clamped, m */
+    int falloff;                /* 1: p ~ 1/r (default), 3: the paper's 1/r^3 */
+    aero_combustion combustion; /* the flame's roar (power 0: off) */
 
     /* texture, channel-major, each channel padded by one frame before and
        three after (wrapped) for the cubic read */
@@ -90,6 +98,8 @@ int aero_vortex_player_set_gain_db(aero_vortex_player *m, double db);
 /* microphone limit, Pa (0: off) */
 int aero_vortex_player_set_clip(aero_vortex_player *m, double pa);
 int aero_vortex_player_set_ramp_ms(aero_vortex_player *m, double ms);
+/* 1 (1/r, the far field) or 3 (the paper's 1/r^3) */
+int aero_vortex_player_set_falloff(aero_vortex_player *m, int exponent);
 /* new random texture offsets from this seed */
 void aero_vortex_player_set_seed(aero_vortex_player *m, uint32_t seed);
 /* takes ownership of a loaded kind=vortex texture (returns -1 and frees

@@ -37,6 +37,7 @@ int aero_flow3d_init(aero_flow3d *s, const aero_flow3d_params *p, char *err,
     }
     if (!(p->h > 0.0) || !(p->nu >= 0.0) || !(p->confinement >= 0.0) ||
         !(p->u_ref >= 0.0) || !(p->sponge >= 0.0 && p->sponge < 1.0) ||
+        !(p->confinement_length >= 0.0) ||
         (p->advection != AERO_F3_SEMI_LAGRANGIAN &&
          p->advection != AERO_F3_MACCORMACK)) {
         snprintf(err, errlen, "bad cell size, viscosity or confinement");
@@ -480,12 +481,15 @@ void aero_flow3d_vorticity(aero_flow3d *s)
         }
 }
 
-/* vorticity confinement (FSJ01 eq. 11-12): a = eps U_ref (N x omega) at
-   the cell centres, averaged onto the faces */
+/* vorticity confinement (FSJ01 eq. 11-12): a = eps (h / L) U_ref
+   (N x omega) at the cell centres, averaged onto the faces */
 static void confine(aero_flow3d *s, double dt)
 {
     const int nx = s->nx, ny = s->ny, nz = s->nz;
-    const float a = (float)(s->p.confinement * s->p.u_ref * dt);
+    const double h_over_l = s->p.confinement_length > 0.0
+                                ? s->p.h / s->p.confinement_length
+                                : 1.0;
+    const float a = (float)(s->p.confinement * h_over_l * s->p.u_ref * dt);
     const size_t pl = s->plane;
     aero_flow3d_vorticity(s);
     /* the force goes into cx, cy, cz (the centred velocity is not needed

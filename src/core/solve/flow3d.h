@@ -10,9 +10,10 @@
  *      step; its numerical diffusion is what step 2 compensates), or
  *      (`advection` AERO_F3_MACCORMACK) its limited MacCormack form
  *      (Selle et al. 2008), second order, for wakes that must shed,
- *   2. vorticity confinement, a = eps U_ref (N x omega), N = grad|omega| /
- *      |grad|omega|| (FSJ01 eq. 11-12, with a velocity scale U_ref so the
- *      force scales as U^2/h like the flow's own accelerations),
+ *   2. vorticity confinement, a = eps (h / L) U_ref (N x omega),
+ *      N = grad|omega| / |grad|omega|| (FSJ01 eq. 11-12: eps h, with a
+ *      velocity scale U_ref and a length L, `confinement_length`, so that
+ *      it is an acceleration; L = 0 drops h / L, the older form),
  *   3. explicit viscous diffusion nu lap(u) (when nu > 0),
  *      and an absorbing layer under the open top (`sponge`): eddies are
  *      damped before they reach it, since backflow through an open
@@ -62,6 +63,13 @@ typedef struct {
                              (0, 0, u_ref) (0: none) */
     int advection;        /* AERO_F3_SEMI_LAGRANGIAN (0) or
                              AERO_F3_MACCORMACK */
+    double confinement_length; /* L > 0: a = eps (h / L) U_ref (N x omega),
+                             FSJ01's eps h made an acceleration by U_ref / L:
+                             grid-scale eddies (omega ~ U / h) get the same
+                             forcing ~ eps U^2 / L at any h, and a resolved
+                             flow's forcing vanishes as h -> 0; 0: the
+                             older a = eps U_ref (N x omega), whose forcing
+                             of grid-scale eddies grows as 1 / h */
 } aero_flow3d_params;
 
 typedef struct aero_flow3d {

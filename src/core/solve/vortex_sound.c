@@ -16,7 +16,7 @@ void aero_vortex_defaults(aero_vortex_params *p)
     p->n = 32;
     p->nz = 48;
     p->nu = AERO_NU;
-    p->confinement = 0.3;
+    p->confinement = 9.6;
     p->turbulence = 0.3;
     p->cfl = 0.5;
     p->settle = 3.0;
@@ -296,6 +296,8 @@ static int open_run(vortex_run *v, const aero_vortex_params *p, double rate,
     fp.h = p->box / p->n;
     fp.nu = p->nu;
     fp.confinement = p->confinement;
+    fp.confinement_length = p->box; /* eps h / box: the same forcing at
+                                       any grid (FSJ01) */
     fp.u_ref = p->speed;
     /* the top 15 %: outside the window (which ends at 95 % and ramps down
        from 65 %), so the absorbing layer is not heard */

@@ -61,7 +61,8 @@ typedef struct {
     int n;               /* cells across the width */
     int nz;              /* cells along the flow (height) */
     double nu;           /* kinematic viscosity, m^2/s */
-    double confinement;  /* vorticity confinement eps */
+    double confinement;  /* vorticity confinement eps: a = eps (h / box)
+                            u (N x omega) (flow3d.h) */
     double turbulence;   /* rms inflow perturbation / u */
     double cfl;          /* step = cfl h / u */
     double settle;       /* start-up discarded, in flow-through times */
@@ -75,7 +76,8 @@ typedef struct {
     void (*plan_lock)(void *ctx, int on);
 } aero_vortex_params;
 
-/* defaults: u 4 m/s, box 0.1 m, 32 x 32 x 48 cells, air, eps 0.3,
+/* defaults: u 4 m/s, box 0.1 m, 32 x 32 x 48 cells, air, eps 9.6 (the
+   forcing eps 0.3 had at 32 cells before it scaled with h),
    turbulence 0.3, cfl 0.5, settle 3, 8 receivers at 0 deg, window, seed 1 */
 void aero_vortex_defaults(aero_vortex_params *p);
 

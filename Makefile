@@ -258,7 +258,7 @@ clean-aero:
 	rm -rf $(BUILD) $(BUILD).log $(double.externals) $(double.lib)
 
 # ============================================================================
-# --- robustness (issue 10): sanitizers, fuzzing, long runs, globals --------
+# --- robustness: sanitizers, fuzzing, long runs, globals --------
 #   make check-asan   unit tests + Pd batch tests under ASan/UBSan (gcc),
 #                     instrumented externals loaded into Pd with libasan
 #                     preloaded, + valgrind of the core unit tests

@@ -1,5 +1,5 @@
 #!/bin/sh
-# aero: field auralization benchmark (paper 002; called by `make bench`).
+# aero: field auralization benchmark (Shin and Bajaj; called by `make bench`).
 # The paper's table (SGI Onyx2): preprocessing 6200 s per frame per source
 # type at 64^3, 236 us per audio sample. Targets: <= 0.1 s per frame,
 # <= 2 us per sample. Measured with `aerotex auralize` on the synthetic

@@ -1,5 +1,5 @@
 #!/bin/sh
-# make bench, issue 11: 3D object textures (paper 000, the 3D case).
+# make bench: 3D object textures (Dobashi et al. 2003, the 3D case).
 # 1. the sphere and club textures (textures/sphere.wav and club.wav's
 #    commands, to build/bench/), wall and CPU time, against the paper's
 #    "10 hours (3D simulations)" on a 1.3 GHz Pentium III (target <= 15 min

@@ -135,12 +135,12 @@ fi
 for b in bench/texture.sh bench/field.sh; do
     [ -f "$b" ] && sh "$b"
 done
-# [treebranch~] on the shipped trees against paper 003's Table I
+# [treebranch~] on the shipped trees against Matsuyama et al. 2005's Table I
 sh bench/treebranch.sh
 # [leafwave~] on the paper's large tree, and both tree objects together
 sh bench/leafwave.sh
-# vortex sound (issue 6): texture set and [vortex~] per volume
+# vortex sound: texture set and [vortex~] per volume
 [ -f bench/vortex.sh ] && sh bench/vortex.sh
-# 3D object textures (issue 11): sphere and club, and [body~] per body
+# 3D object textures: sphere and club, and [body~] per body
 [ -f bench/object.sh ] && sh bench/object.sh
 exit 0

@@ -1,6 +1,6 @@
 #!/bin/sh
 # make bench (called by bench/run.sh): cost of [treebranch~] on the shipped
-# trees, against paper 003's Table I (branch sound: 63.8 s for the
+# trees, against Matsuyama et al. 2005's Table I (branch sound: 63.8 s for the
 # (123 branches, 4860 leaves) tree and 578.2 s for the (1160, 16380) tree
 # per 30 frames = 1 s of sound, Pentium 4 2.53 GHz). One Pd process (one
 # core), batch mode, 48 kHz, a gusting wind (metro every 10 ms -> [line~]);

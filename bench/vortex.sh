@@ -1,5 +1,5 @@
 #!/bin/sh
-# make bench, issue 6: vortex sound (paper 004).
+# make bench: vortex sound (Dobashi et al. 2004).
 # 1. the texture set Q(u, t) of 8 speeds (textures/fire.wav's command, to
 #    build/bench/fire.wav), wall and CPU time, against the paper's "several
 #    minutes" (target <= 2 min);

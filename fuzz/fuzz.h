@@ -1,4 +1,4 @@
-/* aero fuzz harnesses (issue 10): what every harness shares.
+/* aero fuzz harnesses: what every harness shares.
  *
  * A harness defines LLVMFuzzerTestOneInput and is built two ways:
  *   - by fuzz/run.sh with clang -fsanitize=fuzzer,address,undefined

@@ -123,7 +123,7 @@ fi
 # The published laws, written here independently of src/core:
 # Re = rho U d / mu (rho 1.225, mu 1.81e-5); St: Williamson (1996)
 # -3.3265/Re + 0.1816 + 1.6e-4 Re for Re < 178, Roshko 0.198 (1 - 19.7/Re)
-# for Re > 260 (DESIGN.md); f = St U / d.
+# for Re > 260 (Roshko 1954); f = St U / d.
 tone_hz() {
     awk -v u="$1" -v d="$2" 'BEGIN {
         re = 1.225 * u * d / 1.81e-5

@@ -21,12 +21,12 @@ $T aeolian --shape polygon textures/sword.poly --diameter 0.04 --speed 10 \
 # cavity 2 cm long, 1 cm deep in a wall, flow at 10 m/s
 $T cavity --length 0.02 --depth 0.01 --speed 10 --grid 48 \
     -o textures/cavity.wav
-# fire / jet vortex sound (paper 004): a 10 cm box of turbulent air, 8
-# average speeds 1..16 m/s, Howe's vortex sound at 1 m, one channel each
+# fire / jet vortex sound (Dobashi et al. 2004): a 10 cm box of turbulent air,
+# 8 average speeds 1..16 m/s, Howe's vortex sound at 1 m, one channel each
 $T vortex --speeds 1,2,3,4,6,8,12,16 --box 0.1 --grid 32 --duration 0.5 \
     --rate 32000 --extend 14000 \
     -o textures/fire.wav
-# 3D object textures (paper 000, 3D case): the paper's sphere (radius
+# 3D object textures (Dobashi et al. 2003, 3D case): the paper's sphere (radius
 # 5 cm) and a club (handle 12.5 mm, tip 30 mm, 0.8 m) with 10 regions and
 # 5 flow directions from its axis (0, 45, 90, 135, 180 deg)
 $T object --shape sphere --radius 0.05 --speed 10 --grid 10 --duration 0.6 \

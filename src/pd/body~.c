@@ -1,7 +1,7 @@
 /* [body~]: the aeolian sound of a 3D body that moves and turns (a sphere
  * whirled on a wire, a club, the ends of a thrown stick), played from an
- * object texture made by `aerotex object` (paper 000, the 3D case). Thin
- * Pd wrapper around src/core/play/body_texture: it parses flags, routes
+ * object texture made by `aerotex object` (Dobashi et al. 2003, the 3D case).
+ * Thin Pd wrapper around src/core/play/body_texture: it parses flags, routes
  * messages to setters and calls process from perform.
  *
  *   [body~ -texture sphere -stereo -scale 1 -exponent 3 -gain 0]

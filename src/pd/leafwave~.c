@@ -1,6 +1,6 @@
-/* [leafwave~]: the leaves of a tree in the wind (paper 003): collisions and
- * friction between neighbouring leaves played from pink wave tables. Thin
- * Pd wrapper around src/core/play/leafwave.
+/* [leafwave~]: the leaves of a tree in the wind (Matsuyama et al. 2005):
+ * collisions and friction between neighbouring leaves played from pink wave
+ * tables. Thin Pd wrapper around src/core/play/leafwave.
  *
  *   [leafwave~ trees/small.tree -stereo -seed 1 -gain 0 ...]
  *   inlet 1 (signal or float): wind speed along the wind's direction (+x

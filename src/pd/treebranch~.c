@@ -1,5 +1,5 @@
-/* [treebranch~]: the sound of a tree's branches in the wind (paper 003).
- * Thin Pd wrapper around src/core/play/treebranch.
+/* [treebranch~]: the sound of a tree's branches in the wind (Matsuyama et al.
+ * 2005). Thin Pd wrapper around src/core/play/treebranch.
  *
  *   [treebranch~ <treefile> -stereo -seed 1 -listener 0 -10 1.7]
  *   inlet 1 (signal or float): wind speed along the wind direction, m/s

@@ -1,6 +1,6 @@
 /* [vortex~]: vortex sound of turbulent air (fire, flamethrowers, jets,
  * explosions) from a vortex texture Q(u, t) made by `aerotex vortex`
- * (paper 004), plus the combustion noise of a flame (`power` in kW).
+ * (Dobashi et al. 2004), plus the combustion noise of a flame (`power` in kW).
  * Thin Pd wrapper around src/core/play/vortex_player.
  *
  *   [vortex~ -texture fire -n 8 -stereo -power 30 -length 0.02 -clip 20]

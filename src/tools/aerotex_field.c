@@ -1,6 +1,7 @@
 /* aerotex field-demo and aerotex auralize: field auralization of volume
- * data offline (paper 002). The method is in src/core/play/field_render.h, the
- * volume format in src/core/common/field_volume.h. */
+ * data offline (Shin and Bajaj). The method is in
+ * src/core/solve/field_prepare.h, the volume format in
+ * src/core/common/field_volume.h. */
 #include "aerotex.h"
 #include "field_render.h"
 
@@ -459,7 +460,7 @@ static int write_wav(const char *file, const float *pcm, long total,
         aerotex_error("can't write %s: %s", file, sf_strerror(NULL));
         return 1;
     }
-    sf_set_string(f, SF_STR_COMMENT, "aerotex auralize (paper 002), "
+    sf_set_string(f, SF_STR_COMMENT, "aerotex auralize (Shin and Bajaj), "
                   "sound pressure in Pa");
     sf_writef_float(f, pcm, total);
     sf_close(f);
@@ -556,6 +557,6 @@ static int auralize_run(int argc, char **argv)
 
 const aerotex_command aerotex_auralize_command = {
     "auralize", "DIR --path FILE -o OUT.wav",
-    "field auralization (paper 002): the sound of volume DIR heard along\n"
+    "field auralization (Shin and Bajaj): the sound of volume DIR heard along\n"
     "a listener path",
     auralize_options, sizeof(auralize_job), auralize_init, auralize_run};

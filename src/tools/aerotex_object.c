@@ -1,5 +1,5 @@
-/* aerotex object: 3D object textures (paper 000, the 3D case): the sound
- * source function of each region of a body, per sampled flow direction,
+/* aerotex object: 3D object textures (Dobashi et al. 2003, the 3D case): the
+ * sound source function of each region of a body, per sampled flow direction,
  * the directions simulated in parallel. The physics is in
  * src/core/solve/body_flow.c, the shapes in src/core/common/body_shape.c. */
 #include "aerotex.h"
@@ -356,7 +356,7 @@ static int object_run(int argc, char **argv)
 
 const aerotex_command aerotex_object_command = {
     "object", "--shape <sphere|capsule|club> | --mesh FILE -o FILE.wav",
-    "3D object texture (paper 000, 3D case): 3D incompressible flow past\n"
-    "a body (immersed boundary), the force on each of n regions, g_l =\n"
-    "dF_l/dt per sampled direction; played by [body~]",
+    "3D object texture (Dobashi et al. 2003, 3D case): 3D incompressible\n"
+    "flow past a body (immersed boundary), the force on each of n regions,\n"
+    "g_l = dF_l/dt per sampled direction; played by [body~]",
     object_options, sizeof(object_job), NULL, object_run};

@@ -1,6 +1,6 @@
 /* aerotex vortex: vortex-sound textures Q(u, t) of a turbulent box of air
- * (paper 004), one channel per average flow speed, the speeds simulated in
- * parallel. The physics is in src/core/solve/vortex_sound.c. */
+ * (Dobashi et al. 2004), one channel per average flow speed, the speeds
+ * simulated in parallel. The physics is in src/core/solve/vortex_sound.c. */
 #include "aerotex.h"
 #include "aero_air.h"
 #include "texture.h"
@@ -351,7 +351,7 @@ static int vortex_run(int argc, char **argv)
 const aerotex_command aerotex_vortex_command = {
     "vortex", "--speeds <u1,...,uN> -o FILE.wav",
     "vortex-sound texture Q(u, t) of a turbulent box of air (fire, jets;\n"
-    "paper 004): 3D incompressible flow with a randomly perturbed inflow\n"
-    "at the bottom, periodic sides, open top; Howe's vortex sound at 1 m,\n"
-    "one channel per speed (p = Q / r)",
+    "Dobashi et al. 2004): 3D incompressible flow with a randomly\n"
+    "perturbed inflow at the bottom, periodic sides, open top; Howe's\n"
+    "vortex sound at 1 m, one channel per speed (p = Q / r)",
     vortex_options, sizeof(vortex_job), vortex_init, vortex_run};

@@ -1,5 +1,5 @@
 #!/bin/sh
-# aero: `make check-libpd` (issue 20): aero embedded in libpd 0.16.1, the
+# aero: `make check-libpd`: aero embedded in libpd 0.16.1, the
 # way a game, an app or a plugin (Unity, Godot, plugdata) uses it. Builds
 # libpd from ../shared/vendor into build/libpd/ (single- and
 # multi-instance, once: tests/libpd/build-libpd.sh), links aero statically
@@ -267,7 +267,7 @@ done
 # and hides every race). Races inside Pd itself are suppressed by name
 # (tests/libpd/pd-races.supp); aero must add none. The negative control
 # builds [treebranch~]'s core with -DAERO_FFTW_UNSERIALISED (FFTW's planner
-# left unserialised, as before issue 20): helgrind must report races in FFTW.
+# left unserialised): helgrind must report races in FFTW.
 section "four libpd instances in four threads (helgrind --fair-sched=yes)"
 T=$OUT/threads
 if host_build multi "$T" tests/libpd/threads.c; then

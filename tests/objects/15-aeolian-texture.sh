@@ -1,4 +1,4 @@
-# --- [aeolian~] texture mode: moving sticks from CFD textures (paper 000) ---
+# --- [aeolian~] texture mode: moving sticks from CFD textures (Dobashi et al. 2003) ---
 section "[aeolian~]: texture mode, moving and turning sticks"
 
 # What the textures measured when they were made (aerotex info): the

@@ -39,7 +39,7 @@ judge $ANALYZE banddiff "$OUT/cav-u10-l0.02.wav" $(band_around "$f1" 0.1) \
     $(band_around "$f2" 0.1) --max 10
 judge $ANALYZE leveldiff "$OUT/cav-u10-l0.02.wav" "$OUT/cav-locked.wav" --min 10
 
-# 3. level: +12 dB per doubling of speed (amplitude ~ U^2, DESIGN.md);
+# 3. level: +12 dB per doubling of speed (amplitude ~ U^2);
 # the paper's exponent 4 on request gives +24 dB
 pd_render cav-u20 "cavity~ -L 0.02 -D 0.01 -W 0.05" 1 3000 "; aero-speed 20"
 judge $ANALYZE leveldiff "$OUT/cav-u10-l0.02.wav" "$OUT/cav-u20.wav" --expect 12 --tol 1.5

@@ -1,4 +1,4 @@
-# --- [body~]: 3D bodies from object textures (paper 000, 3D case) ---------
+# --- [body~]: 3D bodies from object textures (Dobashi et al. 2003, 3D case) ---------
 section "[body~]: a sphere and a club from 3D object textures"
 
 texture_meta() { # FILE KEY: a value of a texture's metadata
@@ -82,8 +82,8 @@ judge $ANALYZE clicks "$OUT/bd-whirl-real.wav" --ch 1 --max 3
 
 # 3. the club (10 regions along a tapered body) broadside in a 10 m/s
 #    wind peaks lower than a stick of its tip diameter in the same wind
-#    (paper 000, Fig. 10: "low frequency components are dominant"): the
-#    tip's 3D wake sheds slower than the 2D cylinder texture's (St 0.25).
+#    (Dobashi et al. 2003, Fig. 10: "low frequency components are dominant"):
+#    the tip's 3D wake sheds slower than the 2D cylinder texture's (St 0.25).
 #    The spectral peak, smoothed over 5 Hz: the 3D texture also holds a
 #    broadband rest up to ~700 Hz that moves its centroid up
 #    (the club's axis, body z, turned -90 deg about x onto +y: across the

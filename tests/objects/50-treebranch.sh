@@ -1,5 +1,5 @@
 # --- [treebranch~] in real Pd -------------------------------------------------
-section "[treebranch~]: branch sound of a tree in the wind (paper 003) in Pd"
+section "[treebranch~]: branch sound of a tree in the wind (Matsuyama et al. 2005) in Pd"
 
 # One vertical rod (1 m, diameter d) at the origin: the simplest tree. A
 # stiffness of 1000 keeps it still, so the wind it feels is the wind given.
@@ -8,7 +8,7 @@ rod_tree() { # NAME D
         "$2" "$2" >"$OUT/$1.tree"
 }
 # the published law, written here independently of src/core: Roshko's
-# St = 0.198 (1 - 19.7/Re) (Re > 260; DESIGN.md), f = St U / d
+# St = 0.198 (1 - 19.7/Re) (Re > 260; Roshko 1954), f = St U / d
 tone_hz() {
     awk -v u="$1" -v d="$2" 'BEGIN { re = 1.225 * u * d / 1.81e-5
         printf "%.6g\n", 0.198 * (1 - 19.7 / re) * u / d }'
@@ -38,7 +38,7 @@ judge $ANALYZE peak "$OUT/tb-peak-vec.wav" --expect "$(tone_hz 10 0.01)" \
 pd_render tb-along "$TB -listener 5 0 0.5" 1 1000 "; aero-speed 10; aero-obj wind 0 0 1"
 judge $ANALYZE level "$OUT/tb-along.wav" --max -100
 
-# 2. level: +18 dB per doubling of the wind (amplitude ~ U^3, DESIGN.md; the
+# 2. level: +18 dB per doubling of the wind (amplitude ~ U^3, Curle 1955; the
 # paper's I ~ U^6 read as an amplitude would give +36)
 pd_render tb-u5 "$TB -listener 0 -5 0.5" 1 4000 "; aero-speed 5"
 pd_render tb-u20 "$TB -listener 0 -5 0.5" 1 4000 "; aero-speed 20"

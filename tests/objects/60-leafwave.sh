@@ -1,5 +1,5 @@
 # --- [leafwave~] in real Pd --------------------------------------------------
-section "[leafwave~]: leaves of a tree in the wind (paper 003) in Pd"
+section "[leafwave~]: leaves of a tree in the wind (Matsuyama et al. 2005) in Pd"
 
 # tests/data/leafwave-small.tree: 32 branches, 400 leaves of 8 x 5 cm (its
 # header says how it was made); the trunk runs from z = 0 to 3 m, so its

@@ -1,5 +1,5 @@
 # --- [fieldsound~] in real Pd ------------------------------------------------
-section "[fieldsound~]: field auralization (paper 002) in Pd"
+section "[fieldsound~]: field auralization (Shin and Bajaj) in Pd"
 
 # [fieldsound~] has no signal inlet: pd_render's [line~] goes into a
 # [snapshot~] that is never banged, whose (control) outlet is the chain.

@@ -1,4 +1,4 @@
-# --- hostile input for every object (issue 10), from tests/robust/objects.txt
+# --- hostile input for every object, from tests/robust/objects.txt
 # Per configuration line and sample rate (22050 ... 192000 Hz) one Pd run
 # of ~1 s of logical time with, for the object:
 #   - one instance per block size 1, 2, 4, ... 8192 ([block~ N]

@@ -69,7 +69,7 @@ else
     pass "aero.fire~: seed 7 renders another fire"
 fi
 # a tree in a steady wind: the branches alone (leaves muted) follow U^3,
-# +18 dB per doubling of the wind (DESIGN.md); the whole tree gets louder
+# +18 dB per doubling of the wind (Curle 1955); the whole tree gets louder
 scene_render tree-u5 "aero.tree~ medium 5" "gust 0" 4
 scene_render tree-u10 "aero.tree~ medium 10" "gust 0" 4
 scene_render tree-b5 "aero.tree~ medium 5" "gust 0 \\, leaves -200" 4

@@ -1,12 +1,12 @@
-# --- fuzz regressions (issue 10): every fuzz harness of fuzz/targets.txt,
+# --- fuzz regressions: every fuzz harness of fuzz/targets.txt,
 # built without libFuzzer (-DFUZZ_REPLAY), replays its shipped seeds and
 # every input a fuzz run ever broke it with (fuzz/regress/NAME/*). Each
 # input must load or be refused with a message, never break an invariant
 # of the harness (finite output, consistent sizes) or crash.
 section "fuzz regressions: seeds and saved crashes replayed (fuzz/targets.txt)"
-# The harnesses and the core are compiled here with ASan and UBSan (float-to-int
-# overflow included), so that undefined behaviour a fuzz run once found
-# stays caught, as do overflows and leaks.
+# The harnesses and the core are compiled here with ASan and UBSan
+# (float-to-int overflow included), so that undefined behaviour a fuzz run once
+# found stays caught, as do overflows and leaks.
 replay_flags=${FUZZ_REPLAY_FLAGS:--fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all}
 replay_dir=build/fuzz-replay
 rm -rf "$replay_dir/core" # no object of a source that is gone

@@ -1,4 +1,4 @@
-# --- multi-instance safety (issue 10): no writable globals in src/ ---------
+# --- multi-instance safety: no writable globals in src/ ---------
 section "no writable globals in src/ (tests/robust/globals.sh)"
 if out=$(sh tests/robust/globals.sh 2>&1); then
     pass "$out"

@@ -1,4 +1,4 @@
-# --- the help patches as a Pd user sees them (issue 18) ----------------------
+# --- the help patches as a Pd user sees them ----------------------
 # tests/gui/check-help.sh opens each help patch in the real Pd GUI under
 # Xvfb; its plugin measures every window and subpatch window (overlapping
 # boxes, cords through text, content outside the window) and saves a

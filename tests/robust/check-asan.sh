@@ -1,5 +1,5 @@
 #!/bin/sh
-# aero (issue 10): the whole test suite (tests/run.sh) against the
+# aero: the whole test suite (tests/run.sh) against the
 # ASan/UBSan build of `make asan`: instrumented unit tests, analyser and
 # aerotex, and instrumented externals loaded into the stock Pd with the
 # sanitizer runtime preloaded. Any sanitizer report fails the run, even one

@@ -1,5 +1,5 @@
 #!/bin/sh
-# aero (issue 10): no writable globals in src/, so that two Pd instances
+# aero: no writable globals in src/, so that two Pd instances
 # (libpd with PDINSTANCE, or two patches) never share mutable state
 # through aero. Reads the symbol tables of the compiled objects of src/core
 # and src/pd (objdump -t) and fails on any data object in a writable
@@ -14,10 +14,10 @@
 #   aero_data_dir in src/pd/aero_pd.o  the data folder a libpd host sets
 #                       once with aero_set_data_path() (aero.h), before
 #                       opening patches; the one process setting of aero.
-# (FFTW's planner is serialised by FFTW's own lock: src/core/common/aero_fftw.h.)
-# Usage: globals.sh [OBJECT...] (default: build/core/*/*.o src/pd/*.o);
-# exit 1 when a writable global appears. Run by `make check-globals` and
-# by `make check` (tests/objects/96-globals.sh, with a negative control).
+# (FFTW's planner is serialised by FFTW's own lock:
+# src/core/common/aero_fftw.h.) Usage: globals.sh [OBJECT...] (default:
+# build/core/*/*.o src/pd/*.o); exit 1 when a writable global appears. Run by
+# `make check-globals` and by `make check` (tests/objects/96-globals.sh, with a negative control).
 set -u
 [ $# -eq 0 ] && set -- build/core/*/*.o src/pd/*.o
 found=0

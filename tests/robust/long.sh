@@ -1,5 +1,5 @@
 #!/bin/sh
-# aero: `make check-long` (issue 10): each line of tests/robust/long.txt
+# aero: `make check-long`: each line of tests/robust/long.txt
 # renders LONG_SECONDS (default 3600) of audio in one batch-mode Pd run,
 # with varying input. The patch prints every minute of audio: the CPU time
 # that minute took ([cputime], independent of other jobs' wall time) and

@@ -1,5 +1,5 @@
 #!/bin/sh
-# aero (issue 10): the core unit tests (build/tests/test_*, the normal -O3
+# aero: the core unit tests (build/tests/test_*, the normal -O3
 # build) under valgrind memcheck: no invalid read/write, no use of
 # uninitialised values, no definite or indirect leak. "Possibly lost" and
 # "still reachable" blocks are libgomp's thread pool and are not errors.

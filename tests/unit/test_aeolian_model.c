@@ -1,6 +1,6 @@
-/* Unit tests of src/core/common/strouhal and src/core/play/aeolian_model: the published
- * laws (written here again, independently of the core) and the behaviour at
- * the edges: silence below onset, bad input, block-size independence. */
+/* Unit tests of src/core/common/strouhal and src/core/play/aeolian_model: the
+ * published laws (written here again, independently of the core) and the
+ * behaviour at the edges: silence below onset, bad input, block-size independence. */
 #include "aeolian_model.h"
 #include "strouhal.h"
 #include "unit.h"
@@ -11,7 +11,7 @@
 
 #define SR 48000.0
 
-/* Williamson (1996) laminar fit and Roshko's form (paper 001, DESIGN.md) */
+/* Williamson (1996) laminar fit and Roshko's form (Roshko 1954, as the Pd aeroacoustics report uses it) */
 static double williamson(double re) { return -3.3265 / re + 0.1816 + 1.6e-4 * re; }
 static double roshko(double re) { return 0.198 * (1.0 - 19.7 / re); }
 

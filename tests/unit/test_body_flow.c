@@ -1,6 +1,6 @@
-/* Unit tests of src/core/common/body_shape and src/core/solve/body_flow: closed 3D
- * bodies (analytic shapes and meshes, with the errors a bad mesh must
- * give), and the 3D flow past a sphere against published values. */
+/* Unit tests of src/core/common/body_shape and src/core/solve/body_flow:
+ * closed 3D bodies (analytic shapes and meshes, with the errors a bad mesh
+ * must give), and the 3D flow past a sphere against published values. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -122,7 +122,7 @@ static void shapes(void)
                "a flat (zero-volume) mesh: %s", err);
 }
 
-/* the sphere of paper 000 (radius 5 cm) at v0 = 10 m/s on a coarse grid */
+/* the sphere of Dobashi et al. 2003 (radius 5 cm) at v0 = 10 m/s on a coarse grid */
 static void sphere_flow(void)
 {
     aero_body_shape b;

@@ -1,10 +1,10 @@
-/* aero: the 2D flow over a cavity (src/core/solve/flow2d.c, shape2d.c) oscillates
- * by itself at a Rossiter mode, as `aerotex cavity` relies on.
+/* aero: the 2D flow over a cavity (src/core/solve/flow2d.c, shape2d.c)
+ * oscillates by itself at a Rossiter mode, as `aerotex cavity` relies on.
  *
  * Reference: Rossiter (1964), "Wind-tunnel experiments on the flow over
  * rectangular cavities at subsonic and transonic speeds", ARC R&M 3438:
  *     f_m = (U/L) (m - alpha) / (M + 1/kappa),  alpha = 0.25, kappa = 0.57,
- * M = U/c0 (also DESIGN.md, "Cavity tone"). 2D incompressible simulations
+ * M = U/c0. 2D incompressible simulations
  * of an open cavity at Re_L ~ 1e4 oscillate in the shear-layer mode (e.g.
  * Rowley, Colonius & Basu 2002, J. Fluid Mech. 455); at L/D = 2 the mode
  * that wins here is m = 2 (~490 Hz for L = 2 cm at 10 m/s).

@@ -1,5 +1,5 @@
-/* Unit tests of src/core/common/field_volume and field_sound (paper 002): the
- * volume format and its errors, the 1/r law and the arrival delay r/c0 of
+/* Unit tests of src/core/common/field_volume and field_sound (Shin and Bajaj):
+ * the volume format and its errors, the 1/r law and the arrival delay r/c0 of
  * a pulsating point, silence until the radiation arrives, the dipole class
  * of a translating density, the chunk polynomials against the per-sample
  * sum. Files go to build/tests/field/. */

@@ -1,7 +1,7 @@
-/* unit tests of src/core/play/leafwave.c: the leaves of paper 003 (wave tables
- * f_i = fm 2^(i/N), the per-pair state machine of fig. 12, collisions as
- * onsets, wind dependence, determinism by seed, neighbour lists by hashing
- * against brute force, 1/r and the cardioid microphone). */
+/* unit tests of src/core/play/leafwave.c: the leaves of Matsuyama et al. 2005
+ * (wave tables f_i = fm 2^(i/N), the per-pair state machine of fig. 12,
+ * collisions as onsets, wind dependence, determinism by seed, neighbour lists
+ * by hashing against brute force, 1/r and the cardioid microphone). */
 #include "../../src/core/play/leafwave.h"
 #include "unit.h"
 

@@ -1,4 +1,4 @@
-/* aero (issue 10): two instances of each core, run interleaved block by
+/* aero: two instances of each core, run interleaved block by
  * block with different settings, give exactly (bit for bit) what each
  * gives alone: no state is shared through globals or statics. A new core
  * joins with one line in `cores` below.

@@ -1,6 +1,6 @@
-/* unit tests of src/core/play/tree_motion.c: the cantilever springs of paper 003
- * (eqs. 1-4), accumulation from the root, independence from the caller's
- * step size, determinism from the seed. */
+/* unit tests of src/core/play/tree_motion.c: the cantilever springs of
+ * Matsuyama et al. 2005 (eqs. 1-4), accumulation from the root, independence
+ * from the caller's step size, determinism from the seed. */
 #include "../../src/core/common/tree.h"
 #include "../../src/core/play/tree_motion.h"
 #include "unit.h"

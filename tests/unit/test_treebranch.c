@@ -1,5 +1,5 @@
-/* unit tests of src/core/play/treebranch.c: branch sound of paper 003 with the
- * corrections of DESIGN.md (amplitude ~ U^3 sqrt(l) / r). */
+/* unit tests of src/core/play/treebranch.c: branch sound of Matsuyama et al.
+ * 2005 with the physics corrected (amplitude ~ U^3 sqrt(l) / r, Curle 1955). */
 #include "../../src/core/common/aero_air.h"
 #include "../../src/core/common/strouhal.h"
 #include "../../src/core/play/treebranch.h"
@@ -88,7 +88,7 @@ static void test_strouhal_peak(void)
     }
 }
 
-/* amplitude ~ U^3 (DESIGN.md): +18.06 dB per doubling; the paper's
+/* amplitude ~ U^3 (Curle 1955): +18.06 dB per doubling; the paper's
    I ~ U^6 applied to amplitudes would give +36 */
 static void test_speed_law(void)
 {

@@ -1,6 +1,6 @@
 /* aero: physical constants of air shared by every module (SI units).
- * Values as agreed in DESIGN.md: rho = 1.225 kg/m^3, mu = 1.81e-5 Pa s,
- * c0 = 343 m/s (dry air at about 20 degC). */
+ * The project's one set of values for air: rho = 1.225 kg/m^3, mu = 1.81e-5 Pa
+ * s, c0 = 343 m/s (dry air at about 20 degC). */
 #ifndef AERO_AIR_H
 #define AERO_AIR_H
 

@@ -1,5 +1,5 @@
-/* aero: closed 3D bodies for the 3D object textures (paper 000, sec. 5.2.1:
- * a club, a sphere on a wire, the ends of a thrown stick).
+/* aero: closed 3D bodies for the 3D object textures (Dobashi et al. 2003, sec.
+ * 5.2.1: a club, a sphere on a wire, the ends of a thrown stick).
  *
  * Body coordinates (metres):
  *   sphere   radius r, centred at the origin;

@@ -296,7 +296,7 @@ int aero_volume_write_header(const aero_volume_info *v, char *err,
         return -1;
     }
     fprintf(f, "aero-volume 1\n"
-            "# field volume for aero (paper 002): raw little-endian float32\n"
+            "# field volume for aero (Shin and Bajaj): raw little-endian float32\n"
             "dims %d %d %d\nspacing %.9g %.9g %.9g\norigin %.9g %.9g %.9g\n"
             "rate %.9g\nframes %d\nfields %s\nfiles %s\n",
             v->nx, v->ny, v->nz, v->spacing[0], v->spacing[1], v->spacing[2],

@@ -1,4 +1,4 @@
-/* aero: time-varying 3D volume data for field auralization (paper 002).
+/* aero: time-varying 3D volume data for field auralization (Shin and Bajaj).
  *
  * On disk a volume is a directory:
  *

@@ -130,7 +130,7 @@ int aero_shape2d_polygon(aero_shape2d *s, const double *x, const double *y,
         s->py[i] = (y[i] - cy) * scale;
     }
     s->size = (xmax - xmin) * scale;
-    /* extreme coordinates (1e163 beside 30, found by fuzzing) made the
+    /* extreme coordinates (1e163 beside 30) made the
      * radius Inf and the solver's grid nonsense: the outline must fit in
      * a circle of 1000 widths */
     double r = aero_shape2d_radius(s);

@@ -1,6 +1,7 @@
 /* aero: vortex shedding from a circular cylinder as a function of the
- * Reynolds number, the laws shared by every object that sheds (DESIGN.md,
- * papers 000 and 001). */
+ * Reynolds number, the laws shared by every object that sheds (Roshko
+ * 1954, Williamson 1996; as Dobashi et al. 2003 and the Pd aeroacoustics
+ * report use them). */
 #ifndef AERO_STROUHAL_H
 #define AERO_STROUHAL_H
 
@@ -8,13 +9,13 @@
  * 1987; Williamson 1996). Below it there is no tone. */
 #define AERO_RE_ONSET 47.0
 
-/* Re = rho U d / mu for air (DESIGN.md constants). */
+/* Re = rho U d / mu for air (aero_air.h). */
 double aero_reynolds(double speed, double diameter);
 
 /* Strouhal number St(Re) of a circular cylinder:
  *   Williamson (1996) laminar fit  St = -3.3265/Re + 0.1816 + 1.6e-4 Re
  *     (valid 49 < Re < 178),
- *   Roshko's form  St = 0.198 (1 - 19.7/Re)  above (as in paper 001),
+ *   Roshko's form  St = 0.198 (1 - 19.7/Re)  above (as the Pd report has it),
  * blended with a smoothstep between Re 170 and 260, where the wake turns
  * three-dimensional and St really does drop (Williamson's mode A).
  * Below onset it returns the fit's value at onset (the tone is silent there). */

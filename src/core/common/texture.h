@@ -4,9 +4,9 @@
  * for 2D simulations) at the base speed v0, channels x, y, z per sampled
  * direction (channel 3 k + c is component c of direction k), in the flow
  * frame: x along the flow (drag), y across it (lift), z along the body axis.
- * A vortex texture (kind=vortex, paper 004) instead holds one channel per
- * average flow speed: Q(u_k, t), the sound pressure at 1 m (Pa m), with
- * the speeds in the metadata `speeds=u1,u2,...` (increasing).
+ * A vortex texture (kind=vortex, Dobashi et al. 2004) instead holds one
+ * channel per average flow speed: Q(u_k, t), the sound pressure at 1 m (Pa m),
+ * with the speeds in the metadata `speeds=u1,u2,...` (increasing).
  * The comment string holds the metadata as "key=value" lines (see
  * textures/README.md). The file is a seamless loop: its ends are already
  * cross-faded, a player wraps the texture coordinate modulo `frames`. */

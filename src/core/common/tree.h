@@ -1,4 +1,4 @@
-/* aero: a tree of branches and leaves (Matsuyama et al., paper 003), read
+/* aero: a tree of branches and leaves (Matsuyama et al. 2005), read
  * from a plain-text .tree file, shared by [treebranch~], [leafwave~] and
  * `aerotex tree`.
  *

@@ -9,9 +9,10 @@
 #include <math.h>
 #include <string.h>
 
-/* The fluctuating drag is about an order of magnitude weaker (DESIGN.md). */
+/* The fluctuating drag is about an order of magnitude weaker than the
+ * lift. */
 #define DRAG_TO_LIFT 0.1
-/* Spanwise correlation length, in diameters (paper 000, point-source
+/* Spanwise correlation length, in diameters (Dobashi et al. 2003, point-source
  * spacing of Dobashi et al. 2003). */
 #define CORRELATION_DIAMETERS 3.0
 /* Width of the shedding peak, relative to f (full width at half maximum):

@@ -1,6 +1,7 @@
 /* aero: aeolian tone of a circular cylinder, Strouhal/Reynolds model mode.
  *
- * The light-weight model of papers 001 and 000, done physically (DESIGN.md):
+ * The light-weight model of the Pd aeroacoustics report and Dobashi et al.
+ * 2003, with amplitudes that grow as U^3 (Curle 1955):
  * a cylinder of diameter d and length l, its axis along z, in a flow of
  * speed U along x (the speed is a signal). The wake sheds at f = St(Re) U / d;
  * the fluctuating lift (a dipole along y) radiates at f, the fluctuating drag
@@ -10,7 +11,7 @@
  * strouhal.h), dF/dt ~ 2 pi f F', so the pressure
  * amplitude grows as U^3 (not U^6, the intensity law the papers apply to
  * amplitude). The span is split into incoherent segments of ~3 d (the
- * spanwise correlation length, paper 000): their powers add.
+ * spanwise correlation length, Dobashi et al. 2003): their powers add.
  *
  * The shedding is a narrow-band process: its phase diffuses and its envelope
  * wanders, the peak widening continuously as the wake turns turbulent. The

@@ -1,5 +1,5 @@
-/* aero: a moving 3D body played from an object texture (paper 000, the 3D
- * case: w(l, s, u) per region l; textures made by `aerotex object`).
+/* aero: a moving 3D body played from an object texture (Dobashi et al. 2003,
+ * the 3D case: w(l, s, u) per region l; textures made by `aerotex object`).
  *
  * The body has a pose: a position P and an orientation (a unit quaternion
  * q, rotating body coordinates into the world). Region l is a point

@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Rossiter's constants (Rossiter 1964; DESIGN.md) */
+/* Rossiter's constants (Rossiter 1964) */
 #define ROSSITER_ALPHA 0.25
 #define ROSSITER_KAPPA 0.57
 /* flanged end correction of an opening of radius a: 0.82 a (Rayleigh;
@@ -309,9 +309,9 @@ static void process_model(aero_cavity_model *m, const float *u, float *out,
             m->noise_state[k] = 0; /* no denormals */
 }
 
-/* Texture mode: the texture coordinate advances by (v/v0)(L0/L) (paper 000
- * eq. 3: the shear-layer modes sit at St_L = f L / v, so the pitch follows
- * the cavity's length as an aeolian texture's follows d0/d), amplitude
+/* Texture mode: the texture coordinate advances by (v/v0)(L0/L) (Dobashi et
+ * al. 2003 eq. 3: the shear-layer modes sit at St_L = f L / v, so the pitch
+ * follows the cavity's length as an aeolian texture's follows d0/d), amplitude
  * (v/v0)^n (g = dF/dt per unit width: F ~ v^2 L, f ~ v/L), Curle dipole
  * p = (x . g) W / (4 pi c0 r^2). */
 static void process_texture(aero_cavity_model *m, const float *u, float *out,

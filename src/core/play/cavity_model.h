@@ -4,7 +4,7 @@
  * a wall, grazed by a flow of speed U (a signal). Two modes:
  *
  * Model mode. The shear layer over the opening locks onto the Rossiter
- * modes (Rossiter 1964, with Heller's compressibility form, DESIGN.md)
+ * modes (Rossiter 1964, with Heller's compressibility form)
  *     f_m = (U / L) (m - alpha) / (M + 1/kappa),  alpha 0.25, kappa 0.57,
  * m = 1..4, M = U / c0; the cavity's depth resonance (quarter wave)
  *     f_n = (2n - 1) c0 / (4 (D + delta)),  delta = 0.82 a  (flanged end

@@ -1,5 +1,5 @@
-/* aero: leaves in the wind (see leafwave.h; paper 003, "Generation of Leaf
- * Sound" and "Sound Rendering"). */
+/* aero: leaves in the wind (see leafwave.h; Matsuyama et al. 2005, "Generation
+ * of Leaf Sound" and "Sound Rendering"). */
 #include "leafwave.h"
 #include "aero_air.h"
 #include "aero_util.h"

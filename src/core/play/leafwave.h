@@ -1,4 +1,4 @@
-/* aero: the sound of leaves in the wind (Matsuyama et al., paper 003,
+/* aero: the sound of leaves in the wind (Matsuyama et al. 2005,
  * "Generation of leaf sound"), made fast enough for the paper's large tree
  * (16380 leaves) in real time on one core.
  *
@@ -41,11 +41,11 @@
  * (friction); key off lets the sound decay slowly (paper fig. 13). The
  * sounding pairs share a fixed pool of voices (the quietest is replaced).
  *
- * Rendering (paper section 5, DESIGN.md): the leaves' sound, as pressure
+ * Rendering (paper section 5): the leaves' sound, as pressure
  * at 1 m, is delayed by the distance from the trunk (the midpoint of the
  * first root branch, the paper's approximation and [treebranch~]'s) to each
  * ear, read with a moving stylus (Doppler for free),
- * scaled by 1/r (DESIGN.md: amplitude, not the paper's 1/r^2 intensity
+ * scaled by 1/r (amplitude, not the paper's 1/r^2 intensity
  * law) and by the cardioid microphone S(mu) = ((1 + cos mu)/2)^k, mu the
  * angle between the microphone's axis and the direction from the ear to
  * the trunk (paper eq. 16, C = 0).

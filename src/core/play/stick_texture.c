@@ -1,4 +1,4 @@
-/* aero: a moving stick played from a sound texture (paper 000); see
+/* aero: a moving stick played from a sound texture (Dobashi et al. 2003); see
  * stick_texture.h for the model. */
 #include "stick_texture.h"
 
@@ -65,14 +65,15 @@ static double stick_length(const double *pose)
     return sqrt(dot3(d, d));
 }
 
-/* n from the pose's length and the correlation length 3 d (paper 000) */
+/* n from the pose's length and the correlation length 3 d (Dobashi et
+   al. 2003) */
 static void update_source_count(aero_stick_texture *s)
 {
     int n = s->sources_wanted;
     if (n <= 0) {
         double len = stick_length(s->pose_to);
         /* clamp before the cast: a 1e5 m pose of a 1e-5 m stick asks for
-           3e9 sources, beyond int (found by fuzzing) */
+           3e9 sources, beyond int */
         double want = floor(len / (3.0 * current_diameter(s)) + 0.5);
         n = !(want >= 1.0) ? 1
             : want > AERO_STICK_MAX_SOURCES ? AERO_STICK_MAX_SOURCES
@@ -625,7 +626,7 @@ static void render_source(aero_stick_texture *s, aero_stick_source *src,
             pos += inc;
             /* more than a whole texture per sample (a tiny stick in a fast
              * flow, a short texture) must still wrap into it: reading past
-             * the end was a heap overflow found by fuzzing */
+             * the end would overflow the texture */
             if (pos >= frames) {
                 pos -= frames * floor(pos / frames);
                 if (!(pos >= 0.0 && pos < frames))

@@ -1,5 +1,5 @@
 /* aero: a moving stick played from a sound texture (Dobashi et al. 2003,
- * paper 000, real-time part), with the corrections of DESIGN.md.
+ * real-time part), with pressure ~ U^3 and 1/r (Curle 1955).
  *
  * The stick runs from end A to end B, diameter d, and carries n point
  * sources at the centres of n equal segments (spacing ~ the spanwise

@@ -1,5 +1,5 @@
-/* aero: wind-driven branch motion (see tree_motion.h; paper 003, section
- * "Branch Movement", eqs. 1-4).
+/* aero: wind-driven branch motion (see tree_motion.h; Matsuyama et al. 2005,
+ * section "Branch Movement", eqs. 1-4).
  *
  * Per branch i, with rest axis e_i and two perpendicular axes x_i, y_i:
  *   load    P_i(t) = F_i(t) + P_B,i N_i(t)                        (eqs. 3-4)
@@ -14,11 +14,11 @@
  * a tip load) and omega^2 = (E I / l) / J (the rotational spring of a
  * cantilever over the inertia J of everything it carries about its start;
  * 3 E I / (m l^3) for a bare rod), so branches sway at their own rate
- * instead of following the noise instantly. Deflections are soft-limited to 0.3 rad (tanh), since a
- * real crown reconfigures (streamlines) instead of bending further.
- * Rotation vectors are accumulated from the root (Fig. 6) and every branch
- * is moved rigidly by its accumulated rotation about its own start point,
- * which itself moves with the parent. */
+ * instead of following the noise instantly. Deflections are soft-limited to
+ * 0.3 rad (tanh), since a real crown reconfigures (streamlines) instead of
+ * bending further. Rotation vectors are accumulated from the root (Fig. 6) and
+ * every branch is moved rigidly by its accumulated rotation about its own
+ * start point, which itself moves with the parent. */
 #include "tree_motion.h"
 #include "aero_air.h"
 #include "aero_util.h"

@@ -1,5 +1,5 @@
-/* aero: wind-driven branch motion of a tree (paper 003, section 3.1):
- * each branch is a cantilever spring loaded by the directional wind load
+/* aero: wind-driven branch motion of a tree (Matsuyama et al. 2005, section
+ * 3.1): each branch is a cantilever spring loaded by the directional wind load
  * plus 1/f^beta noise; its deflection angle is accumulated from the root,
  * so a child moves with its parent.
  *

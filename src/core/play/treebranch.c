@@ -12,7 +12,8 @@
 /* Sectional rms lift coefficient of a circular cylinder, subcritical range
    (Norberg 2003; the value aeolian_model.c uses) */
 #define LIFT_RMS 0.45
-/* spanwise correlation length of the shedding, in diameters (DESIGN.md) */
+/* spanwise correlation length of the shedding, in diameters (the 3 d of
+   Dobashi et al. 2003) */
 #define CORRELATION_DIAMETERS 3.0
 /* power of the high-frequency tail relative to the tone, as the spectral
    density at the tone's frequency times f_0: with alpha 2 the whole tail
@@ -427,7 +428,7 @@ static void add_branch(aero_treebranch *tb, int i)
     /* the frequency group: points spaced at most one bin apart along the
        branch, each carrying its share of the power (paper Fig. 8) */
     /* compared before converting: a twig of 1e-30 m sheds at ~1e28 Hz,
-       beyond int (undefined behaviour; found by fuzz_tree, issue 10) */
+       beyond int (undefined behaviour) */
     {
         double span = fabs(f[1] - f[0]) / tb->bin_hz;
         npts = span < MAX_GROUP ? (int)span + 1 : MAX_GROUP;

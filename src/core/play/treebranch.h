@@ -1,5 +1,5 @@
 /* aero: the sound of a tree's branches in the wind (Matsuyama et al.,
- * paper 003, "Generation of Branch Sound"), in real time.
+ * Matsuyama et al. 2005, "Generation of Branch Sound"), in real time.
  *
  * Every branch (internode) of a tree (tree.h) moves with the wind
  * (tree_motion.h). Once per synthesis frame, for every branch:
@@ -11,7 +11,7 @@
  *     p^2 ~ (rho St C_L' U^3 / (4 c0))^2 L_c / 3 (Curle, a compact lift
  *     dipole coherent over L_c = 3 d, averaged over directions as the paper
  *     treats the branch as non-directional): amplitude ~ U^3 sqrt(l) / r
- *     (DESIGN.md: paper eq. 6 is an intensity law);
+ *     (Curle 1955; paper eq. 6 is an intensity law);
  *   - the "frequency group" between the two ends: frequency and power
  *     interpolated linearly along the branch (paper Fig. 8), integrated
  *     so the group's total power does not depend on the FFT resolution;

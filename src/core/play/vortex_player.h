@@ -1,9 +1,9 @@
-/* aero: real-time vortex sound from a vortex texture Q(u, t) (paper 004,
- * section 6), the core of [vortex~].
+/* aero: real-time vortex sound from a vortex texture Q(u, t) (Dobashi et al.
+ * 2004, section 6), the core of [vortex~].
  *
  * n source volumes, each with an average flow speed u_i and a position;
  * the listener (mono) or two ears (stereo) hear
- *     p(t) = SUM_i Q(u_i, t - r_i / c0) / r_i          (DESIGN.md: 1/r;
+ *     p(t) = SUM_i Q(u_i, t - r_i / c0) / r_i          (1/r: Howe 2003;
  * the paper's 1/r^3 of eq. 5 is its misprinted eq. 1). Details:
  *  - u_i = |speed inlet| + the source's own speed (`speeds`); Q is
  *    interpolated linearly between the stored speeds, clamped at the

@@ -1,5 +1,5 @@
 /* aero: the sound source function of a 2D cross-section in a uniform flow
- * (paper 000, Dobashi et al. 2003: g = dF/dt of the force per unit span),
+ * (Dobashi et al. 2003: g = dF/dt of the force per unit span),
  * the offline half of the aeolian and cavity textures.
  *
  * One flow direction per call: the 2D solver of flow2d.h runs past the

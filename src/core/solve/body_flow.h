@@ -1,5 +1,5 @@
 /* aero: the sound source functions of a 3D body in a uniform flow
- * (paper 000, sec. 5.2.1, the 3D case: w(l, s, u) per region l), the
+ * (Dobashi et al. 2003, sec. 5.2.1, the 3D case: w(l, s, u) per region l), the
  * offline half of the 3D object textures.
  *
  * One flow direction per call. The body (body_shape.h) is turned so that
@@ -15,7 +15,7 @@
  * the body's z axis, or sectors around the flow for a sphere.
  *
  * Start-up: a lateral inflow gust during the first quarter of the settling
- * time breaks the symmetry (symmetric set-ups shed late, DESIGN.md); a
+ * time breaks the symmetry (symmetric set-ups shed late); a
  * small seeded lateral noise stays on, so the wake is not locked to one
  * plane. Advection is MacCormack's, with a little vorticity confinement
  * away from the body (flow3d.h): on 8-12 cells per d the first-order step

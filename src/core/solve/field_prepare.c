@@ -1,5 +1,5 @@
-/* aero: field auralization (paper 002): acoustic mapping, source strengths,
- * classification, finite volumes and the retarded-time sum. See
+/* aero: field auralization (Shin and Bajaj): acoustic mapping, source
+ * strengths, classification, finite volumes and the retarded-time sum. See
  * field_prepare.h for the method and where it departs from the paper. */
 #include "field_prepare.h"
 
@@ -546,8 +546,7 @@ int aero_field_prepare(const aero_volume_info *info,
     int rc = -1;
     memset(out, 0, sizeof *out);
     /* the first frame file before any allocation: a hostile header
-       (1024^3 vertices, no data) must not cost tens of GB first (under
-       ASan it hung Pd; issue 10) */
+       (1024^3 vertices, no data) must not cost tens of GB first */
     if (!demo && aero_volume_check_frame(info, 0, err, errlen))
         return -1;
     if (aero_field_pre_init(&pre, info, par, err, errlen))

@@ -1,6 +1,6 @@
 /* aero: field auralization of time-varying volume data, the offline half
- * (the sources of sound in each frame; field_render.h plays them) (paper 002, Shin &
- * Bajaj, "Auralization I: Vortex Sound Synthesis"), made fast.
+ * (the sources of sound in each frame; field_render.h plays them), after
+ * Shin and Bajaj, "Auralization I: Vortex Sound Synthesis", made fast.
  *
  * 1. Acoustic mapping (paper 3.2.2): the field value s (10^s if the data
  *    are logarithms) is mapped linearly from [in_lo, in_hi] onto an air

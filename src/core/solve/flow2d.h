@@ -1,4 +1,4 @@
-/* aero: incompressible 2D flow past a body, for sound textures (issue 3).
+/* aero: incompressible 2D flow past a body, for sound textures.
  *
  * Projection method on a uniform staggered (MAC) grid, solved in units of
  * the reference length d, the free-stream speed U and the time d/U, so the

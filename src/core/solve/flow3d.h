@@ -5,7 +5,7 @@
  * velocity there is given by the caller every step, in `in_u/in_v/in_w`)
  * and an open top (z = nz h: pressure 0, zero-gradient velocity).
  * One step (Fedkiw, Stam and Jensen 2001, "Visual simulation of smoke",
- * the solver paper 004 uses):
+ * the solver Dobashi et al. 2004 uses):
  *   1. semi-Lagrangian advection of the face velocities (stable at any
  *      step; its numerical diffusion is what step 2 compensates), or
  *      (`advection` AERO_F3_MACCORMACK) its limited MacCormack form

@@ -132,8 +132,9 @@ tone_hz() {
         printf "%.6g\n", st * u / d }'
 }
 
-# A NaN made inside Pd (inf - inf), to feed objects through a signal inlet.
-nan_expr='expr~ \$v1*1e30*1e30 - \$v1*1e30*1e30'
+# A NaN made inside Pd (inf - inf), to feed objects through a signal inlet
+# (1e300: the product overflows in double-precision Pd too)
+nan_expr='expr~ \$v1*1e300*1e300 - \$v1*1e300*1e300'
 for object_tests in tests/objects/*.sh; do
     only "$object_tests" || continue
     case "$object_tests" in # no Pd in these

@@ -68,12 +68,15 @@ tone_hz() {
                         : 0.198 * (1 - 19.7 / re)
         printf "%.6g\n", st * u / d }'
 }
-# Curle: p_rms = rho U^3 St C_L' L_c / (4 c0 r), C_L' = 0.45 (Norberg
-# 2003), L_c = 3 d: a 3 d long cylinder heard at r across the flow
+# Curle: p_rms = rho U^3 St C_L' L_c / (4 c0 r), C_L'(Re) from Norberg's
+# (2003) fits for 1600 < Re < 2.25e5 (as tests/objects/10-aeolian.sh),
+# L_c = 3 d: a 3 d long cylinder heard at r across the flow
 curle_db() {
     awk -v u="$1" -v d="$2" -v r="$3" 'BEGIN { re = 1.225 * u * d / 1.81e-5
         st = 0.198 * (1 - 19.7 / re)
-        p = 1.225 * u^3 * st * 0.45 * 3 * d / (4 * 343 * r)
+        x = log(re / 1600) / log(10)
+        cl = re < 5400 ? 0.045 + 3 * x^4.6 : 0.52 - 0.06 * x^-2.6
+        p = 1.225 * u^3 * st * cl * 3 * d / (4 * 343 * r)
         printf "%.3f", 20 * log(p / 20e-6) / log(10) }'
 }
 st_cyl=$(build/aerotex info textures/cylinder.wav | sed -n 's/^st=//p')

@@ -63,8 +63,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                 aero_stick_texture_set_gain_db(st, a); break;
         case 3: aero_aeolian_model_set_ramp_ms(&m, a);
                 aero_stick_texture_set_ramp_ms(st, a); break;
-        case 4: aero_aeolian_model_set_ear(&m, (int)(b > 0), a, b, c);
-                aero_stick_texture_set_ear(st, (int)(b > 0), a, b, c); break;
+        case 4: {
+            aero_ears e = {1 + (int)(b > 0), {{a, b, c}, {a, b, c}}};
+            aero_aeolian_model_set_ears(&m, &e);
+            aero_stick_texture_set_ears(st, &e);
+            break;
+        }
         case 5: aero_aeolian_model_set_seed(&m, (uint32_t)fuzz_byte(&in));
                 aero_stick_texture_set_seed(st, (uint32_t)fuzz_byte(&in));
                 break;

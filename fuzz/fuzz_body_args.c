@@ -74,10 +74,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             v[0] = a, v[1] = fuzz_number(&in), v[2] = fuzz_number(&in);
             aero_body_texture_set_wind(&s, v);
             break;
-        case 3:
-            aero_body_texture_set_ear(&s, (int)(fuzz_byte(&in) % 3), a,
-                                      fuzz_number(&in), fuzz_number(&in));
+        case 3: {
+            aero_ears e = {1 + (int)(fuzz_byte(&in) % 3), {{a}}};
+            e.pos[0][1] = fuzz_number(&in), e.pos[0][2] = fuzz_number(&in);
+            memcpy(e.pos[1], e.pos[0], sizeof e.pos[1]);
+            aero_body_texture_set_ears(&s, &e);
             break;
+        }
         case 4: aero_body_texture_set_scale(&s, a); break;
         case 5: aero_body_texture_set_exponent(&s, a); break;
         case 6: aero_body_texture_set_gain_db(&s, a); break;

@@ -40,7 +40,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         case 3: aero_cavity_model_set_gain_db(&m, a); break;
         case 4: aero_cavity_model_set_ramp_ms(&m, a); break;
         case 5: aero_cavity_model_set_exponent(&m, a); break;
-        case 6: aero_cavity_model_set_listener(&m, a, b, c); break;
+        case 6: {
+            aero_ears e = aero_ears_at(a, b, c);
+            aero_cavity_model_set_ears(&m, &e);
+            break;
+        }
         case 7: aero_cavity_model_set_seed(&m, (uint32_t)fuzz_byte(&in)); break;
         case 8: aero_cavity_model_set_sample_rate(&m, a); break;
         case 9: {

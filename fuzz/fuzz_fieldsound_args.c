@@ -24,7 +24,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     memset(&src, 0, sizeof(src));
     aero_field_params_default(&par);
     aero_field_render_init(&r, 44100.0);
-    aero_field_render_place_listener(&r, 1, 0, 0);
+    aero_ears start = aero_ears_at(1, 0, 0);
+    aero_field_render_place_ears(&r, &start);
     while (in.left) {
         unsigned op = fuzz_byte(&in) % 16;
         double v[4];
@@ -39,7 +40,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         case 3: p.vscale = v[0]; break;
         case 4: p.log_input = fuzz_byte(&in) & 1; break;
         case 5: p.use_velocity = fuzz_byte(&in) & 1; break;
-        case 6: aero_field_render_set_listener(&r, v[0], v[1], v[2]); break;
+        case 6: {
+            aero_ears e = aero_ears_at(v[0], v[1], v[2]);
+            aero_field_render_set_ears(&r, &e);
+            break;
+        }
         case 7: aero_field_render_set_speed(&r, v[0]); break;
         case 8: aero_field_render_set_gain_db(&r, v[0]); break;
         case 9: aero_field_render_set_ramp_ms(&r, v[0]); break;

@@ -46,8 +46,9 @@ static void render(const aero_volume_info *v)
         return;
     }
     aero_field_render_init(&r, 22050.0);
-    aero_field_render_place_listener(&r, v->origin[0] + 0.3,
-                                     v->origin[1] + 0.1, v->origin[2]);
+    aero_ears start = aero_ears_at(v->origin[0] + 0.3, v->origin[1] + 0.1,
+                                   v->origin[2]);
+    aero_field_render_place_ears(&r, &start);
     if (!aero_field_render_set_sources(&r, &src)) {
         aero_field_render_play(&r);
         for (int b = 0; b < 16; b++) {

@@ -55,15 +55,19 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                 aero_vortex_player_set_positions(&m, v, count);
             break;
         }
-        case 3:
-            aero_vortex_player_set_listener(&m, a, fuzz_number(&in),
-                                            fuzz_number(&in));
+        case 3: {
+            aero_ears e = {1, {{a}}};
+            e.pos[0][1] = fuzz_number(&in), e.pos[0][2] = fuzz_number(&in);
+            aero_vortex_player_set_ears(&m, &e);
             break;
-        case 4:
+        }
+        case 4: {
+            aero_ears e = {2, {{0}}};
             for (int i = 0; i < 6; i++)
-                v[i] = fuzz_number(&in);
-            aero_vortex_player_set_ears(&m, v);
+                e.pos[i / 3][i % 3] = fuzz_number(&in);
+            aero_vortex_player_set_ears(&m, &e);
             break;
+        }
         case 5: aero_vortex_player_set_gain_db(&m, a); break;
         case 6: aero_vortex_player_set_clip(&m, a); break;
         case 7: aero_vortex_player_set_ramp_ms(&m, a); break;

@@ -77,14 +77,10 @@ static void aeolian_tilde_seed(t_aeolian_tilde *x, t_floatarg f)
 static void aeolian_tilde_listener(t_aeolian_tilde *x, t_symbol *s, int argc,
                                    t_atom *argv)
 {
-    double v[6];
-    int ears = aero_pd_ears(&x->x_base, s, argc, argv, v);
-    for (int e = 0; e < ears; e++)
-        if (aero_aeolian_set_ear(&x->x_engine, e, v[3 * e], v[3 * e + 1],
-                                 v[3 * e + 2])) {
-            aero_pd_bad_ears(&x->x_base, ears);
-            return;
-        }
+    aero_ears e;
+    if (aero_pd_ears(&x->x_base, s, argc, argv, &e) &&
+        aero_aeolian_set_ears(&x->x_engine, &e))
+        aero_pd_bad_ears(&x->x_base, e.n);
 }
 
 static int aeolian_tilde_set_texture(void *core, aero_texture *t, char *err,

@@ -265,7 +265,7 @@ void aero_pd_dsp(aero_pd_base *b, t_signal **sp, int inlet,
 }
 
 int aero_pd_ears(aero_pd_base *b, t_symbol *s, int argc, const t_atom *argv,
-                 double v[6])
+                 aero_ears *e)
 {
     int ears = strcmp(s->s_name, "ears") ? 1 : 2;
     if (ears == 1 && b->stereo) {
@@ -278,16 +278,17 @@ int aero_pd_ears(aero_pd_base *b, t_symbol *s, int argc, const t_atom *argv,
                  b->obj);
         return 0;
     }
-    if (aero_pd_floats(b->owner, b->obj, s->s_name, argc, argv, 3 * ears, v))
+    if (aero_pd_floats(b->owner, b->obj, s->s_name, argc, argv, 3 * ears,
+                       &e->pos[0][0]))
         return 0;
-    return ears;
+    return e->n = ears;
 }
 
 void aero_pd_bad_ears(aero_pd_base *b, int ears)
 {
     pd_error(b->owner, ears == 2 ? "%s: ear positions must be finite, within "
-             "1e5 m" : "%s: listener position must be finite, within 1e5 m",
-             b->obj);
+             "%g m" : "%s: listener position must be finite, within %g m",
+             b->obj, AERO_POSITION_LIMIT);
 }
 
 /* --- wind ----------------------------------------------------------------- */

@@ -20,6 +20,7 @@
 #include <string.h>
 
 #include "aero.h"
+#include "aero_ears.h"
 #include "texture.h"
 
 /* --- one table per object: its messages, each also a creation flag ------ */
@@ -131,10 +132,10 @@ static inline void aero_pd_clamped(aero_pd_base *b)
 }
 
 /* `listener x y z` (mono) or `ears lx ly lz rx ry rz` (-stereo): checks the
- * selector against the object's outlets and reads the numbers into v.
+ * selector against the object's outlets and reads the numbers into e.
  * Returns the number of ears (1 or 2), or 0 after reporting an error. */
 int aero_pd_ears(aero_pd_base *b, t_symbol *s, int argc, const t_atom *argv,
-                 double v[6]);
+                 aero_ears *e);
 
 /* the error for a listener or ears setter that refused the positions */
 void aero_pd_bad_ears(aero_pd_base *b, int ears);

@@ -106,14 +106,10 @@ static void body_tilde_wind(t_body_tilde *x, t_symbol *s, int argc,
 static void body_tilde_listener(t_body_tilde *x, t_symbol *s, int argc,
                                 t_atom *argv)
 {
-    double v[6];
-    int ears = aero_pd_ears(&x->x_base, s, argc, argv, v);
-    for (int e = 0; e < ears; e++)
-        if (aero_body_texture_set_ear(&x->x_body, e, v[3 * e], v[3 * e + 1],
-                                      v[3 * e + 2])) {
-            aero_pd_bad_ears(&x->x_base, ears);
-            return;
-        }
+    aero_ears e;
+    if (aero_pd_ears(&x->x_base, s, argc, argv, &e) &&
+        aero_body_texture_set_ears(&x->x_body, &e))
+        aero_pd_bad_ears(&x->x_base, e.n);
 }
 
 static void body_tilde_scale(t_body_tilde *x, t_floatarg f)

@@ -78,10 +78,10 @@ static void cavity_tilde_seed(t_cavity_tilde *x, t_floatarg f)
 static void cavity_tilde_listener(t_cavity_tilde *x, t_symbol *s, int argc,
                                   t_atom *argv)
 {
-    double v[6];
-    if (aero_pd_ears(&x->x_base, s, argc, argv, v) &&
-        aero_cavity_model_set_listener(&x->x_model, v[0], v[1], v[2]))
-        aero_pd_bad_ears(&x->x_base, 1);
+    aero_ears e;
+    if (aero_pd_ears(&x->x_base, s, argc, argv, &e) &&
+        aero_cavity_model_set_ears(&x->x_model, &e))
+        aero_pd_bad_ears(&x->x_base, e.n);
 }
 
 static int cavity_tilde_set_texture(void *core, aero_texture *t, char *err,

@@ -258,10 +258,10 @@ static void fieldsound_tilde_stop(t_fieldsound_tilde *x)
 static void fieldsound_tilde_listener(t_fieldsound_tilde *x, t_symbol *s,
                                       int argc, t_atom *argv)
 {
-    double v[6];
-    if (aero_pd_ears(&x->x_base, s, argc, argv, v) &&
-        aero_field_render_set_listener(&x->x_render, v[0], v[1], v[2]))
-        aero_pd_bad_ears(&x->x_base, 1);
+    aero_ears e;
+    if (aero_pd_ears(&x->x_base, s, argc, argv, &e) &&
+        aero_field_render_set_ears(&x->x_render, &e))
+        aero_pd_bad_ears(&x->x_base, e.n);
 }
 
 static void fieldsound_tilde_speed(t_fieldsound_tilde *x, t_floatarg f)
@@ -383,7 +383,8 @@ static void *fieldsound_tilde_new(t_symbol *s, int argc, t_atom *argv)
     aero_pd_base_init(&x->x_base, x, &fieldsound_tilde_spec, argc, argv);
     aero_field_params_default(&x->x_par);
     aero_field_render_init(&x->x_render, sys_getsr());
-    aero_field_render_place_listener(&x->x_render, 1, 0, 0);
+    aero_ears start = aero_ears_at(1, 0, 0);
+    aero_field_render_place_ears(&x->x_render, &start);
     x->x_poll = clock_new(x, (t_method)fieldsound_tilde_poll);
     x->x_report = clock_new(x, (t_method)fieldsound_tilde_report);
     x->x_out = outlet_new(&x->x_obj, &s_signal);
@@ -395,9 +396,8 @@ static void *fieldsound_tilde_new(t_symbol *s, int argc, t_atom *argv)
     aero_pd_parse_flags(x, &fieldsound_tilde_spec, argc, argv);
     x->x_creating = 0;
     /* the listener starts where it was put, not ramped from (1, 0, 0) */
-    aero_field_render_place_listener(&x->x_render, x->x_render.target[0],
-                                     x->x_render.target[1],
-                                     x->x_render.target[2]);
+    memcpy(start.pos[0], x->x_render.target, sizeof start.pos[0]);
+    aero_field_render_place_ears(&x->x_render, &start);
     if (x->x_dir)
         x->x_demo_size = 0;
     fieldsound_tilde_prepare(x);

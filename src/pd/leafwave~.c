@@ -207,13 +207,13 @@ static void leafwave_tilde_mic(t_leafwave_tilde *x, t_symbol *s, int argc,
 static void leafwave_tilde_listener(t_leafwave_tilde *x, t_symbol *s,
                                     int argc, t_atom *argv)
 {
-    double v[6];
+    aero_ears v;
     if (!x->x_ok)
         return;
-    int ears = aero_pd_ears(&x->x_base, s, argc, argv, v);
+    int ears = aero_pd_ears(&x->x_base, s, argc, argv, &v);
     for (int e = 0; e < ears; e++)
-        if (aero_leafwave_set_ear(&x->x_model, e, v[3 * e], v[3 * e + 1],
-                                  v[3 * e + 2])) {
+        if (aero_leafwave_set_ear(&x->x_model, e, v.pos[e][0], v.pos[e][1],
+                                  v.pos[e][2])) {
             aero_pd_bad_ears(&x->x_base, ears);
             return;
         }

@@ -109,13 +109,10 @@ static void vortex_tilde_positions(t_vortex_tilde *x, t_symbol *s, int argc,
 static void vortex_tilde_listener(t_vortex_tilde *x, t_symbol *s, int argc,
                                   t_atom *argv)
 {
-    double v[6];
-    int ears = aero_pd_ears(&x->x_base, s, argc, argv, v);
-    if (ears == 1 &&
-        aero_vortex_player_set_listener(&x->x_player, v[0], v[1], v[2]))
-        aero_pd_bad_ears(&x->x_base, 1);
-    else if (ears == 2 && aero_vortex_player_set_ears(&x->x_player, v))
-        aero_pd_bad_ears(&x->x_base, 2);
+    aero_ears e;
+    if (aero_pd_ears(&x->x_base, s, argc, argv, &e) &&
+        aero_vortex_player_set_ears(&x->x_player, &e))
+        aero_pd_bad_ears(&x->x_base, e.n);
 }
 
 static void vortex_tilde_gain(t_vortex_tilde *x, t_floatarg f)

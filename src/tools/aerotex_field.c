@@ -425,7 +425,8 @@ static void render(const auralize_job *j, aero_field_render *r,
     double p[3];
     long done = 0;
     path_at(path, npath, 0, p);
-    aero_field_render_place_listener(r, p[0], p[1], p[2]);
+    aero_ears start = aero_ears_at(p[0], p[1], p[2]);
+    aero_field_render_place_ears(r, &start);
     aero_field_render_play(r);
     aerotex_progress_start(&prog, "rendering", total, j->quiet);
     while (done < total) {

@@ -116,7 +116,7 @@ static void test_onset_and_level(void)
     aero_aeolian_model_init(&m, SR, 1, 2);
     aero_aeolian_model_set_diameter(&m, 0.01);
     aero_aeolian_model_set_length(&m, 0.03);
-    aero_aeolian_model_set_ear(&m, 0, 0, 3, 0);
+    aero_aeolian_model_set_ears(&m, &(aero_ears){1, {{0, 3, 0}}});
     double re = aero_reynolds(10, 0.01);
     double want = 1.225 * 1000 * roshko(re) * 0.3175 * 0.03 / (4 * 343 * 3);
     double got = render_rms(&m, 10.0f, 2.0, 64, &bad);
@@ -126,7 +126,7 @@ static void test_onset_and_level(void)
     /* 16 incoherent segments radiate 4x (12 dB) the pressure of one when
      * far away: the span powers add */
     aero_aeolian_model_set_length(&m, 0.48);
-    aero_aeolian_model_set_ear(&m, 0, 0, 30, 0);
+    aero_aeolian_model_set_ears(&m, &(aero_ears){1, {{0, 30, 0}}});
     double far16 = render_rms(&m, 10.0f, 2.0, 64, &bad);
     aero_aeolian_model_set_length(&m, 0.03);
     double far1 = render_rms(&m, 10.0f, 2.0, 64, &bad);
@@ -165,8 +165,10 @@ static void test_bad_input(void)
                "diameter 0, negative, NaN, Inf rejected");
     UNIT_CHECK(m.ctl_target[AERO_CTL_DIAMETER] == 0.01, "default diameter kept");
     UNIT_CHECK(aero_aeolian_model_set_length(&m, 0) < 0 &&
-                   aero_aeolian_model_set_ear(&m, 0, NAN, 0, 0) < 0 &&
-                   aero_aeolian_model_set_ear(&m, 2, 0, 0, 0) < 0 &&
+                   aero_aeolian_model_set_ears(&m,
+                           &(aero_ears){1, {{NAN, 0, 0}}}) < 0 &&
+                   aero_aeolian_model_set_ears(&m,
+                           &(aero_ears){3, {{0, 0, 0}, {0, 0, 0}}}) < 0 &&
                    aero_aeolian_model_set_gain_db(&m, INFINITY) < 0 &&
                    aero_aeolian_model_set_ramp_ms(&m, -1) < 0 &&
                    aero_aeolian_model_set_sample_rate(&m, 0) < 0,

@@ -80,7 +80,8 @@ static double static_rms(aero_texture *t, const double *wind,
     aero_body_texture s;
     setup(&s, t, 5);
     aero_body_texture_set_wind(&s, wind);
-    aero_body_texture_set_ear(&s, 0, ear[0], ear[1], ear[2]);
+    aero_body_texture_set_ears(&s,
+                               &(aero_ears){1, {{ear[0], ear[1], ear[2]}}});
     aero_body_texture_set_scale(&s, scale);
     render(&s, buf, n, 64);
     aero_body_texture_free(&s);
@@ -144,7 +145,7 @@ int main(void)
         const double wind[3] = {10, 40, 0}, q[4] = {1, 0, 0, 0};
         setup(&s, sphere(0), 3); /* the drag component: along the flow */
         aero_body_texture_set_wind(&s, wind);
-        aero_body_texture_set_ear(&s, 0, 0.5, 100, 0);
+        aero_body_texture_set_ears(&s, &(aero_ears){1, {{0.5, 100, 0}}});
         for (int i = 0; i < n; i += 48) { /* a pose every 1 ms */
             double p[3] = {0, -20 + 40 * i / SR, 0};
             float *o[1] = {a + i};
@@ -170,7 +171,7 @@ int main(void)
         float *x = calloc(len, sizeof(float));
         double up, down, t_rev = 2 * PI / w, delay = 50.0 / 343.0;
         setup(&s, sphere(0), 4);
-        aero_body_texture_set_ear(&s, 0, 0, -50, 0);
+        aero_body_texture_set_ears(&s, &(aero_ears){1, {{0, -50, 0}}});
         for (int i = 0; i < len; i += 48) {
             double t = i / SR;
             double p[3] = {R * cos(w * t), R * sin(w * t), 0};
@@ -241,7 +242,7 @@ int main(void)
             }
             setup(&s, t, 6);
             aero_body_texture_set_wind(&s, w10);
-            aero_body_texture_set_ear(&s, 0, 0.1, 0, 20);
+            aero_body_texture_set_ears(&s, &(aero_ears){1, {{0.1, 0, 20}}});
             aero_body_texture_set_pose(&s, p0, pass ? q_flip : q0, -1.0);
             render(&s, a, 4800, 32);
             aero_body_texture_free(&s);

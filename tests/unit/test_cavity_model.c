@@ -80,7 +80,8 @@ int main(void)
                    aero_cavity_model_set_depth(&m, NAN) < 0 &&
                    aero_cavity_model_set_width(&m, -1) < 0 &&
                    aero_cavity_model_set_exponent(&m, INFINITY) < 0 &&
-                   aero_cavity_model_set_listener(&m, 0, NAN, 0) < 0,
+                   aero_cavity_model_set_ears(&m,
+                           &(aero_ears){1, {{0, NAN, 0}}}) < 0,
                "bad length, depth, width, exponent, listener rejected");
     double silent = rms_of(&m, 0.0f, 0.2, &bad);
     UNIT_CHECK(silent == 0.0, "no flow, no sound (%g Pa)", silent);

@@ -185,7 +185,7 @@ static float *render(const aero_field_sources *s, double x, double y,
     float *out = calloc(n, sizeof(float));
     aero_field_render_init(&r, SR);
     aero_field_render_set_sources(&r, s);
-    aero_field_render_place_listener(&r, x, y, z);
+    aero_field_render_place_ears(&r, &(aero_ears){1, {{x, y, z}}});
     r.direct = direct;
     aero_field_render_play(&r);
     aero_field_render_process(&r, out, (int)n);
@@ -457,9 +457,9 @@ static void test_demo(void)
         aero_field_render_init(&r[k], SR);
         aero_field_render_set_sources(&r[k], &s);
         r[k].direct = k;
-        aero_field_render_place_listener(&r[k], 1, 0, 0);
+        aero_field_render_place_ears(&r[k], &(aero_ears){1, {{1, 0, 0}}});
         aero_field_render_set_ramp_ms(&r[k], 50);
-        aero_field_render_set_listener(&r[k], -1, 0.5, 0.2);
+        aero_field_render_set_ears(&r[k], &(aero_ears){1, {{-1, 0.5, 0.2}}});
         aero_field_render_play(&r[k]);
         aero_field_render_process(&r[k], out[k], 4096);
     }
@@ -482,11 +482,13 @@ static void test_demo(void)
     rc = memvol_sources(&m, &par, &s);
     aero_field_render_init(&r[0], SR);
     aero_field_render_set_sources(&r[0], &s);
-    int refused = aero_field_render_set_listener(&r[0], NAN, 0, 0) &&
+    int refused = aero_field_render_set_ears(&r[0],
+                                             &(aero_ears){1, {{NAN, 0, 0}}}) &&
                   aero_field_render_set_speed(&r[0], -1) &&
                   aero_field_render_set_ramp_ms(&r[0], -5) &&
                   aero_field_render_set_gain_db(&r[0], 1e9);
-    aero_field_render_set_listener(&r[0], 1e5, 0, 0); /* far, fast */
+    aero_field_render_set_ears(&r[0],
+                               &(aero_ears){1, {{1e5, 0, 0}}}); /* far, fast */
     aero_field_render_play(&r[0]);
     aero_field_render_process(&r[0], out[0], 4096);
     bad = 0;

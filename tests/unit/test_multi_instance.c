@@ -258,7 +258,8 @@ static void *field_make(int variant)
     aero_field_prepare(&info, &d, &par, &f->src, NULL, NULL, err, sizeof(err));
     aero_field_render_init(&f->r, 44100.0);
     aero_field_render_set_sources(&f->r, &f->src);
-    aero_field_render_place_listener(&f->r, variant ? 0.5 : 0.8, 0.1, 0.0);
+    aero_field_render_place_ears(&f->r,
+            &(aero_ears){1, {{variant ? 0.5 : 0.8, 0.1, 0.0}}});
     aero_field_render_set_speed(&f->r, 100.0);
     aero_field_render_play(&f->r);
     return f;

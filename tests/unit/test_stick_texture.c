@@ -116,7 +116,7 @@ int main(void)
     aero_stick_texture_set_sources(&s, 1);
     double wind_moving[3] = {10.0, 40.0, 0.0};
     aero_stick_texture_set_wind(&s, wind_moving);
-    aero_stick_texture_set_ear(&s, 0, 0, 100, 0);
+    aero_stick_texture_set_ears(&s, &(aero_ears){1, {{0, 100, 0}}});
     for (int i = 0; i < n; i += 48) { /* a pose every 1 ms */
         double t = i / SR;
         double pa[3] = {0, -20 + 40 * t, -0.01}, pb[3] = {0, -20 + 40 * t, 0.01};
@@ -222,8 +222,10 @@ int main(void)
                   (aero_stick_texture_set_sources(&s, 100000) != 0) +
                   (aero_stick_texture_set_exponent(&s, NAN) != 0) +
                   (aero_stick_texture_set_roll_deg(&s, INFINITY) != 0) +
-                  (aero_stick_texture_set_ear(&s, 0, NAN, 0, 0) != 0) +
-                  (aero_stick_texture_set_ear(&s, 1, 0, 0, 0) != 0) +
+                  (aero_stick_texture_set_ears(&s,
+                          &(aero_ears){1, {{NAN, 0, 0}}}) != 0) +
+                  (aero_stick_texture_set_ears(&s,
+                          &(aero_ears){2, {{0, 0, 0}, {0, 0, 0}}}) != 0) +
                   (aero_stick_texture_set_sample_rate(&s, 0) != 0);
     UNIT_CHECK(refused == 14, "bad values refused: %d of 14", refused);
     float *speed = calloc(n, sizeof(float));
@@ -237,7 +239,7 @@ int main(void)
     UNIT_CHECK(finite && clamped, "NaN and huge speeds: finite output, "
                "clamp reported (%d)", clamped);
     /* a listener inside the stick does not blow up */
-    aero_stick_texture_set_ear(&s, 0, 0, 0, 0);
+    aero_stick_texture_set_ears(&s, &(aero_ears){1, {{0, 0, 0}}});
     render(&s, a, n, 64);
     finite = 1;
     for (int i = 0; i < n; i++)

@@ -79,9 +79,9 @@ static void test_distance_and_speed(void)
     static float a[N], b[N];
     printf("1/r, speed interpolation, u^4 below the smallest speed\n");
     setup(&m, synthetic(500.0, amp, 16000), 1);
-    aero_vortex_player_set_listener(&m, 0.0, 2.0, 0.0);
+    aero_vortex_player_set_ears(&m, &(aero_ears){1, {{0.0, 2.0, 0.0}}});
     render(&m, 3.0f, a, N);
-    aero_vortex_player_set_listener(&m, 0.0, 4.0, 0.0);
+    aero_vortex_player_set_ears(&m, &(aero_ears){1, {{0.0, 4.0, 0.0}}});
     render(&m, 3.0f, b, 4800); /* the ramp */
     render(&m, 3.0f, b, N);
     UNIT_NEAR_REL(rms(b + 4800, N - 4800) / rms(a + 4800, N - 4800), 0.5,
@@ -111,7 +111,7 @@ static void test_doppler(void)
     printf("Doppler (500 Hz, 60 m/s)\n");
     /* a source approaching a still listener: f c0 / (c0 - v) */
     setup(&m, synthetic(500.0, amp, 16000), 1);
-    aero_vortex_player_set_listener(&m, 0.0, 0.0, 0.0);
+    aero_vortex_player_set_ears(&m, &(aero_ears){1, {{0.0, 0.0, 0.0}}});
     aero_vortex_player_set_positions(&m, xyz, 1);
     render(&m, 3.0f, a, 4800);
     aero_vortex_player_set_ramp_ms(&m, 2000.0);
@@ -124,10 +124,11 @@ static void test_doppler(void)
     aero_vortex_player_free(&m);
     /* a listener approaching a still source: f (c0 + v) / c0 */
     setup(&m, synthetic(500.0, amp, 16000), 1);
-    aero_vortex_player_set_listener(&m, 0.0, 200.0, 0.0);
+    aero_vortex_player_set_ears(&m, &(aero_ears){1, {{0.0, 200.0, 0.0}}});
     render(&m, 3.0f, a, 4800);
     aero_vortex_player_set_ramp_ms(&m, 2000.0);
-    aero_vortex_player_set_listener(&m, 0.0, 200.0 - 2.0 * v, 0.0);
+    aero_vortex_player_set_ears(&m,
+            &(aero_ears){1, {{0.0, 200.0 - 2.0 * v, 0.0}}});
     render(&m, 3.0f, a, N);
     f = zero_cross_hz(a + 9600, 72000);
     UNIT_NEAR_REL(f / 500.0, (AERO_C0 + v) / AERO_C0, 5e-4,
@@ -144,7 +145,7 @@ static void test_clip_and_sources(void)
     double peak = 0.0, one, many;
     printf("clip, n sources\n");
     setup(&m, synthetic(0.0, amp, 16000), 1);
-    aero_vortex_player_set_listener(&m, 0.0, 0.5, 0.0);
+    aero_vortex_player_set_ears(&m, &(aero_ears){1, {{0.0, 0.5, 0.0}}});
     aero_vortex_player_set_clip(&m, 0.3);
     render(&m, 3.0f, a, N);
     for (int k = 0; k < N; k++) peak = fmax(peak, fabs(a[k]));
@@ -160,7 +161,7 @@ static void test_clip_and_sources(void)
     aero_vortex_player_free(&m);
     /* 16 equal sources at one place: independent offsets add in power */
     setup(&m, synthetic(0.0, amp, 16000), 16);
-    aero_vortex_player_set_listener(&m, 0.0, 0.5, 0.0);
+    aero_vortex_player_set_ears(&m, &(aero_ears){1, {{0.0, 0.5, 0.0}}});
     render(&m, 3.0f, b, N);
     render(&m, 3.0f, b, N);
     many = rms(b, N);
@@ -180,13 +181,14 @@ static void test_hostile(void)
     enum { N = 9600 };
     static float a[N];
     float in[64];
-    double bad[3] = {NAN, 0.0, 0.0}, e[6] = {1, 2, 3, 4, 5, INFINITY};
+    double bad[3] = {NAN, 0.0, 0.0};
+    aero_ears e = {2, {{1, 2, 3}, {4, 5, INFINITY}}};
     int finite = 1;
     char err[128];
     printf("hostile input\n");
     setup(&m, synthetic(0.0, amp, 16000), 4);
     UNIT_CHECK(aero_vortex_player_set_positions(&m, bad, 1) == -1 &&
-                   aero_vortex_player_set_ears(&m, e) == -1 &&
+                   aero_vortex_player_set_ears(&m, &e) == -1 &&
                    aero_vortex_player_set_count(&m, 0) == -1 &&
                    aero_vortex_player_set_clip(&m, -1.0) == -1 &&
                    aero_vortex_player_set_gain_db(&m, NAN) == -1,
@@ -226,13 +228,13 @@ static void test_falloff(void)
     UNIT_CHECK(aero_vortex_player_set_falloff(&m, 2) == -1 &&
                    aero_vortex_player_set_falloff(&m, 0) == -1,
                "falloff other than 1 or 3 refused");
-    aero_vortex_player_set_listener(&m, 0.0, 1.0, 0.0);
+    aero_vortex_player_set_ears(&m, &(aero_ears){1, {{0.0, 1.0, 0.0}}});
     render(&m, 3.0f, a, 4800);
     render(&m, 3.0f, a, N);
     aero_vortex_player_set_falloff(&m, 3);
     render(&m, 3.0f, c, N);
     UNIT_NEAR_REL(rms(c, N), rms(a, N), 0.002, "1/r^3 and 1/r agree at 1 m");
-    aero_vortex_player_set_listener(&m, 0.0, 2.0, 0.0);
+    aero_vortex_player_set_ears(&m, &(aero_ears){1, {{0.0, 2.0, 0.0}}});
     render(&m, 3.0f, b, 4800);
     render(&m, 3.0f, b, N);
     UNIT_NEAR_REL(rms(b, N) / rms(a, N), 0.125, 0.002,
@@ -252,7 +254,7 @@ static void test_combustion(void)
     aero_vortex_player_init(&m, SR, 0, 42);
     aero_vortex_player_set_count(&m, 2);
     aero_vortex_player_set_positions(&m, xyz, 2);
-    aero_vortex_player_set_listener(&m, 0.0, 2.0, 0.0);
+    aero_vortex_player_set_ears(&m, &(aero_ears){1, {{0.0, 2.0, 0.0}}});
     render(&m, 3.0f, a, N);
     UNIT_CHECK(rms(a, N) == 0.0, "no texture, no power: silent");
     aero_combustion_set_power_kw(&m.combustion, 30.0);

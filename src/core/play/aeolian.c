@@ -4,14 +4,15 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
-void aero_aeolian_init(aero_aeolian *a, double sample_rate, int n_ears,
-                       uint32_t seed)
+int aero_aeolian_init(aero_aeolian *a, double sample_rate, int n_ears,
+                      uint32_t seed)
 {
     a->stick = NULL;
     a->n_ears = n_ears;
     a->diameter_set = 0;
-    aero_aeolian_model_init(&a->model, sample_rate, n_ears, seed);
+    return aero_aeolian_model_init(&a->model, sample_rate, n_ears, seed);
 }
 
 void aero_aeolian_free(aero_aeolian *a)
@@ -49,10 +50,10 @@ static aero_stick_texture *stick(aero_aeolian *a)
                                    m->ramp_samples / m->sample_rate * 1000.0);
     aero_stick_texture_set_gain_db(
         st, fmax(-200.0, 20.0 * log10(m->ctl_target[AERO_CTL_GAIN] + 1e-10)));
-    for (int e = 0; e < a->n_ears; e++) {
-        const double *p = m->ctl_target + AERO_CTL_EAR + 3 * e;
-        aero_stick_texture_set_ear(st, e, p[0], p[1], p[2]);
-    }
+    aero_ears ears = {a->n_ears, {{0}}};
+    memcpy(ears.pos, m->ctl_target + AERO_CTL_EAR,
+           sizeof(double) * 3 * a->n_ears);
+    aero_stick_texture_set_ears(st, &ears);
     a->stick = st;
     return st;
 }
@@ -120,12 +121,10 @@ void aero_aeolian_set_seed(aero_aeolian *a, uint32_t seed)
         aero_stick_texture_set_seed(a->stick, seed);
 }
 
-int aero_aeolian_set_ear(aero_aeolian *a, int ear, double x, double y,
-                         double z)
+int aero_aeolian_set_ears(aero_aeolian *a, const aero_ears *e)
 {
-    return aero_aeolian_model_set_ear(&a->model, ear, x, y, z) ||
-                   (a->stick &&
-                    aero_stick_texture_set_ear(a->stick, ear, x, y, z))
+    return aero_aeolian_model_set_ears(&a->model, e) ||
+                   (a->stick && aero_stick_texture_set_ears(a->stick, e))
                ? -1
                : 0;
 }

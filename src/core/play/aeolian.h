@@ -21,8 +21,9 @@ typedef struct {
     int diameter_set;          /* a diameter was given: the texture uses it */
 } aero_aeolian;
 
-void aero_aeolian_init(aero_aeolian *a, double sample_rate, int n_ears,
-                       uint32_t seed);
+/* 0, or -1 when the sample rate is not usable (44.1 kHz is taken) */
+int aero_aeolian_init(aero_aeolian *a, double sample_rate, int n_ears,
+                      uint32_t seed);
 void aero_aeolian_free(aero_aeolian *a);
 
 /* 1 while a texture plays, else 0 (the model) */
@@ -41,8 +42,7 @@ int aero_aeolian_set_length(aero_aeolian *a, double l);
 int aero_aeolian_set_gain_db(aero_aeolian *a, double db);
 int aero_aeolian_set_ramp_ms(aero_aeolian *a, double ms);
 void aero_aeolian_set_seed(aero_aeolian *a, uint32_t seed);
-int aero_aeolian_set_ear(aero_aeolian *a, int ear, double x, double y,
-                         double z);
+int aero_aeolian_set_ears(aero_aeolian *a, const aero_ears *e);
 /* texture-mode controls (they make the texture engine) */
 int aero_aeolian_set_pose(aero_aeolian *a, const double end_a[3],
                           const double end_b[3], double interval_s);

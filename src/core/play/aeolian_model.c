@@ -27,11 +27,12 @@
 static const double default_ears[AERO_AEOLIAN_MAX_EARS][3] = {
     {-0.1, 1.0, 0.0}, {0.1, 1.0, 0.0}};
 
-void aero_aeolian_model_init(aero_aeolian_model *m, double sample_rate,
-                             int n_ears, uint32_t seed)
+int aero_aeolian_model_init(aero_aeolian_model *m, double sample_rate,
+                            int n_ears, uint32_t seed)
 {
     memset(m, 0, sizeof(*m));
-    m->sample_rate = sample_rate > 0 ? sample_rate : 44100.0;
+    int sr_ok = sample_rate > 0 && aero_is_finite(sample_rate);
+    m->sample_rate = sr_ok ? sample_rate : 44100.0;
     m->n_ears = n_ears == 2 ? 2 : 1;
     m->ctl_target[AERO_CTL_DIAMETER] = 0.01;
     m->ctl_target[AERO_CTL_LENGTH] = 0.5;
@@ -44,6 +45,7 @@ void aero_aeolian_model_init(aero_aeolian_model *m, double sample_rate,
     m->geometry_dirty = 1;
     aero_aeolian_model_set_ramp_ms(m, 20.0);
     aero_aeolian_model_set_seed(m, seed);
+    return sr_ok ? 0 : -1;
 }
 
 void aero_aeolian_model_set_seed(aero_aeolian_model *m, uint32_t seed)
@@ -119,17 +121,11 @@ int aero_aeolian_model_set_ramp_ms(aero_aeolian_model *m, double ms)
     return 0;
 }
 
-int aero_aeolian_model_set_ear(aero_aeolian_model *m, int ear, double x,
-                               double y, double z)
+int aero_aeolian_model_set_ears(aero_aeolian_model *m, const aero_ears *e)
 {
-    const double far = 1e5;
-    if (ear < 0 || ear >= m->n_ears)
+    if (!aero_ears_ok(e, m->n_ears))
         return -1;
-    if (!aero_is_finite(x) || !aero_is_finite(y) || !aero_is_finite(z) || fabs(x) > far ||
-        fabs(y) > far || fabs(z) > far)
-        return -1;
-    double *p = m->ctl_target + AERO_CTL_EAR + 3 * ear;
-    p[0] = x, p[1] = y, p[2] = z;
+    memcpy(m->ctl_target + AERO_CTL_EAR, e->pos, sizeof(double) * 3 * e->n);
     start_ramp(m);
     return 0;
 }

@@ -23,9 +23,11 @@
 #ifndef AERO_AEOLIAN_MODEL_H
 #define AERO_AEOLIAN_MODEL_H
 
+#include "aero_ears.h"
+
 #include <stdint.h>
 
-#define AERO_AEOLIAN_MAX_EARS 2
+#define AERO_AEOLIAN_MAX_EARS AERO_EARS_MAX
 /* Samples per inner chunk: frequency, phase diffusion and the envelope are
  * updated per chunk (1.3 ms at 48 kHz), levels interpolated per sample. */
 #define AERO_AEOLIAN_CHUNK 64
@@ -94,9 +96,10 @@ typedef struct aero_aeolian_model {
 } aero_aeolian_model;
 
 /* Defaults: d = 1 cm, l = 0.5 m, one listener 1 m away along +y (across the
- * flow and the axis), gain 0 dB, ramp 20 ms. */
-void aero_aeolian_model_init(aero_aeolian_model *m, double sample_rate,
-                             int n_ears, uint32_t seed);
+ * flow and the axis), gain 0 dB, ramp 20 ms. 0, or -1 when the sample rate
+ * is not usable (44.1 kHz is taken). */
+int aero_aeolian_model_init(aero_aeolian_model *m, double sample_rate,
+                            int n_ears, uint32_t seed);
 
 /* Setters return 0 when accepted, -1 when the value is invalid (then the
  * previous value stays). Geometry ramps over the ramp time. */
@@ -105,8 +108,8 @@ int aero_aeolian_model_set_diameter(aero_aeolian_model *m, double d);
 int aero_aeolian_model_set_length(aero_aeolian_model *m, double l);
 int aero_aeolian_model_set_gain_db(aero_aeolian_model *m, double db);
 int aero_aeolian_model_set_ramp_ms(aero_aeolian_model *m, double ms);
-int aero_aeolian_model_set_ear(aero_aeolian_model *m, int ear, double x,
-                               double y, double z);
+/* ears 0..e->n-1 (e->n at most the ears the model was made with) */
+int aero_aeolian_model_set_ears(aero_aeolian_model *m, const aero_ears *e);
 void aero_aeolian_model_set_seed(aero_aeolian_model *m, uint32_t seed);
 
 /* Render n samples. speed[i]: flow speed in m/s across the axis (sign is

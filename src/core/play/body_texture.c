@@ -11,7 +11,7 @@
 
 #define VELOCITY_TAU_S 0.008 /* smoothing of pose-derived velocities */
 #define MIN_SPEED 1e-6       /* below this the flow direction is unknown */
-#define POS_LIMIT 1e5
+
 
 static void ramp_to(aero_ramp *r, double v, double ramp_samples)
 {
@@ -255,7 +255,7 @@ int aero_body_texture_set_pose(aero_body_texture *s, const double pos[3],
 {
     double p[7] = {pos[0], pos[1], pos[2], quat[0], quat[1], quat[2], quat[3]};
     double n = sqrt(p[3] * p[3] + p[4] * p[4] + p[5] * p[5] + p[6] * p[6]);
-    if (!finite_n(pos, 3, POS_LIMIT) || !finite_n(quat, 4, 1e6) ||
+    if (!finite_n(pos, 3, AERO_POSITION_LIMIT) || !finite_n(quat, 4, 1e6) ||
         !(n > 1e-9))
         return -1;
     for (int i = 3; i < 7; i++)
@@ -301,14 +301,13 @@ int aero_body_texture_set_wind(aero_body_texture *s, const double w[3])
     return 0;
 }
 
-int aero_body_texture_set_ear(aero_body_texture *s, int ear, double x,
-                              double y, double z)
+int aero_body_texture_set_ears(aero_body_texture *s, const aero_ears *e)
 {
-    double v[3] = {x, y, z};
-    if (ear < 0 || ear >= s->n_ears || !finite_n(v, 3, POS_LIMIT))
+    if (!aero_ears_ok(e, s->n_ears))
         return -1;
-    for (int i = 0; i < 3; i++)
-        ramp_to(&s->ear[3 * ear + i], v[i], s->ramp_samples);
+    for (int k = 0; k < e->n; k++)
+        for (int i = 0; i < 3; i++)
+            ramp_to(&s->ear[3 * k + i], e->pos[k][i], s->ramp_samples);
     return 0;
 }
 

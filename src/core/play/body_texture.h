@@ -38,11 +38,12 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "aero_ears.h"
 #include "aero_util.h"
 #include "arrivals.h"
 #include "texture.h"
 
-#define AERO_BODY_MAX_EARS 2
+#define AERO_BODY_MAX_EARS AERO_EARS_MAX
 #define AERO_BODY_MAX_SOURCES 64
 #define AERO_BODY_CHUNK 32
 #define AERO_BODY_MAX_DELAY_S 1.0
@@ -116,8 +117,8 @@ void aero_body_texture_set_seed(aero_body_texture *s, uint32_t seed);
 int aero_body_texture_set_pose(aero_body_texture *s, const double pos[3],
                                const double quat[4], double interval_s);
 int aero_body_texture_set_wind(aero_body_texture *s, const double w[3]);
-int aero_body_texture_set_ear(aero_body_texture *s, int ear, double x,
-                              double y, double z);
+/* ears 0..e->n-1 (e->n at most the ears the player was made with) */
+int aero_body_texture_set_ears(aero_body_texture *s, const aero_ears *e);
 
 /* n samples; speed[i] (may be NULL) adds a wind along +x; out[e][i] is the
  * sound pressure at ear e in Pa. Returns 1 if a speed was clamped. */

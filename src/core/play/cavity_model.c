@@ -73,11 +73,12 @@ double aero_cavity_depth_hz(double depth, double length, double width, int n)
     return (2 * n - 1) * AERO_C0 / (4.0 * (depth + END_CORRECTION * radius));
 }
 
-void aero_cavity_model_init(aero_cavity_model *m, double sample_rate,
-                            uint32_t seed)
+int aero_cavity_model_init(aero_cavity_model *m, double sample_rate,
+                           uint32_t seed)
 {
     memset(m, 0, sizeof(*m));
-    m->sample_rate = sample_rate > 0 ? sample_rate : 44100.0;
+    int sr_ok = sample_rate > 0 && aero_is_finite(sample_rate);
+    m->sample_rate = sr_ok ? sample_rate : 44100.0;
     m->exponent = 2.0;
     m->ctl_target[AERO_CAV_LENGTH] = 0.02;
     m->ctl_target[AERO_CAV_DEPTH] = 0.01;
@@ -87,6 +88,7 @@ void aero_cavity_model_init(aero_cavity_model *m, double sample_rate,
     memcpy(m->ctl, m->ctl_target, sizeof(m->ctl));
     aero_cavity_model_set_ramp_ms(m, 20.0);
     aero_cavity_model_set_seed(m, seed);
+    return sr_ok ? 0 : -1;
 }
 
 void aero_cavity_model_free(aero_cavity_model *m)
@@ -171,16 +173,13 @@ int aero_cavity_model_set_exponent(aero_cavity_model *m, double n)
     return 0;
 }
 
-int aero_cavity_model_set_listener(aero_cavity_model *m, double x, double y,
-                                   double z)
+int aero_cavity_model_set_ears(aero_cavity_model *m, const aero_ears *e)
 {
-    const double far = 1e5;
-    if (!aero_is_finite(x) || !aero_is_finite(y) || !aero_is_finite(z) || fabs(x) > far ||
-        fabs(y) > far || fabs(z) > far)
+    if (!aero_ears_ok(e, 1))
         return -1;
-    set_ctl(m, AERO_CAV_EAR, x);
-    set_ctl(m, AERO_CAV_EAR + 1, y);
-    return set_ctl(m, AERO_CAV_EAR + 2, z);
+    for (int i = 0; i < 3; i++)
+        set_ctl(m, AERO_CAV_EAR + i, e->pos[0][i]);
+    return 0;
 }
 
 int aero_cavity_model_set_texture(aero_cavity_model *m, aero_texture *t,

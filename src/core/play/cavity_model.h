@@ -26,6 +26,7 @@
 #ifndef AERO_CAVITY_MODEL_H
 #define AERO_CAVITY_MODEL_H
 
+#include "aero_ears.h"
 #include "texture.h"
 
 #include <stdint.h>
@@ -65,9 +66,10 @@ typedef struct aero_cavity_model {
 } aero_cavity_model;
 
 /* Defaults: L 2 cm, D 1 cm, W 5 cm, listener 1 m above the opening (+y),
- * gain 0 dB, ramp 20 ms, exponent 2. */
-void aero_cavity_model_init(aero_cavity_model *m, double sample_rate,
-                            uint32_t seed);
+ * gain 0 dB, ramp 20 ms, exponent 2. 0, or -1 when the sample rate is not
+ * usable (44.1 kHz is taken). */
+int aero_cavity_model_init(aero_cavity_model *m, double sample_rate,
+                           uint32_t seed);
 void aero_cavity_model_free(aero_cavity_model *m);
 
 /* Setters: 0 when accepted, -1 when invalid (the old value stays). */
@@ -78,8 +80,8 @@ int aero_cavity_model_set_width(aero_cavity_model *m, double w);
 int aero_cavity_model_set_gain_db(aero_cavity_model *m, double db);
 int aero_cavity_model_set_ramp_ms(aero_cavity_model *m, double ms);
 int aero_cavity_model_set_exponent(aero_cavity_model *m, double n);
-int aero_cavity_model_set_listener(aero_cavity_model *m, double x, double y,
-                                   double z);
+/* one listener (mono: e->n must be 1) */
+int aero_cavity_model_set_ears(aero_cavity_model *m, const aero_ears *e);
 void aero_cavity_model_set_seed(aero_cavity_model *m, uint32_t seed);
 
 /* Texture mode: takes ownership of a loaded texture (kind=cavity, at least

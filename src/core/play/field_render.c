@@ -15,15 +15,16 @@
 
 /* --- rendering ------------------------------------------------------------ */
 
-void aero_field_render_init(aero_field_render *r, double sample_rate)
+int aero_field_render_init(aero_field_render *r, double sample_rate)
 {
     memset(r, 0, sizeof *r);
-    r->sample_rate = sample_rate > 0 && sample_rate < 1e7 ? sample_rate
-                                                           : 44100;
+    int sr_ok = sample_rate > 0 && sample_rate < 1e7;
+    r->sample_rate = sr_ok ? sample_rate : 44100;
     r->speed = r->speed_target = 0;
     r->ramp_ms = 20;
     r->gain = 1;
     r->phase = -2;
+    return sr_ok ? 0 : -1;
 }
 
 void aero_field_render_free(aero_field_render *r)
@@ -71,32 +72,23 @@ int aero_field_render_set_speed(aero_field_render *r, double fps)
     return 0;
 }
 
-static int position_ok(double x, double y, double z)
+int aero_field_render_set_ears(aero_field_render *r, const aero_ears *e)
 {
-    return aero_is_finite(x) && aero_is_finite(y) && aero_is_finite(z) &&
-           fabs(x) <= 1e5 && fabs(y) <= 1e5 && fabs(z) <= 1e5;
-}
-
-int aero_field_render_set_listener(aero_field_render *r, double x, double y,
-                                   double z)
-{
-    if (!position_ok(x, y, z))
+    if (!aero_ears_ok(e, 1))
         return -1;
-    r->target[0] = x, r->target[1] = y, r->target[2] = z;
+    memcpy(r->target, e->pos[0], sizeof r->target);
     r->ramp_left = r->ramp_ms * 0.001 * r->sample_rate;
     if (r->ramp_left < 1)
         r->ramp_left = 1;
     return 0;
 }
 
-int aero_field_render_place_listener(aero_field_render *r, double x,
-                                     double y, double z)
+int aero_field_render_place_ears(aero_field_render *r, const aero_ears *e)
 {
-    if (!position_ok(x, y, z))
+    if (!aero_ears_ok(e, 1))
         return -1;
-    r->target[0] = r->listener[0] = x;
-    r->target[1] = r->listener[1] = y;
-    r->target[2] = r->listener[2] = z;
+    memcpy(r->target, e->pos[0], sizeof r->target);
+    memcpy(r->listener, e->pos[0], sizeof r->listener);
     r->ramp_left = 0;
     r->dist_valid = 0;
     return 0;

@@ -4,6 +4,7 @@
 #ifndef AERO_FIELD_RENDER_H
 #define AERO_FIELD_RENDER_H
 
+#include "aero_ears.h"
 #include "field_prepare.h"
 
 /* --- rendering ----------------------------------------------------------- */
@@ -28,18 +29,18 @@ typedef struct aero_field_render {
 
 /* Defaults: listener at (0, 0, 0) ... set it; speed = the data's rate
  * once sources are set; ramp 20 ms; gain 0 dB; stopped. */
-void aero_field_render_init(aero_field_render *r, double sample_rate);
+/* 0, or -1 when the sample rate is not usable (44.1 kHz is taken) */
+int aero_field_render_init(aero_field_render *r, double sample_rate);
 void aero_field_render_free(aero_field_render *r);
 /* new sources (NULL: silence); 0, or -1 when out of memory. Stops. */
 int aero_field_render_set_sources(aero_field_render *r,
                                   const aero_field_sources *s);
 int aero_field_render_set_sample_rate(aero_field_render *r, double sr);
 int aero_field_render_set_speed(aero_field_render *r, double fps);
-int aero_field_render_set_listener(aero_field_render *r, double x, double y,
-                                   double z);
-/* jump there at once (offline paths start here) */
-int aero_field_render_place_listener(aero_field_render *r, double x,
-                                     double y, double z);
+/* one listener (mono: e->n must be 1), reached over the ramp time */
+int aero_field_render_set_ears(aero_field_render *r, const aero_ears *e);
+/* the same, there at once (offline paths start here) */
+int aero_field_render_place_ears(aero_field_render *r, const aero_ears *e);
 int aero_field_render_set_ramp_ms(aero_field_render *r, double ms);
 int aero_field_render_set_gain_db(aero_field_render *r, double db);
 void aero_field_render_play(aero_field_render *r);

@@ -268,7 +268,8 @@ int aero_stick_texture_set_pose(aero_stick_texture *s, const double a[3],
                                 const double b[3], double interval_s)
 {
     double p[6] = {a[0], a[1], a[2], b[0], b[1], b[2]};
-    if (!finite3(a, 1e5) || !finite3(b, 1e5) || stick_length(p) < 1e-6)
+    if (!finite3(a, AERO_POSITION_LIMIT) ||
+        !finite3(b, AERO_POSITION_LIMIT) || stick_length(p) < 1e-6)
         return -1;
     /* the first pose, one after a pause (a new gesture) or a placement
      * (interval < 0) jumps: there is nothing to move from */
@@ -306,7 +307,7 @@ int aero_stick_texture_set_reference(aero_stick_texture *s,
                                      const double x[3])
 {
     double v[3] = {x[0], x[1], x[2]};
-    if (!finite3(v, 1e5) || normalise3(v) < 1e-9)
+    if (!finite3(v, AERO_POSITION_LIMIT) || normalise3(v) < 1e-9)
         return -1;
     memcpy(s->reference, v, sizeof(v));
     return 0;
@@ -329,14 +330,13 @@ int aero_stick_texture_set_wind(aero_stick_texture *s, const double w[3])
     return 0;
 }
 
-int aero_stick_texture_set_ear(aero_stick_texture *s, int ear, double x,
-                               double y, double z)
+int aero_stick_texture_set_ears(aero_stick_texture *s, const aero_ears *e)
 {
-    double v[3] = {x, y, z};
-    if (ear < 0 || ear >= s->n_ears || !finite3(v, 1e5))
+    if (!aero_ears_ok(e, s->n_ears))
         return -1;
-    for (int i = 0; i < 3; i++)
-        ramp_to(&s->ear[3 * ear + i], v[i], s->ramp_samples);
+    for (int k = 0; k < e->n; k++)
+        for (int i = 0; i < 3; i++)
+            ramp_to(&s->ear[3 * k + i], e->pos[k][i], s->ramp_samples);
     return 0;
 }
 

@@ -30,11 +30,12 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "aero_ears.h"
 #include "aero_util.h"
 #include "arrivals.h"
 #include "texture.h"
 
-#define AERO_STICK_MAX_EARS 2
+#define AERO_STICK_MAX_EARS AERO_EARS_MAX
 #define AERO_STICK_MAX_SOURCES 256
 #define AERO_STICK_CHUNK 32          /* samples per geometry update */
 #define AERO_STICK_MAX_DELAY_S 1.0   /* sound travel time kept: 343 m */
@@ -122,8 +123,8 @@ int aero_stick_texture_set_reference(aero_stick_texture *s,
                                      const double x[3]);
 int aero_stick_texture_set_roll_deg(aero_stick_texture *s, double deg);
 int aero_stick_texture_set_wind(aero_stick_texture *s, const double w[3]);
-int aero_stick_texture_set_ear(aero_stick_texture *s, int ear, double x,
-                               double y, double z);
+/* ears 0..e->n-1 (e->n at most the ears the player was made with) */
+int aero_stick_texture_set_ears(aero_stick_texture *s, const aero_ears *e);
 
 /* n samples; speed[i] (may be NULL) adds a wind along +x; out[e][i] is the
  * sound pressure at ear e in Pa. Returns 1 if a speed was clamped. */

@@ -130,7 +130,7 @@ int aero_vortex_player_set_speeds(aero_vortex_player *m, const double *u,
 
 static int position_ok(double v)
 {
-    return aero_is_finite(v) && fabs(v) <= 1e5;
+    return aero_is_finite(v) && fabs(v) <= AERO_POSITION_LIMIT;
 }
 
 int aero_vortex_player_set_positions(aero_vortex_player *m,
@@ -146,24 +146,13 @@ int aero_vortex_player_set_positions(aero_vortex_player *m,
     return 0;
 }
 
-int aero_vortex_player_set_listener(aero_vortex_player *m, double x,
-                                    double y, double z)
+int aero_vortex_player_set_ears(aero_vortex_player *m, const aero_ears *e)
 {
-    if (!position_ok(x) || !position_ok(y) || !position_ok(z))
+    if (!aero_ears_ok(e, 2))
         return -1;
-    m->ear_target[0] = m->ear_target[3] = x;
-    m->ear_target[1] = m->ear_target[4] = y;
-    m->ear_target[2] = m->ear_target[5] = z;
-    start_ramp(m);
-    return 0;
-}
-
-int aero_vortex_player_set_ears(aero_vortex_player *m, const double e[6])
-{
-    for (int k = 0; k < 6; k++)
-        if (!position_ok(e[k]))
-            return -1;
-    memcpy(m->ear_target, e, sizeof m->ear_target);
+    for (int k = 0; k < 2; k++) /* one listener: both ears there */
+        memcpy(m->ear_target + 3 * k, e->pos[e->n == 2 ? k : 0],
+               sizeof(double) * 3);
     start_ramp(m);
     return 0;
 }

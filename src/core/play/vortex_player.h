@@ -35,6 +35,7 @@
 #ifndef AERO_VORTEX_PLAYER_H
 #define AERO_VORTEX_PLAYER_H
 
+#include "aero_ears.h"
 #include "combustion_noise.h"
 #include "texture.h"
 
@@ -91,9 +92,8 @@ int aero_vortex_player_set_speeds(aero_vortex_player *m, const double *u,
 /* per-source positions x y z (m), count sources */
 int aero_vortex_player_set_positions(aero_vortex_player *m,
                                      const double *xyz, int count);
-int aero_vortex_player_set_listener(aero_vortex_player *m, double x,
-                                    double y, double z);
-int aero_vortex_player_set_ears(aero_vortex_player *m, const double e[6]);
+/* one listener (both ears there) or two ears */
+int aero_vortex_player_set_ears(aero_vortex_player *m, const aero_ears *e);
 int aero_vortex_player_set_gain_db(aero_vortex_player *m, double db);
 /* microphone limit, Pa (0: off) */
 int aero_vortex_player_set_clip(aero_vortex_player *m, double pa);

@@ -381,6 +381,10 @@ static void *fieldsound_tilde_new(t_symbol *s, int argc, t_atom *argv)
     t_fieldsound_tilde *x = (t_fieldsound_tilde *)pd_new(
         fieldsound_tilde_class);
     aero_pd_base_init(&x->x_base, x, &fieldsound_tilde_spec, argc, argv);
+    /* no flow to clamp: its report (the listener's speed, `done`) is
+       x_report's, so the base's flow-clamp clock goes */
+    clock_free(x->x_base.clock);
+    x->x_base.clock = NULL;
     aero_field_params_default(&x->x_par);
     aero_field_render_init(&x->x_render, sys_getsr());
     aero_ears start = aero_ears_at(1, 0, 0);

@@ -324,20 +324,186 @@ static inline float cubic(const float *p, float f)
                   f * (3.0f * (p[1] - p[2]) + p[3] - p[0])));
 }
 
+/* moves count values a fraction frac of the way to their targets */
+static void glide(double *v, const double *target, int count, double frac)
+{
+    for (int k = 0; k < count; k++)
+        v[k] += (target[k] - v[k]) * frac;
+}
+
+/* the speed inlet at the block's ends (read before any output is
+   written: the buffers may be shared); 1 if any sample was clamped */
+static int read_inlet(const float *speed, int n, double *u_first,
+                      double *u_last)
+{
+    int clamped = 0;
+    *u_first = speed ? clean_speed(speed[0], &clamped) : 0.0;
+    *u_last = speed ? clean_speed(speed[n - 1], &clamped) : 0.0;
+    if (speed)
+        for (int k = 1; k < n - 1; k++)
+            if (fabs(speed[k]) > AERO_MACH_LIMIT * AERO_C0) clamped = 1;
+    return clamped;
+}
+
+/* what one block's sources share */
+typedef struct {
+    int n, nout, frames, stride;
+    double step;   /* texture frames per sample */
+    double delay;  /* texture frames per m */
+    double sound;  /* 1 / (m per sample of c0) */
+    double inv_n;
+    double frac;   /* of the ramps, over this block */
+    double ear0[6]; /* the ears at the block's start */
+} block;
+
+/* adds n samples of texture channels qa, qb read from s0 in steps of ds,
+   weights w (wa, wb at the start, then at the end) and gain g0 -> g1
+   interpolated per sample, into o */
+static void add_texture(const block *b, const float *qa, const float *qb,
+                        double s0, double ds, const double w[4], double g0,
+                        double g1, float *o)
+{
+    const int F = b->frames, n = b->n;
+    const float dwa = (float)((w[2] - w[0]) * b->inv_n),
+                dwb = (float)((w[3] - w[1]) * b->inv_n),
+                dg = (float)((g1 - g0) * b->inv_n);
+    float wa = (float)w[0], wb = (float)w[1], g = (float)g0;
+    double s = s0;
+    for (int k = 0; k < n; k++) {
+        int idx;
+        float f;
+        if (s >= F) s -= F;
+        else if (s < 0.0) s += F;
+        idx = (int)s;
+        if (idx >= F) idx = F - 1; /* rounding */
+        f = (float)(s - idx);
+        o[k] += g * (wa * cubic(qa + idx, f) + wb * cubic(qb + idx, f));
+        s += ds;
+        wa += dwa;
+        wb += dwb;
+        g += dg;
+    }
+}
+
+/* source i heard at ear e: the retarded read position moves at the
+   Doppler rate of both motions; adds the block into o */
+static void render_ear(aero_vortex_player *m, const block *b, int i, int e,
+                       int c, const double w[4], float *o)
+{
+    const int F = b->frames;
+    /* r1 now; rs: had only the source moved (the ear where it was at the
+       block's start) */
+    double r1 = distance(m->xyz + 3 * i, m->ear + 3 * e);
+    double rs = distance(m->xyz + 3 * i, b->ear0 + 3 * e);
+    double r0 = m->dist[2 * i + e];
+    double g0, g1, s0, ds, vs, vl;
+    const float *qa = m->tab + (size_t)c * b->stride;
+    const float *qb = m->nspeeds > 1 ? qa + b->stride : qa;
+    if (r1 < m->r_min) r1 = m->r_min;
+    if (rs < m->r_min) rs = m->r_min;
+    if (r0 < 0.0) {
+        /* first block: start at the source's offset, delayed by the
+           distance, with no jump */
+        r0 = r1;
+        rs = r1;
+        m->rd[2 * i + e] = m->pos[i] - r1 * b->delay;
+    }
+    m->dist[2 * i + e] = r1;
+    /* the rates of change of r from each motion, in units of c0 (m per
+       sample / (c0 / sr)) */
+    vs = (rs - r0) * b->inv_n * b->sound;
+    vl = (r1 - rs) * b->inv_n * b->sound;
+    if (vs < -0.9) vs = -0.9; /* a jump, not a motion */
+    if (vs > 10.0) vs = 10.0;
+    if (vl > 0.9) vl = 0.9;
+    if (vl < -10.0) vl = -10.0;
+    ds = b->step * (1.0 - vl) / (1.0 + vs);
+    s0 = fmod(m->rd[2 * i + e], (double)F);
+    if (s0 < 0.0) s0 += F;
+    m->rd[2 * i + e] = fmod(s0 + b->n * ds, (double)F);
+    if (w[0] == 0.0 && w[1] == 0.0 && w[2] == 0.0 && w[3] == 0.0)
+        return;
+    g0 = 1.0 / r0;
+    g1 = 1.0 / r1;
+    if (m->falloff == 3) {
+        g0 *= g0 * g0;
+        g1 *= g1 * g1;
+    }
+    add_texture(b, qa, qb, s0, ds, w, g0, g1, o);
+}
+
+/* source i over the block: its speed's channel pair and weights at both
+   ends, its position, then each ear */
+static void render_source(aero_vortex_player *m, const block *b, int i,
+                          double u_in0, double u_in1, float *const *out)
+{
+    double u0 = u_in0 + m->speed[i], u1, w[4];
+    int c;
+    m->speed[i] += (m->speed_target[i] - m->speed[i]) * b->frac;
+    u1 = u_in1 + m->speed[i];
+    if (u1 > AERO_MACH_LIMIT * AERO_C0) u1 = AERO_MACH_LIMIT * AERO_C0;
+    if (u0 > AERO_MACH_LIMIT * AERO_C0) u0 = AERO_MACH_LIMIT * AERO_C0;
+    c = speed_pair(m, u1);
+    speed_weights(m, u0, c, &w[0], &w[1]);
+    speed_weights(m, u1, c, &w[2], &w[3]);
+    glide(m->xyz + 3 * i, m->xyz_target + 3 * i, 3, b->frac);
+    for (int e = 0; e < b->nout; e++)
+        render_ear(m, b, i, e, c, w, out[e]);
+    m->pos[i] += b->n * b->step;
+    if (m->pos[i] >= b->frames)
+        m->pos[i] = fmod(m->pos[i], (double)b->frames);
+}
+
+/* the flame's roar: a monopole at the volumes' centre, at their mean
+   speed */
+static void add_combustion(aero_vortex_player *m, double u_in, int nout,
+                           float *const *out, int n)
+{
+    double c[3] = {0.0, 0.0, 0.0}, u = 0.0;
+    for (int i = 0; i < m->n; i++) {
+        for (int k = 0; k < 3; k++) c[k] += m->xyz[3 * i + k];
+        u += u_in + m->speed[i];
+    }
+    for (int k = 0; k < 3; k++) c[k] /= m->n;
+    u /= m->n;
+    if (u > AERO_MACH_LIMIT * AERO_C0) u = AERO_MACH_LIMIT * AERO_C0;
+    aero_combustion_process(&m->combustion, u, c, m->ear, nout, out, n);
+}
+
+/* microphone limit (on the pressure), then the gain; no NaN leaves */
+static void limit_and_gain(aero_vortex_player *m, double frac, int nout,
+                           float *const *out, int n)
+{
+    double g1 = m->gain + (m->gain_target - m->gain) * frac;
+    const float dg = (float)((g1 - m->gain) / n);
+    for (int e = 0; e < nout; e++) {
+        float *o = out[e];
+        const float lim = (float)m->clip;
+        float g = (float)m->gain;
+        for (int k = 0; k < n; k++, g += dg) {
+            float v = o[k];
+            if (!(v == v)) v = 0.0f;
+            if (lim > 0.0f) {
+                if (v > lim) v = lim;
+                if (v < -lim) v = -lim;
+            }
+            v *= g;
+            if (v > 1e30f) v = 1e30f;
+            if (v < -1e30f) v = -1e30f;
+            o[k] = v;
+        }
+    }
+    m->gain = g1;
+}
+
 int aero_vortex_player_process(aero_vortex_player *m, const float *speed,
                                float *const *out, int n)
 {
     const int nout = m->stereo ? 2 : 1;
-    int clamped = 0;
     double u_in0, u_in1, frac;
     if (n <= 0)
         return 0;
-    /* read the inlet before writing (the buffers may be shared) */
-    u_in0 = speed ? clean_speed(speed[0], &clamped) : 0.0;
-    u_in1 = speed ? clean_speed(speed[n - 1], &clamped) : 0.0;
-    if (speed)
-        for (int k = 1; k < n - 1; k++)
-            if (fabs(speed[k]) > AERO_MACH_LIMIT * AERO_C0) clamped = 1;
+    int clamped = read_inlet(speed, n, &u_in0, &u_in1);
     for (int e = 0; e < nout; e++)
         memset(out[e], 0, sizeof(float) * (size_t)n);
 
@@ -346,141 +512,22 @@ int aero_vortex_player_process(aero_vortex_player *m, const float *speed,
                               : 1.0;
     m->ramp_left = m->ramp_left > n ? m->ramp_left - n : 0.0;
     if (!m->tab) {
-        for (int k = 0; k < 6; k++)
-            m->ear[k] += (m->ear_target[k] - m->ear[k]) * frac;
+        glide(m->ear, m->ear_target, 6, frac);
         for (int i = 0; i < m->n; i++) {
-            m->speed[i] += (m->speed_target[i] - m->speed[i]) * frac;
-            for (int k = 0; k < 3; k++)
-                m->xyz[3 * i + k] += (m->xyz_target[3 * i + k] - m->xyz[3 * i + k]) * frac;
+            glide(m->speed + i, m->speed_target + i, 1, frac);
+            glide(m->xyz + 3 * i, m->xyz_target + 3 * i, 3, frac);
             m->dist[2 * i] = m->dist[2 * i + 1] = -1.0;
         }
     } else {
-        const int F = m->frames, stride = F + PAD_BEFORE + PAD_AFTER;
-        const double step = m->rate / m->sample_rate;   /* frames/sample */
-        const double delay = m->rate / AERO_C0;         /* frames per m */
-        const double sound = m->sample_rate / AERO_C0;  /* 1 / (m/sample of c0) */
-        const double inv_n = 1.0 / n;
-        double ear0[6];
-        memcpy(ear0, m->ear, sizeof ear0);
-        for (int k = 0; k < 6; k++)
-            m->ear[k] += (m->ear_target[k] - m->ear[k]) * frac;
-        for (int i = 0; i < m->n; i++) {
-            double u0 = u_in0 + m->speed[i], u1, wa0, wb0, wa1, wb1;
-            int c;
-            m->speed[i] += (m->speed_target[i] - m->speed[i]) * frac;
-            u1 = u_in1 + m->speed[i];
-            if (u1 > AERO_MACH_LIMIT * AERO_C0) u1 = AERO_MACH_LIMIT * AERO_C0;
-            if (u0 > AERO_MACH_LIMIT * AERO_C0) u0 = AERO_MACH_LIMIT * AERO_C0;
-            c = speed_pair(m, u1);
-            speed_weights(m, u0, c, &wa0, &wb0);
-            speed_weights(m, u1, c, &wa1, &wb1);
-            {
-                for (int k = 0; k < 3; k++)
-                    m->xyz[3 * i + k] += (m->xyz_target[3 * i + k] - m->xyz[3 * i + k]) * frac;
-                for (int e = 0; e < nout; e++) {
-                    /* r1 now; rs: had only the source moved (the ear where it
-                       was at the block's start) */
-                    double r1 = distance(m->xyz + 3 * i, m->ear + 3 * e);
-                    double rs = distance(m->xyz + 3 * i, ear0 + 3 * e);
-                    double r0 = m->dist[2 * i + e];
-                    double g0, g1, s0, ds, vs, vl;
-                    const float *qa = m->tab + (size_t)c * stride;
-                    const float *qb = m->nspeeds > 1 ? qa + stride : qa;
-                    float *o = out[e];
-                    if (r1 < m->r_min) r1 = m->r_min;
-                    if (rs < m->r_min) rs = m->r_min;
-                    if (r0 < 0.0) {
-                        /* first block: start at the source's offset, delayed
-                           by the distance, with no jump */
-                        r0 = r1;
-                        rs = r1;
-                        m->rd[2 * i + e] = m->pos[i] - r1 * delay;
-                    }
-                    m->dist[2 * i + e] = r1;
-                    /* the rates of change of r from each motion, in units
-                       of c0 (m per sample / (c0 / sr)) */
-                    vs = (rs - r0) * inv_n * sound;
-                    vl = (r1 - rs) * inv_n * sound;
-                    if (vs < -0.9) vs = -0.9; /* a jump, not a motion */
-                    if (vs > 10.0) vs = 10.0;
-                    if (vl > 0.9) vl = 0.9;
-                    if (vl < -10.0) vl = -10.0;
-                    ds = step * (1.0 - vl) / (1.0 + vs);
-                    s0 = fmod(m->rd[2 * i + e], (double)F);
-                    if (s0 < 0.0) s0 += F;
-                    m->rd[2 * i + e] = fmod(s0 + n * ds, (double)F);
-                    if ((wa0 == 0.0 && wb0 == 0.0 && wa1 == 0.0 && wb1 == 0.0))
-                        continue;
-                    g0 = 1.0 / r0;
-                    g1 = 1.0 / r1;
-                    if (m->falloff == 3) {
-                        g0 *= g0 * g0;
-                        g1 *= g1 * g1;
-                    }
-                    {
-                        const float dwa = (float)((wa1 - wa0) * inv_n),
-                                    dwb = (float)((wb1 - wb0) * inv_n),
-                                    dg = (float)((g1 - g0) * inv_n);
-                        float wa = (float)wa0, wb = (float)wb0, g = (float)g0;
-                        double s = s0;
-                        for (int k = 0; k < n; k++) {
-                            int idx;
-                            float f;
-                            if (s >= F) s -= F;
-                            else if (s < 0.0) s += F;
-                            idx = (int)s;
-                            if (idx >= F) idx = F - 1; /* rounding */
-                            f = (float)(s - idx);
-                            o[k] += g * (wa * cubic(qa + idx, f) +
-                                         wb * cubic(qb + idx, f));
-                            s += ds;
-                            wa += dwa;
-                            wb += dwb;
-                            g += dg;
-                        }
-                    }
-                }
-            }
-            m->pos[i] += n * step;
-            if (m->pos[i] >= F)
-                m->pos[i] = fmod(m->pos[i], (double)F);
-        }
+        block b = {n, nout, m->frames, m->frames + PAD_BEFORE + PAD_AFTER,
+                   m->rate / m->sample_rate, m->rate / AERO_C0,
+                   m->sample_rate / AERO_C0, 1.0 / n, frac, {0}};
+        memcpy(b.ear0, m->ear, sizeof b.ear0);
+        glide(m->ear, m->ear_target, 6, frac);
+        for (int i = 0; i < m->n; i++)
+            render_source(m, &b, i, u_in0, u_in1, out);
     }
-    /* the flame's roar: a monopole at the volumes' centre, at their mean
-       speed */
-    {
-        double c[3] = {0.0, 0.0, 0.0}, u = 0.0;
-        for (int i = 0; i < m->n; i++) {
-            for (int k = 0; k < 3; k++) c[k] += m->xyz[3 * i + k];
-            u += u_in1 + m->speed[i];
-        }
-        for (int k = 0; k < 3; k++) c[k] /= m->n;
-        u /= m->n;
-        if (u > AERO_MACH_LIMIT * AERO_C0) u = AERO_MACH_LIMIT * AERO_C0;
-        aero_combustion_process(&m->combustion, u, c, m->ear, nout, out, n);
-    }
-    /* microphone limit (on the pressure), then the gain; no NaN leaves */
-    {
-        double g1 = m->gain + (m->gain_target - m->gain) * frac;
-        const float dg = (float)((g1 - m->gain) / n);
-        for (int e = 0; e < nout; e++) {
-            float *o = out[e];
-            const float lim = (float)m->clip;
-            float g = (float)m->gain;
-            for (int k = 0; k < n; k++, g += dg) {
-                float v = o[k];
-                if (!(v == v)) v = 0.0f;
-                if (lim > 0.0f) {
-                    if (v > lim) v = lim;
-                    if (v < -lim) v = -lim;
-                }
-                v *= g;
-                if (v > 1e30f) v = 1e30f;
-                if (v < -1e30f) v = -1e30f;
-                o[k] = v;
-            }
-        }
-        m->gain = g1;
-    }
+    add_combustion(m, u_in1, nout, out, n);
+    limit_and_gain(m, frac, nout, out, n);
     return clamped;
 }

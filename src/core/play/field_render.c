@@ -153,17 +153,12 @@ static void piece(const float *g, const unsigned char *type, int frames,
     c[3] = 0.5 * (p[3] - p[0]) + 1.5 * (p[1] - p[2]);
 }
 
-/* one chunk of c <= AERO_FIELD_CHUNK samples */
-static int render_chunk(aero_field_render *r, float *out, int c)
+/* the listener over a chunk of c samples: l0 where it is, l1 where it
+ * goes (a linear ramp toward the target, at most Mach 0.3) */
+static void move_listener(aero_field_render *r, int c, double l0[3],
+                          double l1[3])
 {
-    const aero_field_sources *s = r->src;
-    const double sr = r->sample_rate, inv_c0 = 1.0 / AERO_C0;
-    double l0[3], l1[3], scale[4], env0 = r->envelope, env1;
-    double s0 = r->speed, s1, ph0 = r->phase, ph1;
-    int remaining = 0;
-
-    /* the listener: linear ramp toward the target, at most Mach 0.3 */
-    memcpy(l0, r->listener, sizeof l0);
+    memcpy(l0, r->listener, sizeof(double) * 3);
     if (r->ramp_left > 0) {
         double f = c >= r->ramp_left ? 1.0 : c / r->ramp_left;
         for (int a = 0; a < 3; a++)
@@ -172,115 +167,125 @@ static int render_chunk(aero_field_render *r, float *out, int c)
         if (r->ramp_left < 0)
             r->ramp_left = 0;
     } else
-        memcpy(l1, r->target, sizeof l1);
-    {
-        double d[3], len = 0, lim = AERO_MACH_LIMIT * AERO_C0 * c / sr;
+        memcpy(l1, r->target, sizeof(double) * 3);
+    double d[3], len = 0;
+    double lim = AERO_MACH_LIMIT * AERO_C0 * c / r->sample_rate;
+    for (int a = 0; a < 3; a++)
+        d[a] = l1[a] - l0[a], len += d[a] * d[a];
+    len = sqrt(len);
+    if (len > lim) {
+        /* faster than Mach 0.3: go on toward the target next chunk */
         for (int a = 0; a < 3; a++)
-            d[a] = l1[a] - l0[a], len += d[a] * d[a];
-        len = sqrt(len);
-        if (len > lim) {
-            /* faster than Mach 0.3: go on toward the target next chunk */
-            for (int a = 0; a < 3; a++)
-                l1[a] = l0[a] + d[a] * lim / len;
-            r->clamped = 1;
-            if (r->ramp_left < c)
-                r->ramp_left = c;
-        }
+            l1[a] = l0[a] + d[a] * lim / len;
+        r->clamped = 1;
+        if (r->ramp_left < c)
+            r->ramp_left = c;
     }
-    memcpy(r->listener, l1, sizeof l1);
+    memcpy(r->listener, l1, sizeof(double) * 3);
+}
 
-    /* playhead and speed: the speed glides to its target in ~10 ms */
-    {
-        double glide = c / (0.01 * sr);
-        s1 = s0 + (r->speed_target - s0) * (glide > 1 ? 1 : glide);
-    }
-    ph1 = ph0 + 0.5 * (s0 + s1) * c / sr;
-    env1 = r->playing ? 1.0 : 0.0;
-    if (!s || (env0 <= 0 && env1 <= 0)) {
-        memset(out, 0, sizeof(float) * c);
-        r->speed = s1;
-        r->envelope = env1;
-        r->dist_valid = 0;
-        return 0;
-    }
-    {
-        double sm = 0.5 * (s0 + s1) / s->rate;
-        for (int t = 0; t < 4; t++)
-            scale[t] = t ? r->gain / (4 * AERO_PI) * pow(sm, s->exponent[t])
-                         : 0;
-    }
+/* what every source of one chunk shares */
+typedef struct {
+    int c;                 /* samples */
+    double l0[3], l1[3];   /* the listener at the chunk's ends */
+    double ph0, ph1;       /* playhead, data frames */
+    double s0, s1;         /* playback speed, frames per second */
+    double scale[4];       /* per source type */
+} chunk;
+
+/* adds the Catmull-Rom piece cf, read at x = al + b i, times 1/D =
+ * w0 + wd i, over samples is..ie-1 into acc */
+static void add_piece(aero_field_render *r, const double cf[4],
+                      double al, double b, double w0, double wd, int is,
+                      int ie)
+{
     double *acc = r->acc;
-    memset(acc, 0, sizeof(double) * 5 * (c + 1));
-    const int frames = s->frames;
-    const double dmin = s->min_distance;
-    for (int k = 0; k < s->count; k++) {
-        const float *pos = s->pos + 3 * k;
-        double e1[3] = {l1[0] - pos[0], l1[1] - pos[1], l1[2] - pos[2]};
-        double d1 = sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]), d0;
-        if (r->dist_valid)
-            d0 = r->dist[k];
-        else {
-            double e0[3] = {l0[0] - pos[0], l0[1] - pos[1], l0[2] - pos[2]};
-            d0 = sqrt(e0[0] * e0[0] + e0[1] * e0[1] + e0[2] * e0[2]);
+    if (r->direct) {
+        /* the reference: every sample evaluated on its own */
+        for (int i = is; i < ie; i++) {
+            double x = al + b * i;
+            double v = ((cf[3] * x + cf[2]) * x + cf[1]) * x + cf[0];
+            acc[5 * i] += v * (w0 + wd * i);
         }
-        r->dist[k] = (float)d1;
-        /* retarded frame time at both ends of the chunk: the radiation
-         * leaving the source at frame u arrives D/c0 later */
-        double u0 = ph0 - s0 * d0 * inv_c0, u1 = ph1 - s1 * d1 * inv_c0;
-        if (u0 < s->last[k] + 2)
-            remaining = 1;
-        if (u1 < s->first[k] - 2 || u0 >= s->last[k] + 2)
-            continue; /* not reached yet, or heard out */
-        double b = (u1 - u0) / c;
-        if (!(b > 1e-12))
-            b = 1e-12;
-        double w0 = 1 / (d0 > dmin ? d0 : dmin);
-        double w1 = 1 / (d1 > dmin ? d1 : dmin);
-        double wd = (w1 - w0) / c;
-        const float *g = s->g + (size_t)k * frames;
-        const unsigned char *ty = s->type + (size_t)k * frames;
-        int m_lo = (int)floor(u0), m_hi = (int)floor(u1);
-        if (m_lo < s->first[k] - 2)
-            m_lo = s->first[k] - 2;
-        if (m_hi > s->last[k] + 1)
-            m_hi = s->last[k] + 1;
-        for (int m = m_lo; m <= m_hi; m++) {
-            int is = m <= u0 ? 0 : (int)ceil((m - u0) / b);
-            int ie = m + 1 > u1 ? c : (int)ceil((m + 1 - u0) / b);
-            if (is < 0) is = 0;
-            if (ie > c) ie = c;
-            if (ie <= is)
-                continue;
-            double cf[4];
-            piece(g, ty, frames, m, scale, cf);
-            if (cf[0] == 0 && cf[1] == 0 && cf[2] == 0 && cf[3] == 0)
-                continue;
-            double al = u0 - m;
-            if (r->direct) {
-                /* the reference: every sample evaluated on its own */
-                for (int i = is; i < ie; i++) {
-                    double x = al + b * i;
-                    double v = ((cf[3] * x + cf[2]) * x + cf[1]) * x + cf[0];
-                    acc[5 * i] += v * (w0 + wd * i);
-                }
-                continue;
-            }
-            /* the piece as a cubic in the sample index i (x = al + b i),
-             * times 1/D = w0 + wd i: a quartic, added from is to ie */
-            double g0 = ((cf[3] * al + cf[2]) * al + cf[1]) * al + cf[0];
-            double g1 = ((3 * cf[3] * al + 2 * cf[2]) * al + cf[1]) * b;
-            double g2 = (3 * cf[3] * al + cf[2]) * b * b;
-            double g3 = cf[3] * b * b * b;
-            double f[5] = {g0 * w0, g1 * w0 + g0 * wd, g2 * w0 + g1 * wd,
-                           g3 * w0 + g2 * wd, g3 * wd};
-            double *a_s = acc + 5 * is, *a_e = acc + 5 * ie;
-            for (int j = 0; j < 5; j++) {
-                a_s[j] += f[j];
-                a_e[j] -= f[j];
-            }
-        }
+        return;
     }
-    r->dist_valid = 1;
+    /* the piece as a cubic in the sample index i (x = al + b i), times
+     * 1/D = w0 + wd i: a quartic, added from is to ie */
+    double g0 = ((cf[3] * al + cf[2]) * al + cf[1]) * al + cf[0];
+    double g1 = ((3 * cf[3] * al + 2 * cf[2]) * al + cf[1]) * b;
+    double g2 = (3 * cf[3] * al + cf[2]) * b * b;
+    double g3 = cf[3] * b * b * b;
+    double f[5] = {g0 * w0, g1 * w0 + g0 * wd, g2 * w0 + g1 * wd,
+                   g3 * w0 + g2 * wd, g3 * wd};
+    double *a_s = acc + 5 * is, *a_e = acc + 5 * ie;
+    for (int j = 0; j < 5; j++) {
+        a_s[j] += f[j];
+        a_e[j] -= f[j];
+    }
+}
+
+/* source k over the chunk, at the retarded time; 1 while some of it is
+ * still to be heard */
+static int add_source(aero_field_render *r, const chunk *ch, int k)
+{
+    const aero_field_sources *s = r->src;
+    const double inv_c0 = 1.0 / AERO_C0;
+    const int c = ch->c, frames = s->frames;
+    const double dmin = s->min_distance;
+    const float *pos = s->pos + 3 * k;
+    const double *l0 = ch->l0, *l1 = ch->l1;
+    int remaining = 0;
+    double e1[3] = {l1[0] - pos[0], l1[1] - pos[1], l1[2] - pos[2]};
+    double d1 = sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]), d0;
+    if (r->dist_valid)
+        d0 = r->dist[k];
+    else {
+        double e0[3] = {l0[0] - pos[0], l0[1] - pos[1], l0[2] - pos[2]};
+        d0 = sqrt(e0[0] * e0[0] + e0[1] * e0[1] + e0[2] * e0[2]);
+    }
+    r->dist[k] = (float)d1;
+    /* retarded frame time at both ends of the chunk: the radiation
+     * leaving the source at frame u arrives D/c0 later */
+    double u0 = ch->ph0 - ch->s0 * d0 * inv_c0;
+    double u1 = ch->ph1 - ch->s1 * d1 * inv_c0;
+    if (u0 < s->last[k] + 2)
+        remaining = 1;
+    if (u1 < s->first[k] - 2 || u0 >= s->last[k] + 2)
+        return remaining; /* not reached yet, or heard out */
+    double b = (u1 - u0) / c;
+    if (!(b > 1e-12))
+        b = 1e-12;
+    double w0 = 1 / (d0 > dmin ? d0 : dmin);
+    double w1 = 1 / (d1 > dmin ? d1 : dmin);
+    double wd = (w1 - w0) / c;
+    const float *g = s->g + (size_t)k * frames;
+    const unsigned char *ty = s->type + (size_t)k * frames;
+    int m_lo = (int)floor(u0), m_hi = (int)floor(u1);
+    if (m_lo < s->first[k] - 2)
+        m_lo = s->first[k] - 2;
+    if (m_hi > s->last[k] + 1)
+        m_hi = s->last[k] + 1;
+    for (int m = m_lo; m <= m_hi; m++) {
+        int is = m <= u0 ? 0 : (int)ceil((m - u0) / b);
+        int ie = m + 1 > u1 ? c : (int)ceil((m + 1 - u0) / b);
+        if (is < 0) is = 0;
+        if (ie > c) ie = c;
+        if (ie <= is)
+            continue;
+        double cf[4];
+        piece(g, ty, frames, m, ch->scale, cf);
+        if (cf[0] == 0 && cf[1] == 0 && cf[2] == 0 && cf[3] == 0)
+            continue;
+        add_piece(r, cf, u0 - m, b, w0, wd, is, ie);
+    }
+    return remaining;
+}
+
+/* the accumulated chunk into out, faded from env0 to env1 */
+static void sum_chunk(const aero_field_render *r, float *out, int c,
+                      double env0, double env1)
+{
+    const double *acc = r->acc;
     if (r->direct) {
         for (int i = 0; i < c; i++) {
             double e = env0 + (env1 - env0) * i / c;
@@ -300,8 +305,49 @@ static int render_chunk(aero_field_render *r, float *out, int c)
     for (int i = 0; i < c; i++)
         if (!aero_is_finite(out[i]))
             out[i] = 0;
-    r->phase = ph1;
-    r->speed = s1;
+}
+
+/* one chunk of c <= AERO_FIELD_CHUNK samples */
+static int render_chunk(aero_field_render *r, float *out, int c)
+{
+    const aero_field_sources *s = r->src;
+    const double sr = r->sample_rate;
+    double env0 = r->envelope, env1;
+    chunk ch;
+    int remaining = 0;
+    ch.c = c;
+    ch.s0 = r->speed;
+    ch.ph0 = r->phase;
+    move_listener(r, c, ch.l0, ch.l1);
+
+    /* playhead and speed: the speed glides to its target in ~10 ms */
+    {
+        double glide = c / (0.01 * sr);
+        ch.s1 = ch.s0 + (r->speed_target - ch.s0) * (glide > 1 ? 1 : glide);
+    }
+    ch.ph1 = ch.ph0 + 0.5 * (ch.s0 + ch.s1) * c / sr;
+    env1 = r->playing ? 1.0 : 0.0;
+    if (!s || (env0 <= 0 && env1 <= 0)) {
+        memset(out, 0, sizeof(float) * c);
+        r->speed = ch.s1;
+        r->envelope = env1;
+        r->dist_valid = 0;
+        return 0;
+    }
+    {
+        double sm = 0.5 * (ch.s0 + ch.s1) / s->rate;
+        for (int t = 0; t < 4; t++)
+            ch.scale[t] = t ? r->gain / (4 * AERO_PI) *
+                                  pow(sm, s->exponent[t])
+                            : 0;
+    }
+    memset(r->acc, 0, sizeof(double) * 5 * (c + 1));
+    for (int k = 0; k < s->count; k++)
+        remaining |= add_source(r, &ch, k);
+    r->dist_valid = 1;
+    sum_chunk(r, out, c, env0, env1);
+    r->phase = ch.ph1;
+    r->speed = ch.s1;
     r->envelope = env1;
     if (r->playing && !remaining)
         r->playing = 0; /* every source has been heard */

@@ -15,13 +15,19 @@ typedef struct aero_ears {
     double pos[AERO_EARS_MAX][3];    /* m */
 } aero_ears;
 
+/* n values, each finite and within +-limit */
+static inline int aero_finite_within(const double *v, int n, double limit)
+{
+    for (int i = 0; i < n; i++)
+        if (!aero_is_finite(v[i]) || fabs(v[i]) > limit)
+            return 0;
+    return 1;
+}
+
 /* finite and within AERO_POSITION_LIMIT on every axis */
 static inline int aero_position_ok(const double p[3])
 {
-    for (int i = 0; i < 3; i++)
-        if (!aero_is_finite(p[i]) || fabs(p[i]) > AERO_POSITION_LIMIT)
-            return 0;
-    return 1;
+    return aero_finite_within(p, 3, AERO_POSITION_LIMIT);
 }
 
 /* 1 when e holds 1..max_ears usable positions, else 0 */

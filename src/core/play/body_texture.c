@@ -13,19 +13,6 @@
 #define MIN_SPEED 1e-6       /* below this the flow direction is unknown */
 
 
-static void ramp_to(aero_ramp *r, double v, double ramp_samples)
-{
-    aero_ramp_to(r, v, ramp_samples, AERO_BODY_CHUNK);
-}
-
-static int finite_n(const double *v, int n, double limit)
-{
-    for (int i = 0; i < n; i++)
-        if (!aero_is_finite(v[i]) || fabs(v[i]) > limit)
-            return 0;
-    return 1;
-}
-
 /* R(q) v for a unit quaternion q = (w, x, y, z) */
 static void rotate(const double *q, const double *v, double *out)
 {
@@ -50,18 +37,12 @@ void aero_body_quaternion_from_rotvec(const double r[3], double q[4])
 
 /* --- life cycle ----------------------------------------------------------- */
 
-static int alloc_rings(aero_body_texture *s, double sr)
-{
-    return aero_arrivals_alloc(&s->arrivals, s->n_ears, sr,
-                               AERO_BODY_MAX_DELAY_S, 4 * AERO_BODY_CHUNK);
-}
-
 static void restart_sources(aero_body_texture *s)
 {
     for (int i = 0; i < AERO_BODY_MAX_SOURCES; i++) {
         memset(&s->src[i], 0, sizeof(s->src[i]));
         if (s->texture)
-            s->src[i].pos = 0.5 * (aero_uniform(&s->rng) + 1.0) *
+            s->src[i].pos = 0.5 * (aero_uniform(&s->base.rng) + 1.0) *
                             s->texture->frames;
     }
 }
@@ -71,29 +52,20 @@ int aero_body_texture_init(aero_body_texture *s, double sample_rate,
 {
     static const double unturned[7] = {0, 0, 0, 1, 0, 0, 0};
     memset(s, 0, sizeof(*s));
-    s->n_ears = n_ears < 1 ? 1 : n_ears > 2 ? 2 : n_ears;
-    s->sample_rate = sample_rate >= 1000.0 && sample_rate <= 1536000.0
-                         ? sample_rate : 44100.0;
-    s->rng = seed ? seed : 1;
     s->scale = 1.0;
-    s->exponent = 3.0;
-    s->ramp_samples = 0.020 * s->sample_rate;
     memcpy(s->pose, unturned, sizeof(unturned));
     memcpy(s->pose_from, unturned, sizeof(unturned));
     memcpy(s->pose_to, unturned, sizeof(unturned));
-    aero_ramp_jump(&s->gain, 1.0);
-    for (int e = 0; e < AERO_BODY_MAX_EARS; e++) {
-        aero_ramp_jump(&s->ear[3 * e + 0],
-                       s->n_ears == 2 ? (e ? 0.1 : -0.1) : 0.0);
-        aero_ramp_jump(&s->ear[3 * e + 1], 1.0);
-        aero_ramp_jump(&s->ear[3 * e + 2], 0.0);
-    }
-    return alloc_rings(s, s->sample_rate);
+    return aero_moving_player_init(
+        &s->base,
+        sample_rate >= AERO_MOVING_SR_MIN && sample_rate <= AERO_MOVING_SR_MAX
+            ? sample_rate : 44100.0,
+        n_ears, seed, AERO_BODY_CHUNK, AERO_BODY_MAX_DELAY_S);
 }
 
 void aero_body_texture_free(aero_body_texture *s)
 {
-    aero_arrivals_free(&s->arrivals);
+    aero_moving_player_free(&s->base);
     if (s->texture) {
         aero_texture_free(s->texture);
         free(s->texture);
@@ -187,23 +159,16 @@ int aero_body_texture_set_texture(aero_body_texture *s, aero_texture *t,
 
 int aero_body_texture_set_sample_rate(aero_body_texture *s, double sr)
 {
-    if (!(sr >= 1000.0 && sr <= 1536000.0))
-        return -1;
-    if (sr != s->sample_rate || !s->arrivals.ring[0]) {
-        double ms = s->ramp_samples / s->sample_rate * 1000.0;
-        if (alloc_rings(s, sr))
-            return -1;
-        s->sample_rate = sr;
-        s->ramp_samples = ms * 0.001 * sr;
+    int rc = aero_moving_player_set_sample_rate(&s->base, sr);
+    if (rc > 0)
         for (int i = 0; i < AERO_BODY_MAX_SOURCES; i++)
             s->src[i].primed = 0;
-    }
-    return 0;
+    return rc < 0 ? -1 : 0;
 }
 
 int aero_body_texture_set_scale(aero_body_texture *s, double scale)
 {
-    if (!(scale >= 1e-3 && scale <= 1e3))
+    if (!(scale >= AERO_BODY_SCALE_MIN && scale <= AERO_BODY_SCALE_MAX))
         return -1;
     s->scale = scale;
     return 0;
@@ -211,31 +176,22 @@ int aero_body_texture_set_scale(aero_body_texture *s, double scale)
 
 int aero_body_texture_set_exponent(aero_body_texture *s, double e)
 {
-    if (!(e >= 0.0 && e <= 12.0))
-        return -1;
-    s->exponent = e;
-    return 0;
+    return aero_moving_player_set_exponent(&s->base, e);
 }
 
 int aero_body_texture_set_gain_db(aero_body_texture *s, double db)
 {
-    if (!(db >= -200.0 && db <= 120.0))
-        return -1;
-    ramp_to(&s->gain, pow(10.0, db / 20.0), s->ramp_samples);
-    return 0;
+    return aero_moving_player_set_gain_db(&s->base, db);
 }
 
 int aero_body_texture_set_ramp_ms(aero_body_texture *s, double ms)
 {
-    if (!(ms >= 0.0 && ms <= 600000.0))
-        return -1;
-    s->ramp_samples = ms * 0.001 * s->sample_rate;
-    return 0;
+    return aero_moving_player_set_ramp_ms(&s->base, ms);
 }
 
 void aero_body_texture_set_seed(aero_body_texture *s, uint32_t seed)
 {
-    s->rng = seed ? seed : 1;
+    s->base.rng = seed ? seed : 1;
     restart_sources(s);
 }
 
@@ -255,7 +211,7 @@ int aero_body_texture_set_pose(aero_body_texture *s, const double pos[3],
 {
     double p[7] = {pos[0], pos[1], pos[2], quat[0], quat[1], quat[2], quat[3]};
     double n = sqrt(p[3] * p[3] + p[4] * p[4] + p[5] * p[5] + p[6] * p[6]);
-    if (!finite_n(pos, 3, AERO_POSITION_LIMIT) || !finite_n(quat, 4, 1e6) ||
+    if (!aero_position_ok(pos) || !aero_finite_within(quat, 4, 1e6) ||
         !(n > 1e-9))
         return -1;
     for (int i = 3; i < 7; i++)
@@ -288,27 +244,18 @@ int aero_body_texture_set_pose(aero_body_texture *s, const double pos[3],
     memcpy(s->pose_from, s->pose, sizeof(p));
     memcpy(s->pose_to, p, sizeof(p));
     s->pose_elapsed = 0.0;
-    s->pose_duration = interval_s * s->sample_rate;
+    s->pose_duration = interval_s * s->base.sample_rate;
     return 0;
 }
 
 int aero_body_texture_set_wind(aero_body_texture *s, const double w[3])
 {
-    if (!finite_n(w, 3, AERO_MACH_LIMIT * AERO_C0 * 10.0))
-        return -1;
-    for (int i = 0; i < 3; i++)
-        ramp_to(&s->wind[i], w[i], s->ramp_samples);
-    return 0;
+    return aero_moving_player_set_wind(&s->base, w);
 }
 
 int aero_body_texture_set_ears(aero_body_texture *s, const aero_ears *e)
 {
-    if (!aero_ears_ok(e, s->n_ears))
-        return -1;
-    for (int k = 0; k < e->n; k++)
-        for (int i = 0; i < 3; i++)
-            ramp_to(&s->ear[3 * k + i], e->pos[k][i], s->ramp_samples);
-    return 0;
+    return aero_moving_player_set_ears(&s->base, e);
 }
 
 /* --- processing --------------------------------------------------------------- */
@@ -417,22 +364,22 @@ static int geometry(aero_body_texture *s, int l, const double *wind,
                                              read takes its mirror image's
                                              channel (render) */
     }
-    g->inc = v / s->v0 / s->scale * s->tex_rate / s->sample_rate;
-    g->amp = v > MIN_SPEED ? pow(v / s->v0, s->exponent) * s->scale * gain
+    g->inc = v / s->v0 / s->scale * s->tex_rate / s->base.sample_rate;
+    g->amp = v > MIN_SPEED ? pow(v / s->v0, s->base.exponent) * s->scale * gain
                            : 0.0;
-    for (int e = 0; e < s->n_ears; e++) {
+    for (int e = 0; e < s->base.n_ears; e++) {
         double r[3] = {ears[e][0] - pos[0], ears[e][1] - pos[1],
                        ears[e][2] - pos[2]};
         double dist = sqrt(aero_dot3(r, r)), k;
         double near = 0.25 * s->scale * s->tex_size;
-        double dmax = AERO_BODY_MAX_DELAY_S * s->sample_rate;
+        double dmax = AERO_BODY_MAX_DELAY_S * s->base.sample_rate;
         if (dist < near) /* inside the body: the far field does not hold */
             dist = near;
         k = 1.0 / (4.0 * AERO_PI * AERO_C0 * dist * dist);
         g->proj[e][0] = aero_dot3(r, e1) * k;
         g->proj[e][1] = aero_dot3(r, e2) * k;
         g->proj[e][2] = aero_dot3(r, e3) * k;
-        g->delay[e] = dist / AERO_C0 * s->sample_rate;
+        g->delay[e] = dist / AERO_C0 * s->base.sample_rate;
         if (g->delay[e] > dmax)
             g->delay[e] = dmax;
     }
@@ -494,12 +441,12 @@ static void render(aero_body_texture *s, int l, const aero_body_geometry *g,
             pos = 0.0;
         src->pos = pos;
     }
-    for (int e = 0; e < s->n_ears; e++) {
+    for (int e = 0; e < s->base.n_ears; e++) {
         float cf[6], dcf[6];
-        float *ring = s->arrivals.ring[e];
-        const long mask = s->arrivals.mask;
+        float *ring = s->base.arrivals.ring[e];
+        const long mask = s->base.arrivals.mask;
         const double ddelay = (g->delay[e] - then.delay[e]) * inv_m;
-        double at = (double)s->arrivals.head + then.delay[e];
+        double at = (double)s->base.arrivals.head + then.delay[e];
         for (int c = 0; c < 3; c++) {
             double a0 = then.amp * then.proj[e][c], a1 = g->amp * g->proj[e][c];
             double s0 = (1.0 - w_then) * a0, s1 = (1.0 - w_now) * a1;
@@ -525,7 +472,7 @@ static void render(aero_body_texture *s, int l, const aero_body_geometry *g,
 int aero_body_texture_process(aero_body_texture *s, const float *speed,
                               float *const *out, int n)
 {
-    s->clamped = 0;
+    s->base.clamped = 0;
     for (int done = 0; done < n;) {
         int m = n - done < AERO_BODY_CHUNK ? n - done : AERO_BODY_CHUNK;
         double sp = 0.0, wind[3], ears[AERO_BODY_MAX_EARS][3], gain, alpha;
@@ -539,14 +486,14 @@ int aero_body_texture_process(aero_body_texture *s, const float *speed,
         }
         advance_pose(s, m);
         stopped = s->pose_elapsed > 1.5 * s->pose_duration + m;
-        alpha = 1.0 - exp(-m / (VELOCITY_TAU_S * s->sample_rate));
+        alpha = 1.0 - exp(-m / (VELOCITY_TAU_S * s->base.sample_rate));
         for (int i = 0; i < 3; i++)
-            wind[i] = aero_ramp_advance(&s->wind[i]);
+            wind[i] = aero_ramp_advance(&s->base.wind[i]);
         wind[0] += sp;
-        for (int e = 0; e < s->n_ears; e++)
+        for (int e = 0; e < s->base.n_ears; e++)
             for (int i = 0; i < 3; i++)
-                ears[e][i] = aero_ramp_advance(&s->ear[3 * e + i]);
-        gain = aero_ramp_advance(&s->gain);
+                ears[e][i] = aero_ramp_advance(&s->base.ear[3 * e + i]);
+        gain = aero_ramp_advance(&s->base.gain);
         if (s->texture) {
             for (int l = 0; l < s->regions; l++) {
                 aero_body_geometry g;
@@ -554,13 +501,13 @@ int aero_body_texture_process(aero_body_texture *s, const float *speed,
                     double v = stopped ? 0.0 : s->src[l].stream_velocity[i];
                     s->src[l].velocity[i] += alpha * (v - s->src[l].velocity[i]);
                 }
-                s->clamped |= geometry(s, l, wind, (const double (*)[3])ears,
+                s->base.clamped |= geometry(s, l, wind, (const double (*)[3])ears,
                                        gain, &g);
                 render(s, l, &g, m);
             }
         }
-        aero_arrivals_take(&s->arrivals, out, done, m);
+        aero_arrivals_take(&s->base.arrivals, out, done, m);
         done += m;
     }
-    return s->clamped;
+    return s->base.clamped;
 }

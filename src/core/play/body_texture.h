@@ -38,15 +38,15 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "aero_ears.h"
-#include "aero_util.h"
-#include "arrivals.h"
+#include "moving_player.h"
 #include "texture.h"
 
 #define AERO_BODY_MAX_EARS AERO_EARS_MAX
 #define AERO_BODY_MAX_SOURCES 64
 #define AERO_BODY_CHUNK 32
 #define AERO_BODY_MAX_DELAY_S 1.0
+#define AERO_BODY_SCALE_MIN 1e-3 /* of the texture's body */
+#define AERO_BODY_SCALE_MAX 1e3
 
 /* one source's geometry at a chunk's end */
 typedef struct {
@@ -67,29 +67,22 @@ typedef struct {
 } aero_body_source;
 
 typedef struct aero_body_texture {
-    double sample_rate;
-    int n_ears;
-    uint32_t rng;
+    /* sample rate, rings, ears, wind, gain, ramp, exponent, clamp */
+    aero_moving_player base;
 
     aero_texture *texture;      /* owned */
     double v0, tex_size, tex_rate;
     int regions, sphere, mirror;
     double centre[3 * AERO_BODY_MAX_SOURCES]; /* body frame, m */
 
-    double scale, exponent, ramp_samples;
+    double scale;
 
     /* pose: position and quaternion (w, x, y, z), from -> to */
     double pose[7], pose_from[7], pose_to[7];
     double pose_elapsed, pose_duration;
     int pose_set;
-    aero_ramp wind[3];
-    aero_ramp ear[3 * AERO_BODY_MAX_EARS];
-    aero_ramp gain;
 
     aero_body_source src[AERO_BODY_MAX_SOURCES];
-
-    aero_arrivals arrivals; /* one ring per ear (arrivals.h) */
-    int clamped;
 } aero_body_texture;
 
 /* 0, or -1 when out of memory. Defaults: no texture (silent), the body at

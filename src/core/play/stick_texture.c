@@ -18,29 +18,9 @@
 #define dot3 aero_dot3
 #define cross3 aero_cross3
 #define normalise3 aero_normalise3
-#define ramp_jump aero_ramp_jump
 #define ramp_advance aero_ramp_advance
 
-static void ramp_to(aero_ramp *r, double v, double ramp_samples)
-{
-    aero_ramp_to(r, v, ramp_samples, AERO_STICK_CHUNK);
-}
-
-static int finite3(const double *v, double limit)
-{
-    for (int i = 0; i < 3; i++)
-        if (!aero_is_finite(v[i]) || fabs(v[i]) > limit)
-            return 0;
-    return 1;
-}
-
 /* --- life cycle ------------------------------------------------------------ */
-
-static int alloc_rings(aero_stick_texture *s, double sr)
-{
-    return aero_arrivals_alloc(&s->arrivals, s->n_ears, sr,
-                               AERO_STICK_MAX_DELAY_S, 4 * AERO_STICK_CHUNK);
-}
 
 static void default_pose(aero_stick_texture *s)
 {
@@ -85,7 +65,7 @@ static void update_source_count(aero_stick_texture *s)
         n = AERO_STICK_MAX_SOURCES;
     for (int i = s->n_sources; i < n; i++) { /* new ones fade in */
         memset(&s->src[i], 0, sizeof(s->src[i]));
-        s->src[i].pos = 0.5 * (aero_uniform(&s->rng) + 1.0) *
+        s->src[i].pos = 0.5 * (aero_uniform(&s->base.rng) + 1.0) *
                         (s->texture ? s->texture->frames : 1);
     }
     s->n_sources = n;
@@ -95,32 +75,21 @@ int aero_stick_texture_init(aero_stick_texture *s, double sample_rate,
                             int n_ears, uint32_t seed)
 {
     memset(s, 0, sizeof(*s));
-    s->n_ears = n_ears < 1 ? 1 : n_ears > 2 ? 2 : n_ears;
-    s->sample_rate = sample_rate > 0.0 && aero_is_finite(sample_rate)
-                         ? sample_rate : 44100.0;
-    s->rng = seed ? seed : 1;
+    int rc = aero_moving_player_init(
+        &s->base,
+        sample_rate > 0.0 && aero_is_finite(sample_rate) ? sample_rate
+                                                         : 44100.0,
+        n_ears, seed, AERO_STICK_CHUNK, AERO_STICK_MAX_DELAY_S);
     s->length = 0.5;
-    s->exponent = 3.0;
-    s->ramp_samples = 0.020 * s->sample_rate;
     default_pose(s);
     s->reference[0] = 1.0;
-    ramp_jump(&s->gain, 1.0);
-    for (int e = 0; e < AERO_STICK_MAX_EARS; e++) {
-        ramp_jump(&s->ear[3 * e + 0], e == 0 ? 0.0 : 0.2);
-        ramp_jump(&s->ear[3 * e + 1], 1.0);
-        ramp_jump(&s->ear[3 * e + 2], 0.0);
-    }
-    if (s->n_ears == 2) { /* ears 20 cm apart, the head facing -y */
-        ramp_jump(&s->ear[0], -0.1);
-        ramp_jump(&s->ear[3], 0.1);
-    }
     update_source_count(s);
-    return alloc_rings(s, s->sample_rate);
+    return rc;
 }
 
 void aero_stick_texture_free(aero_stick_texture *s)
 {
-    aero_arrivals_free(&s->arrivals);
+    aero_moving_player_free(&s->base);
     if (s->texture) {
         aero_texture_free(s->texture);
         free(s->texture);
@@ -175,7 +144,7 @@ int aero_stick_texture_set_texture(aero_stick_texture *s, aero_texture *t,
     for (int i = 0; i < AERO_STICK_MAX_SOURCES; i++) {
         memset(&s->src[i], 0, sizeof(s->src[i]));
         if (t)
-            s->src[i].pos = 0.5 * (aero_uniform(&s->rng) + 1.0) * t->frames;
+            s->src[i].pos = 0.5 * (aero_uniform(&s->base.rng) + 1.0) * t->frames;
     }
     update_source_count(s);
     return 0;
@@ -185,18 +154,11 @@ int aero_stick_texture_set_texture(aero_stick_texture *s, aero_texture *t,
 
 int aero_stick_texture_set_sample_rate(aero_stick_texture *s, double sr)
 {
-    if (!(sr >= 1000.0 && sr <= 1536000.0))
-        return -1;
-    if (sr != s->sample_rate || !s->arrivals.ring[0]) {
-        double ms = s->ramp_samples / s->sample_rate * 1000.0;
-        if (alloc_rings(s, sr))
-            return -1;
-        s->sample_rate = sr;
-        s->ramp_samples = ms * 0.001 * sr;
+    int rc = aero_moving_player_set_sample_rate(&s->base, sr);
+    if (rc > 0)
         for (int i = 0; i < AERO_STICK_MAX_SOURCES; i++)
             s->src[i].primed = 0;
-    }
-    return 0;
+    return rc < 0 ? -1 : 0;
 }
 
 int aero_stick_texture_set_diameter(aero_stick_texture *s, double d)
@@ -233,43 +195,34 @@ int aero_stick_texture_set_sources(aero_stick_texture *s, int n)
 
 int aero_stick_texture_set_exponent(aero_stick_texture *s, double e)
 {
-    if (!(e >= 0.0 && e <= 12.0))
-        return -1;
-    s->exponent = e;
-    return 0;
+    return aero_moving_player_set_exponent(&s->base, e);
 }
 
 int aero_stick_texture_set_gain_db(aero_stick_texture *s, double db)
 {
-    if (!(db >= -200.0 && db <= 120.0))
-        return -1;
-    ramp_to(&s->gain, pow(10.0, db / 20.0), s->ramp_samples);
-    return 0;
+    return aero_moving_player_set_gain_db(&s->base, db);
 }
 
 int aero_stick_texture_set_ramp_ms(aero_stick_texture *s, double ms)
 {
-    if (!(ms >= 0.0 && ms <= 600000.0))
-        return -1;
-    s->ramp_samples = ms * 0.001 * s->sample_rate;
-    return 0;
+    return aero_moving_player_set_ramp_ms(&s->base, ms);
 }
 
 void aero_stick_texture_set_seed(aero_stick_texture *s, uint32_t seed)
 {
-    s->rng = seed ? seed : 1;
+    s->base.rng = seed ? seed : 1;
     for (int i = 0; i < AERO_STICK_MAX_SOURCES; i++)
         if (s->texture)
             s->src[i].pos =
-                0.5 * (aero_uniform(&s->rng) + 1.0) * s->texture->frames;
+                0.5 * (aero_uniform(&s->base.rng) + 1.0) * s->texture->frames;
 }
 
 int aero_stick_texture_set_pose(aero_stick_texture *s, const double a[3],
                                 const double b[3], double interval_s)
 {
     double p[6] = {a[0], a[1], a[2], b[0], b[1], b[2]};
-    if (!finite3(a, AERO_POSITION_LIMIT) ||
-        !finite3(b, AERO_POSITION_LIMIT) || stick_length(p) < 1e-6)
+    if (!aero_position_ok(a) || !aero_position_ok(b) ||
+        stick_length(p) < 1e-6)
         return -1;
     /* the first pose, one after a pause (a new gesture) or a placement
      * (interval < 0) jumps: there is nothing to move from */
@@ -293,7 +246,7 @@ int aero_stick_texture_set_pose(aero_stick_texture *s, const double a[3],
     memcpy(s->pose_from, s->pose, sizeof(p));
     memcpy(s->pose_to, p, sizeof(p));
     s->pose_elapsed = 0.0;
-    s->pose_duration = interval_s * s->sample_rate;
+    s->pose_duration = interval_s * s->base.sample_rate;
     if (s->sources_wanted <= 0) {
         /* keep n unless the length changed a lot (a new object) */
         double was = stick_length(s->pose_from), now = stick_length(p);
@@ -307,7 +260,7 @@ int aero_stick_texture_set_reference(aero_stick_texture *s,
                                      const double x[3])
 {
     double v[3] = {x[0], x[1], x[2]};
-    if (!finite3(v, AERO_POSITION_LIMIT) || normalise3(v) < 1e-9)
+    if (!aero_position_ok(v) || normalise3(v) < 1e-9)
         return -1;
     memcpy(s->reference, v, sizeof(v));
     return 0;
@@ -317,27 +270,18 @@ int aero_stick_texture_set_roll_deg(aero_stick_texture *s, double deg)
 {
     if (!aero_is_finite(deg) || fabs(deg) > 1e6)
         return -1;
-    ramp_to(&s->roll, deg, s->ramp_samples);
+    aero_moving_player_ramp(&s->base, &s->roll, deg);
     return 0;
 }
 
 int aero_stick_texture_set_wind(aero_stick_texture *s, const double w[3])
 {
-    if (!finite3(w, AERO_MACH_LIMIT * AERO_C0 * 10.0))
-        return -1;
-    for (int i = 0; i < 3; i++)
-        ramp_to(&s->wind[i], w[i], s->ramp_samples);
-    return 0;
+    return aero_moving_player_set_wind(&s->base, w);
 }
 
 int aero_stick_texture_set_ears(aero_stick_texture *s, const aero_ears *e)
 {
-    if (!aero_ears_ok(e, s->n_ears))
-        return -1;
-    for (int k = 0; k < e->n; k++)
-        for (int i = 0; i < 3; i++)
-            ramp_to(&s->ear[3 * k + i], e->pos[k][i], s->ramp_samples);
-    return 0;
+    return aero_moving_player_set_ears(&s->base, e);
 }
 
 double aero_stick_texture_tone_hz(const aero_stick_texture *s, double v)
@@ -474,10 +418,10 @@ static int source_at(aero_stick_texture *s, const stick_frame *f, double u,
     }
     double d = current_diameter(s);
     double ratio = v / s->v0;
-    g->inc = ratio * (s->tex_diameter / d) * s->tex_rate / s->sample_rate;
+    g->inc = ratio * (s->tex_diameter / d) * s->tex_rate / s->base.sample_rate;
     if (v > MIN_SPEED) {
         g->angle = atan2(dot3(perp, f->yb), dot3(perp, f->xb)) * 180.0 / AERO_PI;
-        g->amp = pow(ratio, s->exponent) * f->seg_len * f->gain;
+        g->amp = pow(ratio, s->base.exponent) * f->seg_len * f->gain;
     } else { /* no flow: silent, keep the direction */
         perp[0] = f->xb[0];
         perp[1] = f->xb[1];
@@ -487,7 +431,7 @@ static int source_at(aero_stick_texture *s, const stick_frame *f, double u,
     }
     double across[3];
     cross3(f->axis, perp, across); /* y of the flow frame */
-    for (int e = 0; e < s->n_ears; e++) {
+    for (int e = 0; e < s->base.n_ears; e++) {
         double r[3] = {f->ears[e][0] - pos[0], f->ears[e][1] - pos[1],
                        f->ears[e][2] - pos[2]};
         double dist = sqrt(dot3(r, r));
@@ -497,8 +441,8 @@ static int source_at(aero_stick_texture *s, const stick_frame *f, double u,
         double k = 1.0 / (4.0 * AERO_PI * AERO_C0 * dist * dist);
         g->fx[e] = dot3(r, perp) * k;
         g->fy[e] = dot3(r, across) * k;
-        double delay = dist / AERO_C0 * s->sample_rate;
-        double dmax = AERO_STICK_MAX_DELAY_S * s->sample_rate;
+        double delay = dist / AERO_C0 * s->base.sample_rate;
+        double dmax = AERO_STICK_MAX_DELAY_S * s->base.sample_rate;
         g->delay[e] = delay < dmax ? delay : dmax;
     }
     return clamped;
@@ -523,7 +467,7 @@ static void advance_frame(aero_stick_texture *s, int m, double speed,
     /* the stream's velocity, smoothed; zero once the stream has stopped
      * (no pose for 1.5 intervals) */
     int stopped = s->pose_elapsed > 1.5 * s->pose_duration + m;
-    double alpha = 1.0 - exp(-m / (VELOCITY_TAU_S * s->sample_rate));
+    double alpha = 1.0 - exp(-m / (VELOCITY_TAU_S * s->base.sample_rate));
     for (int i = 0; i < 6; i++) {
         double v = stopped ? 0.0 : s->pose_velocity[i];
         s->velocity[i] += alpha * (v - s->velocity[i]);
@@ -555,13 +499,13 @@ static void advance_frame(aero_stick_texture *s, int m, double speed,
         f->yb[i] = cos(roll) * yb[i] - sin(roll) * xb[i];
     }
     for (int i = 0; i < 3; i++)
-        f->wind[i] = ramp_advance(&s->wind[i]);
+        f->wind[i] = ramp_advance(&s->base.wind[i]);
     f->wind[0] += speed;
-    for (int e = 0; e < s->n_ears; e++)
+    for (int e = 0; e < s->base.n_ears; e++)
         for (int i = 0; i < 3; i++)
-            f->ears[e][i] = ramp_advance(&s->ear[3 * e + i]);
+            f->ears[e][i] = ramp_advance(&s->base.ear[3 * e + i]);
     f->seg_len = f->len / s->n_sources;
-    f->gain = ramp_advance(&s->gain);
+    f->gain = ramp_advance(&s->base.gain);
 }
 
 /* coefficients of one ear for a direction pair, from a geometry */
@@ -596,7 +540,7 @@ static void render_source(aero_stick_texture *s, aero_stick_source *src,
         then.inc = src->inc;
         then.angle = src->angle;
         then.amp = src->amp;
-        for (int e = 0; e < s->n_ears; e++) {
+        for (int e = 0; e < s->base.n_ears; e++) {
             then.fx[e] = src->fx[e];
             then.fy[e] = src->fy[e];
             then.delay[e] = src->delay[e];
@@ -638,7 +582,7 @@ static void render_source(aero_stick_texture *s, aero_stick_source *src,
         src->pos = pos;
     }
 
-    for (int e = 0; e < s->n_ears; e++) {
+    for (int e = 0; e < s->base.n_ears; e++) {
         double c[4], cend[4];
         float cf[4], dcf[4];
         pair_coefs(&then, e, w0, sign_then, c);
@@ -649,9 +593,9 @@ static void render_source(aero_stick_texture *s, aero_stick_source *src,
         }
         const double delay = then.delay[e];
         const double ddelay = (g->delay[e] - delay) * inv_m;
-        float *ring = s->arrivals.ring[e];
-        const long mask = s->arrivals.mask;
-        double at = (double)s->arrivals.head + delay;
+        float *ring = s->base.arrivals.ring[e];
+        const long mask = s->base.arrivals.mask;
+        double at = (double)s->base.arrivals.head + delay;
         for (int j = 0; j < m; j++) {
             float v = cf[0] * tex[0][j] + cf[1] * tex[1][j] +
                       cf[2] * tex[2][j] + cf[3] * tex[3][j];
@@ -666,7 +610,7 @@ static void render_source(aero_stick_texture *s, aero_stick_source *src,
     src->inc = g->inc;
     src->angle = g->angle;
     src->amp = g->amp;
-    for (int e = 0; e < s->n_ears; e++) {
+    for (int e = 0; e < s->base.n_ears; e++) {
         src->fx[e] = g->fx[e];
         src->fy[e] = g->fy[e];
         src->delay[e] = g->delay[e];
@@ -676,7 +620,7 @@ static void render_source(aero_stick_texture *s, aero_stick_source *src,
 int aero_stick_texture_process(aero_stick_texture *s, const float *speed,
                                float *const *out, int n)
 {
-    s->clamped = 0;
+    s->base.clamped = 0;
     for (int done = 0; done < n;) {
         int m = n - done < AERO_STICK_CHUNK ? n - done : AERO_STICK_CHUNK;
         /* the inlet's mean speed over the chunk (NaN counts as 0) */
@@ -694,12 +638,12 @@ int aero_stick_texture_process(aero_stick_texture *s, const float *speed,
             for (int i = 0; i < s->n_sources; i++) {
                 source_geometry g;
                 double u = (i + 0.5) / s->n_sources;
-                s->clamped |= source_at(s, &f, u, &g);
+                s->base.clamped |= source_at(s, &f, u, &g);
                 render_source(s, &s->src[i], &g, m);
             }
         }
-        aero_arrivals_take(&s->arrivals, out, done, m);
+        aero_arrivals_take(&s->base.arrivals, out, done, m);
         done += m;
     }
-    return s->clamped;
+    return s->base.clamped;
 }

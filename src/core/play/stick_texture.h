@@ -30,9 +30,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "aero_ears.h"
-#include "aero_util.h"
-#include "arrivals.h"
+#include "moving_player.h"
 #include "texture.h"
 
 #define AERO_STICK_MAX_EARS AERO_EARS_MAX
@@ -53,9 +51,8 @@ typedef struct {
 } aero_stick_source;
 
 typedef struct aero_stick_texture {
-    double sample_rate;
-    int n_ears;
-    uint32_t rng;
+    /* sample rate, rings, ears, wind, gain, ramp, exponent, clamp */
+    aero_moving_player base;
 
     /* the texture (owned) and what the player needs of it */
     aero_texture *texture;
@@ -68,8 +65,6 @@ typedef struct aero_stick_texture {
     double length;       /* of the default pose */
     int sources_wanted;  /* 0: length / (3 d) */
     int n_sources;
-    double exponent;
-    double ramp_samples;
 
     /* pose: from -> to over `pose_duration` samples */
     double pose[6], pose_from[6], pose_to[6];
@@ -79,15 +74,8 @@ typedef struct aero_stick_texture {
     double velocity[6];  /* smoothed velocity of both ends, m/s */
     double reference[3]; /* body x axis, kept normal to the stick axis */
     aero_ramp roll;      /* deg, about the axis */
-    aero_ramp wind[3];
-    aero_ramp ear[3 * AERO_STICK_MAX_EARS];
-    aero_ramp gain;
 
     aero_stick_source src[AERO_STICK_MAX_SOURCES];
-
-    aero_arrivals arrivals; /* one ring per ear (arrivals.h) */
-
-    int clamped;         /* a speed was clamped at Mach 0.3 */
 } aero_stick_texture;
 
 /* 0, or -1 when out of memory. Defaults: no texture (silent), a stick of

@@ -46,27 +46,31 @@ static void aeolian_tilde_dsp(t_aeolian_tilde *x, t_signal **sp)
 static void aeolian_tilde_diameter(t_aeolian_tilde *x, t_floatarg f)
 {
     if (aero_aeolian_set_diameter(&x->x_engine, f))
-        pd_error(x, OBJ ": diameter %g m out of range (1e-5..10), kept %g",
-                 f, x->x_engine.model.ctl_target[AERO_CTL_DIAMETER]);
+        pd_error(x, OBJ ": diameter %g m out of range (%g..%g), kept %g",
+                 f, AERO_AEOLIAN_D_MIN, AERO_AEOLIAN_D_MAX,
+                 x->x_engine.model.ctl_target[AERO_CTL_DIAMETER]);
 }
 
 static void aeolian_tilde_length(t_aeolian_tilde *x, t_floatarg f)
 {
     if (aero_aeolian_set_length(&x->x_engine, f))
-        pd_error(x, OBJ ": length %g m out of range (1e-5..1000), kept %g",
-                 f, x->x_engine.model.ctl_target[AERO_CTL_LENGTH]);
+        pd_error(x, OBJ ": length %g m out of range (%g..%g), kept %g",
+                 f, AERO_AEOLIAN_L_MIN, AERO_AEOLIAN_L_MAX,
+                 x->x_engine.model.ctl_target[AERO_CTL_LENGTH]);
 }
 
 static void aeolian_tilde_gain(t_aeolian_tilde *x, t_floatarg f)
 {
     if (aero_aeolian_set_gain_db(&x->x_engine, f))
-        pd_error(x, OBJ ": gain %g dB out of range (-200..120)", f);
+        pd_error(x, OBJ ": gain %g dB out of range (%g..%g)", f,
+                 AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX);
 }
 
 static void aeolian_tilde_ramp(t_aeolian_tilde *x, t_floatarg f)
 {
     if (aero_aeolian_set_ramp_ms(&x->x_engine, f))
-        pd_error(x, OBJ ": ramp %g ms out of range (0..600000)", f);
+        pd_error(x, OBJ ": ramp %g ms out of range (0..%g)", f,
+                 AERO_RAMP_MS_MAX);
 }
 
 static void aeolian_tilde_seed(t_aeolian_tilde *x, t_floatarg f)
@@ -121,7 +125,8 @@ static void aeolian_tilde_pose(t_aeolian_tilde *x, t_symbol *s, int argc,
     if (!strcmp(s->s_name, "place")) /* a jump, no motion */
         interval = -1.0;
     if (aero_aeolian_set_pose(&x->x_engine, v, v + 3, interval))
-        pd_error(x, OBJ ": pose needs two distinct finite ends within 1e5 m");
+        pd_error(x, OBJ ": pose needs two distinct finite ends within %g m",
+                 AERO_POSITION_LIMIT);
     else if (argc == 9 && aero_aeolian_set_reference(&x->x_engine, v + 6))
         pd_error(x, OBJ ": pose reference axis must be finite and non-zero");
 }
@@ -134,7 +139,7 @@ static void aeolian_tilde_wind(t_aeolian_tilde *x, t_symbol *s, int argc,
         return;
     if (aero_aeolian_set_wind(&x->x_engine, v))
         pd_error(x, OBJ ": wind must be finite, below %g m/s",
-                 AERO_MACH_LIMIT * AERO_C0 * 10.0);
+                 AERO_MOVING_WIND_MAX);
 }
 
 static void aeolian_tilde_roll(t_aeolian_tilde *x, t_floatarg f)
@@ -155,8 +160,9 @@ static void aeolian_tilde_sources(t_aeolian_tilde *x, t_floatarg f)
 static void aeolian_tilde_exponent(t_aeolian_tilde *x, t_floatarg f)
 {
     if (aero_aeolian_set_exponent(&x->x_engine, f))
-        pd_error(x, OBJ ": exponent %g out of range (0..12; 3 is physical, "
-                 "6 the paper's)", f);
+        pd_error(x, OBJ ": exponent %g out of range (%g..%g; 3 is physical, "
+                 "6 the paper's)", f, AERO_MOVING_EXPONENT_MIN,
+                 AERO_MOVING_EXPONENT_MAX);
 }
 
 /* --- creation -------------------------------------------------------------- */

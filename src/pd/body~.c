@@ -88,8 +88,8 @@ static void body_tilde_pose(t_body_tilde *x, t_symbol *s, int argc,
     if (!strcmp(s->s_name, "place")) /* a jump, no motion */
         interval = -1.0;
     if (aero_body_texture_set_pose(&x->x_body, v, q, interval))
-        pd_error(x, OBJ ": '%s' needs a finite position within 1e5 m and a "
-                 "non-zero finite quaternion", s->s_name);
+        pd_error(x, OBJ ": '%s' needs a finite position within %g m and a "
+                 "non-zero finite quaternion", s->s_name, AERO_POSITION_LIMIT);
 }
 
 static void body_tilde_wind(t_body_tilde *x, t_symbol *s, int argc,
@@ -100,7 +100,7 @@ static void body_tilde_wind(t_body_tilde *x, t_symbol *s, int argc,
         return;
     if (aero_body_texture_set_wind(&x->x_body, v))
         pd_error(x, OBJ ": wind must be finite, below %g m/s",
-                 AERO_MACH_LIMIT * AERO_C0 * 10.0);
+                 AERO_MOVING_WIND_MAX);
 }
 
 static void body_tilde_listener(t_body_tilde *x, t_symbol *s, int argc,
@@ -115,27 +115,30 @@ static void body_tilde_listener(t_body_tilde *x, t_symbol *s, int argc,
 static void body_tilde_scale(t_body_tilde *x, t_floatarg f)
 {
     if (aero_body_texture_set_scale(&x->x_body, f))
-        pd_error(x, OBJ ": scale %g out of range (0.001..1000), kept %g", f,
-                 x->x_body.scale);
+        pd_error(x, OBJ ": scale %g out of range (%g..%g), kept %g", f,
+                 AERO_BODY_SCALE_MIN, AERO_BODY_SCALE_MAX, x->x_body.scale);
 }
 
 static void body_tilde_exponent(t_body_tilde *x, t_floatarg f)
 {
     if (aero_body_texture_set_exponent(&x->x_body, f))
-        pd_error(x, OBJ ": exponent %g out of range (0..12; 3 is physical, "
-                 "6 the paper's)", f);
+        pd_error(x, OBJ ": exponent %g out of range (%g..%g; 3 is physical, "
+                 "6 the paper's)", f, AERO_MOVING_EXPONENT_MIN,
+                 AERO_MOVING_EXPONENT_MAX);
 }
 
 static void body_tilde_gain(t_body_tilde *x, t_floatarg f)
 {
     if (aero_body_texture_set_gain_db(&x->x_body, f))
-        pd_error(x, OBJ ": gain %g dB out of range (-200..120)", f);
+        pd_error(x, OBJ ": gain %g dB out of range (%g..%g)", f,
+                 AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX);
 }
 
 static void body_tilde_ramp(t_body_tilde *x, t_floatarg f)
 {
     if (aero_body_texture_set_ramp_ms(&x->x_body, f))
-        pd_error(x, OBJ ": ramp %g ms out of range (0..600000)", f);
+        pd_error(x, OBJ ": ramp %g ms out of range (0..%g)", f,
+                 AERO_RAMP_MS_MAX);
 }
 
 static void body_tilde_seed(t_body_tilde *x, t_floatarg f)

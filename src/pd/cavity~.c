@@ -37,37 +37,43 @@ static void cavity_tilde_dsp(t_cavity_tilde *x, t_signal **sp)
 static void cavity_tilde_length(t_cavity_tilde *x, t_floatarg f)
 {
     if (aero_cavity_model_set_length(&x->x_model, f))
-        pd_error(x, OBJ ": length %g m out of range (1e-4..100)", f);
+        pd_error(x, OBJ ": length %g m out of range (%g..%g)", f,
+                 AERO_CAVITY_SIZE_MIN, AERO_CAVITY_SIZE_MAX);
 }
 
 static void cavity_tilde_depth(t_cavity_tilde *x, t_floatarg f)
 {
     if (aero_cavity_model_set_depth(&x->x_model, f))
-        pd_error(x, OBJ ": depth %g m out of range (1e-4..100)", f);
+        pd_error(x, OBJ ": depth %g m out of range (%g..%g)", f,
+                 AERO_CAVITY_SIZE_MIN, AERO_CAVITY_SIZE_MAX);
 }
 
 static void cavity_tilde_width(t_cavity_tilde *x, t_floatarg f)
 {
     if (aero_cavity_model_set_width(&x->x_model, f))
-        pd_error(x, OBJ ": width %g m out of range (1e-4..100)", f);
+        pd_error(x, OBJ ": width %g m out of range (%g..%g)", f,
+                 AERO_CAVITY_SIZE_MIN, AERO_CAVITY_SIZE_MAX);
 }
 
 static void cavity_tilde_gain(t_cavity_tilde *x, t_floatarg f)
 {
     if (aero_cavity_model_set_gain_db(&x->x_model, f))
-        pd_error(x, OBJ ": gain %g dB out of range (-200..120)", f);
+        pd_error(x, OBJ ": gain %g dB out of range (%g..%g)", f,
+                 AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX);
 }
 
 static void cavity_tilde_ramp(t_cavity_tilde *x, t_floatarg f)
 {
     if (aero_cavity_model_set_ramp_ms(&x->x_model, f))
-        pd_error(x, OBJ ": ramp %g ms out of range (0..600000)", f);
+        pd_error(x, OBJ ": ramp %g ms out of range (0..%g)", f,
+                 AERO_RAMP_MS_MAX);
 }
 
 static void cavity_tilde_exponent(t_cavity_tilde *x, t_floatarg f)
 {
     if (aero_cavity_model_set_exponent(&x->x_model, f))
-        pd_error(x, OBJ ": exponent %g out of range (0..8)", f);
+        pd_error(x, OBJ ": exponent %g out of range (0..%g)", f,
+                 AERO_CAVITY_EXPONENT_MAX);
 }
 
 static void cavity_tilde_seed(t_cavity_tilde *x, t_floatarg f)

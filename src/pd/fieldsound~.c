@@ -267,19 +267,22 @@ static void fieldsound_tilde_listener(t_fieldsound_tilde *x, t_symbol *s,
 static void fieldsound_tilde_speed(t_fieldsound_tilde *x, t_floatarg f)
 {
     if (aero_field_render_set_speed(&x->x_render, f))
-        pd_error(x, OBJ ": speed %g frames/s out of range (0..1e6]", f);
+        pd_error(x, OBJ ": speed %g frames/s out of range (0..%g]", f,
+                 AERO_FIELD_SPEED_MAX);
 }
 
 static void fieldsound_tilde_gain(t_fieldsound_tilde *x, t_floatarg f)
 {
     if (aero_field_render_set_gain_db(&x->x_render, f))
-        pd_error(x, OBJ ": gain %g dB out of range (-200..120)", f);
+        pd_error(x, OBJ ": gain %g dB out of range (%g..%g)", f,
+                 AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX);
 }
 
 static void fieldsound_tilde_ramp(t_fieldsound_tilde *x, t_floatarg f)
 {
     if (aero_field_render_set_ramp_ms(&x->x_render, f))
-        pd_error(x, OBJ ": ramp %g ms out of range (0..600000)", f);
+        pd_error(x, OBJ ": ramp %g ms out of range (0..%g)", f,
+                 AERO_RAMP_MS_MAX);
 }
 
 /* a changed parameter: check it, then preprocess again */

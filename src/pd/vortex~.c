@@ -102,7 +102,8 @@ static void vortex_tilde_positions(t_vortex_tilde *x, t_symbol *s, int argc,
     count = float_list(x, s->s_name, argc, argv, 3, v, n);
     if (count > 0 &&
         aero_vortex_player_set_positions(&x->x_player, v, count))
-        pd_error(x, OBJ ": positions must be finite, within 1e5 m");
+        pd_error(x, OBJ ": positions must be finite, within %g m",
+                 AERO_POSITION_LIMIT);
     freebytes(v, sizeof(double) * (size_t)(argc > 0 ? argc : 1));
 }
 
@@ -118,19 +119,22 @@ static void vortex_tilde_listener(t_vortex_tilde *x, t_symbol *s, int argc,
 static void vortex_tilde_gain(t_vortex_tilde *x, t_floatarg f)
 {
     if (aero_vortex_player_set_gain_db(&x->x_player, f))
-        pd_error(x, OBJ ": gain %g dB out of range (-200..200)", f);
+        pd_error(x, OBJ ": gain %g dB out of range (%g..%g)", f,
+                 AERO_GAIN_DB_MIN, AERO_VORTEX_GAIN_DB_MAX);
 }
 
 static void vortex_tilde_clip(t_vortex_tilde *x, t_floatarg f)
 {
     if (aero_vortex_player_set_clip(&x->x_player, f))
-        pd_error(x, OBJ ": clip %g Pa out of range (0 = off, up to 1e6)", f);
+        pd_error(x, OBJ ": clip %g Pa out of range (0 = off, up to %g)", f,
+                 AERO_VORTEX_CLIP_MAX);
 }
 
 static void vortex_tilde_ramp(t_vortex_tilde *x, t_floatarg f)
 {
     if (aero_vortex_player_set_ramp_ms(&x->x_player, f))
-        pd_error(x, OBJ ": ramp %g ms out of range (0..600000)", f);
+        pd_error(x, OBJ ": ramp %g ms out of range (0..%g)", f,
+                 AERO_RAMP_MS_MAX);
 }
 
 /* combustion noise (combustion_noise.h): the flame's mean heat release */
@@ -138,19 +142,21 @@ static void vortex_tilde_power(t_vortex_tilde *x, t_floatarg f)
 {
     if (aero_combustion_set_power_kw(&x->x_player.combustion, f))
         pd_error(x, OBJ ": power %g kW out of range (0 = no combustion "
-                 "noise, up to 1e6)", f);
+                 "noise, up to %g)", f, AERO_COMBUSTION_POWER_KW_MAX);
 }
 
 static void vortex_tilde_length(t_vortex_tilde *x, t_floatarg f)
 {
     if (aero_combustion_set_length(&x->x_player.combustion, f))
-        pd_error(x, OBJ ": length %g m out of range (0.001..100)", f);
+        pd_error(x, OBJ ": length %g m out of range (%g..%g)", f,
+                 AERO_COMBUSTION_LENGTH_MIN, AERO_COMBUSTION_LENGTH_MAX);
 }
 
 static void vortex_tilde_strouhal(t_vortex_tilde *x, t_floatarg f)
 {
     if (aero_combustion_set_strouhal(&x->x_player.combustion, f))
-        pd_error(x, OBJ ": strouhal %g out of range (0.01..100)", f);
+        pd_error(x, OBJ ": strouhal %g out of range (%g..%g)", f,
+                 AERO_COMBUSTION_ST_MIN, AERO_COMBUSTION_ST_MAX);
 }
 
 static void vortex_tilde_fluctuation(t_vortex_tilde *x, t_floatarg f)

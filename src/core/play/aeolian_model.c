@@ -86,7 +86,7 @@ int aero_aeolian_model_set_sample_rate(aero_aeolian_model *m, double sr)
 
 int aero_aeolian_model_set_diameter(aero_aeolian_model *m, double d)
 {
-    if (!aero_is_finite(d) || d < 1e-5 || d > 10.0)
+    if (!aero_is_finite(d) || d < AERO_AEOLIAN_D_MIN || d > AERO_AEOLIAN_D_MAX)
         return -1;
     m->ctl_target[AERO_CTL_DIAMETER] = d;
     start_ramp(m);
@@ -95,7 +95,7 @@ int aero_aeolian_model_set_diameter(aero_aeolian_model *m, double d)
 
 int aero_aeolian_model_set_length(aero_aeolian_model *m, double l)
 {
-    if (!aero_is_finite(l) || l < 1e-5 || l > 1000.0)
+    if (!aero_is_finite(l) || l < AERO_AEOLIAN_L_MIN || l > AERO_AEOLIAN_L_MAX)
         return -1;
     m->ctl_target[AERO_CTL_LENGTH] = l;
     start_ramp(m);
@@ -104,7 +104,7 @@ int aero_aeolian_model_set_length(aero_aeolian_model *m, double l)
 
 int aero_aeolian_model_set_gain_db(aero_aeolian_model *m, double db)
 {
-    if (!aero_is_finite(db) || db < -200.0 || db > 120.0)
+    if (!aero_is_finite(db) || db < AERO_GAIN_DB_MIN || db > AERO_GAIN_DB_MAX)
         return -1;
     m->ctl_target[AERO_CTL_GAIN] = pow(10.0, db / 20.0);
     start_ramp(m);
@@ -113,7 +113,7 @@ int aero_aeolian_model_set_gain_db(aero_aeolian_model *m, double db)
 
 int aero_aeolian_model_set_ramp_ms(aero_aeolian_model *m, double ms)
 {
-    if (!aero_is_finite(ms) || ms < 0.0 || ms > 600000.0)
+    if (!aero_is_finite(ms) || ms < 0.0 || ms > AERO_RAMP_MS_MAX)
         return -1;
     m->ramp_samples = ms * 0.001 * m->sample_rate;
     if (m->ramp_samples < 1.0)

@@ -24,10 +24,16 @@
 #define AERO_AEOLIAN_MODEL_H
 
 #include "aero_ears.h"
+#include "aero_ranges.h"
 
 #include <stdint.h>
 
 #define AERO_AEOLIAN_MAX_EARS AERO_EARS_MAX
+/* ranges of the cylinder, m (gain and ramp: aero_ranges.h) */
+#define AERO_AEOLIAN_D_MIN 1e-5
+#define AERO_AEOLIAN_D_MAX 10.0
+#define AERO_AEOLIAN_L_MIN 1e-5
+#define AERO_AEOLIAN_L_MAX 1000.0
 /* Samples per inner chunk: frequency, phase diffusion and the envelope are
  * updated per chunk (1.3 ms at 48 kHz), levels interpolated per sample. */
 #define AERO_AEOLIAN_CHUNK 64

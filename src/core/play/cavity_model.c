@@ -110,6 +110,12 @@ void aero_cavity_model_set_seed(aero_cavity_model *m, uint32_t seed)
     m->texture_pos = 0.5 + 0.5 * aero_uniform(&m->rng); /* scaled at use */
 }
 
+static int size_ok(double v)
+{
+    return aero_is_finite(v) && v >= AERO_CAVITY_SIZE_MIN &&
+           v <= AERO_CAVITY_SIZE_MAX;
+}
+
 static int set_ctl(aero_cavity_model *m, int k, double v)
 {
     m->ctl_target[k] = v;
@@ -131,35 +137,35 @@ int aero_cavity_model_set_sample_rate(aero_cavity_model *m, double sr)
 
 int aero_cavity_model_set_length(aero_cavity_model *m, double l)
 {
-    if (!aero_is_finite(l) || l < 1e-4 || l > 100.0)
+    if (!size_ok(l))
         return -1;
     return set_ctl(m, AERO_CAV_LENGTH, l);
 }
 
 int aero_cavity_model_set_depth(aero_cavity_model *m, double d)
 {
-    if (!aero_is_finite(d) || d < 1e-4 || d > 100.0)
+    if (!size_ok(d))
         return -1;
     return set_ctl(m, AERO_CAV_DEPTH, d);
 }
 
 int aero_cavity_model_set_width(aero_cavity_model *m, double w)
 {
-    if (!aero_is_finite(w) || w < 1e-4 || w > 100.0)
+    if (!size_ok(w))
         return -1;
     return set_ctl(m, AERO_CAV_WIDTH, w);
 }
 
 int aero_cavity_model_set_gain_db(aero_cavity_model *m, double db)
 {
-    if (!aero_is_finite(db) || db < -200.0 || db > 120.0)
+    if (!aero_is_finite(db) || db < AERO_GAIN_DB_MIN || db > AERO_GAIN_DB_MAX)
         return -1;
     return set_ctl(m, AERO_CAV_GAIN, pow(10.0, db / 20.0));
 }
 
 int aero_cavity_model_set_ramp_ms(aero_cavity_model *m, double ms)
 {
-    if (!aero_is_finite(ms) || ms < 0.0 || ms > 600000.0)
+    if (!aero_is_finite(ms) || ms < 0.0 || ms > AERO_RAMP_MS_MAX)
         return -1;
     m->ramp_samples = fmax(1.0, ms * 0.001 * m->sample_rate);
     return 0;
@@ -167,7 +173,7 @@ int aero_cavity_model_set_ramp_ms(aero_cavity_model *m, double ms)
 
 int aero_cavity_model_set_exponent(aero_cavity_model *m, double n)
 {
-    if (!aero_is_finite(n) || n < 0.0 || n > 8.0)
+    if (!aero_is_finite(n) || n < 0.0 || n > AERO_CAVITY_EXPONENT_MAX)
         return -1;
     m->exponent = n;
     return 0;

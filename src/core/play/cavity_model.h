@@ -27,12 +27,18 @@
 #define AERO_CAVITY_MODEL_H
 
 #include "aero_ears.h"
+#include "aero_ranges.h"
 #include "texture.h"
 
 #include <stdint.h>
 
 #define AERO_CAVITY_MODES 4
 #define AERO_CAVITY_DEPTH_MODES 3
+/* ranges of length, depth and width, m, and of the exponent (gain and
+   ramp: aero_ranges.h) */
+#define AERO_CAVITY_SIZE_MIN 1e-4
+#define AERO_CAVITY_SIZE_MAX 100.0
+#define AERO_CAVITY_EXPONENT_MAX 8.0
 
 enum {
     AERO_CAV_LENGTH,

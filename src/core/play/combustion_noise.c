@@ -121,7 +121,7 @@ int aero_combustion_set_sample_rate(aero_combustion *m, double sr)
 
 int aero_combustion_set_power_kw(aero_combustion *m, double kw)
 {
-    if (!(kw >= 0.0 && kw <= 1e6))
+    if (!(kw >= 0.0 && kw <= AERO_COMBUSTION_POWER_KW_MAX))
         return -1;
     m->power = kw * 1000.0;
     return 0;
@@ -129,7 +129,7 @@ int aero_combustion_set_power_kw(aero_combustion *m, double kw)
 
 int aero_combustion_set_length(aero_combustion *m, double l)
 {
-    if (!(l >= 1e-3 && l <= 100.0))
+    if (!(l >= AERO_COMBUSTION_LENGTH_MIN && l <= AERO_COMBUSTION_LENGTH_MAX))
         return -1;
     m->length = l;
     return 0;
@@ -137,7 +137,7 @@ int aero_combustion_set_length(aero_combustion *m, double l)
 
 int aero_combustion_set_strouhal(aero_combustion *m, double st)
 {
-    if (!(st >= 0.01 && st <= 100.0))
+    if (!(st >= AERO_COMBUSTION_ST_MIN && st <= AERO_COMBUSTION_ST_MAX))
         return -1;
     m->strouhal = st;
     return 0;

@@ -38,6 +38,12 @@
 
 #define AERO_COMBUSTION_GAMMA 1.4
 #define AERO_COMBUSTION_TILTS 4   /* pole-zero pairs, one per decade */
+/* ranges of the settings */
+#define AERO_COMBUSTION_POWER_KW_MAX 1e6
+#define AERO_COMBUSTION_LENGTH_MIN 1e-3 /* m */
+#define AERO_COMBUSTION_LENGTH_MAX 100.0
+#define AERO_COMBUSTION_ST_MIN 0.01
+#define AERO_COMBUSTION_ST_MAX 100.0
 
 typedef struct aero_combustion {
     double sample_rate;
@@ -68,9 +74,9 @@ void aero_combustion_free(aero_combustion *m);
 
 /* 0 when accepted, -1 when invalid (the old value stays) */
 int aero_combustion_set_sample_rate(aero_combustion *m, double sr);
-int aero_combustion_set_power_kw(aero_combustion *m, double kw); /* 0..1e6 */
-int aero_combustion_set_length(aero_combustion *m, double l);  /* 1e-3..100 m */
-int aero_combustion_set_strouhal(aero_combustion *m, double st); /* 0.01..100 */
+int aero_combustion_set_power_kw(aero_combustion *m, double kw);
+int aero_combustion_set_length(aero_combustion *m, double l);
+int aero_combustion_set_strouhal(aero_combustion *m, double st);
 int aero_combustion_set_fluctuation(aero_combustion *m, double eps); /* 0..1 */
 void aero_combustion_set_seed(aero_combustion *m, uint32_t seed);
 

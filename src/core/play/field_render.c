@@ -64,7 +64,7 @@ int aero_field_render_set_sample_rate(aero_field_render *r, double sr)
 
 int aero_field_render_set_speed(aero_field_render *r, double fps)
 {
-    if (!(fps > 0 && fps <= 1e6))
+    if (!(fps > 0 && fps <= AERO_FIELD_SPEED_MAX))
         return -1;
     r->speed_target = fps;
     if (!r->playing)
@@ -96,7 +96,7 @@ int aero_field_render_place_ears(aero_field_render *r, const aero_ears *e)
 
 int aero_field_render_set_ramp_ms(aero_field_render *r, double ms)
 {
-    if (!(ms >= 0 && ms <= 600000))
+    if (!(ms >= 0 && ms <= AERO_RAMP_MS_MAX))
         return -1;
     r->ramp_ms = ms;
     return 0;
@@ -104,7 +104,7 @@ int aero_field_render_set_ramp_ms(aero_field_render *r, double ms)
 
 int aero_field_render_set_gain_db(aero_field_render *r, double db)
 {
-    if (!(db >= -200 && db <= 120))
+    if (!(db >= AERO_GAIN_DB_MIN && db <= AERO_GAIN_DB_MAX))
         return -1;
     r->gain = pow(10.0, db / 20.0);
     return 0;

@@ -5,10 +5,12 @@
 #define AERO_FIELD_RENDER_H
 
 #include "aero_ears.h"
+#include "aero_ranges.h"
 #include "field_prepare.h"
 
 /* --- rendering ----------------------------------------------------------- */
 #define AERO_FIELD_CHUNK 64
+#define AERO_FIELD_SPEED_MAX 1e6 /* playback, frames per second */
 
 typedef struct aero_field_render {
     const aero_field_sources *src; /* not owned */

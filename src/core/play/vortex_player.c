@@ -159,7 +159,7 @@ int aero_vortex_player_set_ears(aero_vortex_player *m, const aero_ears *e)
 
 int aero_vortex_player_set_gain_db(aero_vortex_player *m, double db)
 {
-    if (!(db >= -200.0 && db <= 200.0))
+    if (!(db >= AERO_GAIN_DB_MIN && db <= AERO_VORTEX_GAIN_DB_MAX))
         return -1;
     m->gain_target = pow(10.0, db / 20.0);
     start_ramp(m);
@@ -168,7 +168,7 @@ int aero_vortex_player_set_gain_db(aero_vortex_player *m, double db)
 
 int aero_vortex_player_set_clip(aero_vortex_player *m, double pa)
 {
-    if (!(pa >= 0.0 && pa <= 1e6))
+    if (!(pa >= 0.0 && pa <= AERO_VORTEX_CLIP_MAX))
         return -1;
     m->clip = pa;
     return 0;
@@ -176,7 +176,7 @@ int aero_vortex_player_set_clip(aero_vortex_player *m, double pa)
 
 int aero_vortex_player_set_ramp_ms(aero_vortex_player *m, double ms)
 {
-    if (!(ms >= 0.0 && ms <= 600000.0))
+    if (!(ms >= 0.0 && ms <= AERO_RAMP_MS_MAX))
         return -1;
     m->ramp_samples = ms * 0.001 * m->sample_rate;
     if (m->ramp_samples < 1.0)

@@ -36,6 +36,7 @@
 #define AERO_VORTEX_PLAYER_H
 
 #include "aero_ears.h"
+#include "aero_ranges.h"
 #include "combustion_noise.h"
 #include "texture.h"
 
@@ -43,6 +44,10 @@
 #include <stdint.h>
 
 #define AERO_VORTEX_MAX_SOURCES 4096
+/* its own gain range reaches higher than AERO_GAIN_DB_MAX (aero_ranges.h),
+   the microphone limit, Pa */
+#define AERO_VORTEX_GAIN_DB_MAX 200.0
+#define AERO_VORTEX_CLIP_MAX 1e6
 
 typedef struct aero_vortex_player {
     double sample_rate;

@@ -4,6 +4,7 @@
 
 #include "aero_air.h"
 #include "aero_util.h"
+#include "glide.h"
 #include "strouhal.h"
 
 #include <math.h>
@@ -134,15 +135,8 @@ static void advance_ramps(aero_aeolian_model *m, int n)
 {
     if (m->ramp_left <= 0)
         return;
-    if (m->ramp_left <= n) {
-        memcpy(m->ctl, m->ctl_target, sizeof(m->ctl));
-        m->ramp_left = 0;
-    } else {
-        double step = n / m->ramp_left;
-        for (int k = 0; k < AERO_CTL_COUNT; k++)
-            m->ctl[k] += (m->ctl_target[k] - m->ctl[k]) * step;
-        m->ramp_left -= n;
-    }
+    aero_glide_values(m->ctl, m->ctl_target, AERO_CTL_COUNT,
+                      aero_glide_fraction(&m->ramp_left, n));
     m->geometry_dirty = 1;
 }
 

@@ -3,6 +3,7 @@
 
 #include "aero_air.h"
 #include "aero_util.h"
+#include "glide.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -218,15 +219,8 @@ static void advance_ramps(aero_cavity_model *m, int n)
 {
     if (m->ramp_left <= 0)
         return;
-    if (m->ramp_left <= n) {
-        memcpy(m->ctl, m->ctl_target, sizeof(m->ctl));
-        m->ramp_left = 0;
-        return;
-    }
-    double step = n / m->ramp_left;
-    for (int k = 0; k < AERO_CAV_COUNT; k++)
-        m->ctl[k] += (m->ctl_target[k] - m->ctl[k]) * step;
-    m->ramp_left -= n;
+    aero_glide_values(m->ctl, m->ctl_target, AERO_CAV_COUNT,
+                      aero_glide_fraction(&m->ramp_left, n));
 }
 
 static double listener_distance(const aero_cavity_model *m, double r_min)

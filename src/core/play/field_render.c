@@ -6,6 +6,7 @@
 
 #include "aero_air.h"
 #include "aero_util.h"
+#include "glide.h"
 
 #include <math.h>
 #include <stdarg.h>
@@ -159,15 +160,9 @@ static void move_listener(aero_field_render *r, int c, double l0[3],
                           double l1[3])
 {
     memcpy(l0, r->listener, sizeof(double) * 3);
-    if (r->ramp_left > 0) {
-        double f = c >= r->ramp_left ? 1.0 : c / r->ramp_left;
-        for (int a = 0; a < 3; a++)
-            l1[a] = l0[a] + (r->target[a] - l0[a]) * f;
-        r->ramp_left -= c;
-        if (r->ramp_left < 0)
-            r->ramp_left = 0;
-    } else
-        memcpy(l1, r->target, sizeof(double) * 3);
+    memcpy(l1, l0, sizeof(double) * 3);
+    aero_glide_values(l1, r->target, 3,
+                      aero_glide_fraction(&r->ramp_left, c));
     double d[3], len = 0;
     double lim = AERO_MACH_LIMIT * AERO_C0 * c / r->sample_rate;
     for (int a = 0; a < 3; a++)

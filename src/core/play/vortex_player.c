@@ -1,8 +1,10 @@
 /* aero: real-time vortex sound from a texture Q(u, t) (see
  * vortex_player.h). */
 #include "vortex_player.h"
+
 #include "aero_air.h"
 #include "aero_util.h"
+#include "glide.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -324,13 +326,6 @@ static inline float cubic(const float *p, float f)
                   f * (3.0f * (p[1] - p[2]) + p[3] - p[0])));
 }
 
-/* moves count values a fraction frac of the way to their targets */
-static void glide(double *v, const double *target, int count, double frac)
-{
-    for (int k = 0; k < count; k++)
-        v[k] += (target[k] - v[k]) * frac;
-}
-
 /* the speed inlet at the block's ends (read before any output is
    written: the buffers may be shared); 1 if any sample was clamped */
 static int read_inlet(const float *speed, int n, double *u_first,
@@ -446,7 +441,7 @@ static void render_source(aero_vortex_player *m, const block *b, int i,
     c = speed_pair(m, u1);
     speed_weights(m, u0, c, &w[0], &w[1]);
     speed_weights(m, u1, c, &w[2], &w[3]);
-    glide(m->xyz + 3 * i, m->xyz_target + 3 * i, 3, b->frac);
+    aero_glide_values(m->xyz + 3 * i, m->xyz_target + 3 * i, 3, b->frac);
     for (int e = 0; e < b->nout; e++)
         render_ear(m, b, i, e, c, w, out[e]);
     m->pos[i] += b->n * b->step;
@@ -508,14 +503,13 @@ int aero_vortex_player_process(aero_vortex_player *m, const float *speed,
         memset(out[e], 0, sizeof(float) * (size_t)n);
 
     /* the controls at the end of this block */
-    frac = m->ramp_left > 0.0 ? (n >= m->ramp_left ? 1.0 : n / m->ramp_left)
-                              : 1.0;
-    m->ramp_left = m->ramp_left > n ? m->ramp_left - n : 0.0;
+    frac = aero_glide_fraction(&m->ramp_left, n);
     if (!m->tab) {
-        glide(m->ear, m->ear_target, 6, frac);
+        aero_glide_values(m->ear, m->ear_target, 6, frac);
         for (int i = 0; i < m->n; i++) {
-            glide(m->speed + i, m->speed_target + i, 1, frac);
-            glide(m->xyz + 3 * i, m->xyz_target + 3 * i, 3, frac);
+            aero_glide_values(m->speed + i, m->speed_target + i, 1, frac);
+            aero_glide_values(m->xyz + 3 * i, m->xyz_target + 3 * i, 3,
+                              frac);
             m->dist[2 * i] = m->dist[2 * i + 1] = -1.0;
         }
     } else {
@@ -523,7 +517,7 @@ int aero_vortex_player_process(aero_vortex_player *m, const float *speed,
                    m->rate / m->sample_rate, m->rate / AERO_C0,
                    m->sample_rate / AERO_C0, 1.0 / n, frac, {0}};
         memcpy(b.ear0, m->ear, sizeof b.ear0);
-        glide(m->ear, m->ear_target, 6, frac);
+        aero_glide_values(m->ear, m->ear_target, 6, frac);
         for (int i = 0; i < m->n; i++)
             render_source(m, &b, i, u_in0, u_in1, out);
     }

@@ -300,6 +300,24 @@ static void direction_pair(const aero_texture *t, double theta, int *k0,
     if (*w > 1.0) *w = 1.0;
 }
 
+/* the body's x axis in the world */
+static void body_x_axis(const aero_body_texture *s, double *out)
+{
+    const double xb[3] = {1.0, 0.0, 0.0};
+    rotate(s->pose + 3, xb, out);
+}
+
+/* the unit part of v normal to the unit n (c = v.n); the body's x axis
+   when v lies along n */
+static void normal_part(const aero_body_texture *s, const double *v,
+                        const double *n, double c, double *out)
+{
+    for (int i = 0; i < 3; i++)
+        out[i] = v[i] - c * n[i];
+    if (aero_normalise3(out) < 1e-6) /* flow along the axis */
+        body_x_axis(s, out);
+}
+
 /* geometry of region l at the chunk's end; returns 1 if clamped */
 static int geometry(aero_body_texture *s, int l, const double *wind,
                     const double (*ears)[3], double gain,
@@ -317,30 +335,18 @@ static int geometry(aero_body_texture *s, int l, const double *wind,
         clamped = 1;
     }
     rotate(s->pose + 3, z, axis);
-    if (v <= MIN_SPEED) { /* still air: silent, any frame */
-        double xb[3] = {1.0, 0.0, 0.0};
-        rotate(s->pose + 3, xb, rel);
-    }
+    if (v <= MIN_SPEED) /* still air: silent, any frame */
+        body_x_axis(s, rel);
     cth = aero_dot3(rel, axis);
     g->flip = 0;
     if (s->sphere) {
         memcpy(e1, rel, sizeof(e1));
-        for (int i = 0; i < 3; i++)
-            e3[i] = axis[i] - cth * rel[i];
-        if (aero_normalise3(e3) < 1e-6) { /* flow along the axis */
-            double xb[3] = {1.0, 0.0, 0.0};
-            rotate(s->pose + 3, xb, e3);
-        }
+        normal_part(s, axis, rel, cth, e3);
         aero_cross3(e3, e1, e2);
         g->theta = 90.0;
     } else {
         memcpy(e3, axis, sizeof(e3));
-        for (int i = 0; i < 3; i++)
-            e1[i] = rel[i] - cth * axis[i];
-        if (aero_normalise3(e1) < 1e-6) { /* flow along the axis */
-            double xb[3] = {1.0, 0.0, 0.0};
-            rotate(s->pose + 3, xb, e1);
-        }
+        normal_part(s, rel, axis, cth, e1);
         aero_cross3(e3, e1, e2);
         g->theta = acos(cth < -1.0 ? -1.0 : cth > 1.0 ? 1.0 : cth) * 180.0 /
                    AERO_PI;

@@ -85,31 +85,34 @@ int aero_aeolian_model_set_sample_rate(aero_aeolian_model *m, double sr)
     return aero_aeolian_model_set_ramp_ms(m, ramp_ms);
 }
 
-int aero_aeolian_model_set_diameter(aero_aeolian_model *m, double d)
+/* control k ramps to v, given as `given` within lo..hi: 0, or -1 (the
+   old target stays) */
+static int set_ctl(aero_aeolian_model *m, int k, double v, double given,
+                   double lo, double hi)
 {
-    if (!aero_is_finite(d) || d < AERO_AEOLIAN_D_MIN || d > AERO_AEOLIAN_D_MAX)
+    if (!aero_is_finite(given) || given < lo || given > hi)
         return -1;
-    m->ctl_target[AERO_CTL_DIAMETER] = d;
+    m->ctl_target[k] = v;
     start_ramp(m);
     return 0;
+}
+
+int aero_aeolian_model_set_diameter(aero_aeolian_model *m, double d)
+{
+    return set_ctl(m, AERO_CTL_DIAMETER, d, d, AERO_AEOLIAN_D_MIN,
+                   AERO_AEOLIAN_D_MAX);
 }
 
 int aero_aeolian_model_set_length(aero_aeolian_model *m, double l)
 {
-    if (!aero_is_finite(l) || l < AERO_AEOLIAN_L_MIN || l > AERO_AEOLIAN_L_MAX)
-        return -1;
-    m->ctl_target[AERO_CTL_LENGTH] = l;
-    start_ramp(m);
-    return 0;
+    return set_ctl(m, AERO_CTL_LENGTH, l, l, AERO_AEOLIAN_L_MIN,
+                   AERO_AEOLIAN_L_MAX);
 }
 
 int aero_aeolian_model_set_gain_db(aero_aeolian_model *m, double db)
 {
-    if (!aero_is_finite(db) || db < AERO_GAIN_DB_MIN || db > AERO_GAIN_DB_MAX)
-        return -1;
-    m->ctl_target[AERO_CTL_GAIN] = pow(10.0, db / 20.0);
-    start_ramp(m);
-    return 0;
+    return set_ctl(m, AERO_CTL_GAIN, pow(10.0, db / 20.0), db,
+                   AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX);
 }
 
 int aero_aeolian_model_set_ramp_ms(aero_aeolian_model *m, double ms)

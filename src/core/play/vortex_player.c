@@ -130,19 +130,13 @@ int aero_vortex_player_set_speeds(aero_vortex_player *m, const double *u,
     return 0;
 }
 
-static int position_ok(double v)
-{
-    return aero_is_finite(v) && fabs(v) <= AERO_POSITION_LIMIT;
-}
 
 int aero_vortex_player_set_positions(aero_vortex_player *m,
                                      const double *xyz, int count)
 {
-    if (count < 1 || count > m->n)
+    if (count < 1 || count > m->n ||
+        !aero_finite_within(xyz, 3 * count, AERO_POSITION_LIMIT))
         return -1;
-    for (int i = 0; i < 3 * count; i++)
-        if (!position_ok(xyz[i]))
-            return -1;
     memcpy(m->xyz_target, xyz, sizeof(double) * 3 * (size_t)count);
     start_ramp(m);
     return 0;
@@ -434,7 +428,7 @@ static void render_source(aero_vortex_player *m, const block *b, int i,
 {
     double u0 = u_in0 + m->speed[i], u1, w[4];
     int c;
-    m->speed[i] += (m->speed_target[i] - m->speed[i]) * b->frac;
+    aero_glide_values(m->speed + i, m->speed_target + i, 1, b->frac);
     u1 = u_in1 + m->speed[i];
     if (u1 > AERO_MACH_LIMIT * AERO_C0) u1 = AERO_MACH_LIMIT * AERO_C0;
     if (u0 > AERO_MACH_LIMIT * AERO_C0) u0 = AERO_MACH_LIMIT * AERO_C0;

@@ -59,7 +59,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             int n = 1 + (int)((fuzz_byte(&in) << 2 | fuzz_byte(&in)) % MAXN);
             for (int i = 0; i < n; i++)
                 speed[i] = (float)(i & 1 ? a : b);
-            aero_cavity_model_process(&m, speed, out, n);
+            aero_cavity_model_process(&m, speed, (float *[]){out}, n);
             FUZZ_REQUIRE(fuzz_finite(out, n), "non-finite output");
         }
         }

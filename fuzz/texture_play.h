@@ -121,7 +121,7 @@ static int fuzz_texture_check(const char *path)
         for (int i = 0; i < 256; i++)
             speed[i] = (float)(i % 50);
         for (int b = 0; b < 4; b++) {
-            aero_cavity_model_process(&cav, speed, out, 256);
+            aero_cavity_model_process(&cav, speed, (float *[]){out}, 256);
             FUZZ_REQUIRE(fuzz_finite(out, 256),
                          "cavity texture player output not finite");
         }

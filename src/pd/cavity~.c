@@ -24,7 +24,7 @@ static int cavity_tilde_process(void *obj, const float *in,
                                 float *const *out, int n)
 {
     t_cavity_tilde *x = obj;
-    return aero_cavity_model_process(&x->x_model, in, out[0], n);
+    return aero_cavity_model_process(&x->x_model, in, out, n);
 }
 
 static void cavity_tilde_dsp(t_cavity_tilde *x, t_signal **sp)

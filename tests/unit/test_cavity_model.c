@@ -17,7 +17,7 @@ static double rms_of(aero_cavity_model *m, float speed, double seconds,
     for (long done = 0; done < total; done += 64) {
         for (int i = 0; i < 64; i++)
             in[i] = speed;
-        aero_cavity_model_process(m, in, out, 64);
+        aero_cavity_model_process(m, in, (float *[]){out}, 64);
         for (int i = 0; i < 64; i++) {
             if (!isfinite(out[i]))
                 (*bad)++;

@@ -77,7 +77,7 @@ static void *cavity_make(int variant) { return cavity_make_mode(variant, 0); }
 static void *cavity_tex_make(int variant) { return cavity_make_mode(variant, 1); }
 static void cavity_run(void *s, const float *speed, float *out, int n)
 {
-    aero_cavity_model_process(s, speed, out, n);
+    aero_cavity_model_process(s, speed, (float *[]){out}, n);
 }
 static void cavity_drop(void *s)
 {

@@ -342,8 +342,9 @@ static void process_texture(aero_cavity_model *m, const float *u, float *out,
 }
 
 int aero_cavity_model_process(aero_cavity_model *m, const float *speed,
-                              float *out, int n)
+                              float *const *outs, int n)
 {
+    float *out = outs[0];
     enum { CHUNK = 64 };
     const float limit = (float)(AERO_MACH_LIMIT * AERO_C0);
     int clamped = 0;

@@ -108,9 +108,10 @@ double aero_cavity_locked_hz(double f, double depth, double length,
 double aero_cavity_depth_hz(double depth, double length, double width,
                             int n);
 
-/* n samples; speed in m/s (NaN -> 0, |U| clamped at Mach 0.3); out in Pa.
+/* n samples; speed in m/s (NaN -> 0, |U| clamped at Mach 0.3); out[0] in
+ * Pa (one listener: out has one channel).
  * Returns 1 if a speed was clamped. */
 int aero_cavity_model_process(aero_cavity_model *m, const float *speed,
-                              float *out, int n);
+                              float *const *out, int n);
 
 #endif

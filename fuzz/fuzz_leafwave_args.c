@@ -32,8 +32,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         switch (op) {
         case 0: aero_leafwave_set_wind(&lw, v[0], v[1], v[2]); break;
         case 1: aero_leafwave_set_speed(&lw, v[0]); break;
-        case 2: aero_leafwave_set_ear(&lw, (int)(fuzz_byte(&in) % 3) - 1 + 0,
-                                      v[0], v[1], v[2]); break;
+        case 2: { /* 0..2 ears (0: refused) */
+            aero_ears e = {(int)(fuzz_byte(&in) % 3),
+                           {{v[0], v[1], v[2]}, {v[0], v[1], v[2]}}};
+            aero_leafwave_set_ears(&lw, &e);
+            break;
+        }
         case 3: aero_leafwave_set_mic(&lw, v[0], v[1], v[2]); break;
         case 4: aero_leafwave_set_mic_k(&lw, v[0]); break;
         case 5: aero_leafwave_set_gain_db(&lw, v[0]); break;

@@ -207,16 +207,10 @@ static void leafwave_tilde_mic(t_leafwave_tilde *x, t_symbol *s, int argc,
 static void leafwave_tilde_listener(t_leafwave_tilde *x, t_symbol *s,
                                     int argc, t_atom *argv)
 {
-    aero_ears v;
-    if (!x->x_ok)
-        return;
-    int ears = aero_pd_ears(&x->x_base, s, argc, argv, &v);
-    for (int e = 0; e < ears; e++)
-        if (aero_leafwave_set_ear(&x->x_model, e, v.pos[e][0], v.pos[e][1],
-                                  v.pos[e][2])) {
-            aero_pd_bad_ears(&x->x_base, ears);
-            return;
-        }
+    aero_ears e;
+    if (x->x_ok && aero_pd_ears(&x->x_base, s, argc, argv, &e) &&
+        aero_leafwave_set_ears(&x->x_model, &e))
+        aero_pd_bad_ears(&x->x_base, e.n);
 }
 
 /* --- creation ------------------------------------------------------------- */

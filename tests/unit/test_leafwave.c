@@ -531,8 +531,8 @@ static void test_rendering(void)
         aero_leafwave lw;
         make(&lw, 1.0, 31);
         aero_leafwave_set_wind(&lw, 8.0, 0.0, 0.0);
-        aero_leafwave_set_ear(&lw, 0, lw.source[0], lw.source[1] - dist[k],
-                              lw.source[2]);
+        aero_leafwave_set_ears(&lw, &(aero_ears){1, {{lw.source[0],
+                               lw.source[1] - dist[k], lw.source[2]}}});
         render(&lw, 0.1, NULL); /* past the longest delay */
         rms[k] = render(&lw, 2.0, NULL);
         aero_leafwave_free(&lw);
@@ -550,8 +550,8 @@ static void test_rendering(void)
         aero_leafwave lw;
         make(&lw, 1.0, 31);
         aero_leafwave_set_wind(&lw, 8.0, 0.0, 0.0);
-        aero_leafwave_set_ear(&lw, 0, lw.source[0], lw.source[1] - 5.0,
-                              lw.source[2]);
+        aero_leafwave_set_ears(&lw, &(aero_ears){1, {{lw.source[0],
+                               lw.source[1] - 5.0, lw.source[2]}}});
         aero_leafwave_set_mic(&lw, axis[k][0], axis[k][1], axis[k][2]);
         aero_leafwave_set_mic_k(&lw, 1.0);
         level[k] = render(&lw, 1.0, NULL);
@@ -571,8 +571,10 @@ static void test_bad_input(void)
     aero_leafwave lw;
     make(&lw, 1.0, 8);
     UNIT_CHECK(aero_leafwave_set_wind(&lw, NAN, 0, 0) == -1 &&
-                   aero_leafwave_set_ear(&lw, 0, INFINITY, 0, 0) == -1 &&
-                   aero_leafwave_set_ear(&lw, 1, 0, 0, 0) == -1 &&
+                   aero_leafwave_set_ears(&lw,
+                           &(aero_ears){1, {{INFINITY, 0, 0}}}) == -1 &&
+                   aero_leafwave_set_ears(&lw,
+                           &(aero_ears){2, {{0, 0, 0}, {0, 0, 0}}}) == -1 &&
                    aero_leafwave_set_stiffness(&lw, 0) == -1 &&
                    aero_leafwave_set_beta(&lw, 7) == -1 &&
                    aero_leafwave_set_tables(&lw, 1e9, 12, 4) == -1 &&

@@ -222,7 +222,8 @@ static void *leafwave_make(int variant)
     aero_leafwave_set_tables(lw, 400.0, 4, 3);
     small_tree(&t, variant);
     aero_leafwave_set_tree(lw, &t, err, sizeof(err));
-    aero_leafwave_set_ear(lw, 0, 0.0, variant ? -1.0 : -2.0, 1.5);
+    aero_leafwave_set_ears(lw, &(aero_ears){1, {{0.0, variant ? -1.0 : -2.0,
+                                                 1.5}}});
     return lw;
 }
 static void leafwave_run(void *s, const float *speed, float *out, int n)

@@ -1100,20 +1100,17 @@ int aero_leafwave_set_speed(aero_leafwave *lw, double speed)
     return 0;
 }
 
-int aero_leafwave_set_ear(aero_leafwave *lw, int ear, double x, double y,
-                          double z)
+int aero_leafwave_set_ears(aero_leafwave *lw, const aero_ears *e)
 {
-    if (ear < 0 || ear >= lw->n_ears || !aero_is_finite(x) ||
-        !aero_is_finite(y) || !aero_is_finite(z) || fabs(x) > 1e5 ||
-        fabs(y) > 1e5 || fabs(z) > 1e5)
+    if (!aero_ears_ok(e, lw->n_ears))
         return -1;
-    lw->ear_target[ear][0] = x;
-    lw->ear_target[ear][1] = y;
-    lw->ear_target[ear][2] = z;
-    lw->ramp_left = lw->render_primed ? lw->ramp_samples : 0;
-    if (!lw->render_primed)
-        for (int k = 0; k < 3; k++)
-            lw->ear[ear][k] = lw->ear_target[ear][k];
+    for (int ear = 0; ear < e->n; ear++) {
+        memcpy(lw->ear_target[ear], e->pos[ear], sizeof(lw->ear_target[ear]));
+        lw->ramp_left = lw->render_primed ? lw->ramp_samples : 0;
+        if (!lw->render_primed)
+            for (int k = 0; k < 3; k++)
+                lw->ear[ear][k] = lw->ear_target[ear][k];
+    }
     return 0;
 }
 

@@ -55,6 +55,7 @@
 #ifndef AERO_LEAFWAVE_H
 #define AERO_LEAFWAVE_H
 
+#include "aero_ears.h"
 #include "tree.h"
 #include "tree_motion.h"
 
@@ -199,8 +200,8 @@ int aero_leafwave_set_sample_rate(aero_leafwave *lw, double sr);
 int aero_leafwave_set_wind(aero_leafwave *lw, double vx, double vy,
                            double vz);
 int aero_leafwave_set_speed(aero_leafwave *lw, double speed);
-int aero_leafwave_set_ear(aero_leafwave *lw, int ear, double x, double y,
-                          double z);
+/* ears 0..e->n-1 (e->n at most the ears it was made with) */
+int aero_leafwave_set_ears(aero_leafwave *lw, const aero_ears *e);
 int aero_leafwave_set_gain_db(aero_leafwave *lw, double db);
 int aero_leafwave_set_ramp_ms(aero_leafwave *lw, double ms);
 int aero_leafwave_set_stiffness(aero_leafwave *lw, double s);

@@ -61,7 +61,9 @@ static void render(const aero_tree *t)
         double w[3] = {12.0, 3.0, 0.0}, ear[3] = {0.0, -3.0, 1.5};
         aero_treebranch_set_stereo(&tb, 1);
         aero_treebranch_set_wind(&tb, w);
-        aero_treebranch_set_ears(&tb, ear, ear);
+        aero_ears both = {2, {{ear[0], ear[1], ear[2]},
+                              {ear[0], ear[1], ear[2]}}};
+        aero_treebranch_set_ears(&tb, &both);
         if (!tree_copy(t, &c) && aero_treebranch_set_tree(&tb, &c))
             aero_tree_free(&c);
         for (int b = 0; b < 12; b++) {

@@ -28,8 +28,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             v[i] = fuzz_number(&in);
         switch (op) {
         case 0: aero_treebranch_set_wind(&tb, v); break;
-        case 1: aero_treebranch_set_listener(&tb, v); break;
-        case 2: aero_treebranch_set_ears(&tb, v, v + 3); break;
+        case 1: {
+            aero_ears e = aero_ears_at(v[0], v[1], v[2]);
+            aero_treebranch_set_ears(&tb, &e);
+            break;
+        }
+        case 2: {
+            aero_ears e = {2, {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}}};
+            aero_treebranch_set_ears(&tb, &e);
+            break;
+        }
         case 3: aero_treebranch_set_mic(&tb, v); break;
         case 4: aero_treebranch_set_mic_k(&tb, v[0]); break;
         case 5: aero_treebranch_set_gain_db(&tb, v[0]); break;

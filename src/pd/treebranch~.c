@@ -118,7 +118,8 @@ static void treebranch_tilde_listener(t_treebranch_tilde *x, t_symbol *s,
     double v[3];
     if (aero_pd_floats(x, OBJ, s->s_name, argc, argv, 3, v))
         return;
-    if (aero_treebranch_set_listener(&x->x_tb, v))
+    aero_ears e = aero_ears_at(v[0], v[1], v[2]);
+    if (aero_treebranch_set_ears(&x->x_tb, &e))
         pd_error(x, OBJ ": listener position must be finite, within 1e5 m");
 }
 
@@ -130,7 +131,8 @@ static void treebranch_tilde_ears(t_treebranch_tilde *x, t_symbol *s,
         return;
     if (!x->x_base.stereo)
         pd_error(x, OBJ ": 'ears' needs -stereo (the left ear is used)");
-    if (aero_treebranch_set_ears(&x->x_tb, v, v + 3))
+    aero_ears e = {2, {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}}};
+    if (aero_treebranch_set_ears(&x->x_tb, &e))
         pd_error(x, OBJ ": ear positions must be finite, within 1e5 m");
 }
 

@@ -197,7 +197,8 @@ static void *treebranch_make(int variant)
     aero_treebranch_init(tb, 44100.0, 9u + variant);
     small_tree(&t, variant);
     aero_treebranch_set_tree(tb, &t);
-    aero_treebranch_set_listener(tb, ear);
+    aero_treebranch_set_ears(tb,
+                             &(aero_ears){1, {{ear[0], ear[1], ear[2]}}});
     return tb;
 }
 static void treebranch_run(void *s, const float *speed, float *out, int n)

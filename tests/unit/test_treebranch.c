@@ -177,7 +177,8 @@ static void test_rendering(void)
     float buf[480];
     rod(&tb, 0.01, 1000.0);
     aero_treebranch_set_wind(&tb, wind);
-    aero_treebranch_set_listener(&tb, lis5);
+    aero_treebranch_set_ears(&tb,
+                             &(aero_ears){1, {{lis5[0], lis5[1], lis5[2]}}});
     for (k = 0; k < 100; k++)
         aero_treebranch_process(&tb, buf, NULL, 480);
     ptot = total_power(p, aero_treebranch_frame_power(&tb, p, MAXBINS));
@@ -194,7 +195,8 @@ static void test_rendering(void)
     UNIT_CHECK(step < 1.5 * rms5,
                "no clicks: largest step %.3g = %.2f rms", step, step / rms5);
     UNIT_CHECK(fin, "finite output");
-    aero_treebranch_set_listener(&tb, lis10);
+    aero_treebranch_set_ears(
+        &tb, &(aero_ears){1, {{lis10[0], lis10[1], lis10[2]}}});
     for (k = 0; k < 20; k++)
         aero_treebranch_process(&tb, buf, NULL, 480);
     rms10 = render(&tb, 4.0, &step, &fin);
@@ -253,7 +255,8 @@ static void test_still_and_bad(void)
                    && aero_treebranch_set_beta(&tb, 7.0) == -1
                    && aero_treebranch_set_stiffness(&tb, 0.0) == -1
                    && aero_treebranch_set_mic_k(&tb, 1.0 / 0.0) == -1
-                   && aero_treebranch_set_listener(&tb, nanv) == -1
+                   && aero_treebranch_set_ears(&tb, &(aero_ears){1,
+                          {{nanv[0], nanv[1], nanv[2]}}}) == -1
                    && aero_treebranch_set_gain_db(&tb, 1e9) == -1,
                "bad parameters are refused");
     aero_treebranch_set_wind(&tb, ok);

@@ -308,7 +308,9 @@ static int valid_point(const double p[3])
         && fabs(p[2]) < 1e5;
 }
 
-int aero_treebranch_set_listener(aero_treebranch *tb, const double p[3])
+/* one listener: in stereo the head moves there, the ears keep their
+   spacing */
+static int set_listener(aero_treebranch *tb, const double p[3])
 {
     int k;
     if (!valid_point(p))
@@ -326,8 +328,8 @@ int aero_treebranch_set_listener(aero_treebranch *tb, const double p[3])
     return 0;
 }
 
-int aero_treebranch_set_ears(aero_treebranch *tb, const double l[3],
-                             const double r[3])
+static int set_two_ears(aero_treebranch *tb, const double l[3],
+                        const double r[3])
 {
     if (!valid_point(l) || !valid_point(r))
         return -1;
@@ -335,6 +337,14 @@ int aero_treebranch_set_ears(aero_treebranch *tb, const double l[3],
     memcpy(tb->ear_target[1], r, sizeof tb->ear_target[1]);
     tb->ramp_left = tb->ramp_samples;
     return 0;
+}
+
+int aero_treebranch_set_ears(aero_treebranch *tb, const aero_ears *e)
+{
+    if (!e || e->n < 1 || e->n > 2)
+        return -1;
+    return e->n == 1 ? set_listener(tb, e->pos[0])
+                     : set_two_ears(tb, e->pos[0], e->pos[1]);
 }
 
 void aero_treebranch_set_stereo(aero_treebranch *tb, int stereo)

@@ -36,6 +36,7 @@
 #ifndef AERO_TREEBRANCH_H
 #define AERO_TREEBRANCH_H
 
+#include "aero_ears.h"
 #include "tree.h"
 #include "tree_motion.h"
 
@@ -102,9 +103,10 @@ int aero_treebranch_set_gain_db(aero_treebranch *tb, double db);
 int aero_treebranch_set_ramp_ms(aero_treebranch *tb, double ms);
 int aero_treebranch_set_mic(aero_treebranch *tb, const double dir[3]);
 int aero_treebranch_set_mic_k(aero_treebranch *tb, double k);
-int aero_treebranch_set_listener(aero_treebranch *tb, const double p[3]);
-int aero_treebranch_set_ears(aero_treebranch *tb, const double l[3],
-                             const double r[3]);
+/* e->n 1: the listener (in stereo the head moves there, the ears keep
+   their spacing); 2: left and right ear (used in stereo; mono hears the
+   left). Positions finite, within 1e5 m. */
+int aero_treebranch_set_ears(aero_treebranch *tb, const aero_ears *e);
 void aero_treebranch_set_stereo(aero_treebranch *tb, int stereo);
 /* restarts the motion and the phases from this seed (allocates: not from
    the audio thread); 0 or -1 */

@@ -209,8 +209,9 @@ static void *vortex_tilde_new(t_symbol *s, int argc, t_atom *argv)
     (void)s;
     t_vortex_tilde *x = (t_vortex_tilde *)pd_new(vortex_tilde_class);
     aero_pd_base_init(&x->x_base, x, &vortex_tilde_spec, argc, argv);
-    aero_vortex_player_init(&x->x_player, sys_getsr(), x->x_base.stereo,
-                            aero_pd_default_seed());
+    if (aero_vortex_player_init(&x->x_player, sys_getsr(), x->x_base.stereo,
+                                aero_pd_default_seed()))
+        pd_error(x, OBJ ": out of memory for the sources: silent");
     aero_pd_parse_flags(x, &vortex_tilde_spec, argc, argv);
     aero_pd_base_outlets(&x->x_base);
     return x;

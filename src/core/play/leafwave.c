@@ -4,6 +4,7 @@
 #include "aero_air.h"
 #include "aero_util.h"
 
+#include "aero_fftw.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -60,43 +61,46 @@ static double clampd(double v, double lo, double hi)
 
 /* ---- wave tables: pink noise from f_i up, by an inverse FFT ------------- */
 
-/* in-place radix-2 complex FFT, n a power of two, sign -1 forward, +1
-   inverse (unscaled) */
-static void fft(double *re, double *im, int n, int sign)
+/* FFTW's inverse real transform of one table (AERO_LEAF_TABLE_LEN):
+   planned at init, never in process */
+struct aero_leafwave_fft {
+    fftwf_complex *spectrum; /* bins 0..n/2 */
+    float *signal;           /* n samples */
+    fftwf_plan plan;         /* unscaled, sign +1 */
+};
+
+static void free_fft(aero_leafwave *lw)
 {
-    for (int i = 1, j = 0; i < n; i++) {
-        int bit = n >> 1;
-        for (; j & bit; bit >>= 1)
-            j ^= bit;
-        j ^= bit;
-        if (i < j) {
-            double t = re[i];
-            re[i] = re[j];
-            re[j] = t;
-            t = im[i];
-            im[i] = im[j];
-            im[j] = t;
-        }
+    if (!lw->fft)
+        return;
+    if (lw->fft->plan) {
+        aero_fftw_serialise();
+        fftwf_destroy_plan(lw->fft->plan);
     }
-    for (int len = 2; len <= n; len <<= 1) {
-        double ang = sign * 2.0 * AERO_PI / len;
-        double wr = cos(ang), wi = sin(ang);
-        for (int i = 0; i < n; i += len) {
-            double cr = 1.0, ci = 0.0;
-            for (int k = 0; k < len / 2; k++) {
-                int a = i + k, b = a + len / 2;
-                double tr = re[b] * cr - im[b] * ci;
-                double ti = re[b] * ci + im[b] * cr;
-                re[b] = re[a] - tr;
-                im[b] = im[a] - ti;
-                re[a] += tr;
-                im[a] += ti;
-                double nr = cr * wr - ci * wi;
-                ci = cr * wi + ci * wr;
-                cr = nr;
-            }
-        }
+    fftwf_free(lw->fft->spectrum);
+    fftwf_free(lw->fft->signal);
+    free(lw->fft);
+    lw->fft = NULL;
+}
+
+static int make_fft(aero_leafwave *lw)
+{
+    const int n = AERO_LEAF_TABLE_LEN;
+    lw->fft = calloc(1, sizeof *lw->fft);
+    if (!lw->fft)
+        return -1;
+    lw->fft->spectrum = fftwf_malloc(sizeof(fftwf_complex) * (n / 2 + 1));
+    lw->fft->signal = fftwf_malloc(sizeof(float) * n);
+    if (lw->fft->spectrum && lw->fft->signal) {
+        aero_fftw_serialise();
+        lw->fft->plan = fftwf_plan_dft_c2r_1d(n, lw->fft->spectrum,
+                                              lw->fft->signal, FFTW_ESTIMATE);
     }
+    if (!lw->fft->plan) {
+        free_fft(lw);
+        return -1;
+    }
+    return 0;
 }
 
 double aero_leafwave_table_hz(const aero_leafwave *lw, int i)
@@ -126,19 +130,19 @@ const float *aero_leafwave_table(const aero_leafwave *lw, int i)
    spectrum pink (power ~ 1/f) from the basic frequency f_i over about
    three octaves, rolling off as f^-4 in power above 8 f_i, cut at
    0.45 TABLE_RATE / RATE_MAX (no aliasing when friction plays it at up to
-   RATE_MAX) and nothing below f_i; random phases; unit rms. The sample after the end repeats the first (interpolation). */
+   RATE_MAX) and nothing below f_i; random phases; unit rms. The sample
+   after the end repeats the first (interpolation). */
 static int make_tables(aero_leafwave *lw)
 {
     const int n = AERO_LEAF_TABLE_LEN;
     int count = lw->tables_per_octave * lw->octaves;
     float *tables = malloc(sizeof(float) * (size_t)count * (n + 1));
-    double *re = malloc(sizeof(double) * n), *im = malloc(sizeof(double) * n);
-    if (!tables || !re || !im) {
+    if (!tables || !lw->fft) {
         free(tables);
-        free(re);
-        free(im);
         return -1;
     }
+    fftwf_complex *spectrum = lw->fft->spectrum;
+    const float *signal = lw->fft->signal;
     uint32_t rng = lw->seed * 747796405u + 2891336453u;
     if (!rng)
         rng = 1;
@@ -149,8 +153,7 @@ static int make_tables(aero_leafwave *lw)
     lw->ntables = count;
     for (int t = 0; t < count; t++) {
         double f_i = aero_leafwave_table_hz(lw, t);
-        memset(re, 0, sizeof(double) * n);
-        memset(im, 0, sizeof(double) * n);
+        memset(spectrum, 0, sizeof(fftwf_complex) * (n / 2 + 1));
         for (int k = 1; k < n / 2; k++) {
             double f = k * df;
             if (f < f_i || f > f_top)
@@ -160,23 +163,19 @@ static int make_tables(aero_leafwave *lw)
             double over = f / (BAND_OCTAVES_FACTOR * f_i);
             double amp = 1.0 / (sqrt(f) * (1.0 + over * over));
             double ph = AERO_PI * aero_uniform(&rng);
-            re[k] = amp * cos(ph);
-            im[k] = amp * sin(ph);
-            re[n - k] = re[k]; /* Hermitian: a real signal */
-            im[n - k] = -im[k];
+            spectrum[k][0] = (float)(amp * cos(ph));
+            spectrum[k][1] = (float)(amp * sin(ph));
         }
-        fft(re, im, n, +1);
+        fftwf_execute(lw->fft->plan); /* a real signal: Hermitian spectrum */
         double sum = 0.0;
         for (int s = 0; s < n; s++)
-            sum += re[s] * re[s];
+            sum += (double)signal[s] * signal[s];
         double scale = sum > 0.0 ? 1.0 / sqrt(sum / n) : 0.0;
         float *dst = tables + (size_t)t * (n + 1);
         for (int s = 0; s < n; s++)
-            dst[s] = (float)(re[s] * scale);
+            dst[s] = (float)(signal[s] * scale);
         dst[n] = dst[0];
     }
-    free(re);
-    free(im);
     /* each table's zero crossings: of the two samples around a sign
        change, the one nearer zero; notes start there */
     int total = 0;
@@ -946,7 +945,8 @@ int aero_leafwave_init(aero_leafwave *lw, double sample_rate, int n_ears,
     lw->ramp_samples = 0.02 * sample_rate;
     lw->voices = malloc(sizeof(aero_leaf_voice) * lw->nvoices);
     lw->free_voices = malloc(sizeof(int) * lw->nvoices);
-    if (!lw->voices || !lw->free_voices || alloc_line(lw, sample_rate) || make_tables(lw)) {
+    if (!lw->voices || !lw->free_voices || alloc_line(lw, sample_rate) ||
+        make_fft(lw) || make_tables(lw)) {
         aero_leafwave_free(lw);
         return -1;
     }
@@ -973,6 +973,7 @@ void aero_leafwave_free(aero_leafwave *lw)
     free(lw->voices);
     free(lw->free_voices);
     free(lw->tables);
+    free_fft(lw);
     free(lw->crossings);
     free(lw->crossing_start);
     lw->crossings = lw->crossing_start = NULL;

@@ -384,34 +384,16 @@ void aero_tree_free(aero_tree *t)
 
 /* ---- the generator ------------------------------------------------------ */
 
-static void normalize(double v[3])
-{
-    double n = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    if (n > 0.0) {
-        v[0] /= n;
-        v[1] /= n;
-        v[2] /= n;
-    }
-}
-
-static void cross(const double a[3], const double b[3], double c[3])
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-/* two unit vectors perpendicular to the unit vector e (and to each other) */
-static void perpendiculars(const double e[3], double x[3], double y[3])
+void aero_tree_perpendiculars(const double e[3], double x[3], double y[3])
 {
     double up[3] = {0.0, 0.0, 1.0};
     if (fabs(e[2]) > 0.9) {
         up[0] = 1.0;
         up[2] = 0.0;
     }
-    cross(e, up, x);
-    normalize(x);
-    cross(e, x, y);
+    aero_cross3(e, up, x);
+    aero_normalise3(x);
+    aero_cross3(e, x, y);
 }
 
 /* unit direction at polar angle `tilt` from axis e, azimuth `azim` */
@@ -419,11 +401,11 @@ static void tilted(const double e[3], double tilt, double azim, double d[3])
 {
     double x[3], y[3];
     int k;
-    perpendiculars(e, x, y);
+    aero_tree_perpendiculars(e, x, y);
     for (k = 0; k < 3; k++)
         d[k] = cos(tilt) * e[k]
             + sin(tilt) * (cos(azim) * x[k] + sin(azim) * y[k]);
-    normalize(d);
+    aero_normalise3(d);
 }
 
 static double uniform01(uint32_t *rng)
@@ -482,7 +464,7 @@ int aero_tree_generate(aero_tree *t, const aero_tree_shape *shape)
             for (k = 0; k < 3; k++)
                 e[k] = par.b[k] - par.a[k];
             len = dist3(par.a, par.b);
-            normalize(e);
+            aero_normalise3(e);
             if (grow((void **)&t->branches, &bcap, t->nbranches + nchild,
                      sizeof *t->branches))
                 goto oom;
@@ -528,7 +510,7 @@ int aero_tree_generate(aero_tree *t, const aero_tree_shape *shape)
         double e[3], dir[3], u, size, stalk;
         for (k = 0; k < 3; k++)
             e[k] = b->b[k] - b->a[k];
-        normalize(e);
+        aero_normalise3(e);
         u = 0.15 + 0.85 * uniform01(&rng);
         tilted(e, (40.0 + 30.0 * uniform01(&rng)) * AERO_PI / 180.0,
                i * GEN_GOLDEN + 0.3 * aero_uniform(&rng), dir);

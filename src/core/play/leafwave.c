@@ -29,31 +29,6 @@
 #define BAND_OCTAVES_FACTOR 8.0 /* tables roll off above 8 f_i */
 #define MIN_DISTANCE 0.1      /* m: 1/r is held below this */
 
-/* ---- small vector helpers (float storage, double arithmetic) ----------- */
-
-static double dot3d(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void cross3d(const double a[3], const double b[3], double c[3])
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static double normalize3d(double v[3])
-{
-    double n = sqrt(dot3d(v, v));
-    if (n > 0.0) {
-        v[0] /= n;
-        v[1] /= n;
-        v[2] /= n;
-    }
-    return n;
-}
-
 static double clampd(double v, double lo, double hi)
 {
     return v < lo ? lo : v > hi ? hi : v;
@@ -284,32 +259,32 @@ static void build_leaves(aero_leafwave *lw)
         double stalk[3], blade[3], centre[3], z[3], x[3], y[3];
         for (int k = 0; k < 3; k++)
             stalk[k] = l->e[k] - l->s[k];
-        double ls = normalize3d(stalk);
+        double ls = aero_normalise3(stalk);
         if (!(ls > 0.0)) {
             stalk[0] = 1.0;
             stalk[1] = stalk[2] = 0.0;
         }
         for (int k = 0; k < 3; k++)
             blade[k] = stalk[k] - DROOP * up[k];
-        if (!(normalize3d(blade) > 1e-6))
+        if (!(aero_normalise3(blade) > 1e-6))
             for (int k = 0; k < 3; k++)
                 blade[k] = stalk[k];
         for (int k = 0; k < 3; k++) {
             centre[k] = l->e[k] + 0.5 * l->length * blade[k];
             z[k] = centre[k] - l->s[k];
         }
-        double reach = normalize3d(z);
+        double reach = aero_normalise3(z);
         if (!(reach > 0.0)) {
             z[0] = 1.0;
             z[1] = z[2] = 0.0;
         }
-        cross3d(z, up, x);
-        if (normalize3d(x) < 1e-6) {
+        aero_cross3(z, up, x);
+        if (aero_normalise3(x) < 1e-6) {
             const double ex[3] = {1.0, 0.0, 0.0};
-            cross3d(z, ex, x);
-            normalize3d(x);
+            aero_cross3(z, ex, x);
+            aero_normalise3(x);
         }
-        cross3d(z, x, y);
+        aero_cross3(z, x, y);
         for (int k = 0; k < 3; k++) {
             s->base[k] = (float)l->s[k];
             s->branch_rest[k] = (float)(b->a[k] + l->along * (b->b[k] - b->a[k]));
@@ -630,34 +605,17 @@ static void branch_rotations(aero_leafwave *lw)
             rest[k] = t->branches[b].b[k] - t->branches[b].a[k];
             now[k] = pb[k] - pa[k];
         }
-        normalize3d(rest);
-        normalize3d(now);
-        cross3d(rest, now, axis);
-        double sn = normalize3d(axis), cs = dot3d(rest, now);
+        aero_normalise3(rest);
+        aero_normalise3(now);
+        aero_cross3(rest, now, axis);
+        double sn = aero_normalise3(axis), cs = aero_dot3(rest, now);
         if (!(sn > 1e-12)) {
             for (int k = 0; k < 9; k++)
                 r[k] = k % 4 == 0 ? 1.0 : 0.0;
             continue;
         }
-        /* Rodrigues: R = c I + s [a]x + (1 - c) a a^T */
-        double c1 = 1.0 - cs;
-        r[0] = cs + c1 * axis[0] * axis[0];
-        r[1] = c1 * axis[0] * axis[1] - sn * axis[2];
-        r[2] = c1 * axis[0] * axis[2] + sn * axis[1];
-        r[3] = c1 * axis[1] * axis[0] + sn * axis[2];
-        r[4] = cs + c1 * axis[1] * axis[1];
-        r[5] = c1 * axis[1] * axis[2] - sn * axis[0];
-        r[6] = c1 * axis[2] * axis[0] - sn * axis[1];
-        r[7] = c1 * axis[2] * axis[1] + sn * axis[0];
-        r[8] = cs + c1 * axis[2] * axis[2];
+        aero_rotation3(axis, cs, sn, r);
     }
-}
-
-static void rotate(const double *r, const double v[3], double out[3])
-{
-    out[0] = r[0] * v[0] + r[1] * v[1] + r[2] * v[2];
-    out[1] = r[3] * v[0] + r[4] * v[1] + r[5] * v[2];
-    out[2] = r[6] * v[0] + r[7] * v[1] + r[8] * v[2];
 }
 
 static void leaf_frame(aero_leafwave *lw, double sway)
@@ -703,11 +661,11 @@ static void leaf_frame(aero_leafwave *lw, double sway)
         if (lw->has_motion) {
             const double *r = lw->branch_rot + 9 * bi;
             double tmp[3];
-            rotate(r, local, d);
-            rotate(r, off, tmp);
+            aero_mat3_apply(r, local, d);
+            aero_mat3_apply(r, off, tmp);
             for (int k = 0; k < 3; k++)
                 off[k] = tmp[k];
-            rotate(r, xr, tmp);
+            aero_mat3_apply(r, xr, tmp);
             for (int k = 0; k < 3; k++)
                 xr[k] = tmp[k];
         } else
@@ -715,14 +673,14 @@ static void leaf_frame(aero_leafwave *lw, double sway)
                 d[k] = local[k];
         for (int k = 0; k < 3; k++)
             base[k] = bp[k] + off[k];
-        normalize3d(d);
+        aero_normalise3(d);
         /* blade frame: along d, across = the (turned) rest x made
            perpendicular to d, normal = d x across, then the torsion */
-        double xd = xr[0] * d[0] + xr[1] * d[1] + xr[2] * d[2];
+        double xd = aero_dot3(xr, d);
         for (int k = 0; k < 3; k++)
             u[k] = xr[k] - xd * d[k];
-        normalize3d(u);
-        cross3d(d, u, nn);
+        aero_normalise3(u);
+        aero_cross3(d, u, nn);
         double cr = cos_small(tr), sr = sin_small(tr);
         for (int k = 0; k < 3; k++) {
             s->p[k] = (float)(base[k] + s->reach * d[k]);
@@ -1083,7 +1041,7 @@ int aero_leafwave_set_wind(aero_leafwave *lw, double vx, double vy, double vz)
 {
     if (!aero_is_finite(vx) || !aero_is_finite(vy) || !aero_is_finite(vz))
         return -1;
-    double v[3] = {vx, vy, vz}, s = sqrt(dot3d(v, v));
+    double v[3] = {vx, vy, vz}, s = sqrt(aero_dot3(v, v));
     double lim = AERO_MACH_LIMIT * AERO_C0;
     if (s > lim)
         for (int k = 0; k < 3; k++)
@@ -1120,17 +1078,13 @@ int aero_leafwave_set_ear(aero_leafwave *lw, int ear, double x, double y,
 
 int aero_leafwave_set_gain_db(aero_leafwave *lw, double db)
 {
-    if (!aero_is_finite(db) || db < -200.0 || db > 120.0)
-        return -1;
-    lw->gain = pow(10.0, db / 20.0);
-    return 0;
+    return aero_set_gain_db(&lw->gain, db);
 }
 
 int aero_leafwave_set_ramp_ms(aero_leafwave *lw, double ms)
 {
-    if (!aero_is_finite(ms) || ms < 0.0 || ms > 600000.0)
+    if (aero_set_ramp_ms(&lw->ramp_samples, ms, lw->sample_rate))
         return -1;
-    lw->ramp_samples = ms * 0.001 * lw->sample_rate;
     if (lw->ramp_samples < 1.0)
         lw->ramp_samples = 1.0;
     return 0;
@@ -1138,9 +1092,8 @@ int aero_leafwave_set_ramp_ms(aero_leafwave *lw, double ms)
 
 int aero_leafwave_set_stiffness(aero_leafwave *lw, double s)
 {
-    if (!aero_is_finite(s) || s < 1e-3 || s > 1e3)
+    if (aero_set_within(&lw->stiffness, s, 1e-3, 1e3))
         return -1;
-    lw->stiffness = s;
     if (lw->has_motion)
         aero_tree_motion_set_stiffness(&lw->motion, s);
     return 0;
@@ -1148,9 +1101,8 @@ int aero_leafwave_set_stiffness(aero_leafwave *lw, double s)
 
 int aero_leafwave_set_beta(aero_leafwave *lw, double beta)
 {
-    if (!aero_is_finite(beta) || beta < 0.0 || beta > 2.0)
+    if (aero_set_within(&lw->beta, beta, 0.0, 2.0))
         return -1;
-    lw->beta = beta;
     if (lw->has_motion)
         aero_tree_motion_set_beta(&lw->motion, beta);
     return 0;
@@ -1168,57 +1120,38 @@ int aero_leafwave_set_mic(aero_leafwave *lw, double x, double y, double z)
 
 int aero_leafwave_set_mic_k(aero_leafwave *lw, double k)
 {
-    if (!aero_is_finite(k) || k < 0.0 || k > 100.0)
-        return -1;
-    lw->mic_k = k;
-    return 0;
+    return aero_set_within(&lw->mic_k, k, 0.0, 100.0);
 }
 
 int aero_leafwave_set_sway(aero_leafwave *lw, double rad)
 {
-    if (!aero_is_finite(rad) || rad < 0.0 || rad > 1.5)
-        return -1;
-    lw->sway = rad;
-    return 0;
+    return aero_set_within(&lw->sway, rad, 0.0, 1.5);
 }
 
 int aero_leafwave_set_coupling(aero_leafwave *lw, double a)
 {
-    if (!aero_is_finite(a) || fabs(a) > 10.0)
-        return -1;
-    lw->coupling = a;
-    return 0;
+    return aero_set_within(&lw->coupling, a, -10.0, 10.0);
 }
 
 int aero_leafwave_set_flutter(aero_leafwave *lw, double hz)
 {
-    if (!aero_is_finite(hz) || hz < 0.01 || hz > 30.0)
-        return -1;
-    lw->flutter_hz = hz;
-    return 0;
+    return aero_set_within(&lw->flutter_hz, hz, 0.01, 30.0);
 }
 
 int aero_leafwave_set_hit(aero_leafwave *lw, double pa)
 {
-    if (!aero_is_finite(pa) || pa < 0.0 || pa > 100.0)
-        return -1;
-    lw->hit_pa = pa;
-    return 0;
+    return aero_set_within(&lw->hit_pa, pa, 0.0, 100.0);
 }
 
 int aero_leafwave_set_rub(aero_leafwave *lw, double pa)
 {
-    if (!aero_is_finite(pa) || pa < 0.0 || pa > 100.0)
-        return -1;
-    lw->rub_pa = pa;
-    return 0;
+    return aero_set_within(&lw->rub_pa, pa, 0.0, 100.0);
 }
 
 int aero_leafwave_set_reach(aero_leafwave *lw, double factor)
 {
-    if (!aero_is_finite(factor) || factor < 0.1 || factor > 10.0)
+    if (aero_set_within(&lw->reach, factor, 0.1, 10.0))
         return -1;
-    lw->reach = factor;
     return restart(lw, NULL, 0);
 }
 
@@ -1293,9 +1226,9 @@ static double mic_factor(const aero_leafwave *lw, const double ear[3])
     double to[3], axis[3] = {lw->mic[0], lw->mic[1], lw->mic[2]};
     for (int k = 0; k < 3; k++)
         to[k] = lw->source[k] - ear[k];
-    if (normalize3d(axis) <= 0.0 || normalize3d(to) <= 0.0 || lw->mic_k == 0.0)
+    if (aero_normalise3(axis) <= 0.0 || aero_normalise3(to) <= 0.0 || lw->mic_k == 0.0)
         return 1.0;
-    double c = 0.5 * (1.0 + dot3d(axis, to));
+    double c = 0.5 * (1.0 + aero_dot3(axis, to));
     return c <= 0.0 ? 0.0 : pow(c, lw->mic_k);
 }
 
@@ -1314,13 +1247,13 @@ int aero_leafwave_process(aero_leafwave *lw, const float *speed,
             u_in = 0.0;
     }
     double dir[3] = {lw->wind[0], lw->wind[1], lw->wind[2]}, w[3];
-    if (normalize3d(dir) <= 0.0) {
+    if (aero_normalise3(dir) <= 0.0) {
         dir[0] = 1.0;
         dir[1] = dir[2] = 0.0;
     }
     for (int k = 0; k < 3; k++)
         w[k] = lw->wind[k] + u_in * dir[k];
-    double u = sqrt(dot3d(w, w)), lim = AERO_MACH_LIMIT * AERO_C0;
+    double u = sqrt(aero_dot3(w, w)), lim = AERO_MACH_LIMIT * AERO_C0;
     if (u > lim) {
         for (int k = 0; k < 3; k++)
             w[k] *= lim / u;

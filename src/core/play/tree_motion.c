@@ -65,22 +65,10 @@ struct aero_tree_motion_state {
     double *origin[2], *rot[2];
 };
 
-static double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void cross3(const double a[3], const double b[3], double c[3])
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
 /* rotation matrix (row-major) of the rotation vector r (Rodrigues) */
 static void rodrigues(const double r[3], double m[9])
 {
-    double phi = sqrt(dot3(r, r)), c, s, k[3], t;
+    double phi = sqrt(aero_dot3(r, r)), k[3];
     if (phi < 1e-12) {
         /* first order: I + [r]x */
         m[0] = 1.0;   m[1] = -r[2]; m[2] = r[1];
@@ -91,25 +79,7 @@ static void rodrigues(const double r[3], double m[9])
     k[0] = r[0] / phi;
     k[1] = r[1] / phi;
     k[2] = r[2] / phi;
-    c = cos(phi);
-    s = sin(phi);
-    t = 1.0 - c;
-    m[0] = c + t * k[0] * k[0];
-    m[1] = t * k[0] * k[1] - s * k[2];
-    m[2] = t * k[0] * k[2] + s * k[1];
-    m[3] = t * k[1] * k[0] + s * k[2];
-    m[4] = c + t * k[1] * k[1];
-    m[5] = t * k[1] * k[2] - s * k[0];
-    m[6] = t * k[2] * k[0] - s * k[1];
-    m[7] = t * k[2] * k[1] + s * k[0];
-    m[8] = c + t * k[2] * k[2];
-}
-
-static void mat_vec(const double m[9], const double v[3], double out[3])
-{
-    out[0] = m[0] * v[0] + m[1] * v[1] + m[2] * v[2];
-    out[1] = m[3] * v[0] + m[4] * v[1] + m[5] * v[2];
-    out[2] = m[6] * v[0] + m[7] * v[1] + m[8] * v[2];
+    aero_rotation3(k, cos(phi), sin(phi), m);
 }
 
 /* one-pole relaxation processes with corners an octave apart, summed with
@@ -153,7 +123,7 @@ static void place_branches(const aero_tree_motion *m, int which)
                 r[k] += st->rotvec[3 * b->parent + k];
                 rel[k] = b->a[k] - p->a[k];
             }
-            mat_vec(&st->rot[which][9 * b->parent], rel, moved);
+            aero_mat3_apply(&st->rot[which][9 * b->parent], rel, moved);
             for (k = 0; k < 3; k++)
                 o[k] = st->origin[which][3 * b->parent + k] + moved[k];
         } else {
@@ -171,7 +141,7 @@ static void motion_step(aero_tree_motion *m)
     const aero_tree *t = m->tree;
     const double dt = 1.0 / AERO_TREE_MOTION_RATE;
     const double *u = m->wind;
-    double speed2 = dot3(u, u), speed = sqrt(speed2);
+    double speed2 = aero_dot3(u, u), speed = sqrt(speed2);
     double sqrt_stiff = sqrt(m->stiffness);
     double cd_leaf = speed > LEAF_RECONFIGURE_SPEED
         ? CD_LEAF * LEAF_RECONFIGURE_SPEED / speed : CD_LEAF;
@@ -180,11 +150,11 @@ static void motion_step(aero_tree_motion *m)
     /* own loads: mean drag plus noise (eqs. 3-4) */
     for (i = 0; i < st->n; i++) {
         motion_branch *mb = &st->br[i];
-        double *f = &st->force[3 * i], along = dot3(u, mb->e), uperp[3];
+        double *f = &st->force[3 * i], along = aero_dot3(u, mb->e), uperp[3];
         double nperp, q, pb, nx = 0.0, ny = 0.0;
         for (k = 0; k < 3; k++)
             uperp[k] = u[k] - along * mb->e[k];
-        nperp = sqrt(dot3(uperp, uperp));
+        nperp = sqrt(aero_dot3(uperp, uperp));
         q = 0.5 * AERO_RHO;
         for (k = 0; k < 3; k++)
             f[k] = q * (CD_BRANCH * mb->area_branch * nperp * uperp[k]
@@ -216,8 +186,8 @@ static void motion_step(aero_tree_motion *m)
     for (i = 0; i < st->n; i++) {
         motion_branch *mb = &st->br[i];
         double *f = &st->force[3 * i], target[2], mag, omega;
-        target[0] = mb->flex / m->stiffness * dot3(f, mb->x);
-        target[1] = mb->flex / m->stiffness * dot3(f, mb->y);
+        target[0] = mb->flex / m->stiffness * aero_dot3(f, mb->x);
+        target[1] = mb->flex / m->stiffness * aero_dot3(f, mb->y);
         mag = sqrt(target[0] * target[0] + target[1] * target[1]);
         if (mag > 1e-12) {
             double lim = MAX_ANGLE * tanh(mag / MAX_ANGLE) / mag;
@@ -282,26 +252,16 @@ int aero_tree_motion_init(aero_tree_motion *m, const aero_tree *t,
     for (i = 0; i < n; i++) {
         const aero_branch *b = &t->branches[i];
         motion_branch *mb = &st->br[i];
-        double len, up[3] = {0.0, 0.0, 1.0}, dm = 0.5 * (b->d0 + b->d1);
+        double len, dm = 0.5 * (b->d0 + b->d1);
         uint32_t rng;
         for (k = 0; k < 3; k++)
             mb->e[k] = b->b[k] - b->a[k];
-        len = sqrt(dot3(mb->e, mb->e));
+        len = sqrt(aero_dot3(mb->e, mb->e));
         if (!(len > 0.0))
             len = 1e-6; /* the parser refuses these; stay finite anyway */
         for (k = 0; k < 3; k++)
             mb->e[k] /= len;
-        if (fabs(mb->e[2]) > 0.9) {
-            up[0] = 1.0;
-            up[2] = 0.0;
-        }
-        cross3(mb->e, up, mb->x);
-        {
-            double nx = sqrt(dot3(mb->x, mb->x));
-            for (k = 0; k < 3; k++)
-                mb->x[k] /= nx;
-        }
-        cross3(mb->e, mb->x, mb->y);
+        aero_tree_perpendiculars(mb->e, mb->x, mb->y);
         mb->area_branch = dm * len;
         /* frustum volume pi l (d0^2 + d0 d1 + d1^2) / 12 */
         mass[i] += WOOD_RHO * AERO_PI * len
@@ -441,7 +401,7 @@ void aero_tree_motion_point(const aero_tree_motion *m, int i, double u,
     for (k = 0; k < 3; k++)
         rest[k] = b->b[k] * u + b->a[k] * (1.0 - u) - b->a[k];
     for (s = 0; s < 2; s++) {
-        mat_vec(&st->rot[s][9 * i], rest, p[s]);
+        aero_mat3_apply(&st->rot[s][9 * i], rest, p[s]);
         for (k = 0; k < 3; k++)
             p[s][k] += st->origin[s][3 * i + k];
     }

@@ -34,11 +34,6 @@ struct aero_treebranch_fft {
     float phase_cos[PHASES], phase_sin[PHASES];
 };
 
-static double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
 static int finite3(const double v[3])
 {
     return aero_is_finite(v[0]) && aero_is_finite(v[1])
@@ -226,7 +221,7 @@ int aero_treebranch_set_wind(aero_treebranch *tb, const double w[3])
     int clamped = 0, k;
     if (!finite3(w))
         return -1;
-    speed = sqrt(dot3(w, w));
+    speed = sqrt(aero_dot3(w, w));
     for (k = 0; k < 3; k++)
         tb->wind[k] = speed > limit ? w[k] * limit / speed : w[k];
     if (speed > limit)
@@ -238,18 +233,16 @@ int aero_treebranch_set_wind(aero_treebranch *tb, const double w[3])
 
 int aero_treebranch_set_alpha(aero_treebranch *tb, double alpha)
 {
-    if (!aero_is_finite(alpha) || alpha < 0.5 || alpha > 8.0)
+    if (aero_set_within(&tb->alpha, alpha, 0.5, 8.0))
         return -1;
-    tb->alpha = alpha;
     update_tail_shape(tb);
     return 0;
 }
 
 int aero_treebranch_set_stiffness(aero_treebranch *tb, double s)
 {
-    if (!aero_is_finite(s) || s < 1e-3 || s > 1e3)
+    if (aero_set_within(&tb->motion.stiffness, s, 1e-3, 1e3))
         return -1;
-    tb->motion.stiffness = s;
     if (tb->has_tree)
         aero_tree_motion_set_stiffness(&tb->motion, s);
     return 0;
@@ -268,18 +261,12 @@ int aero_treebranch_set_beta(aero_treebranch *tb, double beta)
 
 int aero_treebranch_set_gain_db(aero_treebranch *tb, double db)
 {
-    if (!aero_is_finite(db) || db < -200.0 || db > 120.0)
-        return -1;
-    tb->gain = pow(10.0, db / 20.0);
-    return 0;
+    return aero_set_gain_db(&tb->gain, db);
 }
 
 int aero_treebranch_set_ramp_ms(aero_treebranch *tb, double ms)
 {
-    if (!aero_is_finite(ms) || ms < 0.0 || ms > 600000.0)
-        return -1;
-    tb->ramp_samples = ms * 0.001 * tb->sample_rate;
-    return 0;
+    return aero_set_ramp_ms(&tb->ramp_samples, ms, tb->sample_rate);
 }
 
 int aero_treebranch_set_mic(aero_treebranch *tb, const double dir[3])
@@ -288,7 +275,7 @@ int aero_treebranch_set_mic(aero_treebranch *tb, const double dir[3])
     int k;
     if (!finite3(dir))
         return -1;
-    n = sqrt(dot3(dir, dir));
+    n = sqrt(aero_dot3(dir, dir));
     for (k = 0; k < 3; k++)
         tb->mic_dir[k] = n > 0.0 ? dir[k] / n : 0.0;
     return 0;
@@ -296,10 +283,7 @@ int aero_treebranch_set_mic(aero_treebranch *tb, const double dir[3])
 
 int aero_treebranch_set_mic_k(aero_treebranch *tb, double k)
 {
-    if (!aero_is_finite(k) || k < 0.0 || k > 20.0)
-        return -1;
-    tb->mic_k = k;
-    return 0;
+    return aero_set_within(&tb->mic_k, k, 0.0, 20.0);
 }
 
 static int valid_point(const double p[3])
@@ -403,7 +387,7 @@ static void add_branch(aero_treebranch *tb, int i)
     aero_tree_motion_point(&tb->motion, i, 1.0, pb, vb);
     for (k = 0; k < 3; k++)
         e[k] = pb[k] - pa[k];
-    len = sqrt(dot3(e, e));
+    len = sqrt(aero_dot3(e, e));
     if (!(len > 0.0))
         return;
     for (k = 0; k < 3; k++)
@@ -413,8 +397,8 @@ static void add_branch(aero_treebranch *tb, int i)
         double rel[3], along, u2;
         for (k = 0; k < 3; k++)
             rel[k] = tb->wind[k] - v[k];
-        along = dot3(rel, e);
-        u2 = dot3(rel, rel) - along * along; /* perpendicular part */
+        along = aero_dot3(rel, e);
+        u2 = aero_dot3(rel, rel) - along * along; /* perpendicular part */
         end_source(u2 > 0.0 ? sqrt(u2) : 0.0, end ? b->d1 : b->d0, len,
                    &f[end], &dens[end]);
     }
@@ -535,9 +519,9 @@ static void ear_path(const aero_treebranch *tb, const double p[3],
     int k;
     for (k = 0; k < 3; k++)
         to_tree[k] = tb->source[k] - p[k];
-    r = sqrt(dot3(to_tree, to_tree));
-    if (dot3(tb->mic_dir, tb->mic_dir) > 0.0 && r > 0.0)
-        cosmu = dot3(tb->mic_dir, to_tree) / r;
+    r = sqrt(aero_dot3(to_tree, to_tree));
+    if (aero_dot3(tb->mic_dir, tb->mic_dir) > 0.0 && r > 0.0)
+        cosmu = aero_dot3(tb->mic_dir, to_tree) / r;
     if (r < MIN_DISTANCE)
         r = MIN_DISTANCE;
     if (r > MAX_DISTANCE)

@@ -36,46 +36,36 @@ static double clampd(double v, double lo, double hi)
 
 /* ---- wave tables: pink noise from f_i up, by an inverse FFT ------------- */
 
-/* FFTW's inverse real transform of one table (AERO_LEAF_TABLE_LEN):
-   planned at init, never in process */
-struct aero_leafwave_fft {
-    fftwf_complex *spectrum; /* bins 0..n/2 */
-    float *signal;           /* n samples */
-    fftwf_plan plan;         /* unscaled, sign +1 */
-};
+/* two new arrays in place of *a and *b (the old ones freed, nothing
+   copied); -1, both kept, when out of memory */
+static int replace_arrays(void **a, size_t a_bytes, void **b, size_t b_bytes)
+{
+    void *na = malloc(a_bytes), *nb = malloc(b_bytes);
+    if (!na || !nb) {
+        free(na);
+        free(nb);
+        return -1;
+    }
+    free(*a);
+    free(*b);
+    *a = na;
+    *b = nb;
+    return 0;
+}
+
+/* the tables' inverse FFT: planned at init, never in process */
+static int make_fft(aero_leafwave *lw)
+{
+    lw->fft = calloc(1, sizeof *lw->fft);
+    return lw->fft ? aero_fftw_c2r_make(lw->fft, AERO_LEAF_TABLE_LEN) : -1;
+}
 
 static void free_fft(aero_leafwave *lw)
 {
-    if (!lw->fft)
-        return;
-    if (lw->fft->plan) {
-        aero_fftw_serialise();
-        fftwf_destroy_plan(lw->fft->plan);
-    }
-    fftwf_free(lw->fft->spectrum);
-    fftwf_free(lw->fft->signal);
+    if (lw->fft)
+        aero_fftw_c2r_free(lw->fft);
     free(lw->fft);
     lw->fft = NULL;
-}
-
-static int make_fft(aero_leafwave *lw)
-{
-    const int n = AERO_LEAF_TABLE_LEN;
-    lw->fft = calloc(1, sizeof *lw->fft);
-    if (!lw->fft)
-        return -1;
-    lw->fft->spectrum = fftwf_malloc(sizeof(fftwf_complex) * (n / 2 + 1));
-    lw->fft->signal = fftwf_malloc(sizeof(float) * n);
-    if (lw->fft->spectrum && lw->fft->signal) {
-        aero_fftw_serialise();
-        lw->fft->plan = fftwf_plan_dft_c2r_1d(n, lw->fft->spectrum,
-                                              lw->fft->signal, FFTW_ESTIMATE);
-    }
-    if (!lw->fft->plan) {
-        free_fft(lw);
-        return -1;
-    }
-    return 0;
 }
 
 double aero_leafwave_table_hz(const aero_leafwave *lw, int i)
@@ -174,17 +164,11 @@ static int make_tables(aero_leafwave *lw)
             lw->crossing_start[count] = c;
         else {
             total = c;
-            int *cr = malloc(sizeof(int) * (total + 1));
-            int *st = malloc(sizeof(int) * (count + 1));
-            if (!cr || !st) {
-                free(cr);
-                free(st);
+            if (replace_arrays((void **)&lw->crossings,
+                               sizeof(int) * (total + 1),
+                               (void **)&lw->crossing_start,
+                               sizeof(int) * (count + 1)))
                 return -1;
-            }
-            free(lw->crossings);
-            free(lw->crossing_start);
-            lw->crossings = cr;
-            lw->crossing_start = st;
         }
     }
     return 0;
@@ -1184,17 +1168,9 @@ int aero_leafwave_set_voices(aero_leafwave *lw, int n)
 {
     if (n < 1 || n > 65536)
         return -1;
-    aero_leaf_voice *v = malloc(sizeof(aero_leaf_voice) * n);
-    int *f = malloc(sizeof(int) * n);
-    if (!v || !f) {
-        free(v);
-        free(f);
+    if (replace_arrays((void **)&lw->voices, sizeof(aero_leaf_voice) * n,
+                       (void **)&lw->free_voices, sizeof(int) * n))
         return -1;
-    }
-    free(lw->voices);
-    free(lw->free_voices);
-    lw->voices = v;
-    lw->free_voices = f;
     lw->nvoices = n;
     reset_voices(lw);
     return 0;

@@ -139,7 +139,7 @@ typedef struct aero_leafwave {
     float *tables;       /* ntables x (AERO_LEAF_TABLE_LEN + 1) */
     int *crossings;      /* zero crossings of every table, in order */
     int *crossing_start; /* table i's are crossings[start[i]..start[i+1]) */
-    struct aero_leafwave_fft *fft; /* FFTW plan that makes them, private */
+    struct aero_fftw_c2r *fft; /* the FFTW plan that makes them */
 
     /* voices */
     int nvoices;

@@ -28,9 +28,7 @@
 #define PHASES 1024            /* table of unit phasors */
 
 struct aero_treebranch_fft {
-    fftwf_complex *spectrum;
-    float *frame;
-    fftwf_plan plan;
+    aero_fftw_c2r c2r;
     float phase_cos[PHASES], phase_sin[PHASES];
 };
 
@@ -49,12 +47,7 @@ static void free_buffers(aero_treebranch *tb)
     free(tb->ola);
     free(tb->ring);
     if (tb->fft) {
-        if (tb->fft->plan) {
-            aero_fftw_serialise();
-            fftwf_destroy_plan(tb->fft->plan);
-        }
-        fftwf_free(tb->fft->spectrum);
-        fftwf_free(tb->fft->frame);
+        aero_fftw_c2r_free(&tb->fft->c2r);
         free(tb->fft);
     }
     tb->power = tb->tail_start = tb->tail_shape = NULL;
@@ -97,14 +90,7 @@ static int make_buffers(aero_treebranch *tb)
     if (!tb->power || !tb->tail_start || !tb->tail_shape || !tb->window
         || !tb->ola || !tb->ring || !tb->fft)
         goto fail;
-    tb->fft->spectrum = fftwf_malloc(sizeof(fftwf_complex) * tb->nbins);
-    tb->fft->frame = fftwf_malloc(sizeof(float) * n);
-    if (!tb->fft->spectrum || !tb->fft->frame)
-        goto fail;
-    aero_fftw_serialise();
-    tb->fft->plan = fftwf_plan_dft_c2r_1d(n, tb->fft->spectrum,
-                                          tb->fft->frame, FFTW_ESTIMATE);
-    if (!tb->fft->plan)
+    if (aero_fftw_c2r_make(&tb->fft->c2r, n))
         goto fail;
     for (k = 0; k < PHASES; k++) {
         tb->fft->phase_cos[k] = (float)cos(2.0 * AERO_PI * k / PHASES);
@@ -474,12 +460,12 @@ static void synth_frame(aero_treebranch *tb)
         /* the c2r transform makes 2 |X| cos(...): mean square 2 |X|^2 */
         float amp = p > 0.0 && p < 1e30 ? (float)sqrt(0.5 * p) : 0.0f;
         uint32_t r = aero_xorshift32(&tb->rng) >> 22; /* 10 bits */
-        fft->spectrum[k][0] = amp * fft->phase_cos[r];
-        fft->spectrum[k][1] = amp * fft->phase_sin[r];
+        fft->c2r.spectrum[k][0] = amp * fft->phase_cos[r];
+        fft->c2r.spectrum[k][1] = amp * fft->phase_sin[r];
     }
-    fftwf_execute(fft->plan);
+    fftwf_execute(fft->c2r.plan);
     for (k = 0; k < n; k++)
-        tb->ola[k] += tb->window[k] * fft->frame[k];
+        tb->ola[k] += tb->window[k] * fft->c2r.signal[k];
     w = tb->written;
     for (k = 0; k < tb->hop; k++) {
         float v = tb->ola[k];

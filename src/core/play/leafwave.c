@@ -328,6 +328,117 @@ static unsigned cell_hash(long cx, long cy, long cz, unsigned mask)
             (unsigned)cz * 83492791u) & mask;
 }
 
+/* the spatial hash of the rest blade centres: each leaf's cell (cells, 3
+   per leaf), the leaves sorted by the hash of their cell (entries), and
+   where each hash's leaves start in that order (start, mask + 2 values) */
+typedef struct {
+    double cell;
+    unsigned mask;
+    long *cells;
+    hash_entry *entries;
+    int *start;
+} leaf_hash;
+
+static void free_hash(leaf_hash *h)
+{
+    free(h->entries);
+    free(h->start);
+    free(h->cells);
+}
+
+static int make_hash(const aero_leafwave *lw, leaf_hash *h)
+{
+    int n = lw->nleaves;
+    double rmax = 0.0;
+    for (int i = 0; i < n; i++)
+        if (lw->leaves[i].reach > rmax)
+            rmax = lw->leaves[i].reach;
+    h->cell = 2.0 * lw->reach * rmax;
+    if (!(h->cell > 1e-6))
+        h->cell = 1e-6;
+    unsigned size = 1;
+    while (size < 2u * (unsigned)n)
+        size <<= 1;
+    h->mask = size - 1;
+    h->entries = malloc(sizeof(hash_entry) * n);
+    h->start = malloc(sizeof(int) * (size + 1));
+    h->cells = malloc(sizeof(long) * 3 * n);
+    if (!h->entries || !h->start || !h->cells) {
+        free_hash(h);
+        return -1;
+    }
+    for (int i = 0; i < n; i++) {
+        long *c = h->cells + 3 * i;
+        for (int k = 0; k < 3; k++)
+            c[k] = (long)floor(lw->leaves[i].p[k] / h->cell);
+        h->entries[i].key = (int)cell_hash(c[0], c[1], c[2], h->mask);
+        h->entries[i].leaf = i;
+    }
+    qsort(h->entries, n, sizeof(hash_entry), cmp_hash);
+    for (unsigned k = 0, e = 0; k <= size; k++) {
+        while (e < (unsigned)n && (unsigned)h->entries[e].key < k)
+            e++;
+        h->start[k] = (int)e;
+    }
+    return 0;
+}
+
+/* j into the list of leaf i's nearest (best, by squared distance bestd,
+   nb of them so far), if it is among the nearest
+   AERO_LEAF_MAX_NEIGHBOURS */
+static void keep_nearest(int *best, double *bestd, int *nb, int j, double d2)
+{
+    int pos = *nb;
+    while (pos > 0 && bestd[pos - 1] > d2)
+        pos--;
+    if (pos >= AERO_LEAF_MAX_NEIGHBOURS)
+        return;
+    int last = *nb < AERO_LEAF_MAX_NEIGHBOURS ? *nb
+                                              : AERO_LEAF_MAX_NEIGHBOURS - 1;
+    for (int m = last; m > pos; m--) {
+        best[m] = best[m - 1];
+        bestd[m] = bestd[m - 1];
+    }
+    best[pos] = j;
+    bestd[pos] = d2;
+    if (*nb < AERO_LEAF_MAX_NEIGHBOURS)
+        (*nb)++;
+}
+
+/* leaf i's nearest neighbours within reach, from the 27 cells around its
+   own, nearest first; returns how many */
+static int neighbours(const aero_leafwave *lw, const leaf_hash *h, int i,
+                      int best[AERO_LEAF_MAX_NEIGHBOURS])
+{
+    const aero_leaf_state *a = &lw->leaves[i];
+    const long *ci = h->cells + 3 * i;
+    double bestd[AERO_LEAF_MAX_NEIGHBOURS];
+    int nb = 0;
+    for (int dx = -1; dx <= 1; dx++)
+        for (int dy = -1; dy <= 1; dy++)
+            for (int dz = -1; dz <= 1; dz++) {
+                long cx = ci[0] + dx, cy = ci[1] + dy, cz = ci[2] + dz;
+                unsigned key = cell_hash(cx, cy, cz, h->mask);
+                for (int e = h->start[key]; e < h->start[key + 1]; e++) {
+                    int j = h->entries[e].leaf;
+                    const long *cj = h->cells + 3 * j;
+                    /* another cell with the same hash: not this one */
+                    if (j == i || cj[0] != cx || cj[1] != cy || cj[2] != cz)
+                        continue;
+                    const aero_leaf_state *b = &lw->leaves[j];
+                    double d2 = 0.0;
+                    for (int k = 0; k < 3; k++) {
+                        double d = (double)b->p[k] - a->p[k];
+                        d2 += d * d;
+                    }
+                    double lim = lw->reach * (a->reach + b->reach);
+                    if (!(d2 > lim * lim))
+                        keep_nearest(best, bestd, &nb, j, d2);
+                }
+            }
+    return nb;
+}
+
 /* Candidate pairs: rest blade centres closer than reach (r_i + r_j), r the
    leaf's swing radius; each leaf keeps its nearest MAX_NEIGHBOURS. Cells of
    the largest such distance, hashed: each leaf looks at 27 cells, so the
@@ -340,88 +451,17 @@ static int build_pairs(aero_leafwave *lw)
     lw->npairs = 0;
     if (n < 2)
         return 0;
-    double rmax = 0.0;
-    for (int i = 0; i < n; i++)
-        if (lw->leaves[i].reach > rmax)
-            rmax = lw->leaves[i].reach;
-    double cell = 2.0 * lw->reach * rmax;
-    if (!(cell > 1e-6))
-        cell = 1e-6;
-    unsigned size = 1;
-    while (size < 2u * (unsigned)n)
-        size <<= 1;
-    unsigned mask = size - 1;
-    hash_entry *entries = malloc(sizeof(hash_entry) * n);
-    int *start = malloc(sizeof(int) * (size + 1));
-    long *cells = malloc(sizeof(long) * 3 * n);
+    leaf_hash h;
     aero_leaf_pair *pairs = malloc(sizeof(aero_leaf_pair) * (size_t)n *
                                    AERO_LEAF_MAX_NEIGHBOURS);
-    if (!entries || !start || !cells || !pairs) {
-        free(entries);
-        free(start);
-        free(cells);
+    if (!pairs || make_hash(lw, &h)) {
         free(pairs);
         return -1;
     }
-    for (int i = 0; i < n; i++) {
-        for (int k = 0; k < 3; k++)
-            cells[3 * i + k] = (long)floor(lw->leaves[i].p[k] / cell);
-        entries[i].key = (int)cell_hash(cells[3 * i], cells[3 * i + 1],
-                                        cells[3 * i + 2], mask);
-        entries[i].leaf = i;
-    }
-    qsort(entries, n, sizeof(hash_entry), cmp_hash);
-    for (unsigned h = 0, e = 0; h <= size; h++) {
-        while (e < (unsigned)n && (unsigned)entries[e].key < h)
-            e++;
-        start[h] = (int)e;
-    }
     int np = 0;
     for (int i = 0; i < n; i++) {
-        const aero_leaf_state *a = &lw->leaves[i];
         int best[AERO_LEAF_MAX_NEIGHBOURS];
-        double bestd[AERO_LEAF_MAX_NEIGHBOURS];
-        int nb = 0;
-        for (int dx = -1; dx <= 1; dx++)
-            for (int dy = -1; dy <= 1; dy++)
-                for (int dz = -1; dz <= 1; dz++) {
-                    long cx = cells[3 * i] + dx, cy = cells[3 * i + 1] + dy,
-                         cz = cells[3 * i + 2] + dz;
-                    unsigned h = cell_hash(cx, cy, cz, mask);
-                    for (int e = start[h]; e < start[h + 1]; e++) {
-                        int j = entries[e].leaf;
-                        /* another cell with the same hash: not this one */
-                        if (j == i || cells[3 * j] != cx ||
-                            cells[3 * j + 1] != cy || cells[3 * j + 2] != cz)
-                            continue;
-                        const aero_leaf_state *b = &lw->leaves[j];
-                        double d2 = 0.0;
-                        for (int k = 0; k < 3; k++) {
-                            double d = (double)b->p[k] - a->p[k];
-                            d2 += d * d;
-                        }
-                        double lim = lw->reach * (a->reach + b->reach);
-                        if (d2 > lim * lim)
-                            continue;
-                        /* insert into the sorted nearest list */
-                        int pos = nb;
-                        while (pos > 0 && bestd[pos - 1] > d2)
-                            pos--;
-                        if (pos >= AERO_LEAF_MAX_NEIGHBOURS)
-                            continue;
-                        int last = nb < AERO_LEAF_MAX_NEIGHBOURS
-                                       ? nb
-                                       : AERO_LEAF_MAX_NEIGHBOURS - 1;
-                        for (int m = last; m > pos; m--) {
-                            best[m] = best[m - 1];
-                            bestd[m] = bestd[m - 1];
-                        }
-                        best[pos] = j;
-                        bestd[pos] = d2;
-                        if (nb < AERO_LEAF_MAX_NEIGHBOURS)
-                            nb++;
-                    }
-                }
+        int nb = neighbours(lw, &h, i, best);
         for (int m = 0; m < nb; m++) {
             aero_leaf_pair *p = &pairs[np++];
             memset(p, 0, sizeof(*p));
@@ -429,6 +469,7 @@ static int build_pairs(aero_leafwave *lw)
             p->j = i < best[m] ? best[m] : i;
         }
     }
+    free_hash(&h);
     /* a pair found from both sides is kept once */
     qsort(pairs, np, sizeof(aero_leaf_pair), cmp_pair);
     int unique = 0;
@@ -441,9 +482,6 @@ static int build_pairs(aero_leafwave *lw)
         pairs[k].voice = -1;
         pairs[k].q = 1e30f;
     }
-    free(entries);
-    free(start);
-    free(cells);
     lw->pairs = pairs;
     lw->npairs = unique;
     return 0;
@@ -602,145 +640,166 @@ static void branch_rotations(aero_leafwave *lw)
     }
 }
 
-static void leaf_frame(aero_leafwave *lw, double sway)
+/* eqs. 9-13: the leaf's three unit-rms noises N_x, N_y, N_r, each white
+   noise through a damped leaf resonance, stepped one frame; its angles
+   theta_x, theta_y and theta_r (with the x-r coupling) from amp = W_x,
+   W_y, W_r */
+static void leaf_angles(aero_leafwave *lw, aero_leaf_state *s,
+                        const double amp[3], double angle[3])
 {
-    const aero_tree_motion *m = &lw->motion;
-    double wx = sway, wy = SWAY_Y * sway, wr = SWAY_R * sway;
+    const double *c = lw->flutter_coef[s->flutter_class];
+    double e0 = aero_uniform(&lw->rng), e1 = aero_uniform(&lw->rng),
+           e2 = aero_uniform(&lw->rng);
+    double nx = c[0] * s->nx[0] + c[1] * s->nx[1] + c[2] * e0;
+    double ny = c[0] * s->ny[0] + c[1] * s->ny[1] + c[2] * e1;
+    double nr = c[0] * s->nr[0] + c[1] * s->nr[1] + c[2] * e2;
+    s->nx[1] = s->nx[0];
+    s->nx[0] = (float)nx;
+    s->ny[1] = s->ny[0];
+    s->ny[0] = (float)ny;
+    s->nr[1] = s->nr[0];
+    s->nr[0] = (float)nr;
+    angle[0] = limit_angle(amp[0] * nx);
+    angle[1] = limit_angle(amp[1] * ny);
+    angle[2] = limit_angle(amp[2] * nr + lw->coupling * angle[0]);
+}
+
+/* leaf i's pose this frame: its own swing by the angles, turned with its
+   branch, from the branch point it rides on; then the blade frame (along
+   d, across = the turned rest x made perpendicular to d, normal = d x
+   across, then the torsion) */
+static void pose_leaf(aero_leafwave *lw, int i, const double angle[3])
+{
+    aero_leaf_state *s = &lw->leaves[i];
+    double sx = sin_small(angle[0]), sy = sin_small(angle[1]);
+    double cz = cos_small(angle[0]) * cos_small(angle[1]);
+    double d[3], base[3], u[3], nn[3], local[3], off[3], xr[3];
+    double bp[3] = {0.0, 0.0, 0.0}, bv[3];
+    int bi = lw->tree.leaves[i].branch;
     if (lw->has_motion)
-        branch_rotations(lw);
-    for (int i = 0; i < lw->nleaves; i++) {
-        aero_leaf_state *s = &lw->leaves[i];
-        const double *c = lw->flutter_coef[s->flutter_class];
-        /* eqs. 9-11: unit-rms noises, each a damped leaf resonance */
-        double e0 = aero_uniform(&lw->rng), e1 = aero_uniform(&lw->rng),
-               e2 = aero_uniform(&lw->rng);
-        double nx = c[0] * s->nx[0] + c[1] * s->nx[1] + c[2] * e0;
-        double ny = c[0] * s->ny[0] + c[1] * s->ny[1] + c[2] * e1;
-        double nr = c[0] * s->nr[0] + c[1] * s->nr[1] + c[2] * e2;
-        s->nx[1] = s->nx[0];
-        s->nx[0] = (float)nx;
-        s->ny[1] = s->ny[0];
-        s->ny[0] = (float)ny;
-        s->nr[1] = s->nr[0];
-        s->nr[0] = (float)nr;
-        double tx = limit_angle(wx * nx), ty = limit_angle(wy * ny);
-        double tr = limit_angle(wr * nr + lw->coupling * tx); /* eqs. 12-13 */
-        double sx = sin_small(tx), sy = sin_small(ty);
-        double cz = cos_small(tx) * cos_small(ty);
-        double d[3], base[3], u[3], nn[3], local[3], off[3], xr[3];
-        double bp[3] = {0.0, 0.0, 0.0}, bv[3];
-        int bi = lw->tree.leaves[i].branch;
-        if (lw->has_motion)
-            aero_tree_motion_point(m, bi, lw->tree.leaves[i].along, bp, bv);
-        else
-            for (int k = 0; k < 3; k++)
-                bp[k] = s->branch_rest[k];
-        for (int k = 0; k < 3; k++) {
-            local[k] = s->z[k] * cz + s->x[k] * sx + s->y[k] * sy;
-            off[k] = (double)s->base[k] - s->branch_rest[k];
-            xr[k] = s->x[k];
-        }
-        /* the leaf's own swing, turned with its branch, from the branch
-           point it rides on */
-        if (lw->has_motion) {
-            const double *r = lw->branch_rot + 9 * bi;
-            double tmp[3];
-            aero_mat3_apply(r, local, d);
-            aero_mat3_apply(r, off, tmp);
-            for (int k = 0; k < 3; k++)
-                off[k] = tmp[k];
-            aero_mat3_apply(r, xr, tmp);
-            for (int k = 0; k < 3; k++)
-                xr[k] = tmp[k];
-        } else
-            for (int k = 0; k < 3; k++)
-                d[k] = local[k];
+        aero_tree_motion_point(&lw->motion, bi, lw->tree.leaves[i].along, bp,
+                               bv);
+    else
         for (int k = 0; k < 3; k++)
-            base[k] = bp[k] + off[k];
-        aero_normalise3(d);
-        /* blade frame: along d, across = the (turned) rest x made
-           perpendicular to d, normal = d x across, then the torsion */
-        double xd = aero_dot3(xr, d);
-        for (int k = 0; k < 3; k++)
-            u[k] = xr[k] - xd * d[k];
-        aero_normalise3(u);
-        aero_cross3(d, u, nn);
-        double cr = cos_small(tr), sr = sin_small(tr);
-        for (int k = 0; k < 3; k++) {
-            s->p[k] = (float)(base[k] + s->reach * d[k]);
-            s->t[k] = (float)d[k];
-            s->n[k] = (float)(cr * nn[k] + sr * u[k]);
-            s->u[k] = (float)(cr * u[k] - sr * nn[k]);
-        }
+            bp[k] = s->branch_rest[k];
+    for (int k = 0; k < 3; k++) {
+        local[k] = s->z[k] * cz + s->x[k] * sx + s->y[k] * sy;
+        off[k] = (double)s->base[k] - s->branch_rest[k];
+        xr[k] = s->x[k];
     }
-
-    /* pairs: P_j in the blade frame of leaf i (eq. 15) against the
-       ellipsoid of the two blades; then the state machine (fig. 12) */
-    double frame_dt = lw->frame_samples / lw->sample_rate;
-    for (int p = 0; p < lw->npairs; p++) {
-        aero_leaf_pair *pr = &lw->pairs[p];
-        const aero_leaf_state *a = &lw->leaves[pr->i], *b = &lw->leaves[pr->j];
-        float dv[3];
+    if (lw->has_motion) {
+        const double *r = lw->branch_rot + 9 * bi;
+        double tmp[3];
+        aero_mat3_apply(r, local, d);
+        aero_mat3_apply(r, off, tmp);
         for (int k = 0; k < 3; k++)
-            dv[k] = b->p[k] - a->p[k];
-        float lt = dv[0] * a->t[0] + dv[1] * a->t[1] + dv[2] * a->t[2];
-        float lu = dv[0] * a->u[0] + dv[1] * a->u[1] + dv[2] * a->u[2];
-        float ln = dv[0] * a->n[0] + dv[1] * a->n[1] + dv[2] * a->n[2];
-        float hl = a->half_len + b->half_len, hw = a->half_wid + b->half_wid;
-        float hn = CONTACT_DEPTH * hw;
-        float q = (lt * lt) / (hl * hl) + (lu * lu) / (hw * hw) +
-                  (ln * ln) / (hn * hn);
-        int inside = q <= 1.0f;
-        float q_prev = pr->q;
-        int state = pr->state;
-        double vn = 0.0, vrel = 0.0;
-        if (state != AERO_PAIR_INITIAL && (inside || q_prev <= 1.0f)) {
-            /* relative velocity of the blades over the frame */
-            float dd[3];
-            for (int k = 0; k < 3; k++)
-                dd[k] = dv[k] - pr->d[k];
-            float dn = dd[0] * a->n[0] + dd[1] * a->n[1] + dd[2] * a->n[2];
-            vrel = sqrt((double)dd[0] * dd[0] + (double)dd[1] * dd[1] +
-                        (double)dd[2] * dd[2]) / frame_dt;
-            vn = fabs((double)dn) / frame_dt;
-        }
-        double vt = sqrt(vrel * vrel > vn * vn ? vrel * vrel - vn * vn : 0.0);
-        switch (state) {
-        case AERO_PAIR_INITIAL:
-            state = inside ? AERO_PAIR_CONTACT : AERO_PAIR_NONCONTACT;
-            break;
-        case AERO_PAIR_NONCONTACT:
-        case AERO_PAIR_KEYOFF:
-            if (inside) {
-                /* the crossing time within the last frame, from q */
-                double frac = q_prev > 1.0f && q_prev - q > 0.0f
-                                  ? (q_prev - 1.0) / ((double)q_prev - q)
-                                  : 0.0;
-                state = AERO_PAIR_KEYON;
-                key_on(lw, pr, p, clampd(frac, 0.0, 1.0), lw->hit_pa * vrel);
-            } else {
-                state = AERO_PAIR_NONCONTACT;
-                key_off(lw, pr);
-            }
-            break;
-        case AERO_PAIR_KEYON:
-        case AERO_PAIR_CONTACT:
-            if (inside) {
-                state = AERO_PAIR_CONTACT;
-                rub(lw, pr, p, vt);
-            } else {
-                state = AERO_PAIR_KEYOFF;
-                key_off(lw, pr);
-            }
-            break;
-        }
-        pr->state = state;
-        pr->q = q;
+            off[k] = tmp[k];
+        aero_mat3_apply(r, xr, tmp);
         for (int k = 0; k < 3; k++)
-            pr->d[k] = dv[k];
+            xr[k] = tmp[k];
+    } else
+        for (int k = 0; k < 3; k++)
+            d[k] = local[k];
+    for (int k = 0; k < 3; k++)
+        base[k] = bp[k] + off[k];
+    aero_normalise3(d);
+    double xd = aero_dot3(xr, d);
+    for (int k = 0; k < 3; k++)
+        u[k] = xr[k] - xd * d[k];
+    aero_normalise3(u);
+    aero_cross3(d, u, nn);
+    double cr = cos_small(angle[2]), sr = sin_small(angle[2]);
+    for (int k = 0; k < 3; k++) {
+        s->p[k] = (float)(base[k] + s->reach * d[k]);
+        s->t[k] = (float)d[k];
+        s->n[k] = (float)(cr * nn[k] + sr * u[k]);
+        s->u[k] = (float)(cr * u[k] - sr * nn[k]);
     }
+}
 
-    /* voices that have died away are freed */
+/* eq. 15: P_j - P_i (dv) in the blade frame of leaf i, measured against
+   the ellipsoid of the two blades' half sizes (thin across the blade):
+   q <= 1 is inside, "A" of fig. 12 */
+static float pair_measure(const aero_leaf_state *a, const aero_leaf_state *b,
+                          float dv[3])
+{
+    for (int k = 0; k < 3; k++)
+        dv[k] = b->p[k] - a->p[k];
+    float lt = dv[0] * a->t[0] + dv[1] * a->t[1] + dv[2] * a->t[2];
+    float lu = dv[0] * a->u[0] + dv[1] * a->u[1] + dv[2] * a->u[2];
+    float ln = dv[0] * a->n[0] + dv[1] * a->n[1] + dv[2] * a->n[2];
+    float hl = a->half_len + b->half_len, hw = a->half_wid + b->half_wid;
+    float hn = CONTACT_DEPTH * hw;
+    return (lt * lt) / (hl * hl) + (lu * lu) / (hw * hw) +
+           (ln * ln) / (hn * hn);
+}
+
+/* the blades' relative speed over the last frame (vrel), its part normal
+   to blade i (vn) and the sliding part (returned) */
+static double pair_speeds(const aero_leaf_pair *pr, const aero_leaf_state *a,
+                          const float dv[3], double frame_dt, double *vrel)
+{
+    float dd[3];
+    for (int k = 0; k < 3; k++)
+        dd[k] = dv[k] - pr->d[k];
+    float dn = dd[0] * a->n[0] + dd[1] * a->n[1] + dd[2] * a->n[2];
+    *vrel = sqrt((double)dd[0] * dd[0] + (double)dd[1] * dd[1] +
+                 (double)dd[2] * dd[2]) / frame_dt;
+    double vn = fabs((double)dn) / frame_dt;
+    return sqrt(*vrel * *vrel > vn * vn ? *vrel * *vrel - vn * vn : 0.0);
+}
+
+/* pair p's state machine (fig. 12) for this frame */
+static void pair_step(aero_leafwave *lw, int p, double frame_dt)
+{
+    aero_leaf_pair *pr = &lw->pairs[p];
+    const aero_leaf_state *a = &lw->leaves[pr->i];
+    float dv[3];
+    float q = pair_measure(a, &lw->leaves[pr->j], dv);
+    int inside = q <= 1.0f;
+    float q_prev = pr->q;
+    int state = pr->state;
+    double vrel = 0.0, vt = 0.0;
+    if (state != AERO_PAIR_INITIAL && (inside || q_prev <= 1.0f))
+        vt = pair_speeds(pr, a, dv, frame_dt, &vrel);
+    switch (state) {
+    case AERO_PAIR_INITIAL:
+        state = inside ? AERO_PAIR_CONTACT : AERO_PAIR_NONCONTACT;
+        break;
+    case AERO_PAIR_NONCONTACT:
+    case AERO_PAIR_KEYOFF:
+        if (inside) {
+            /* the crossing time within the last frame, from q */
+            double frac = q_prev > 1.0f && q_prev - q > 0.0f
+                              ? (q_prev - 1.0) / ((double)q_prev - q)
+                              : 0.0;
+            state = AERO_PAIR_KEYON;
+            key_on(lw, pr, p, clampd(frac, 0.0, 1.0), lw->hit_pa * vrel);
+        } else {
+            state = AERO_PAIR_NONCONTACT;
+            key_off(lw, pr);
+        }
+        break;
+    case AERO_PAIR_KEYON:
+    case AERO_PAIR_CONTACT:
+        if (inside) {
+            state = AERO_PAIR_CONTACT;
+            rub(lw, pr, p, vt);
+        } else {
+            state = AERO_PAIR_KEYOFF;
+            key_off(lw, pr);
+        }
+        break;
+    }
+    pr->state = state;
+    pr->q = q;
+    for (int k = 0; k < 3; k++)
+        pr->d[k] = dv[k];
+}
+
+/* voices that have died away go back to the free stack */
+static void free_silent_voices(aero_leafwave *lw)
+{
     for (int v = 0; v < lw->nvoices; v++) {
         aero_leaf_voice *vo = &lw->voices[v];
         if (vo->table < 0)
@@ -758,6 +817,23 @@ static void leaf_frame(aero_leafwave *lw, double sway)
             lw->free_voices[lw->nfree++] = v;
         }
     }
+}
+
+/* one leaf frame: every leaf moves, every pair is tested and plays */
+static void leaf_frame(aero_leafwave *lw, double sway)
+{
+    const double amp[3] = {sway, SWAY_Y * sway, SWAY_R * sway};
+    if (lw->has_motion)
+        branch_rotations(lw);
+    for (int i = 0; i < lw->nleaves; i++) {
+        double angle[3];
+        leaf_angles(lw, &lw->leaves[i], amp, angle);
+        pose_leaf(lw, i, angle);
+    }
+    double frame_dt = lw->frame_samples / lw->sample_rate;
+    for (int p = 0; p < lw->npairs; p++)
+        pair_step(lw, p, frame_dt);
+    free_silent_voices(lw);
     lw->frames++;
 }
 
@@ -1208,11 +1284,12 @@ static double mic_factor(const aero_leafwave *lw, const double ear[3])
     return c <= 0.0 ? 0.0 : pow(c, lw->mic_k);
 }
 
-int aero_leafwave_process(aero_leafwave *lw, const float *speed,
-                          float *const *outs, int n)
+/* the wind now: the `wind` vector plus the inlet speed (the mean of the
+   block, read before any output) along its direction (+x without one),
+   clamped at Mach 0.3; returns 1 when clamped */
+static int wind_now(const aero_leafwave *lw, const float *speed, int n,
+                    double w[3], double *u)
 {
-    int clamped = 0;
-    /* the inlet speed: mean of the block, read before any output */
     double u_in = lw->inlet_speed;
     if (speed && n > 0) {
         double sum = 0.0;
@@ -1222,33 +1299,39 @@ int aero_leafwave_process(aero_leafwave *lw, const float *speed,
         if (!aero_is_finite(u_in))
             u_in = 0.0;
     }
-    double dir[3] = {lw->wind[0], lw->wind[1], lw->wind[2]}, w[3];
+    double dir[3] = {lw->wind[0], lw->wind[1], lw->wind[2]};
     if (aero_normalise3(dir) <= 0.0) {
         dir[0] = 1.0;
         dir[1] = dir[2] = 0.0;
     }
     for (int k = 0; k < 3; k++)
         w[k] = lw->wind[k] + u_in * dir[k];
-    double u = sqrt(aero_dot3(w, w)), lim = AERO_MACH_LIMIT * AERO_C0;
-    if (u > lim) {
-        for (int k = 0; k < 3; k++)
-            w[k] *= lim / u;
-        u = lim;
-        clamped = 1;
-    }
-    if (lw->has_motion)
-        aero_tree_motion_set_wind(&lw->motion, w);
-    /* leaf amplitudes follow the drag load U^2 (saturating), their
-       flutter rate rises with the wind */
+    double lim = AERO_MACH_LIMIT * AERO_C0;
+    *u = sqrt(aero_dot3(w, w));
+    if (!(*u > lim))
+        return 0;
+    for (int k = 0; k < 3; k++)
+        w[k] *= lim / *u;
+    *u = lim;
+    return 1;
+}
+
+/* leaf amplitudes follow the drag load U^2 (saturating), their flutter
+   rate rises with the wind: the resonators of the flutter classes for
+   wind speed u; returns the sway amplitude */
+static double flutter_for_wind(aero_leafwave *lw, double u)
+{
     double x = (u / WIND_REF) * (u / WIND_REF) / lw->stiffness;
-    double sway = lw->sway * tanh(x);
     double f0 = lw->flutter_hz * sqrt(lw->stiffness) * (1.0 + u / FLUTTER_WIND);
     for (int c = 0; c < AERO_LEAF_FLUTTER_CLASSES; c++)
         resonator(f0 * 0.7 * pow(2.0, (double)c / (AERO_LEAF_FLUTTER_CLASSES - 1)),
                   lw->sample_rate / lw->frame_samples, lw->flutter_coef[c]);
+    return lw->sway * tanh(x);
+}
 
-    /* the leaves' sound, frame by frame, into the delay line */
-    int start_pos = lw->line_pos;
+/* n samples of the leaves' sound, frame by frame, into the delay line */
+static void render_dry(aero_leafwave *lw, double sway, int n)
+{
     for (int done = 0; done < n;) {
         int seg = n - done;
         if (seg > DRY_CHUNK)
@@ -1272,52 +1355,73 @@ int aero_leafwave_process(aero_leafwave *lw, const float *speed,
         }
         done += seg;
     }
+}
 
-    /* listener ramp, then each ear reads the line with a moving stylus:
-       delay r / c0 interpolated over the block (Doppler), 1/r, cardioid */
-    if (lw->ramp_left > 0) {
-        double step = n >= lw->ramp_left ? 1.0 : n / lw->ramp_left;
-        for (int e = 0; e < lw->n_ears; e++)
-            for (int k = 0; k < 3; k++)
-                lw->ear[e][k] += step * (lw->ear_target[e][k] - lw->ear[e][k]);
-        lw->ramp_left -= n;
-        if (lw->ramp_left < 0)
-            lw->ramp_left = 0;
-    }
-    double max_delay = lw->line_len - 2.0 * DRY_CHUNK - 4096.0;
-    for (int e = 0; e < lw->n_ears; e++) {
-        double r = 0.0;
+/* the ears glide to their targets over the ramp */
+static void glide_ears(aero_leafwave *lw, int n)
+{
+    if (!(lw->ramp_left > 0))
+        return;
+    double step = n >= lw->ramp_left ? 1.0 : n / lw->ramp_left;
+    for (int e = 0; e < lw->n_ears; e++)
         for (int k = 0; k < 3; k++)
-            r += (lw->ear[e][k] - lw->source[k]) *
-                 (lw->ear[e][k] - lw->source[k]);
-        r = sqrt(r);
-        double delay = clampd(r / AERO_C0 * lw->sample_rate, 1.0, max_delay);
-        double amp = lw->gain * mic_factor(lw, lw->ear[e]) /
-                     (r > MIN_DISTANCE ? r : MIN_DISTANCE);
-        if (!lw->render_primed) {
-            lw->delay_prev[e] = delay;
-            lw->amp_prev[e] = amp;
-        }
-        double d0 = lw->delay_prev[e], a0 = lw->amp_prev[e];
-        float *out = outs[e];
-        for (int s = 0; s < n; s++) {
-            double f = (s + 1.0) / n;
-            double dl = d0 + f * (delay - d0);
-            double rp = start_pos + s - dl;
-            while (rp < 0.0)
-                rp += lw->line_len;
-            int i0 = (int)rp;
-            double fr = rp - i0;
-            if (i0 >= lw->line_len)
-                i0 -= lw->line_len;
-            int i1 = i0 + 1 == lw->line_len ? 0 : i0 + 1;
-            double v = lw->line[i0] + fr * (lw->line[i1] - lw->line[i0]);
-            double y = v * (a0 + f * (amp - a0));
-            out[s] = aero_is_finite(y) ? (float)y : 0.0f;
-        }
+            lw->ear[e][k] += step * (lw->ear_target[e][k] - lw->ear[e][k]);
+    lw->ramp_left -= n;
+    if (lw->ramp_left < 0)
+        lw->ramp_left = 0;
+}
+
+/* ear e reads the line with a moving stylus: delay r / c0 interpolated
+   over the block (Doppler), 1/r, the cardioid; the block was written from
+   start_pos on */
+static void read_ear(aero_leafwave *lw, int e, int start_pos, float *out,
+                     int n)
+{
+    double max_delay = lw->line_len - 2.0 * DRY_CHUNK - 4096.0;
+    double r = 0.0;
+    for (int k = 0; k < 3; k++)
+        r += (lw->ear[e][k] - lw->source[k]) * (lw->ear[e][k] - lw->source[k]);
+    r = sqrt(r);
+    double delay = clampd(r / AERO_C0 * lw->sample_rate, 1.0, max_delay);
+    double amp = lw->gain * mic_factor(lw, lw->ear[e]) /
+                 (r > MIN_DISTANCE ? r : MIN_DISTANCE);
+    if (!lw->render_primed) {
         lw->delay_prev[e] = delay;
         lw->amp_prev[e] = amp;
     }
+    double d0 = lw->delay_prev[e], a0 = lw->amp_prev[e];
+    for (int s = 0; s < n; s++) {
+        double f = (s + 1.0) / n;
+        double dl = d0 + f * (delay - d0);
+        double rp = start_pos + s - dl;
+        while (rp < 0.0)
+            rp += lw->line_len;
+        int i0 = (int)rp;
+        double fr = rp - i0;
+        if (i0 >= lw->line_len)
+            i0 -= lw->line_len;
+        int i1 = i0 + 1 == lw->line_len ? 0 : i0 + 1;
+        double v = lw->line[i0] + fr * (lw->line[i1] - lw->line[i0]);
+        double y = v * (a0 + f * (amp - a0));
+        out[s] = aero_is_finite(y) ? (float)y : 0.0f;
+    }
+    lw->delay_prev[e] = delay;
+    lw->amp_prev[e] = amp;
+}
+
+int aero_leafwave_process(aero_leafwave *lw, const float *speed,
+                          float *const *outs, int n)
+{
+    double w[3], u;
+    int clamped = wind_now(lw, speed, n, w, &u);
+    if (lw->has_motion)
+        aero_tree_motion_set_wind(&lw->motion, w);
+    double sway = flutter_for_wind(lw, u);
+    int start_pos = lw->line_pos;
+    render_dry(lw, sway, n);
+    glide_ears(lw, n);
+    for (int e = 0; e < lw->n_ears; e++)
+        read_ear(lw, e, start_pos, outs[e], n);
     lw->render_primed = 1;
     return clamped;
 }

@@ -91,6 +91,39 @@ const float *aero_leafwave_table(const aero_leafwave *lw, int i)
     return lw->tables + (size_t)i * (AERO_LEAF_TABLE_LEN + 1);
 }
 
+/* each table's zero crossings: of the two samples around a sign change,
+   the one nearer zero; notes start there. Counted, then listed. */
+static int find_crossings(aero_leafwave *lw)
+{
+    const int n = AERO_LEAF_TABLE_LEN;
+    int count = lw->ntables;
+    for (int pass = 0; pass < 2; pass++) {
+        int c = 0;
+        for (int t = 0; t < count; t++) {
+            const float *tab = lw->tables + (size_t)t * (n + 1);
+            if (pass)
+                lw->crossing_start[t] = c;
+            for (int s = 0; s < n; s++) {
+                if ((tab[s] < 0.0f) == (tab[s + 1] < 0.0f))
+                    continue;
+                if (pass)
+                    lw->crossings[c] = fabsf(tab[s]) <= fabsf(tab[s + 1])
+                                           ? s
+                                           : (s + 1) % n;
+                c++;
+            }
+        }
+        if (pass)
+            lw->crossing_start[count] = c;
+        else if (replace_arrays((void **)&lw->crossings,
+                                sizeof(int) * (c + 1),
+                                (void **)&lw->crossing_start,
+                                sizeof(int) * (count + 1)))
+            return -1;
+    }
+    return 0;
+}
+
 /* Table i: one loop of AERO_LEAF_TABLE_LEN samples at TABLE_RATE, its
    spectrum pink (power ~ 1/f) from the basic frequency f_i over about
    three octaves, rolling off as f^-4 in power above 8 f_i, cut at
@@ -141,37 +174,7 @@ static int make_tables(aero_leafwave *lw)
             dst[s] = (float)(signal[s] * scale);
         dst[n] = dst[0];
     }
-    /* each table's zero crossings: of the two samples around a sign
-       change, the one nearer zero; notes start there */
-    int total = 0;
-    for (int pass = 0; pass < 2; pass++) {
-        int c = 0;
-        for (int t = 0; t < count; t++) {
-            const float *tab = tables + (size_t)t * (n + 1);
-            if (pass)
-                lw->crossing_start[t] = c;
-            for (int s = 0; s < n; s++) {
-                if ((tab[s] < 0.0f) == (tab[s + 1] < 0.0f))
-                    continue;
-                if (pass)
-                    lw->crossings[c] = fabsf(tab[s]) <= fabsf(tab[s + 1])
-                                           ? s
-                                           : (s + 1) % n;
-                c++;
-            }
-        }
-        if (pass)
-            lw->crossing_start[count] = c;
-        else {
-            total = c;
-            if (replace_arrays((void **)&lw->crossings,
-                               sizeof(int) * (total + 1),
-                               (void **)&lw->crossing_start,
-                               sizeof(int) * (count + 1)))
-                return -1;
-        }
-    }
-    return 0;
+    return find_crossings(lw);
 }
 
 /* ---- leaves ------------------------------------------------------------- */

@@ -211,94 +211,92 @@ static void motion_step(aero_tree_motion *m)
     }
 }
 
-int aero_tree_motion_init(aero_tree_motion *m, const aero_tree *t,
-                          uint32_t seed)
+/* the state's arrays for n branches, zeroed; 0 or -1 */
+static int alloc_state(aero_tree_motion_state *st, int n)
 {
-    aero_tree_motion_state *st;
-    int n = t ? t->nbranches : 0, i, j, k;
-    double *mass, *inertia;
-    memset(m, 0, sizeof *m);
-    m->tree = t;
-    m->stiffness = 1.0;
-    m->beta = 5.0 / 3.0; /* Kolmogorov's inertial-range spectrum of wind */
-    if (!t || n < 1)
-        return -1;
-    st = calloc(1, sizeof *st);
-    if (!st)
-        return -1;
-    m->state = st;
+    int k;
     st->n = n;
     st->br = calloc((size_t)n, sizeof *st->br);
     st->force = calloc((size_t)n * 3, sizeof(double));
     st->rotvec = calloc((size_t)n * 3, sizeof(double));
-    mass = calloc((size_t)n, sizeof(double));
     for (k = 0; k < 2; k++) {
         st->origin[k] = calloc((size_t)n * 3, sizeof(double));
         st->rot[k] = calloc((size_t)n * 9, sizeof(double));
     }
-    if (!st->br || !st->force || !st->rotvec || !mass || !st->origin[0]
-        || !st->origin[1] || !st->rot[0] || !st->rot[1]) {
-        free(mass);
-        aero_tree_motion_free(m);
-        return -1;
-    }
+    return st->br && st->force && st->rotvec && st->origin[0]
+        && st->origin[1] && st->rot[0] && st->rot[1] ? 0 : -1;
+}
+
+/* the noise's one-pole relaxations, an octave apart from NOISE_F_LOW */
+static void set_noise_poles(aero_tree_motion_state *st)
+{
+    int j;
     for (j = 0; j < NOISE_POLES; j++) {
         double fj = NOISE_F_LOW * pow(2.0, j);
         st->pole[j] = exp(-2.0 * AERO_PI * fj / AERO_TREE_MOTION_RATE);
         st->pole_gain[j] = sqrt(1.0 - st->pole[j] * st->pole[j]);
     }
-    set_noise_weights(st, m->beta);
+}
 
-    for (i = 0; i < n; i++) {
-        const aero_branch *b = &t->branches[i];
-        motion_branch *mb = &st->br[i];
-        double len, dm = 0.5 * (b->d0 + b->d1);
-        uint32_t rng;
-        for (k = 0; k < 3; k++)
-            mb->e[k] = b->b[k] - b->a[k];
-        len = sqrt(aero_dot3(mb->e, mb->e));
-        if (!(len > 0.0))
-            len = 1e-6; /* the parser refuses these; stay finite anyway */
-        for (k = 0; k < 3; k++)
-            mb->e[k] /= len;
-        aero_tree_perpendiculars(mb->e, mb->x, mb->y);
-        mb->area_branch = dm * len;
-        /* frustum volume pi l (d0^2 + d0 d1 + d1^2) / 12 */
-        mass[i] += WOOD_RHO * AERO_PI * len
-            * (b->d0 * b->d0 + b->d0 * b->d1 + b->d1 * b->d1) / 12.0;
-        {
-            double area_moment = AERO_PI * pow(b->d0, 4.0) / 64.0; /* m^4 */
-            mb->flex = len * len / (2.0 * WOOD_E * area_moment);
-        }
-        /* per-branch random stream from (seed, index) */
-        rng = (seed * 2654435761u) ^ ((uint32_t)(i + 1) * 0x85ebca6bu);
-        if (!rng)
-            rng = 0x6d2b79f5u;
-        for (k = 0; k < 3; k++)
-            aero_xorshift32(&rng);
-        mb->rng = rng;
-        /* start the noise in its stationary state: no start-up transient */
-        for (k = 0; k < 2; k++)
-            for (j = 0; j < NOISE_POLES; j++)
-                mb->noise[k][j] = 1.7320508075688772 * aero_uniform(&mb->rng);
-    }
+/* branch i at rest: its axis and frame, projected area and flexibility
+   (tip rotation of a cantilever under a tip load, l^2 / (2 E I)); its
+   wood's mass is added to *mass; its own random stream from (seed, i),
+   the noise started in its stationary state (no start-up transient) */
+static void init_branch(motion_branch *mb, const aero_branch *b, int i,
+                        uint32_t seed, double *mass)
+{
+    double len, dm = 0.5 * (b->d0 + b->d1), area_moment;
+    uint32_t rng;
+    int j, k;
+    for (k = 0; k < 3; k++)
+        mb->e[k] = b->b[k] - b->a[k];
+    len = sqrt(aero_dot3(mb->e, mb->e));
+    if (!(len > 0.0))
+        len = 1e-6; /* the parser refuses these; stay finite anyway */
+    for (k = 0; k < 3; k++)
+        mb->e[k] /= len;
+    aero_tree_perpendiculars(mb->e, mb->x, mb->y);
+    mb->area_branch = dm * len;
+    /* frustum volume pi l (d0^2 + d0 d1 + d1^2) / 12 */
+    *mass += WOOD_RHO * AERO_PI * len
+        * (b->d0 * b->d0 + b->d0 * b->d1 + b->d1 * b->d1) / 12.0;
+    area_moment = AERO_PI * pow(b->d0, 4.0) / 64.0; /* m^4 */
+    mb->flex = len * len / (2.0 * WOOD_E * area_moment);
+    rng = (seed * 2654435761u) ^ ((uint32_t)(i + 1) * 0x85ebca6bu);
+    if (!rng)
+        rng = 0x6d2b79f5u;
+    for (k = 0; k < 3; k++)
+        aero_xorshift32(&rng);
+    mb->rng = rng;
+    for (k = 0; k < 2; k++)
+        for (j = 0; j < NOISE_POLES; j++)
+            mb->noise[k][j] = 1.7320508075688772 * aero_uniform(&mb->rng);
+}
+
+/* the leaves' area and mass, each on its own branch */
+static void add_leaves(aero_tree_motion_state *st, const aero_tree *t,
+                       double *mass)
+{
+    int i;
     for (i = 0; i < t->nleaves; i++) {
         int bi = t->leaves[i].branch;
-        if (bi >= 0 && bi < n) {
+        if (bi >= 0 && bi < st->n) {
             double area = t->leaves[i].length * t->leaves[i].width;
             st->br[bi].area_leaf += area;
             mass[bi] += LEAF_MASS_AREA * area;
         }
     }
-    /* rotational inertia of everything a branch carries about its start:
-       own mass as a rod about its end, m l^2 / 3, and each descendant's
-       mass at its midpoint, m |c - a|^2 */
-    inertia = calloc((size_t)n, sizeof(double));
-    if (!inertia) {
-        free(mass);
-        aero_tree_motion_free(m);
-        return -1;
-    }
+}
+
+/* each branch's sway rate: the rotational spring of a cantilever bent by
+   a tip moment, E I / l, over the rotational inertia of everything it
+   carries about its start (own mass as a rod about its end, m l^2 / 3,
+   each descendant's mass at its midpoint, m |c - a|^2); inertia is
+   scratch of n values, zeroed */
+static void set_sway_rates(aero_tree_motion_state *st, const aero_tree *t,
+                           const double *mass, double *inertia)
+{
+    int i, j, k, n = st->n;
     for (j = 0; j < n; j++) {
         const aero_branch *b = &t->branches[j];
         double c[3], l2 = 0.0;
@@ -321,13 +319,43 @@ int aero_tree_motion_init(aero_tree_motion *m, const aero_tree *t,
                           + (b->b[1] - b->a[1]) * (b->b[1] - b->a[1])
                           + (b->b[2] - b->a[2]) * (b->b[2] - b->a[2]));
         double ei = WOOD_E * AERO_PI * pow(b->d0, 4.0) / 64.0;
-        /* rotational spring of a cantilever bent by a tip moment,
-           E I / l, over the inertia it swings */
         double omega = sqrt(ei / (len * inertia[i]));
         if (!(omega > OMEGA_MIN))
             omega = OMEGA_MIN;
         st->br[i].omega = omega;
     }
+}
+
+int aero_tree_motion_init(aero_tree_motion *m, const aero_tree *t,
+                          uint32_t seed)
+{
+    aero_tree_motion_state *st;
+    int n = t ? t->nbranches : 0, i;
+    double *mass, *inertia;
+    memset(m, 0, sizeof *m);
+    m->tree = t;
+    m->stiffness = 1.0;
+    m->beta = 5.0 / 3.0; /* Kolmogorov's inertial-range spectrum of wind */
+    if (!t || n < 1)
+        return -1;
+    st = calloc(1, sizeof *st);
+    if (!st)
+        return -1;
+    m->state = st;
+    mass = calloc((size_t)n, sizeof(double));
+    inertia = calloc((size_t)n, sizeof(double));
+    if (!mass || !inertia || alloc_state(st, n)) {
+        free(mass);
+        free(inertia);
+        aero_tree_motion_free(m);
+        return -1;
+    }
+    set_noise_poles(st);
+    set_noise_weights(st, m->beta);
+    for (i = 0; i < n; i++)
+        init_branch(&st->br[i], &t->branches[i], i, seed, &mass[i]);
+    add_leaves(st, t, mass);
+    set_sway_rates(st, t, mass, inertia);
     free(inertia);
     free(mass);
     place_branches(m, 0);

@@ -140,7 +140,7 @@ static int parse_branch(parser *p, int line, char **f, int nf)
     aero_branch *b;
     double v[8];
     long id, ref;
-    int parent = -1, k;
+    int parent = -1;
     if (nf != 11) {
         report_line(p->report, p->ctx, line,
                     "branch needs 10 numbers (id parent ax ay az bx by bz "
@@ -176,10 +176,8 @@ static int parse_branch(parser *p, int line, char **f, int nf)
     b = &t->branches[t->nbranches++];
     b->id = (int)id;
     b->parent = parent;
-    for (k = 0; k < 3; k++) {
-        b->a[k] = v[k];
-        b->b[k] = v[3 + k];
-    }
+    memcpy(b->a, v, sizeof b->a);
+    memcpy(b->b, v + 3, sizeof b->b);
     b->d0 = v[6];
     b->d1 = v[7];
     return 0;
@@ -192,7 +190,7 @@ static int parse_leaf(parser *p, int line, char **f, int nf)
     aero_leaf *l;
     double v[8];
     long ref;
-    int bi, k;
+    int bi;
     if (nf != 10) {
         report_line(p->report, p->ctx, line,
                     "leaf needs 9 numbers (branch sx sy sz ex ey ez length "
@@ -215,10 +213,8 @@ static int parse_leaf(parser *p, int line, char **f, int nf)
         return -2;
     l = &t->leaves[t->nleaves++];
     l->branch = bi;
-    for (k = 0; k < 3; k++) {
-        l->s[k] = v[k];
-        l->e[k] = v[3 + k];
-    }
+    memcpy(l->s, v, sizeof l->s);
+    memcpy(l->e, v + 3, sizeof l->e);
     l->length = v[6];
     l->width = v[7];
     l->along = project_along(t->branches[bi].a, t->branches[bi].b, l->s);

@@ -423,12 +423,13 @@ static double uniform01(uint32_t *rng)
 /* Growth rules (a simple self-similar tree; the numbers are the choices of
    this generator, not measurements): every branch above the last level
    forks into 2, 3 or 4 children (probabilities 0.2, 0.55, 0.25: mean 3.05,
-   so depth 6 gives about 1160 internodes, the paper's large tree); one
-   child continues the parent's direction within 15 deg, the others leave
-   at 30..60 deg, spread around the axis by the golden angle; each child is
-   0.72..0.82 as long as its parent; diameters follow the pipe model
-   (Leonardo's rule: the squared diameters of the children add up to the
-   parent's squared end diameter) and taper by 0.92 along each internode. */
+   so depth 6 gives about 1160 internodes, the large tree of Matsuyama et
+   al. 2005); one child continues the parent's direction within 15 deg, the
+   others leave at 30..60 deg, spread around the axis by the golden angle;
+   each child is 0.72..0.82 as long as its parent; diameters follow the pipe
+   model (Leonardo's rule: the squared diameters of the children add up to
+   the parent's squared end diameter) and taper by 0.92 along each
+   internode. */
 #define GEN_TAPER 0.92
 #define GEN_GOLDEN 2.39996322972865332 /* rad, pi (3 - sqrt 5) */
 
@@ -491,7 +492,7 @@ static void place_leaf(aero_tree *t, const aero_tree_shape *sh, int i,
     tilted(e, (40.0 + 30.0 * uniform01(rng)) * AERO_PI / 180.0,
            i * GEN_GOLDEN + 0.3 * aero_uniform(rng), dir);
     size = 0.8 + 0.4 * uniform01(rng); /* +-20 % leaf size */
-    stalk = 0.3 * sh->leaf_length * size; /* blade ~ stalk (paper) */
+    stalk = 0.3 * sh->leaf_length * size; /* blade ~ stalk, as theirs */
     l->branch = bi;
     for (k = 0; k < 3; k++) {
         l->s[k] = b->a[k] + u * (b->b[k] - b->a[k]);

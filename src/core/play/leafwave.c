@@ -1,5 +1,6 @@
-/* aero: leaves in the wind (see leafwave.h; Matsuyama et al. 2005, "Generation
- * of Leaf Sound" and "Sound Rendering"). */
+/* aero: leaves in the wind (see leafwave.h; Matsuyama et al. 2005, sections
+ * "Generation of Leaf Sound" and "Sound Rendering"; the equations and
+ * figures cited below are theirs). */
 #include "leafwave.h"
 #include "aero_air.h"
 #include "aero_util.h"
@@ -22,7 +23,7 @@
 #define RATE_MAX 2.0          /* tables hold content up to 0.45 fs / RATE_MAX */
 #define HIT_ATTACK_S 0.001
 #define HIT_DECAY_S 0.015
-#define RELEASE_S 0.06        /* key off: slow decay (paper fig. 13) */
+#define RELEASE_S 0.06        /* key off: slow decay (fig. 13) */
 #define SILENT_PA 1e-7        /* a voice below this at 1 m is done */
 #define DRY_CHUNK 256
 #define STEAL_LOOK 8          /* voices looked at when all are busy */
@@ -182,8 +183,8 @@ static int make_tables(aero_leafwave *lw)
 /* sine and cosine on [-pi/2, pi/2] by their Taylor series (errors 1.6e-4
    and 2.4e-5 at the ends: far below what a leaf's angle means); the leaf
    angles are limited to that range (a blade does not swing or twist
-   beyond a right angle about its stalk). Three per leaf per frame were a
-   sixth of the cost with libm. */
+   beyond a right angle about its stalk). With libm, the three per leaf
+   per frame cost a sixth of the frame. */
 static double limit_angle(double x)
 {
     return x < -1.5707963 ? -1.5707963 : x > 1.5707963 ? 1.5707963 : x;
@@ -229,7 +230,7 @@ static void free_leaves(aero_leafwave *lw)
     lw->nleaves = lw->npairs = 0;
 }
 
-/* rest geometry of every leaf (paper fig. 10): the blade hangs from the
+/* rest geometry of every leaf (fig. 10): the blade hangs from the
    stalk end, drooping; the leaf swings rigidly about the stalk start */
 static void build_leaves(aero_leafwave *lw)
 {
@@ -511,11 +512,11 @@ static double voice_level(const aero_leaf_voice *v)
     return (double)v->hit + v->rub;
 }
 
-/* a voice for pair p, starting `wait` samples into the next frame at a
-   zero crossing of its table (paper: no pulse at the start): a free one,
-   else the quietest of the next STEAL_LOOK voices (a rotating cursor: O(1)
-   per key on, where a search of the whole pool cost O(voices)) if it is
-   quieter than `level`; -1 if none */
+/* a voice for pair p, starting `wait` samples into the next frame at a zero
+   crossing of its table (no pulse at the start, as Matsuyama et al. ask): a
+   free one, else the quietest of the next STEAL_LOOK voices (a rotating
+   cursor: O(1) per key on, where a search of the whole pool cost O(voices))
+   if it is quieter than `level`; -1 if none */
 static int start_voice(aero_leafwave *lw, int p, int wait, double level)
 {
     int best = -1;
@@ -1281,7 +1282,8 @@ static double mic_factor(const aero_leafwave *lw, const double ear[3])
     double to[3], axis[3] = {lw->mic[0], lw->mic[1], lw->mic[2]};
     for (int k = 0; k < 3; k++)
         to[k] = lw->source[k] - ear[k];
-    if (aero_normalise3(axis) <= 0.0 || aero_normalise3(to) <= 0.0 || lw->mic_k == 0.0)
+    if (aero_normalise3(axis) <= 0.0 || aero_normalise3(to) <= 0.0 ||
+        lw->mic_k == 0.0)
         return 1.0;
     double c = 0.5 * (1.0 + aero_dot3(axis, to));
     return c <= 0.0 ? 0.0 : pow(c, lw->mic_k);

@@ -7,8 +7,8 @@
  * subtree and their leaves), 0.5 rho Cd A |U_perp| U_perp, projected on the
  * plane x_i, y_i; N_i is 1/f^beta noise of unit rms per axis, and
  * P_B,i = G 0.5 rho Cd A |U|^2 with a gust intensity G = 0.3 (so a still
- * tree does not move). The paper's static spring delta = P / k (eqs. 1-2)
- * is the equilibrium of a damped spring
+ * tree does not move). Matsuyama et al.'s static spring delta = P / k
+ * (eqs. 1-2) is the equilibrium of a damped spring
  *   theta'' = omega^2 (P / k - theta) - 2 zeta omega theta',
  * with the cantilever's flexibility 1/k = l^2 / (2 E I) (tip rotation under
  * a tip load) and omega^2 = (E I / l) / J (the rotational spring of a

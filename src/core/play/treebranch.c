@@ -10,7 +10,8 @@
 #include <string.h>
 
 /* Sectional rms lift coefficient of a circular cylinder, subcritical range
-   (Norberg 2003; the value aeolian_model.c uses) */
+   (Norberg 2003), held at this one value for every branch (aeolian_model.c
+   follows C_L'(Re), aero_lift_rms) */
 #define LIFT_RMS 0.45
 /* spanwise correlation length of the shedding, in diameters (the 3 d of
    Dobashi et al. 2003) */
@@ -18,7 +19,8 @@
 /* power of the high-frequency tail relative to the tone, as the spectral
    density at the tone's frequency times f_0: with alpha 2 the whole tail
    holds TAIL_LEVEL / (alpha - 1) = 1/4 of the tone's power (-6 dB). The
-   paper gives no value; this keeps the Strouhal tone on top. */
+   paper (Matsuyama et al. 2005) gives no value; this keeps the Strouhal
+   tone on top. */
 #define TAIL_LEVEL 0.25
 #define FRAME_SECONDS 0.08     /* FFT size: the power of 2 at or above this */
 #define MAX_DISTANCE 1000.0    /* m, longest delay kept */
@@ -396,7 +398,8 @@ static void add_branch(aero_treebranch *tb, int i)
     if (dens[1] <= 0.0)
         f[1] = f[0];
     /* the frequency group: points spaced at most one bin apart along the
-       branch, each carrying its share of the power (paper Fig. 8) */
+       branch, each carrying its share of the power (Matsuyama et al. 2005,
+       Fig. 8) */
     /* compared before converting: a twig of 1e-30 m sheds at ~1e28 Hz,
        beyond int (undefined behaviour) */
     {
@@ -409,7 +412,7 @@ static void add_branch(aero_treebranch *tb, int i)
         add_line(tb, f[0] + s * (f[1] - f[0]), p);
         ptotal += p;
     }
-    /* the tail above the group (eq. 8), as a density
+    /* the tail above the group (Matsuyama et al. 2005, eq. 8), as a density
        S(f) = TAIL_LEVEL P / f0 (f / f0)^-alpha: it enters at the first bin
        above f0 with the coefficient TAIL_LEVEL P df f0^(alpha - 1) of
        f^-alpha, and a running sum over bins adds every branch's tail */

@@ -140,14 +140,20 @@ int aero_treebranch_init(aero_treebranch *tb, double sample_rate,
     return make_buffers(tb);
 }
 
-void aero_treebranch_free(aero_treebranch *tb)
+/* drops the tree and its motion: silent */
+static void clear_tree(aero_treebranch *tb)
 {
-    free_buffers(tb);
     if (tb->has_tree) {
         aero_tree_motion_free(&tb->motion);
         aero_tree_free(&tb->tree);
     }
     tb->has_tree = 0;
+}
+
+void aero_treebranch_free(aero_treebranch *tb)
+{
+    free_buffers(tb);
+    clear_tree(tb);
 }
 
 /* the motion restarts from tb->seed with the current parameters */
@@ -168,11 +174,7 @@ int aero_treebranch_set_tree(aero_treebranch *tb, aero_tree *t)
 {
     const aero_branch *root;
     int k;
-    if (tb->has_tree) {
-        aero_tree_motion_free(&tb->motion);
-        aero_tree_free(&tb->tree);
-        tb->has_tree = 0;
-    }
+    clear_tree(tb);
     if (!t || t->nbranches < 1) {
         if (t)
             aero_tree_free(t);
@@ -321,8 +323,7 @@ int aero_treebranch_set_seed(aero_treebranch *tb, uint32_t seed)
     if (!tb->has_tree)
         return 0;
     if (restart_motion(tb)) {
-        aero_tree_free(&tb->tree);
-        tb->has_tree = 0;
+        clear_tree(tb);
         return -1;
     }
     return 0;

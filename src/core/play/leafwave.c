@@ -541,14 +541,12 @@ static int start_voice(aero_leafwave *lw, int p, int wait, double level)
         lw->pairs[v->pair].voice = -1;
     aero_leaf_pair *pr = &lw->pairs[p];
     int table = lw->leaves[pr->i].table;
-    const float *tab = aero_leafwave_table(lw, table);
     /* a random one of the table's zero crossings (listed at init) */
     int first = lw->crossing_start[table];
     int count = lw->crossing_start[table + 1] - first;
     int pos = count > 0 ? lw->crossings[first + (int)(aero_xorshift32(&lw->rng) %
                                                      (uint32_t)count)]
                         : 0;
-    (void)tab;
     memset(v, 0, sizeof(*v));
     v->pair = p;
     v->table = table;

@@ -166,9 +166,7 @@ typedef struct aero_leafwave {
     double flutter_coef[AERO_LEAF_FLUTTER_CLASSES][3]; /* a1, a2, g */
     int keyons_total;      /* key-on events since init (for tests) */
 
-    /* dry sound (pressure at 1 m) and the rendering delay line */
-    float *dry;            /* block scratch */
-    int dry_len;
+    /* the rendering delay line of the dry sound (pressure at 1 m) */
     float *line;           /* circular delay line */
     int line_len, line_pos;
     double ear[AERO_LEAF_MAX_EARS][3], ear_target[AERO_LEAF_MAX_EARS][3];

@@ -23,4 +23,45 @@ static inline void aero_fftw_serialise(void)
 #endif
 }
 
+/* An inverse real FFT of n points with its buffers: signal[t] = the sum
+ * over k of spectrum[k] e^(+2 pi i k t / n), from bins 0..n/2 (FFTW's
+ * backward c2r, unscaled; it overwrites the spectrum). Made and freed
+ * outside the audio thread; fftwf_execute(plan) is real-time safe. */
+typedef struct aero_fftw_c2r {
+    fftwf_complex *spectrum;
+    float *signal;
+    fftwf_plan plan;
+} aero_fftw_c2r;
+
+static inline void aero_fftw_c2r_free(aero_fftw_c2r *f)
+{
+    if (f->plan) {
+        aero_fftw_serialise();
+        fftwf_destroy_plan(f->plan);
+    }
+    fftwf_free(f->spectrum);
+    fftwf_free(f->signal);
+    f->spectrum = NULL;
+    f->signal = NULL;
+    f->plan = NULL;
+}
+
+/* 0, or -1 when out of memory (*f is then empty) */
+static inline int aero_fftw_c2r_make(aero_fftw_c2r *f, int n)
+{
+    f->spectrum = fftwf_malloc(sizeof(fftwf_complex) * (size_t)(n / 2 + 1));
+    f->signal = fftwf_malloc(sizeof(float) * (size_t)n);
+    f->plan = NULL;
+    if (f->spectrum && f->signal) {
+        aero_fftw_serialise();
+        f->plan = fftwf_plan_dft_c2r_1d(n, f->spectrum, f->signal,
+                                        FFTW_ESTIMATE);
+    }
+    if (!f->plan) {
+        aero_fftw_c2r_free(f);
+        return -1;
+    }
+    return 0;
+}
+
 #endif

@@ -52,6 +52,62 @@ static inline double aero_normalise3(double *a)
     return n;
 }
 
+/* out = m v, m a row-major 3x3 matrix */
+static inline void aero_mat3_apply(const double *m, const double *v,
+                                   double *out)
+{
+    out[0] = m[0] * v[0] + m[1] * v[1] + m[2] * v[2];
+    out[1] = m[3] * v[0] + m[4] * v[1] + m[5] * v[2];
+    out[2] = m[6] * v[0] + m[7] * v[1] + m[8] * v[2];
+}
+
+/* the rotation (row-major) by the angle of cosine c and sine s about the
+   unit axis k (Rodrigues): R = c I + s [k]x + (1 - c) k k^T */
+static inline void aero_rotation3(const double *k, double c, double s,
+                                  double *m)
+{
+    double t = 1.0 - c;
+    m[0] = c + t * k[0] * k[0];
+    m[1] = t * k[0] * k[1] - s * k[2];
+    m[2] = t * k[0] * k[2] + s * k[1];
+    m[3] = t * k[1] * k[0] + s * k[2];
+    m[4] = c + t * k[1] * k[1];
+    m[5] = t * k[1] * k[2] - s * k[0];
+    m[6] = t * k[2] * k[0] - s * k[1];
+    m[7] = t * k[2] * k[1] + s * k[0];
+    m[8] = c + t * k[2] * k[2];
+}
+
+/* *field = v when v is finite and within [lo, hi]: 0; else -1 (kept) */
+static inline int aero_set_within(double *field, double v, double lo,
+                                  double hi)
+{
+    if (!aero_is_finite(v) || v < lo || v > hi)
+        return -1;
+    *field = v;
+    return 0;
+}
+
+/* the gain setters' range and law: *gain = 10^(db/20) for db within
+   [-200, 120] dB: 0; else -1 (kept) */
+static inline int aero_set_gain_db(double *gain, double db)
+{
+    if (aero_set_within(&db, db, -200.0, 120.0))
+        return -1;
+    *gain = pow(10.0, db / 20.0);
+    return 0;
+}
+
+/* the ramp setters' range: *samples = ms at `rate` for ms within
+   [0, 600000]: 0; else -1 (kept) */
+static inline int aero_set_ramp_ms(double *samples, double ms, double rate)
+{
+    if (aero_set_within(&ms, ms, 0.0, 600000.0))
+        return -1;
+    *samples = ms * 0.001 * rate;
+    return 0;
+}
+
 /* a value that moves linearly to its target in whole chunks of samples */
 typedef struct {
     double value, target, step;

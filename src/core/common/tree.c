@@ -109,118 +109,125 @@ typedef struct {
     void *ctx;
 } parser;
 
+/* the 8 numbers of a record from f[0] on: two points and two sizes; the
+   sizes must be positive (else `sizes` is reported) and the points apart
+   (else `zero`); 0, or -1 reported */
+static int parse_geometry(parser *p, int line, char **f, double v[8],
+                          const char *sizes, const char *zero)
+{
+    int k;
+    for (k = 0; k < 8; k++)
+        if (parse_double(f[k], &v[k])) {
+            report_line(p->report, p->ctx, line,
+                        "'%s' is not a finite number", f[k]);
+            return -1;
+        }
+    if (!(v[6] > 0.0) || !(v[7] > 0.0)) {
+        report_line(p->report, p->ctx, line, sizes, "");
+        return -1;
+    }
+    if (!(dist3(v, v + 3) > 0.0)) {
+        report_line(p->report, p->ctx, line, zero, "");
+        return -1;
+    }
+    return 0;
+}
+
+/* branch <id> <parent id or -1> <ax ay az> <bx by bz> <d0> <d1> */
+static int parse_branch(parser *p, int line, char **f, int nf)
+{
+    aero_tree *t = p->t;
+    aero_branch *b;
+    double v[8];
+    long id, ref;
+    int parent = -1;
+    if (nf != 11) {
+        report_line(p->report, p->ctx, line,
+                    "branch needs 10 numbers (id parent ax ay az bx by bz "
+                    "d0 d1)%s", "");
+        return -1;
+    }
+    if (parse_long(f[1], &id) || id < 0 || id > 2147483647L) {
+        report_line(p->report, p->ctx, line,
+                    "bad branch id '%s' (a non-negative integer)", f[1]);
+        return -1;
+    }
+    if (parse_long(f[2], &ref) || ref < -1 || ref > 2147483647L) {
+        report_line(p->report, p->ctx, line,
+                    "bad parent '%s' (an earlier branch id, or -1)", f[2]);
+        return -1;
+    }
+    if (parse_geometry(p, line, f + 3, v,
+                       "branch diameters must be positive%s",
+                       "branch has zero length (start = end)%s"))
+        return -1;
+    if (find_branch(t, id) >= 0) {
+        report_line(p->report, p->ctx, line, "branch id %s used twice", f[1]);
+        return -1;
+    }
+    if (ref >= 0 && (parent = find_branch(t, ref)) < 0) {
+        report_line(p->report, p->ctx, line,
+                    "parent %s is not an earlier branch", f[2]);
+        return -1;
+    }
+    if (grow((void **)&t->branches, &p->bcap, t->nbranches + 1,
+             sizeof *t->branches))
+        return -2;
+    b = &t->branches[t->nbranches++];
+    b->id = (int)id;
+    b->parent = parent;
+    memcpy(b->a, v, sizeof b->a);
+    memcpy(b->b, v + 3, sizeof b->b);
+    b->d0 = v[6];
+    b->d1 = v[7];
+    return 0;
+}
+
+/* leaf <branch id> <sx sy sz> <ex ey ez> <length> <width> */
+static int parse_leaf(parser *p, int line, char **f, int nf)
+{
+    aero_tree *t = p->t;
+    aero_leaf *l;
+    double v[8];
+    long ref;
+    int bi;
+    if (nf != 10) {
+        report_line(p->report, p->ctx, line,
+                    "leaf needs 9 numbers (branch sx sy sz ex ey ez length "
+                    "width)%s", "");
+        return -1;
+    }
+    if (parse_long(f[1], &ref) || ref < 0 || ref > 2147483647L
+        || (bi = find_branch(t, ref)) < 0) {
+        report_line(p->report, p->ctx, line,
+                    "leaf on unknown branch '%s' (a branch id given above)",
+                    f[1]);
+        return -1;
+    }
+    if (parse_geometry(p, line, f + 2, v,
+                       "leaf length and width must be positive%s",
+                       "leaf stalk has zero length (start = end)%s"))
+        return -1;
+    if (grow((void **)&t->leaves, &p->lcap, t->nleaves + 1,
+             sizeof *t->leaves))
+        return -2;
+    l = &t->leaves[t->nleaves++];
+    l->branch = bi;
+    memcpy(l->s, v, sizeof l->s);
+    memcpy(l->e, v + 3, sizeof l->e);
+    l->length = v[6];
+    l->width = v[7];
+    l->along = project_along(t->branches[bi].a, t->branches[bi].b, l->s);
+    return 0;
+}
+
 /* one record; 0 accepted, -1 reported and skipped, -2 out of memory */
 static int parse_record(parser *p, int line, char **f, int nf)
 {
-    aero_tree *t = p->t;
-    double v[8];
-    long id, ref;
-    int k;
-    if (strcmp(f[0], "branch") == 0) {
-        aero_branch *b;
-        int parent = -1;
-        if (nf != 11) {
-            report_line(p->report, p->ctx, line,
-                        "branch needs 10 numbers (id parent ax ay az bx by bz "
-                        "d0 d1)%s", "");
-            return -1;
-        }
-        if (parse_long(f[1], &id) || id < 0 || id > 2147483647L) {
-            report_line(p->report, p->ctx, line,
-                        "bad branch id '%s' (a non-negative integer)", f[1]);
-            return -1;
-        }
-        if (parse_long(f[2], &ref) || ref < -1 || ref > 2147483647L) {
-            report_line(p->report, p->ctx, line,
-                        "bad parent '%s' (an earlier branch id, or -1)", f[2]);
-            return -1;
-        }
-        for (k = 0; k < 8; k++)
-            if (parse_double(f[3 + k], &v[k])) {
-                report_line(p->report, p->ctx, line,
-                            "'%s' is not a finite number", f[3 + k]);
-                return -1;
-            }
-        if (!(v[6] > 0.0) || !(v[7] > 0.0)) {
-            report_line(p->report, p->ctx, line,
-                        "branch diameters must be positive%s", "");
-            return -1;
-        }
-        if (!(dist3(v, v + 3) > 0.0)) {
-            report_line(p->report, p->ctx, line,
-                        "branch has zero length (start = end)%s", "");
-            return -1;
-        }
-        if (find_branch(t, id) >= 0) {
-            report_line(p->report, p->ctx, line, "branch id %s used twice",
-                        f[1]);
-            return -1;
-        }
-        if (ref >= 0 && (parent = find_branch(t, ref)) < 0) {
-            report_line(p->report, p->ctx, line,
-                        "parent %s is not an earlier branch", f[2]);
-            return -1;
-        }
-        if (grow((void **)&t->branches, &p->bcap, t->nbranches + 1,
-                 sizeof *t->branches))
-            return -2;
-        b = &t->branches[t->nbranches++];
-        b->id = (int)id;
-        b->parent = parent;
-        for (k = 0; k < 3; k++) {
-            b->a[k] = v[k];
-            b->b[k] = v[3 + k];
-        }
-        b->d0 = v[6];
-        b->d1 = v[7];
-        return 0;
-    }
-    if (strcmp(f[0], "leaf") == 0) {
-        aero_leaf *l;
-        int bi;
-        if (nf != 10) {
-            report_line(p->report, p->ctx, line,
-                        "leaf needs 9 numbers (branch sx sy sz ex ey ez length "
-                        "width)%s", "");
-            return -1;
-        }
-        if (parse_long(f[1], &ref) || ref < 0 || ref > 2147483647L
-            || (bi = find_branch(t, ref)) < 0) {
-            report_line(p->report, p->ctx, line,
-                        "leaf on unknown branch '%s' (a branch id given above)",
-                        f[1]);
-            return -1;
-        }
-        for (k = 0; k < 8; k++)
-            if (parse_double(f[2 + k], &v[k])) {
-                report_line(p->report, p->ctx, line,
-                            "'%s' is not a finite number", f[2 + k]);
-                return -1;
-            }
-        if (!(v[6] > 0.0) || !(v[7] > 0.0)) {
-            report_line(p->report, p->ctx, line,
-                        "leaf length and width must be positive%s", "");
-            return -1;
-        }
-        if (!(dist3(v, v + 3) > 0.0)) {
-            report_line(p->report, p->ctx, line,
-                        "leaf stalk has zero length (start = end)%s", "");
-            return -1;
-        }
-        if (grow((void **)&t->leaves, &p->lcap, t->nleaves + 1,
-                 sizeof *t->leaves))
-            return -2;
-        l = &t->leaves[t->nleaves++];
-        l->branch = bi;
-        for (k = 0; k < 3; k++) {
-            l->s[k] = v[k];
-            l->e[k] = v[3 + k];
-        }
-        l->length = v[6];
-        l->width = v[7];
-        l->along = project_along(t->branches[bi].a, t->branches[bi].b, l->s);
-        return 0;
-    }
+    if (strcmp(f[0], "branch") == 0)
+        return parse_branch(p, line, f, nf);
+    if (strcmp(f[0], "leaf") == 0)
+        return parse_leaf(p, line, f, nf);
     report_line(p->report, p->ctx, line,
                 "unknown record '%s' (branch or leaf)", f[0]);
     return -1;
@@ -384,34 +391,16 @@ void aero_tree_free(aero_tree *t)
 
 /* ---- the generator ------------------------------------------------------ */
 
-static void normalize(double v[3])
-{
-    double n = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    if (n > 0.0) {
-        v[0] /= n;
-        v[1] /= n;
-        v[2] /= n;
-    }
-}
-
-static void cross(const double a[3], const double b[3], double c[3])
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-/* two unit vectors perpendicular to the unit vector e (and to each other) */
-static void perpendiculars(const double e[3], double x[3], double y[3])
+void aero_tree_perpendiculars(const double e[3], double x[3], double y[3])
 {
     double up[3] = {0.0, 0.0, 1.0};
     if (fabs(e[2]) > 0.9) {
         up[0] = 1.0;
         up[2] = 0.0;
     }
-    cross(e, up, x);
-    normalize(x);
-    cross(e, x, y);
+    aero_cross3(e, up, x);
+    aero_normalise3(x);
+    aero_cross3(e, x, y);
 }
 
 /* unit direction at polar angle `tilt` from axis e, azimuth `azim` */
@@ -419,11 +408,11 @@ static void tilted(const double e[3], double tilt, double azim, double d[3])
 {
     double x[3], y[3];
     int k;
-    perpendiculars(e, x, y);
+    aero_tree_perpendiculars(e, x, y);
     for (k = 0; k < 3; k++)
         d[k] = cos(tilt) * e[k]
             + sin(tilt) * (cos(azim) * x[k] + sin(azim) * y[k]);
-    normalize(d);
+    aero_normalise3(d);
 }
 
 static double uniform01(uint32_t *rng)
@@ -434,28 +423,102 @@ static double uniform01(uint32_t *rng)
 /* Growth rules (a simple self-similar tree; the numbers are the choices of
    this generator, not measurements): every branch above the last level
    forks into 2, 3 or 4 children (probabilities 0.2, 0.55, 0.25: mean 3.05,
-   so depth 6 gives about 1160 internodes, the paper's large tree); one
-   child continues the parent's direction within 15 deg, the others leave
-   at 30..60 deg, spread around the axis by the golden angle; each child is
-   0.72..0.82 as long as its parent; diameters follow the pipe model
-   (Leonardo's rule: the squared diameters of the children add up to the
-   parent's squared end diameter) and taper by 0.92 along each internode. */
+   so depth 6 gives about 1160 internodes, the large tree of Matsuyama et
+   al. 2005); one child continues the parent's direction within 15 deg, the
+   others leave at 30..60 deg, spread around the axis by the golden angle;
+   each child is 0.72..0.82 as long as its parent; diameters follow the pipe
+   model (Leonardo's rule: the squared diameters of the children add up to
+   the parent's squared end diameter) and taper by 0.92 along each
+   internode. */
 #define GEN_TAPER 0.92
 #define GEN_GOLDEN 2.39996322972865332 /* rad, pi (3 - sqrt 5) */
+
+/* the children of branch i (one growth step of the rules above) */
+static int grow_children(aero_tree *t, int *bcap, int i, uint32_t *rng)
+{
+    double r = uniform01(rng), e[3], len;
+    int nchild = r < 0.2 ? 2 : r < 0.75 ? 3 : 4, c, k;
+    double azim0 = 2.0 * AERO_PI * uniform01(rng);
+    aero_branch par = t->branches[i]; /* copy: realloc below */
+    for (k = 0; k < 3; k++)
+        e[k] = par.b[k] - par.a[k];
+    len = dist3(par.a, par.b);
+    aero_normalise3(e);
+    if (grow((void **)&t->branches, bcap, t->nbranches + nchild,
+             sizeof *t->branches))
+        return -1;
+    for (c = 0; c < nchild; c++) {
+        aero_branch *b = &t->branches[t->nbranches];
+        double dir[3], tilt, clen, share;
+        if (c == 0) { /* the leader */
+            tilt = (15.0 * AERO_PI / 180.0) * uniform01(rng);
+            share = 1.6;
+        } else {
+            tilt = (30.0 + 30.0 * uniform01(rng)) * AERO_PI / 180.0;
+            share = 1.0;
+        }
+        tilted(e, tilt, azim0 + c * GEN_GOLDEN, dir);
+        clen = len * (0.72 + 0.10 * uniform01(rng));
+        b->id = t->nbranches;
+        b->parent = i;
+        for (k = 0; k < 3; k++) {
+            b->a[k] = par.b[k];
+            b->b[k] = par.b[k] + clen * dir[k];
+        }
+        /* pipe model: sum of d^2 over children = parent's d1^2, the
+           leader taking a larger share */
+        b->d0 = par.d1 * sqrt(share / (nchild - 1 + 1.6));
+        b->d1 = b->d0 * GEN_TAPER;
+        t->nbranches++;
+    }
+    return 0;
+}
+
+/* leaf i of `count` on the branches from first_terminal on: spread
+   evenly, stalks leaving the twig by the golden angle and pointing
+   somewhat outward/upward */
+static void place_leaf(aero_tree *t, const aero_tree_shape *sh, int i,
+                       int first_terminal, uint32_t *rng)
+{
+    int nterminal = t->nbranches - first_terminal, k;
+    int bi = first_terminal + (int)((long long)i * nterminal / sh->leaves);
+    const aero_branch *b = &t->branches[bi];
+    aero_leaf *l = &t->leaves[t->nleaves++];
+    double e[3], dir[3], u, size, stalk;
+    for (k = 0; k < 3; k++)
+        e[k] = b->b[k] - b->a[k];
+    aero_normalise3(e);
+    u = 0.15 + 0.85 * uniform01(rng);
+    tilted(e, (40.0 + 30.0 * uniform01(rng)) * AERO_PI / 180.0,
+           i * GEN_GOLDEN + 0.3 * aero_uniform(rng), dir);
+    size = 0.8 + 0.4 * uniform01(rng); /* +-20 % leaf size */
+    stalk = 0.3 * sh->leaf_length * size; /* blade ~ stalk, as theirs */
+    l->branch = bi;
+    for (k = 0; k < 3; k++) {
+        l->s[k] = b->a[k] + u * (b->b[k] - b->a[k]);
+        l->e[k] = l->s[k] + stalk * dir[k];
+    }
+    l->length = sh->leaf_length * size;
+    l->width = sh->leaf_width * size;
+    l->along = u;
+}
+
+static int valid_shape(const aero_tree_shape *sh)
+{
+    return sh->depth >= 0 && sh->depth <= 12 && sh->leaves >= 0
+        && sh->leaves <= 10000000 && sh->height > 0.0 && sh->diameter > 0.0
+        && sh->leaf_length > 0.0 && sh->leaf_width > 0.0
+        && aero_is_finite(sh->height) && aero_is_finite(sh->diameter)
+        && aero_is_finite(sh->leaf_length) && aero_is_finite(sh->leaf_width);
+}
 
 int aero_tree_generate(aero_tree *t, const aero_tree_shape *shape)
 {
     aero_tree_shape sh = *shape;
     uint32_t rng = shape->seed ? shape->seed : 0x9e3779b9u;
-    int bcap = 0, lcap = 0, level_start = 0, level_end, level, i, k;
-    int nterminal, first_terminal;
+    int bcap = 0, lcap = 0, level_start = 0, level_end, level, i;
     memset(t, 0, sizeof *t);
-    if (sh.depth < 0 || sh.depth > 12 || sh.leaves < 0
-        || sh.leaves > 10000000 || !(sh.height > 0.0)
-        || !(sh.diameter > 0.0) || !(sh.leaf_length > 0.0)
-        || !(sh.leaf_width > 0.0) || !aero_is_finite(sh.height)
-        || !aero_is_finite(sh.diameter) || !aero_is_finite(sh.leaf_length)
-        || !aero_is_finite(sh.leaf_width))
+    if (!valid_shape(&sh))
         return -1;
     for (i = 0; i < 4; i++) /* decorrelate nearby seeds */
         aero_xorshift32(&rng);
@@ -474,75 +537,18 @@ int aero_tree_generate(aero_tree *t, const aero_tree_shape *shape)
 
     for (level = 0; level < sh.depth; level++) {
         level_end = t->nbranches;
-        for (i = level_start; i < level_end; i++) {
-            double r = uniform01(&rng), e[3], len;
-            int nchild = r < 0.2 ? 2 : r < 0.75 ? 3 : 4, c;
-            double azim0 = 2.0 * AERO_PI * uniform01(&rng);
-            aero_branch par = t->branches[i]; /* copy: realloc below */
-            for (k = 0; k < 3; k++)
-                e[k] = par.b[k] - par.a[k];
-            len = dist3(par.a, par.b);
-            normalize(e);
-            if (grow((void **)&t->branches, &bcap, t->nbranches + nchild,
-                     sizeof *t->branches))
+        for (i = level_start; i < level_end; i++)
+            if (grow_children(t, &bcap, i, &rng))
                 goto oom;
-            for (c = 0; c < nchild; c++) {
-                aero_branch *b = &t->branches[t->nbranches];
-                double dir[3], tilt, clen, share;
-                if (c == 0) { /* the leader */
-                    tilt = (15.0 * AERO_PI / 180.0) * uniform01(&rng);
-                    share = 1.6;
-                } else {
-                    tilt = (30.0 + 30.0 * uniform01(&rng)) * AERO_PI / 180.0;
-                    share = 1.0;
-                }
-                tilted(e, tilt, azim0 + c * GEN_GOLDEN, dir);
-                clen = len * (0.72 + 0.10 * uniform01(&rng));
-                b->id = t->nbranches;
-                b->parent = i;
-                for (k = 0; k < 3; k++) {
-                    b->a[k] = par.b[k];
-                    b->b[k] = par.b[k] + clen * dir[k];
-                }
-                /* pipe model: sum of d^2 over children = parent's d1^2,
-                   the leader taking a larger share */
-                b->d0 = par.d1 * sqrt(share / (nchild - 1 + 1.6));
-                b->d1 = b->d0 * GEN_TAPER;
-                t->nbranches++;
-            }
-        }
         level_start = level_end;
     }
 
-    /* leaves on the outermost level, spread evenly, stalks leaving the
-       twig by the golden angle and pointing somewhat outward/upward */
-    first_terminal = level_start;
-    nterminal = t->nbranches - first_terminal;
+    /* leaves on the outermost level */
     if (sh.leaves > 0
         && grow((void **)&t->leaves, &lcap, sh.leaves, sizeof *t->leaves))
         goto oom;
-    for (i = 0; i < sh.leaves; i++) {
-        int bi = first_terminal + (int)((long long)i * nterminal / sh.leaves);
-        const aero_branch *b = &t->branches[bi];
-        aero_leaf *l = &t->leaves[t->nleaves++];
-        double e[3], dir[3], u, size, stalk;
-        for (k = 0; k < 3; k++)
-            e[k] = b->b[k] - b->a[k];
-        normalize(e);
-        u = 0.15 + 0.85 * uniform01(&rng);
-        tilted(e, (40.0 + 30.0 * uniform01(&rng)) * AERO_PI / 180.0,
-               i * GEN_GOLDEN + 0.3 * aero_uniform(&rng), dir);
-        size = 0.8 + 0.4 * uniform01(&rng); /* +-20 % leaf size */
-        stalk = 0.3 * sh.leaf_length * size; /* blade ~ stalk (paper) */
-        l->branch = bi;
-        for (k = 0; k < 3; k++) {
-            l->s[k] = b->a[k] + u * (b->b[k] - b->a[k]);
-            l->e[k] = l->s[k] + stalk * dir[k];
-        }
-        l->length = sh.leaf_length * size;
-        l->width = sh.leaf_width * size;
-        l->along = u;
-    }
+    for (i = 0; i < sh.leaves; i++)
+        place_leaf(t, &sh, i, level_start, &rng);
     return 0;
 oom:
     aero_tree_free(t);

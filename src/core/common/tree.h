@@ -53,6 +53,11 @@ int aero_tree_save(const char *path, const aero_tree *t, char *err,
                    size_t errlen);
 void aero_tree_free(aero_tree *t);
 
+/* a branch's frame: two unit vectors perpendicular to its unit axis e and
+   to each other (the generator's and the motion's); x is horizontal
+   unless e is within ~25 deg of vertical */
+void aero_tree_perpendiculars(const double e[3], double x[3], double y[3]);
+
 /* a generated tree (aerotex tree): recursive branching from a vertical
    trunk of height `height` and base diameter `diameter`, `depth` levels of
    branching, about `leaves` leaves spread over the outermost branches,

@@ -1,9 +1,11 @@
-/* aero: leaves in the wind (see leafwave.h; Matsuyama et al. 2005, "Generation
- * of Leaf Sound" and "Sound Rendering"). */
+/* aero: leaves in the wind (see leafwave.h; Matsuyama et al. 2005, sections
+ * "Generation of Leaf Sound" and "Sound Rendering"; the equations and
+ * figures cited below are theirs). */
 #include "leafwave.h"
 #include "aero_air.h"
 #include "aero_util.h"
 
+#include "aero_fftw.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -21,37 +23,12 @@
 #define RATE_MAX 2.0          /* tables hold content up to 0.45 fs / RATE_MAX */
 #define HIT_ATTACK_S 0.001
 #define HIT_DECAY_S 0.015
-#define RELEASE_S 0.06        /* key off: slow decay (paper fig. 13) */
+#define RELEASE_S 0.06        /* key off: slow decay (fig. 13) */
 #define SILENT_PA 1e-7        /* a voice below this at 1 m is done */
 #define DRY_CHUNK 256
 #define STEAL_LOOK 8          /* voices looked at when all are busy */
 #define BAND_OCTAVES_FACTOR 8.0 /* tables roll off above 8 f_i */
 #define MIN_DISTANCE 0.1      /* m: 1/r is held below this */
-
-/* ---- small vector helpers (float storage, double arithmetic) ----------- */
-
-static double dot3d(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void cross3d(const double a[3], const double b[3], double c[3])
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static double normalize3d(double v[3])
-{
-    double n = sqrt(dot3d(v, v));
-    if (n > 0.0) {
-        v[0] /= n;
-        v[1] /= n;
-        v[2] /= n;
-    }
-    return n;
-}
 
 static double clampd(double v, double lo, double hi)
 {
@@ -60,43 +37,36 @@ static double clampd(double v, double lo, double hi)
 
 /* ---- wave tables: pink noise from f_i up, by an inverse FFT ------------- */
 
-/* in-place radix-2 complex FFT, n a power of two, sign -1 forward, +1
-   inverse (unscaled) */
-static void fft(double *re, double *im, int n, int sign)
+/* two new arrays in place of *a and *b (the old ones freed, nothing
+   copied); -1, both kept, when out of memory */
+static int replace_arrays(void **a, size_t a_bytes, void **b, size_t b_bytes)
 {
-    for (int i = 1, j = 0; i < n; i++) {
-        int bit = n >> 1;
-        for (; j & bit; bit >>= 1)
-            j ^= bit;
-        j ^= bit;
-        if (i < j) {
-            double t = re[i];
-            re[i] = re[j];
-            re[j] = t;
-            t = im[i];
-            im[i] = im[j];
-            im[j] = t;
-        }
+    void *na = malloc(a_bytes), *nb = malloc(b_bytes);
+    if (!na || !nb) {
+        free(na);
+        free(nb);
+        return -1;
     }
-    for (int len = 2; len <= n; len <<= 1) {
-        double ang = sign * 2.0 * AERO_PI / len;
-        double wr = cos(ang), wi = sin(ang);
-        for (int i = 0; i < n; i += len) {
-            double cr = 1.0, ci = 0.0;
-            for (int k = 0; k < len / 2; k++) {
-                int a = i + k, b = a + len / 2;
-                double tr = re[b] * cr - im[b] * ci;
-                double ti = re[b] * ci + im[b] * cr;
-                re[b] = re[a] - tr;
-                im[b] = im[a] - ti;
-                re[a] += tr;
-                im[a] += ti;
-                double nr = cr * wr - ci * wi;
-                ci = cr * wi + ci * wr;
-                cr = nr;
-            }
-        }
-    }
+    free(*a);
+    free(*b);
+    *a = na;
+    *b = nb;
+    return 0;
+}
+
+/* the tables' inverse FFT: planned at init, never in process */
+static int make_fft(aero_leafwave *lw)
+{
+    lw->fft = calloc(1, sizeof *lw->fft);
+    return lw->fft ? aero_fftw_c2r_make(lw->fft, AERO_LEAF_TABLE_LEN) : -1;
+}
+
+static void free_fft(aero_leafwave *lw)
+{
+    if (lw->fft)
+        aero_fftw_c2r_free(lw->fft);
+    free(lw->fft);
+    lw->fft = NULL;
 }
 
 double aero_leafwave_table_hz(const aero_leafwave *lw, int i)
@@ -122,68 +92,16 @@ const float *aero_leafwave_table(const aero_leafwave *lw, int i)
     return lw->tables + (size_t)i * (AERO_LEAF_TABLE_LEN + 1);
 }
 
-/* Table i: one loop of AERO_LEAF_TABLE_LEN samples at TABLE_RATE, its
-   spectrum pink (power ~ 1/f) from the basic frequency f_i over about
-   three octaves, rolling off as f^-4 in power above 8 f_i, cut at
-   0.45 TABLE_RATE / RATE_MAX (no aliasing when friction plays it at up to
-   RATE_MAX) and nothing below f_i; random phases; unit rms. The sample after the end repeats the first (interpolation). */
-static int make_tables(aero_leafwave *lw)
+/* each table's zero crossings: of the two samples around a sign change,
+   the one nearer zero; notes start there. Counted, then listed. */
+static int find_crossings(aero_leafwave *lw)
 {
     const int n = AERO_LEAF_TABLE_LEN;
-    int count = lw->tables_per_octave * lw->octaves;
-    float *tables = malloc(sizeof(float) * (size_t)count * (n + 1));
-    double *re = malloc(sizeof(double) * n), *im = malloc(sizeof(double) * n);
-    if (!tables || !re || !im) {
-        free(tables);
-        free(re);
-        free(im);
-        return -1;
-    }
-    uint32_t rng = lw->seed * 747796405u + 2891336453u;
-    if (!rng)
-        rng = 1;
-    double df = AERO_LEAF_TABLE_RATE / n;
-    double f_top = 0.45 * AERO_LEAF_TABLE_RATE / RATE_MAX;
-    free(lw->tables);
-    lw->tables = tables;
-    lw->ntables = count;
-    for (int t = 0; t < count; t++) {
-        double f_i = aero_leafwave_table_hz(lw, t);
-        memset(re, 0, sizeof(double) * n);
-        memset(im, 0, sizeof(double) * n);
-        for (int k = 1; k < n / 2; k++) {
-            double f = k * df;
-            if (f < f_i || f > f_top)
-                continue;
-            /* pink over about three octaves, then a second-order
-               roll-off: the table's colour scales with f_i */
-            double over = f / (BAND_OCTAVES_FACTOR * f_i);
-            double amp = 1.0 / (sqrt(f) * (1.0 + over * over));
-            double ph = AERO_PI * aero_uniform(&rng);
-            re[k] = amp * cos(ph);
-            im[k] = amp * sin(ph);
-            re[n - k] = re[k]; /* Hermitian: a real signal */
-            im[n - k] = -im[k];
-        }
-        fft(re, im, n, +1);
-        double sum = 0.0;
-        for (int s = 0; s < n; s++)
-            sum += re[s] * re[s];
-        double scale = sum > 0.0 ? 1.0 / sqrt(sum / n) : 0.0;
-        float *dst = tables + (size_t)t * (n + 1);
-        for (int s = 0; s < n; s++)
-            dst[s] = (float)(re[s] * scale);
-        dst[n] = dst[0];
-    }
-    free(re);
-    free(im);
-    /* each table's zero crossings: of the two samples around a sign
-       change, the one nearer zero; notes start there */
-    int total = 0;
+    int count = lw->ntables;
     for (int pass = 0; pass < 2; pass++) {
         int c = 0;
         for (int t = 0; t < count; t++) {
-            const float *tab = tables + (size_t)t * (n + 1);
+            const float *tab = lw->tables + (size_t)t * (n + 1);
             if (pass)
                 lw->crossing_start[t] = c;
             for (int s = 0; s < n; s++) {
@@ -198,22 +116,66 @@ static int make_tables(aero_leafwave *lw)
         }
         if (pass)
             lw->crossing_start[count] = c;
-        else {
-            total = c;
-            int *cr = malloc(sizeof(int) * (total + 1));
-            int *st = malloc(sizeof(int) * (count + 1));
-            if (!cr || !st) {
-                free(cr);
-                free(st);
-                return -1;
-            }
-            free(lw->crossings);
-            free(lw->crossing_start);
-            lw->crossings = cr;
-            lw->crossing_start = st;
-        }
+        else if (replace_arrays((void **)&lw->crossings,
+                                sizeof(int) * (c + 1),
+                                (void **)&lw->crossing_start,
+                                sizeof(int) * (count + 1)))
+            return -1;
     }
     return 0;
+}
+
+/* Table i: one loop of AERO_LEAF_TABLE_LEN samples at TABLE_RATE, its
+   spectrum pink (power ~ 1/f) from the basic frequency f_i over about
+   three octaves, rolling off as f^-4 in power above 8 f_i, cut at
+   0.45 TABLE_RATE / RATE_MAX (no aliasing when friction plays it at up to
+   RATE_MAX) and nothing below f_i; random phases; unit rms. The sample
+   after the end repeats the first (interpolation). */
+static int make_tables(aero_leafwave *lw)
+{
+    const int n = AERO_LEAF_TABLE_LEN;
+    int count = lw->tables_per_octave * lw->octaves;
+    float *tables = malloc(sizeof(float) * (size_t)count * (n + 1));
+    if (!tables || !lw->fft) {
+        free(tables);
+        return -1;
+    }
+    fftwf_complex *spectrum = lw->fft->spectrum;
+    const float *signal = lw->fft->signal;
+    uint32_t rng = lw->seed * 747796405u + 2891336453u;
+    if (!rng)
+        rng = 1;
+    double df = AERO_LEAF_TABLE_RATE / n;
+    double f_top = 0.45 * AERO_LEAF_TABLE_RATE / RATE_MAX;
+    free(lw->tables);
+    lw->tables = tables;
+    lw->ntables = count;
+    for (int t = 0; t < count; t++) {
+        double f_i = aero_leafwave_table_hz(lw, t);
+        memset(spectrum, 0, sizeof(fftwf_complex) * (n / 2 + 1));
+        for (int k = 1; k < n / 2; k++) {
+            double f = k * df;
+            if (f < f_i || f > f_top)
+                continue;
+            /* pink over about three octaves, then a second-order
+               roll-off: the table's colour scales with f_i */
+            double over = f / (BAND_OCTAVES_FACTOR * f_i);
+            double amp = 1.0 / (sqrt(f) * (1.0 + over * over));
+            double ph = AERO_PI * aero_uniform(&rng);
+            spectrum[k][0] = (float)(amp * cos(ph));
+            spectrum[k][1] = (float)(amp * sin(ph));
+        }
+        fftwf_execute(lw->fft->plan); /* a real signal: Hermitian spectrum */
+        double sum = 0.0;
+        for (int s = 0; s < n; s++)
+            sum += (double)signal[s] * signal[s];
+        double scale = sum > 0.0 ? 1.0 / sqrt(sum / n) : 0.0;
+        float *dst = tables + (size_t)t * (n + 1);
+        for (int s = 0; s < n; s++)
+            dst[s] = (float)(signal[s] * scale);
+        dst[n] = dst[0];
+    }
+    return find_crossings(lw);
 }
 
 /* ---- leaves ------------------------------------------------------------- */
@@ -221,8 +183,8 @@ static int make_tables(aero_leafwave *lw)
 /* sine and cosine on [-pi/2, pi/2] by their Taylor series (errors 1.6e-4
    and 2.4e-5 at the ends: far below what a leaf's angle means); the leaf
    angles are limited to that range (a blade does not swing or twist
-   beyond a right angle about its stalk). Three per leaf per frame were a
-   sixth of the cost with libm. */
+   beyond a right angle about its stalk). With libm, the three per leaf
+   per frame cost a sixth of the frame. */
 static double limit_angle(double x)
 {
     return x < -1.5707963 ? -1.5707963 : x > 1.5707963 ? 1.5707963 : x;
@@ -268,7 +230,7 @@ static void free_leaves(aero_leafwave *lw)
     lw->nleaves = lw->npairs = 0;
 }
 
-/* rest geometry of every leaf (paper fig. 10): the blade hangs from the
+/* rest geometry of every leaf (fig. 10): the blade hangs from the
    stalk end, drooping; the leaf swings rigidly about the stalk start */
 static void build_leaves(aero_leafwave *lw)
 {
@@ -285,32 +247,32 @@ static void build_leaves(aero_leafwave *lw)
         double stalk[3], blade[3], centre[3], z[3], x[3], y[3];
         for (int k = 0; k < 3; k++)
             stalk[k] = l->e[k] - l->s[k];
-        double ls = normalize3d(stalk);
+        double ls = aero_normalise3(stalk);
         if (!(ls > 0.0)) {
             stalk[0] = 1.0;
             stalk[1] = stalk[2] = 0.0;
         }
         for (int k = 0; k < 3; k++)
             blade[k] = stalk[k] - DROOP * up[k];
-        if (!(normalize3d(blade) > 1e-6))
+        if (!(aero_normalise3(blade) > 1e-6))
             for (int k = 0; k < 3; k++)
                 blade[k] = stalk[k];
         for (int k = 0; k < 3; k++) {
             centre[k] = l->e[k] + 0.5 * l->length * blade[k];
             z[k] = centre[k] - l->s[k];
         }
-        double reach = normalize3d(z);
+        double reach = aero_normalise3(z);
         if (!(reach > 0.0)) {
             z[0] = 1.0;
             z[1] = z[2] = 0.0;
         }
-        cross3d(z, up, x);
-        if (normalize3d(x) < 1e-6) {
+        aero_cross3(z, up, x);
+        if (aero_normalise3(x) < 1e-6) {
             const double ex[3] = {1.0, 0.0, 0.0};
-            cross3d(z, ex, x);
-            normalize3d(x);
+            aero_cross3(z, ex, x);
+            aero_normalise3(x);
         }
-        cross3d(z, x, y);
+        aero_cross3(z, x, y);
         for (int k = 0; k < 3; k++) {
             s->base[k] = (float)l->s[k];
             s->branch_rest[k] = (float)(b->a[k] + l->along * (b->b[k] - b->a[k]));
@@ -370,6 +332,117 @@ static unsigned cell_hash(long cx, long cy, long cz, unsigned mask)
             (unsigned)cz * 83492791u) & mask;
 }
 
+/* the spatial hash of the rest blade centres: each leaf's cell (cells, 3
+   per leaf), the leaves sorted by the hash of their cell (entries), and
+   where each hash's leaves start in that order (start, mask + 2 values) */
+typedef struct {
+    double cell;
+    unsigned mask;
+    long *cells;
+    hash_entry *entries;
+    int *start;
+} leaf_hash;
+
+static void free_hash(leaf_hash *h)
+{
+    free(h->entries);
+    free(h->start);
+    free(h->cells);
+}
+
+static int make_hash(const aero_leafwave *lw, leaf_hash *h)
+{
+    int n = lw->nleaves;
+    double rmax = 0.0;
+    for (int i = 0; i < n; i++)
+        if (lw->leaves[i].reach > rmax)
+            rmax = lw->leaves[i].reach;
+    h->cell = 2.0 * lw->reach * rmax;
+    if (!(h->cell > 1e-6))
+        h->cell = 1e-6;
+    unsigned size = 1;
+    while (size < 2u * (unsigned)n)
+        size <<= 1;
+    h->mask = size - 1;
+    h->entries = malloc(sizeof(hash_entry) * n);
+    h->start = malloc(sizeof(int) * (size + 1));
+    h->cells = malloc(sizeof(long) * 3 * n);
+    if (!h->entries || !h->start || !h->cells) {
+        free_hash(h);
+        return -1;
+    }
+    for (int i = 0; i < n; i++) {
+        long *c = h->cells + 3 * i;
+        for (int k = 0; k < 3; k++)
+            c[k] = (long)floor(lw->leaves[i].p[k] / h->cell);
+        h->entries[i].key = (int)cell_hash(c[0], c[1], c[2], h->mask);
+        h->entries[i].leaf = i;
+    }
+    qsort(h->entries, n, sizeof(hash_entry), cmp_hash);
+    for (unsigned k = 0, e = 0; k <= size; k++) {
+        while (e < (unsigned)n && (unsigned)h->entries[e].key < k)
+            e++;
+        h->start[k] = (int)e;
+    }
+    return 0;
+}
+
+/* j into the list of leaf i's nearest (best, by squared distance bestd,
+   nb of them so far), if it is among the nearest
+   AERO_LEAF_MAX_NEIGHBOURS */
+static void keep_nearest(int *best, double *bestd, int *nb, int j, double d2)
+{
+    int pos = *nb;
+    while (pos > 0 && bestd[pos - 1] > d2)
+        pos--;
+    if (pos >= AERO_LEAF_MAX_NEIGHBOURS)
+        return;
+    int last = *nb < AERO_LEAF_MAX_NEIGHBOURS ? *nb
+                                              : AERO_LEAF_MAX_NEIGHBOURS - 1;
+    for (int m = last; m > pos; m--) {
+        best[m] = best[m - 1];
+        bestd[m] = bestd[m - 1];
+    }
+    best[pos] = j;
+    bestd[pos] = d2;
+    if (*nb < AERO_LEAF_MAX_NEIGHBOURS)
+        (*nb)++;
+}
+
+/* leaf i's nearest neighbours within reach, from the 27 cells around its
+   own, nearest first; returns how many */
+static int neighbours(const aero_leafwave *lw, const leaf_hash *h, int i,
+                      int best[AERO_LEAF_MAX_NEIGHBOURS])
+{
+    const aero_leaf_state *a = &lw->leaves[i];
+    const long *ci = h->cells + 3 * i;
+    double bestd[AERO_LEAF_MAX_NEIGHBOURS];
+    int nb = 0;
+    for (int dx = -1; dx <= 1; dx++)
+        for (int dy = -1; dy <= 1; dy++)
+            for (int dz = -1; dz <= 1; dz++) {
+                long cx = ci[0] + dx, cy = ci[1] + dy, cz = ci[2] + dz;
+                unsigned key = cell_hash(cx, cy, cz, h->mask);
+                for (int e = h->start[key]; e < h->start[key + 1]; e++) {
+                    int j = h->entries[e].leaf;
+                    const long *cj = h->cells + 3 * j;
+                    /* another cell with the same hash: not this one */
+                    if (j == i || cj[0] != cx || cj[1] != cy || cj[2] != cz)
+                        continue;
+                    const aero_leaf_state *b = &lw->leaves[j];
+                    double d2 = 0.0;
+                    for (int k = 0; k < 3; k++) {
+                        double d = (double)b->p[k] - a->p[k];
+                        d2 += d * d;
+                    }
+                    double lim = lw->reach * (a->reach + b->reach);
+                    if (!(d2 > lim * lim))
+                        keep_nearest(best, bestd, &nb, j, d2);
+                }
+            }
+    return nb;
+}
+
 /* Candidate pairs: rest blade centres closer than reach (r_i + r_j), r the
    leaf's swing radius; each leaf keeps its nearest MAX_NEIGHBOURS. Cells of
    the largest such distance, hashed: each leaf looks at 27 cells, so the
@@ -382,88 +455,17 @@ static int build_pairs(aero_leafwave *lw)
     lw->npairs = 0;
     if (n < 2)
         return 0;
-    double rmax = 0.0;
-    for (int i = 0; i < n; i++)
-        if (lw->leaves[i].reach > rmax)
-            rmax = lw->leaves[i].reach;
-    double cell = 2.0 * lw->reach * rmax;
-    if (!(cell > 1e-6))
-        cell = 1e-6;
-    unsigned size = 1;
-    while (size < 2u * (unsigned)n)
-        size <<= 1;
-    unsigned mask = size - 1;
-    hash_entry *entries = malloc(sizeof(hash_entry) * n);
-    int *start = malloc(sizeof(int) * (size + 1));
-    long *cells = malloc(sizeof(long) * 3 * n);
+    leaf_hash h;
     aero_leaf_pair *pairs = malloc(sizeof(aero_leaf_pair) * (size_t)n *
                                    AERO_LEAF_MAX_NEIGHBOURS);
-    if (!entries || !start || !cells || !pairs) {
-        free(entries);
-        free(start);
-        free(cells);
+    if (!pairs || make_hash(lw, &h)) {
         free(pairs);
         return -1;
     }
-    for (int i = 0; i < n; i++) {
-        for (int k = 0; k < 3; k++)
-            cells[3 * i + k] = (long)floor(lw->leaves[i].p[k] / cell);
-        entries[i].key = (int)cell_hash(cells[3 * i], cells[3 * i + 1],
-                                        cells[3 * i + 2], mask);
-        entries[i].leaf = i;
-    }
-    qsort(entries, n, sizeof(hash_entry), cmp_hash);
-    for (unsigned h = 0, e = 0; h <= size; h++) {
-        while (e < (unsigned)n && (unsigned)entries[e].key < h)
-            e++;
-        start[h] = (int)e;
-    }
     int np = 0;
     for (int i = 0; i < n; i++) {
-        const aero_leaf_state *a = &lw->leaves[i];
         int best[AERO_LEAF_MAX_NEIGHBOURS];
-        double bestd[AERO_LEAF_MAX_NEIGHBOURS];
-        int nb = 0;
-        for (int dx = -1; dx <= 1; dx++)
-            for (int dy = -1; dy <= 1; dy++)
-                for (int dz = -1; dz <= 1; dz++) {
-                    long cx = cells[3 * i] + dx, cy = cells[3 * i + 1] + dy,
-                         cz = cells[3 * i + 2] + dz;
-                    unsigned h = cell_hash(cx, cy, cz, mask);
-                    for (int e = start[h]; e < start[h + 1]; e++) {
-                        int j = entries[e].leaf;
-                        /* another cell with the same hash: not this one */
-                        if (j == i || cells[3 * j] != cx ||
-                            cells[3 * j + 1] != cy || cells[3 * j + 2] != cz)
-                            continue;
-                        const aero_leaf_state *b = &lw->leaves[j];
-                        double d2 = 0.0;
-                        for (int k = 0; k < 3; k++) {
-                            double d = (double)b->p[k] - a->p[k];
-                            d2 += d * d;
-                        }
-                        double lim = lw->reach * (a->reach + b->reach);
-                        if (d2 > lim * lim)
-                            continue;
-                        /* insert into the sorted nearest list */
-                        int pos = nb;
-                        while (pos > 0 && bestd[pos - 1] > d2)
-                            pos--;
-                        if (pos >= AERO_LEAF_MAX_NEIGHBOURS)
-                            continue;
-                        int last = nb < AERO_LEAF_MAX_NEIGHBOURS
-                                       ? nb
-                                       : AERO_LEAF_MAX_NEIGHBOURS - 1;
-                        for (int m = last; m > pos; m--) {
-                            best[m] = best[m - 1];
-                            bestd[m] = bestd[m - 1];
-                        }
-                        best[pos] = j;
-                        bestd[pos] = d2;
-                        if (nb < AERO_LEAF_MAX_NEIGHBOURS)
-                            nb++;
-                    }
-                }
+        int nb = neighbours(lw, &h, i, best);
         for (int m = 0; m < nb; m++) {
             aero_leaf_pair *p = &pairs[np++];
             memset(p, 0, sizeof(*p));
@@ -471,6 +473,7 @@ static int build_pairs(aero_leafwave *lw)
             p->j = i < best[m] ? best[m] : i;
         }
     }
+    free_hash(&h);
     /* a pair found from both sides is kept once */
     qsort(pairs, np, sizeof(aero_leaf_pair), cmp_pair);
     int unique = 0;
@@ -483,9 +486,6 @@ static int build_pairs(aero_leafwave *lw)
         pairs[k].voice = -1;
         pairs[k].q = 1e30f;
     }
-    free(entries);
-    free(start);
-    free(cells);
     lw->pairs = pairs;
     lw->npairs = unique;
     return 0;
@@ -512,11 +512,11 @@ static double voice_level(const aero_leaf_voice *v)
     return (double)v->hit + v->rub;
 }
 
-/* a voice for pair p, starting `wait` samples into the next frame at a
-   zero crossing of its table (paper: no pulse at the start): a free one,
-   else the quietest of the next STEAL_LOOK voices (a rotating cursor: O(1)
-   per key on, where a search of the whole pool cost O(voices)) if it is
-   quieter than `level`; -1 if none */
+/* a voice for pair p, starting `wait` samples into the next frame at a zero
+   crossing of its table (no pulse at the start, as Matsuyama et al. ask): a
+   free one, else the quietest of the next STEAL_LOOK voices (a rotating
+   cursor: O(1) per key on, where a search of the whole pool cost O(voices))
+   if it is quieter than `level`; -1 if none */
 static int start_voice(aero_leafwave *lw, int p, int wait, double level)
 {
     int best = -1;
@@ -541,14 +541,12 @@ static int start_voice(aero_leafwave *lw, int p, int wait, double level)
         lw->pairs[v->pair].voice = -1;
     aero_leaf_pair *pr = &lw->pairs[p];
     int table = lw->leaves[pr->i].table;
-    const float *tab = aero_leafwave_table(lw, table);
     /* a random one of the table's zero crossings (listed at init) */
     int first = lw->crossing_start[table];
     int count = lw->crossing_start[table + 1] - first;
     int pos = count > 0 ? lw->crossings[first + (int)(aero_xorshift32(&lw->rng) %
                                                      (uint32_t)count)]
                         : 0;
-    (void)tab;
     memset(v, 0, sizeof(*v));
     v->pair = p;
     v->table = table;
@@ -631,175 +629,179 @@ static void branch_rotations(aero_leafwave *lw)
             rest[k] = t->branches[b].b[k] - t->branches[b].a[k];
             now[k] = pb[k] - pa[k];
         }
-        normalize3d(rest);
-        normalize3d(now);
-        cross3d(rest, now, axis);
-        double sn = normalize3d(axis), cs = dot3d(rest, now);
+        aero_normalise3(rest);
+        aero_normalise3(now);
+        aero_cross3(rest, now, axis);
+        double sn = aero_normalise3(axis), cs = aero_dot3(rest, now);
         if (!(sn > 1e-12)) {
             for (int k = 0; k < 9; k++)
                 r[k] = k % 4 == 0 ? 1.0 : 0.0;
             continue;
         }
-        /* Rodrigues: R = c I + s [a]x + (1 - c) a a^T */
-        double c1 = 1.0 - cs;
-        r[0] = cs + c1 * axis[0] * axis[0];
-        r[1] = c1 * axis[0] * axis[1] - sn * axis[2];
-        r[2] = c1 * axis[0] * axis[2] + sn * axis[1];
-        r[3] = c1 * axis[1] * axis[0] + sn * axis[2];
-        r[4] = cs + c1 * axis[1] * axis[1];
-        r[5] = c1 * axis[1] * axis[2] - sn * axis[0];
-        r[6] = c1 * axis[2] * axis[0] - sn * axis[1];
-        r[7] = c1 * axis[2] * axis[1] + sn * axis[0];
-        r[8] = cs + c1 * axis[2] * axis[2];
+        aero_rotation3(axis, cs, sn, r);
     }
 }
 
-static void rotate(const double *r, const double v[3], double out[3])
+/* eqs. 9-13: the leaf's three unit-rms noises N_x, N_y, N_r, each white
+   noise through a damped leaf resonance, stepped one frame; its angles
+   theta_x, theta_y and theta_r (with the x-r coupling) from amp = W_x,
+   W_y, W_r */
+static void leaf_angles(aero_leafwave *lw, aero_leaf_state *s,
+                        const double amp[3], double angle[3])
 {
-    out[0] = r[0] * v[0] + r[1] * v[1] + r[2] * v[2];
-    out[1] = r[3] * v[0] + r[4] * v[1] + r[5] * v[2];
-    out[2] = r[6] * v[0] + r[7] * v[1] + r[8] * v[2];
+    const double *c = lw->flutter_coef[s->flutter_class];
+    double e0 = aero_uniform(&lw->rng), e1 = aero_uniform(&lw->rng),
+           e2 = aero_uniform(&lw->rng);
+    double nx = c[0] * s->nx[0] + c[1] * s->nx[1] + c[2] * e0;
+    double ny = c[0] * s->ny[0] + c[1] * s->ny[1] + c[2] * e1;
+    double nr = c[0] * s->nr[0] + c[1] * s->nr[1] + c[2] * e2;
+    s->nx[1] = s->nx[0];
+    s->nx[0] = (float)nx;
+    s->ny[1] = s->ny[0];
+    s->ny[0] = (float)ny;
+    s->nr[1] = s->nr[0];
+    s->nr[0] = (float)nr;
+    angle[0] = limit_angle(amp[0] * nx);
+    angle[1] = limit_angle(amp[1] * ny);
+    angle[2] = limit_angle(amp[2] * nr + lw->coupling * angle[0]);
 }
 
-static void leaf_frame(aero_leafwave *lw, double sway)
+/* leaf i's pose this frame: its own swing by the angles, turned with its
+   branch, from the branch point it rides on; then the blade frame (along
+   d, across = the turned rest x made perpendicular to d, normal = d x
+   across, then the torsion) */
+static void pose_leaf(aero_leafwave *lw, int i, const double angle[3])
 {
-    const aero_tree_motion *m = &lw->motion;
-    double wx = sway, wy = SWAY_Y * sway, wr = SWAY_R * sway;
+    aero_leaf_state *s = &lw->leaves[i];
+    double sx = sin_small(angle[0]), sy = sin_small(angle[1]);
+    double cz = cos_small(angle[0]) * cos_small(angle[1]);
+    double d[3], base[3], u[3], nn[3], local[3], off[3], xr[3];
+    double bp[3] = {0.0, 0.0, 0.0}, bv[3];
+    int bi = lw->tree.leaves[i].branch;
     if (lw->has_motion)
-        branch_rotations(lw);
-    for (int i = 0; i < lw->nleaves; i++) {
-        aero_leaf_state *s = &lw->leaves[i];
-        const double *c = lw->flutter_coef[s->flutter_class];
-        /* eqs. 9-11: unit-rms noises, each a damped leaf resonance */
-        double e0 = aero_uniform(&lw->rng), e1 = aero_uniform(&lw->rng),
-               e2 = aero_uniform(&lw->rng);
-        double nx = c[0] * s->nx[0] + c[1] * s->nx[1] + c[2] * e0;
-        double ny = c[0] * s->ny[0] + c[1] * s->ny[1] + c[2] * e1;
-        double nr = c[0] * s->nr[0] + c[1] * s->nr[1] + c[2] * e2;
-        s->nx[1] = s->nx[0];
-        s->nx[0] = (float)nx;
-        s->ny[1] = s->ny[0];
-        s->ny[0] = (float)ny;
-        s->nr[1] = s->nr[0];
-        s->nr[0] = (float)nr;
-        double tx = limit_angle(wx * nx), ty = limit_angle(wy * ny);
-        double tr = limit_angle(wr * nr + lw->coupling * tx); /* eqs. 12-13 */
-        double sx = sin_small(tx), sy = sin_small(ty);
-        double cz = cos_small(tx) * cos_small(ty);
-        double d[3], base[3], u[3], nn[3], local[3], off[3], xr[3];
-        double bp[3] = {0.0, 0.0, 0.0}, bv[3];
-        int bi = lw->tree.leaves[i].branch;
-        if (lw->has_motion)
-            aero_tree_motion_point(m, bi, lw->tree.leaves[i].along, bp, bv);
-        else
-            for (int k = 0; k < 3; k++)
-                bp[k] = s->branch_rest[k];
-        for (int k = 0; k < 3; k++) {
-            local[k] = s->z[k] * cz + s->x[k] * sx + s->y[k] * sy;
-            off[k] = (double)s->base[k] - s->branch_rest[k];
-            xr[k] = s->x[k];
-        }
-        /* the leaf's own swing, turned with its branch, from the branch
-           point it rides on */
-        if (lw->has_motion) {
-            const double *r = lw->branch_rot + 9 * bi;
-            double tmp[3];
-            rotate(r, local, d);
-            rotate(r, off, tmp);
-            for (int k = 0; k < 3; k++)
-                off[k] = tmp[k];
-            rotate(r, xr, tmp);
-            for (int k = 0; k < 3; k++)
-                xr[k] = tmp[k];
-        } else
-            for (int k = 0; k < 3; k++)
-                d[k] = local[k];
+        aero_tree_motion_point(&lw->motion, bi, lw->tree.leaves[i].along, bp,
+                               bv);
+    else
         for (int k = 0; k < 3; k++)
-            base[k] = bp[k] + off[k];
-        normalize3d(d);
-        /* blade frame: along d, across = the (turned) rest x made
-           perpendicular to d, normal = d x across, then the torsion */
-        double xd = xr[0] * d[0] + xr[1] * d[1] + xr[2] * d[2];
-        for (int k = 0; k < 3; k++)
-            u[k] = xr[k] - xd * d[k];
-        normalize3d(u);
-        cross3d(d, u, nn);
-        double cr = cos_small(tr), sr = sin_small(tr);
-        for (int k = 0; k < 3; k++) {
-            s->p[k] = (float)(base[k] + s->reach * d[k]);
-            s->t[k] = (float)d[k];
-            s->n[k] = (float)(cr * nn[k] + sr * u[k]);
-            s->u[k] = (float)(cr * u[k] - sr * nn[k]);
-        }
+            bp[k] = s->branch_rest[k];
+    for (int k = 0; k < 3; k++) {
+        local[k] = s->z[k] * cz + s->x[k] * sx + s->y[k] * sy;
+        off[k] = (double)s->base[k] - s->branch_rest[k];
+        xr[k] = s->x[k];
     }
-
-    /* pairs: P_j in the blade frame of leaf i (eq. 15) against the
-       ellipsoid of the two blades; then the state machine (fig. 12) */
-    double frame_dt = lw->frame_samples / lw->sample_rate;
-    for (int p = 0; p < lw->npairs; p++) {
-        aero_leaf_pair *pr = &lw->pairs[p];
-        const aero_leaf_state *a = &lw->leaves[pr->i], *b = &lw->leaves[pr->j];
-        float dv[3];
+    if (lw->has_motion) {
+        const double *r = lw->branch_rot + 9 * bi;
+        double tmp[3];
+        aero_mat3_apply(r, local, d);
+        aero_mat3_apply(r, off, tmp);
         for (int k = 0; k < 3; k++)
-            dv[k] = b->p[k] - a->p[k];
-        float lt = dv[0] * a->t[0] + dv[1] * a->t[1] + dv[2] * a->t[2];
-        float lu = dv[0] * a->u[0] + dv[1] * a->u[1] + dv[2] * a->u[2];
-        float ln = dv[0] * a->n[0] + dv[1] * a->n[1] + dv[2] * a->n[2];
-        float hl = a->half_len + b->half_len, hw = a->half_wid + b->half_wid;
-        float hn = CONTACT_DEPTH * hw;
-        float q = (lt * lt) / (hl * hl) + (lu * lu) / (hw * hw) +
-                  (ln * ln) / (hn * hn);
-        int inside = q <= 1.0f;
-        float q_prev = pr->q;
-        int state = pr->state;
-        double vn = 0.0, vrel = 0.0;
-        if (state != AERO_PAIR_INITIAL && (inside || q_prev <= 1.0f)) {
-            /* relative velocity of the blades over the frame */
-            float dd[3];
-            for (int k = 0; k < 3; k++)
-                dd[k] = dv[k] - pr->d[k];
-            float dn = dd[0] * a->n[0] + dd[1] * a->n[1] + dd[2] * a->n[2];
-            vrel = sqrt((double)dd[0] * dd[0] + (double)dd[1] * dd[1] +
-                        (double)dd[2] * dd[2]) / frame_dt;
-            vn = fabs((double)dn) / frame_dt;
-        }
-        double vt = sqrt(vrel * vrel > vn * vn ? vrel * vrel - vn * vn : 0.0);
-        switch (state) {
-        case AERO_PAIR_INITIAL:
-            state = inside ? AERO_PAIR_CONTACT : AERO_PAIR_NONCONTACT;
-            break;
-        case AERO_PAIR_NONCONTACT:
-        case AERO_PAIR_KEYOFF:
-            if (inside) {
-                /* the crossing time within the last frame, from q */
-                double frac = q_prev > 1.0f && q_prev - q > 0.0f
-                                  ? (q_prev - 1.0) / ((double)q_prev - q)
-                                  : 0.0;
-                state = AERO_PAIR_KEYON;
-                key_on(lw, pr, p, clampd(frac, 0.0, 1.0), lw->hit_pa * vrel);
-            } else {
-                state = AERO_PAIR_NONCONTACT;
-                key_off(lw, pr);
-            }
-            break;
-        case AERO_PAIR_KEYON:
-        case AERO_PAIR_CONTACT:
-            if (inside) {
-                state = AERO_PAIR_CONTACT;
-                rub(lw, pr, p, vt);
-            } else {
-                state = AERO_PAIR_KEYOFF;
-                key_off(lw, pr);
-            }
-            break;
-        }
-        pr->state = state;
-        pr->q = q;
+            off[k] = tmp[k];
+        aero_mat3_apply(r, xr, tmp);
         for (int k = 0; k < 3; k++)
-            pr->d[k] = dv[k];
+            xr[k] = tmp[k];
+    } else
+        for (int k = 0; k < 3; k++)
+            d[k] = local[k];
+    for (int k = 0; k < 3; k++)
+        base[k] = bp[k] + off[k];
+    aero_normalise3(d);
+    double xd = aero_dot3(xr, d);
+    for (int k = 0; k < 3; k++)
+        u[k] = xr[k] - xd * d[k];
+    aero_normalise3(u);
+    aero_cross3(d, u, nn);
+    double cr = cos_small(angle[2]), sr = sin_small(angle[2]);
+    for (int k = 0; k < 3; k++) {
+        s->p[k] = (float)(base[k] + s->reach * d[k]);
+        s->t[k] = (float)d[k];
+        s->n[k] = (float)(cr * nn[k] + sr * u[k]);
+        s->u[k] = (float)(cr * u[k] - sr * nn[k]);
     }
+}
 
-    /* voices that have died away are freed */
+/* eq. 15: P_j - P_i (dv) in the blade frame of leaf i, measured against
+   the ellipsoid of the two blades' half sizes (thin across the blade):
+   q <= 1 is inside, "A" of fig. 12 */
+static float pair_measure(const aero_leaf_state *a, const aero_leaf_state *b,
+                          float dv[3])
+{
+    for (int k = 0; k < 3; k++)
+        dv[k] = b->p[k] - a->p[k];
+    float lt = dv[0] * a->t[0] + dv[1] * a->t[1] + dv[2] * a->t[2];
+    float lu = dv[0] * a->u[0] + dv[1] * a->u[1] + dv[2] * a->u[2];
+    float ln = dv[0] * a->n[0] + dv[1] * a->n[1] + dv[2] * a->n[2];
+    float hl = a->half_len + b->half_len, hw = a->half_wid + b->half_wid;
+    float hn = CONTACT_DEPTH * hw;
+    return (lt * lt) / (hl * hl) + (lu * lu) / (hw * hw) +
+           (ln * ln) / (hn * hn);
+}
+
+/* the blades' relative speed over the last frame (vrel), its part normal
+   to blade i (vn) and the sliding part (returned) */
+static double pair_speeds(const aero_leaf_pair *pr, const aero_leaf_state *a,
+                          const float dv[3], double frame_dt, double *vrel)
+{
+    float dd[3];
+    for (int k = 0; k < 3; k++)
+        dd[k] = dv[k] - pr->d[k];
+    float dn = dd[0] * a->n[0] + dd[1] * a->n[1] + dd[2] * a->n[2];
+    *vrel = sqrt((double)dd[0] * dd[0] + (double)dd[1] * dd[1] +
+                 (double)dd[2] * dd[2]) / frame_dt;
+    double vn = fabs((double)dn) / frame_dt;
+    return sqrt(*vrel * *vrel > vn * vn ? *vrel * *vrel - vn * vn : 0.0);
+}
+
+/* pair p's state machine (fig. 12) for this frame */
+static void pair_step(aero_leafwave *lw, int p, double frame_dt)
+{
+    aero_leaf_pair *pr = &lw->pairs[p];
+    const aero_leaf_state *a = &lw->leaves[pr->i];
+    float dv[3];
+    float q = pair_measure(a, &lw->leaves[pr->j], dv);
+    int inside = q <= 1.0f;
+    float q_prev = pr->q;
+    int state = pr->state;
+    double vrel = 0.0, vt = 0.0;
+    if (state != AERO_PAIR_INITIAL && (inside || q_prev <= 1.0f))
+        vt = pair_speeds(pr, a, dv, frame_dt, &vrel);
+    switch (state) {
+    case AERO_PAIR_INITIAL:
+        state = inside ? AERO_PAIR_CONTACT : AERO_PAIR_NONCONTACT;
+        break;
+    case AERO_PAIR_NONCONTACT:
+    case AERO_PAIR_KEYOFF:
+        if (inside) {
+            /* the crossing time within the last frame, from q */
+            double frac = q_prev > 1.0f && q_prev - q > 0.0f
+                              ? (q_prev - 1.0) / ((double)q_prev - q)
+                              : 0.0;
+            state = AERO_PAIR_KEYON;
+            key_on(lw, pr, p, clampd(frac, 0.0, 1.0), lw->hit_pa * vrel);
+        } else {
+            state = AERO_PAIR_NONCONTACT;
+            key_off(lw, pr);
+        }
+        break;
+    case AERO_PAIR_KEYON:
+    case AERO_PAIR_CONTACT:
+        if (inside) {
+            state = AERO_PAIR_CONTACT;
+            rub(lw, pr, p, vt);
+        } else {
+            state = AERO_PAIR_KEYOFF;
+            key_off(lw, pr);
+        }
+        break;
+    }
+    pr->state = state;
+    pr->q = q;
+    for (int k = 0; k < 3; k++)
+        pr->d[k] = dv[k];
+}
+
+/* voices that have died away go back to the free stack */
+static void free_silent_voices(aero_leafwave *lw)
+{
     for (int v = 0; v < lw->nvoices; v++) {
         aero_leaf_voice *vo = &lw->voices[v];
         if (vo->table < 0)
@@ -817,6 +819,23 @@ static void leaf_frame(aero_leafwave *lw, double sway)
             lw->free_voices[lw->nfree++] = v;
         }
     }
+}
+
+/* one leaf frame: every leaf moves, every pair is tested and plays */
+static void leaf_frame(aero_leafwave *lw, double sway)
+{
+    const double amp[3] = {sway, SWAY_Y * sway, SWAY_R * sway};
+    if (lw->has_motion)
+        branch_rotations(lw);
+    for (int i = 0; i < lw->nleaves; i++) {
+        double angle[3];
+        leaf_angles(lw, &lw->leaves[i], amp, angle);
+        pose_leaf(lw, i, angle);
+    }
+    double frame_dt = lw->frame_samples / lw->sample_rate;
+    for (int p = 0; p < lw->npairs; p++)
+        pair_step(lw, p, frame_dt);
+    free_silent_voices(lw);
     lw->frames++;
 }
 
@@ -946,7 +965,8 @@ int aero_leafwave_init(aero_leafwave *lw, double sample_rate, int n_ears,
     lw->ramp_samples = 0.02 * sample_rate;
     lw->voices = malloc(sizeof(aero_leaf_voice) * lw->nvoices);
     lw->free_voices = malloc(sizeof(int) * lw->nvoices);
-    if (!lw->voices || !lw->free_voices || alloc_line(lw, sample_rate) || make_tables(lw)) {
+    if (!lw->voices || !lw->free_voices || alloc_line(lw, sample_rate) ||
+        make_fft(lw) || make_tables(lw)) {
         aero_leafwave_free(lw);
         return -1;
     }
@@ -973,6 +993,7 @@ void aero_leafwave_free(aero_leafwave *lw)
     free(lw->voices);
     free(lw->free_voices);
     free(lw->tables);
+    free_fft(lw);
     free(lw->crossings);
     free(lw->crossing_start);
     lw->crossings = lw->crossing_start = NULL;
@@ -1082,7 +1103,7 @@ int aero_leafwave_set_wind(aero_leafwave *lw, double vx, double vy, double vz)
 {
     if (!aero_is_finite(vx) || !aero_is_finite(vy) || !aero_is_finite(vz))
         return -1;
-    double v[3] = {vx, vy, vz}, s = sqrt(dot3d(v, v));
+    double v[3] = {vx, vy, vz}, s = sqrt(aero_dot3(v, v));
     double lim = AERO_MACH_LIMIT * AERO_C0;
     if (s > lim)
         for (int k = 0; k < 3; k++)
@@ -1116,17 +1137,13 @@ int aero_leafwave_set_ears(aero_leafwave *lw, const aero_ears *e)
 
 int aero_leafwave_set_gain_db(aero_leafwave *lw, double db)
 {
-    if (!aero_is_finite(db) || db < -200.0 || db > 120.0)
-        return -1;
-    lw->gain = pow(10.0, db / 20.0);
-    return 0;
+    return aero_set_gain_db(&lw->gain, db);
 }
 
 int aero_leafwave_set_ramp_ms(aero_leafwave *lw, double ms)
 {
-    if (!aero_is_finite(ms) || ms < 0.0 || ms > 600000.0)
+    if (aero_set_ramp_ms(&lw->ramp_samples, ms, lw->sample_rate))
         return -1;
-    lw->ramp_samples = ms * 0.001 * lw->sample_rate;
     if (lw->ramp_samples < 1.0)
         lw->ramp_samples = 1.0;
     return 0;
@@ -1134,9 +1151,8 @@ int aero_leafwave_set_ramp_ms(aero_leafwave *lw, double ms)
 
 int aero_leafwave_set_stiffness(aero_leafwave *lw, double s)
 {
-    if (!aero_is_finite(s) || s < 1e-3 || s > 1e3)
+    if (aero_set_within(&lw->stiffness, s, 1e-3, 1e3))
         return -1;
-    lw->stiffness = s;
     if (lw->has_motion)
         aero_tree_motion_set_stiffness(&lw->motion, s);
     return 0;
@@ -1144,9 +1160,8 @@ int aero_leafwave_set_stiffness(aero_leafwave *lw, double s)
 
 int aero_leafwave_set_beta(aero_leafwave *lw, double beta)
 {
-    if (!aero_is_finite(beta) || beta < 0.0 || beta > 2.0)
+    if (aero_set_within(&lw->beta, beta, 0.0, 2.0))
         return -1;
-    lw->beta = beta;
     if (lw->has_motion)
         aero_tree_motion_set_beta(&lw->motion, beta);
     return 0;
@@ -1164,57 +1179,38 @@ int aero_leafwave_set_mic(aero_leafwave *lw, double x, double y, double z)
 
 int aero_leafwave_set_mic_k(aero_leafwave *lw, double k)
 {
-    if (!aero_is_finite(k) || k < 0.0 || k > 100.0)
-        return -1;
-    lw->mic_k = k;
-    return 0;
+    return aero_set_within(&lw->mic_k, k, 0.0, 100.0);
 }
 
 int aero_leafwave_set_sway(aero_leafwave *lw, double rad)
 {
-    if (!aero_is_finite(rad) || rad < 0.0 || rad > 1.5)
-        return -1;
-    lw->sway = rad;
-    return 0;
+    return aero_set_within(&lw->sway, rad, 0.0, 1.5);
 }
 
 int aero_leafwave_set_coupling(aero_leafwave *lw, double a)
 {
-    if (!aero_is_finite(a) || fabs(a) > 10.0)
-        return -1;
-    lw->coupling = a;
-    return 0;
+    return aero_set_within(&lw->coupling, a, -10.0, 10.0);
 }
 
 int aero_leafwave_set_flutter(aero_leafwave *lw, double hz)
 {
-    if (!aero_is_finite(hz) || hz < 0.01 || hz > 30.0)
-        return -1;
-    lw->flutter_hz = hz;
-    return 0;
+    return aero_set_within(&lw->flutter_hz, hz, 0.01, 30.0);
 }
 
 int aero_leafwave_set_hit(aero_leafwave *lw, double pa)
 {
-    if (!aero_is_finite(pa) || pa < 0.0 || pa > 100.0)
-        return -1;
-    lw->hit_pa = pa;
-    return 0;
+    return aero_set_within(&lw->hit_pa, pa, 0.0, 100.0);
 }
 
 int aero_leafwave_set_rub(aero_leafwave *lw, double pa)
 {
-    if (!aero_is_finite(pa) || pa < 0.0 || pa > 100.0)
-        return -1;
-    lw->rub_pa = pa;
-    return 0;
+    return aero_set_within(&lw->rub_pa, pa, 0.0, 100.0);
 }
 
 int aero_leafwave_set_reach(aero_leafwave *lw, double factor)
 {
-    if (!aero_is_finite(factor) || factor < 0.1 || factor > 10.0)
+    if (aero_set_within(&lw->reach, factor, 0.1, 10.0))
         return -1;
-    lw->reach = factor;
     return restart(lw, NULL, 0);
 }
 
@@ -1247,17 +1243,9 @@ int aero_leafwave_set_voices(aero_leafwave *lw, int n)
 {
     if (n < 1 || n > 65536)
         return -1;
-    aero_leaf_voice *v = malloc(sizeof(aero_leaf_voice) * n);
-    int *f = malloc(sizeof(int) * n);
-    if (!v || !f) {
-        free(v);
-        free(f);
+    if (replace_arrays((void **)&lw->voices, sizeof(aero_leaf_voice) * n,
+                       (void **)&lw->free_voices, sizeof(int) * n))
         return -1;
-    }
-    free(lw->voices);
-    free(lw->free_voices);
-    lw->voices = v;
-    lw->free_voices = f;
     lw->nvoices = n;
     reset_voices(lw);
     return 0;
@@ -1289,17 +1277,19 @@ static double mic_factor(const aero_leafwave *lw, const double ear[3])
     double to[3], axis[3] = {lw->mic[0], lw->mic[1], lw->mic[2]};
     for (int k = 0; k < 3; k++)
         to[k] = lw->source[k] - ear[k];
-    if (normalize3d(axis) <= 0.0 || normalize3d(to) <= 0.0 || lw->mic_k == 0.0)
+    if (aero_normalise3(axis) <= 0.0 || aero_normalise3(to) <= 0.0 ||
+        lw->mic_k == 0.0)
         return 1.0;
-    double c = 0.5 * (1.0 + dot3d(axis, to));
+    double c = 0.5 * (1.0 + aero_dot3(axis, to));
     return c <= 0.0 ? 0.0 : pow(c, lw->mic_k);
 }
 
-int aero_leafwave_process(aero_leafwave *lw, const float *speed,
-                          float *const *outs, int n)
+/* the wind now: the `wind` vector plus the inlet speed (the mean of the
+   block, read before any output) along its direction (+x without one),
+   clamped at Mach 0.3; returns 1 when clamped */
+static int wind_now(const aero_leafwave *lw, const float *speed, int n,
+                    double w[3], double *u)
 {
-    int clamped = 0;
-    /* the inlet speed: mean of the block, read before any output */
     double u_in = lw->inlet_speed;
     if (speed && n > 0) {
         double sum = 0.0;
@@ -1309,33 +1299,39 @@ int aero_leafwave_process(aero_leafwave *lw, const float *speed,
         if (!aero_is_finite(u_in))
             u_in = 0.0;
     }
-    double dir[3] = {lw->wind[0], lw->wind[1], lw->wind[2]}, w[3];
-    if (normalize3d(dir) <= 0.0) {
+    double dir[3] = {lw->wind[0], lw->wind[1], lw->wind[2]};
+    if (aero_normalise3(dir) <= 0.0) {
         dir[0] = 1.0;
         dir[1] = dir[2] = 0.0;
     }
     for (int k = 0; k < 3; k++)
         w[k] = lw->wind[k] + u_in * dir[k];
-    double u = sqrt(dot3d(w, w)), lim = AERO_MACH_LIMIT * AERO_C0;
-    if (u > lim) {
-        for (int k = 0; k < 3; k++)
-            w[k] *= lim / u;
-        u = lim;
-        clamped = 1;
-    }
-    if (lw->has_motion)
-        aero_tree_motion_set_wind(&lw->motion, w);
-    /* leaf amplitudes follow the drag load U^2 (saturating), their
-       flutter rate rises with the wind */
+    double lim = AERO_MACH_LIMIT * AERO_C0;
+    *u = sqrt(aero_dot3(w, w));
+    if (!(*u > lim))
+        return 0;
+    for (int k = 0; k < 3; k++)
+        w[k] *= lim / *u;
+    *u = lim;
+    return 1;
+}
+
+/* leaf amplitudes follow the drag load U^2 (saturating), their flutter
+   rate rises with the wind: the resonators of the flutter classes for
+   wind speed u; returns the sway amplitude */
+static double flutter_for_wind(aero_leafwave *lw, double u)
+{
     double x = (u / WIND_REF) * (u / WIND_REF) / lw->stiffness;
-    double sway = lw->sway * tanh(x);
     double f0 = lw->flutter_hz * sqrt(lw->stiffness) * (1.0 + u / FLUTTER_WIND);
     for (int c = 0; c < AERO_LEAF_FLUTTER_CLASSES; c++)
         resonator(f0 * 0.7 * pow(2.0, (double)c / (AERO_LEAF_FLUTTER_CLASSES - 1)),
                   lw->sample_rate / lw->frame_samples, lw->flutter_coef[c]);
+    return lw->sway * tanh(x);
+}
 
-    /* the leaves' sound, frame by frame, into the delay line */
-    int start_pos = lw->line_pos;
+/* n samples of the leaves' sound, frame by frame, into the delay line */
+static void render_dry(aero_leafwave *lw, double sway, int n)
+{
     for (int done = 0; done < n;) {
         int seg = n - done;
         if (seg > DRY_CHUNK)
@@ -1359,52 +1355,73 @@ int aero_leafwave_process(aero_leafwave *lw, const float *speed,
         }
         done += seg;
     }
+}
 
-    /* listener ramp, then each ear reads the line with a moving stylus:
-       delay r / c0 interpolated over the block (Doppler), 1/r, cardioid */
-    if (lw->ramp_left > 0) {
-        double step = n >= lw->ramp_left ? 1.0 : n / lw->ramp_left;
-        for (int e = 0; e < lw->n_ears; e++)
-            for (int k = 0; k < 3; k++)
-                lw->ear[e][k] += step * (lw->ear_target[e][k] - lw->ear[e][k]);
-        lw->ramp_left -= n;
-        if (lw->ramp_left < 0)
-            lw->ramp_left = 0;
-    }
-    double max_delay = lw->line_len - 2.0 * DRY_CHUNK - 4096.0;
-    for (int e = 0; e < lw->n_ears; e++) {
-        double r = 0.0;
+/* the ears glide to their targets over the ramp */
+static void glide_ears(aero_leafwave *lw, int n)
+{
+    if (!(lw->ramp_left > 0))
+        return;
+    double step = n >= lw->ramp_left ? 1.0 : n / lw->ramp_left;
+    for (int e = 0; e < lw->n_ears; e++)
         for (int k = 0; k < 3; k++)
-            r += (lw->ear[e][k] - lw->source[k]) *
-                 (lw->ear[e][k] - lw->source[k]);
-        r = sqrt(r);
-        double delay = clampd(r / AERO_C0 * lw->sample_rate, 1.0, max_delay);
-        double amp = lw->gain * mic_factor(lw, lw->ear[e]) /
-                     (r > MIN_DISTANCE ? r : MIN_DISTANCE);
-        if (!lw->render_primed) {
-            lw->delay_prev[e] = delay;
-            lw->amp_prev[e] = amp;
-        }
-        double d0 = lw->delay_prev[e], a0 = lw->amp_prev[e];
-        float *out = outs[e];
-        for (int s = 0; s < n; s++) {
-            double f = (s + 1.0) / n;
-            double dl = d0 + f * (delay - d0);
-            double rp = start_pos + s - dl;
-            while (rp < 0.0)
-                rp += lw->line_len;
-            int i0 = (int)rp;
-            double fr = rp - i0;
-            if (i0 >= lw->line_len)
-                i0 -= lw->line_len;
-            int i1 = i0 + 1 == lw->line_len ? 0 : i0 + 1;
-            double v = lw->line[i0] + fr * (lw->line[i1] - lw->line[i0]);
-            double y = v * (a0 + f * (amp - a0));
-            out[s] = aero_is_finite(y) ? (float)y : 0.0f;
-        }
+            lw->ear[e][k] += step * (lw->ear_target[e][k] - lw->ear[e][k]);
+    lw->ramp_left -= n;
+    if (lw->ramp_left < 0)
+        lw->ramp_left = 0;
+}
+
+/* ear e reads the line with a moving stylus: delay r / c0 interpolated
+   over the block (Doppler), 1/r, the cardioid; the block was written from
+   start_pos on */
+static void read_ear(aero_leafwave *lw, int e, int start_pos, float *out,
+                     int n)
+{
+    double max_delay = lw->line_len - 2.0 * DRY_CHUNK - 4096.0;
+    double r = 0.0;
+    for (int k = 0; k < 3; k++)
+        r += (lw->ear[e][k] - lw->source[k]) * (lw->ear[e][k] - lw->source[k]);
+    r = sqrt(r);
+    double delay = clampd(r / AERO_C0 * lw->sample_rate, 1.0, max_delay);
+    double amp = lw->gain * mic_factor(lw, lw->ear[e]) /
+                 (r > MIN_DISTANCE ? r : MIN_DISTANCE);
+    if (!lw->render_primed) {
         lw->delay_prev[e] = delay;
         lw->amp_prev[e] = amp;
     }
+    double d0 = lw->delay_prev[e], a0 = lw->amp_prev[e];
+    for (int s = 0; s < n; s++) {
+        double f = (s + 1.0) / n;
+        double dl = d0 + f * (delay - d0);
+        double rp = start_pos + s - dl;
+        while (rp < 0.0)
+            rp += lw->line_len;
+        int i0 = (int)rp;
+        double fr = rp - i0;
+        if (i0 >= lw->line_len)
+            i0 -= lw->line_len;
+        int i1 = i0 + 1 == lw->line_len ? 0 : i0 + 1;
+        double v = lw->line[i0] + fr * (lw->line[i1] - lw->line[i0]);
+        double y = v * (a0 + f * (amp - a0));
+        out[s] = aero_is_finite(y) ? (float)y : 0.0f;
+    }
+    lw->delay_prev[e] = delay;
+    lw->amp_prev[e] = amp;
+}
+
+int aero_leafwave_process(aero_leafwave *lw, const float *speed,
+                          float *const *outs, int n)
+{
+    double w[3], u;
+    int clamped = wind_now(lw, speed, n, w, &u);
+    if (lw->has_motion)
+        aero_tree_motion_set_wind(&lw->motion, w);
+    double sway = flutter_for_wind(lw, u);
+    int start_pos = lw->line_pos;
+    render_dry(lw, sway, n);
+    glide_ears(lw, n);
+    for (int e = 0; e < lw->n_ears; e++)
+        read_ear(lw, e, start_pos, outs[e], n);
     lw->render_primed = 1;
     return clamped;
 }

@@ -1,36 +1,35 @@
-/* aero: the sound of leaves in the wind (Matsuyama et al. 2005,
- * "Generation of leaf sound"), made fast enough for the paper's large tree
+/* aero: the sound of leaves in the wind (Matsuyama et al. 2005, section
+ * "Generation of Leaf Sound"), made fast enough for their large tree
  * (16380 leaves) in real time on one core.
  *
- * Leaves. Each leaf of the tree is a rectangular blade of length x width
- * on a stalk from s (on its branch) to e. The whole leaf swings rigidly
- * about s: lateral theta_x = W_x N_x(t), longitudinal theta_y = W_y N_y(t)
- * and torsion about the blade axis theta_r = W_r N_r(t) + a theta_x, the
- * x-r coupling of the paper (eqs. 9-13). N_* are unit-rms noises: each is
- * white noise through a damped resonance at the leaf's flutter frequency
- * (a leaf is a small spring-mass driven by turbulent buffeting), stepped
- * at the leaf frame rate. The amplitudes follow the wind's drag load,
- * W ~ sway * tanh((U/U0)^2 / stiffness): no wind, no motion. The stalk
- * base rides on the branch: it moves with aero_tree_motion_point() at the
- * leaf's `along` fraction, and the leaf turns with the branch (the
- * smallest rotation from the branch's rest axis to its moved axis), so
- * the leaves follow the branch motion of
- * [treebranch~] exactly when both load the same tree with the same seed
- * and wind (tree_motion.h is deterministic in time).
+ * Leaves. Each leaf of the tree is a rectangular blade of length x width on
+ * a stalk from s (on its branch) to e. The whole leaf swings rigidly about
+ * s: lateral theta_x = W_x N_x(t), longitudinal theta_y = W_y N_y(t) and
+ * torsion about the blade axis theta_r = W_r N_r(t) + a theta_x, the x-r
+ * coupling of Matsuyama et al. (eqs. 9-13). N_* are unit-rms noises: each is
+ * white noise through a damped resonance at the leaf's flutter frequency (a
+ * leaf is a small spring-mass driven by turbulent buffeting), stepped at the
+ * leaf frame rate. The amplitudes follow the wind's drag load, W ~ sway *
+ * tanh((U/U0)^2 / stiffness): no wind, no motion. The stalk base rides on
+ * the branch: it moves with aero_tree_motion_point() at the leaf's `along`
+ * fraction, and the leaf turns with the branch (the smallest rotation from
+ * the branch's rest axis to its moved axis), so the leaves follow the branch
+ * motion of [treebranch~] exactly when both load the same tree with the same
+ * seed and wind (tree_motion.h is deterministic in time).
  *
  * Pairs. Neighbour lists are built once at load with a spatial hash (cells
  * of the largest reach, 27 cells per leaf: O(n), not O(n^2)); each leaf
  * keeps its nearest AERO_LEAF_MAX_NEIGHBOURS. Every frame, the blade
  * centre P_j of the neighbour is expressed in the blade frame of leaf i
- * (paper eq. 15) and compared with an ellipsoid of the two blades' half
- * sizes (a thin one across the blade): inside is "A", outside "B" (paper
- * fig. 12). The per-pair state machine is the paper's: initial ->
+ * (their eq. 15) and compared with an ellipsoid of the two blades' half
+ * sizes (a thin one across the blade): inside is "A", outside "B" (their
+ * fig. 12). The per-pair state machine is theirs: initial ->
  * contact (A) / non-contact (B); non-contact -A-> key on; key on -A->
  * contact, -B-> key off; contact -B-> key off; key off -A-> key on, -B->
  * non-contact.
  *
  * Sound. N wave tables per octave, octave count M, basic frequencies
- * f_i = fm 2^(i/N) (paper eq. 14), made at init from seeded pink noise
+ * f_i = fm 2^(i/N) (their eq. 14), made at init from seeded pink noise
  * whose spectrum starts at f_i. A leaf plays the table whose f_i is nearest
  * to c / size (size = sqrt(length width), c = AERO_LEAF_PITCH_HZ_M): small
  * blades sound higher. A key on raises an envelope in proportion to the
@@ -38,17 +37,17 @@
  * collision time interpolated within the frame and at a zero crossing of
  * the table (no click); contact plays the table at a speed set by the
  * sliding (in-plane) relative speed, with a level in proportion to it
- * (friction); key off lets the sound decay slowly (paper fig. 13). The
+ * (friction); key off lets the sound decay slowly (their fig. 13). The
  * sounding pairs share a fixed pool of voices (the quietest is replaced).
  *
- * Rendering (paper section 5): the leaves' sound, as pressure
+ * Rendering (their section 5): the leaves' sound, as pressure
  * at 1 m, is delayed by the distance from the trunk (the midpoint of the
- * first root branch, the paper's approximation and [treebranch~]'s) to each
+ * first root branch, their approximation and [treebranch~]'s) to each
  * ear, read with a moving stylus (Doppler for free),
- * scaled by 1/r (amplitude, not the paper's 1/r^2 intensity
+ * scaled by 1/r (amplitude, not their 1/r^2 intensity
  * law) and by the cardioid microphone S(mu) = ((1 + cos mu)/2)^k, mu the
  * angle between the microphone's axis and the direction from the ear to
- * the trunk (paper eq. 16, C = 0).
+ * the trunk (their eq. 16, C = 0).
  *
  * Life cycle: init, set_tree (takes the tree), set_*, process, free.
  * No globals; everything allocated outside process. */
@@ -71,7 +70,7 @@
 #define AERO_LEAF_MAX_EARS 2
 #define AERO_LEAF_FLUTTER_CLASSES 8
 
-/* pair states (paper fig. 12) */
+/* pair states (Matsuyama et al. 2005, fig. 12) */
 enum {
     AERO_PAIR_INITIAL,
     AERO_PAIR_NONCONTACT,
@@ -140,6 +139,7 @@ typedef struct aero_leafwave {
     float *tables;       /* ntables x (AERO_LEAF_TABLE_LEN + 1) */
     int *crossings;      /* zero crossings of every table, in order */
     int *crossing_start; /* table i's are crossings[start[i]..start[i+1]) */
+    struct aero_fftw_c2r *fft; /* the FFTW plan that makes them */
 
     /* voices */
     int nvoices;
@@ -167,9 +167,7 @@ typedef struct aero_leafwave {
     double flutter_coef[AERO_LEAF_FLUTTER_CLASSES][3]; /* a1, a2, g */
     int keyons_total;      /* key-on events since init (for tests) */
 
-    /* dry sound (pressure at 1 m) and the rendering delay line */
-    float *dry;            /* block scratch */
-    int dry_len;
+    /* the rendering delay line of the dry sound (pressure at 1 m) */
     float *line;           /* circular delay line */
     int line_len, line_pos;
     double ear[AERO_LEAF_MAX_EARS][3], ear_target[AERO_LEAF_MAX_EARS][3];

@@ -7,8 +7,8 @@
  * subtree and their leaves), 0.5 rho Cd A |U_perp| U_perp, projected on the
  * plane x_i, y_i; N_i is 1/f^beta noise of unit rms per axis, and
  * P_B,i = G 0.5 rho Cd A |U|^2 with a gust intensity G = 0.3 (so a still
- * tree does not move). The paper's static spring delta = P / k (eqs. 1-2)
- * is the equilibrium of a damped spring
+ * tree does not move). Matsuyama et al.'s static spring delta = P / k
+ * (eqs. 1-2) is the equilibrium of a damped spring
  *   theta'' = omega^2 (P / k - theta) - 2 zeta omega theta',
  * with the cantilever's flexibility 1/k = l^2 / (2 E I) (tip rotation under
  * a tip load) and omega^2 = (E I / l) / J (the rotational spring of a
@@ -65,22 +65,10 @@ struct aero_tree_motion_state {
     double *origin[2], *rot[2];
 };
 
-static double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void cross3(const double a[3], const double b[3], double c[3])
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
 /* rotation matrix (row-major) of the rotation vector r (Rodrigues) */
 static void rodrigues(const double r[3], double m[9])
 {
-    double phi = sqrt(dot3(r, r)), c, s, k[3], t;
+    double phi = sqrt(aero_dot3(r, r)), k[3];
     if (phi < 1e-12) {
         /* first order: I + [r]x */
         m[0] = 1.0;   m[1] = -r[2]; m[2] = r[1];
@@ -91,25 +79,7 @@ static void rodrigues(const double r[3], double m[9])
     k[0] = r[0] / phi;
     k[1] = r[1] / phi;
     k[2] = r[2] / phi;
-    c = cos(phi);
-    s = sin(phi);
-    t = 1.0 - c;
-    m[0] = c + t * k[0] * k[0];
-    m[1] = t * k[0] * k[1] - s * k[2];
-    m[2] = t * k[0] * k[2] + s * k[1];
-    m[3] = t * k[1] * k[0] + s * k[2];
-    m[4] = c + t * k[1] * k[1];
-    m[5] = t * k[1] * k[2] - s * k[0];
-    m[6] = t * k[2] * k[0] - s * k[1];
-    m[7] = t * k[2] * k[1] + s * k[0];
-    m[8] = c + t * k[2] * k[2];
-}
-
-static void mat_vec(const double m[9], const double v[3], double out[3])
-{
-    out[0] = m[0] * v[0] + m[1] * v[1] + m[2] * v[2];
-    out[1] = m[3] * v[0] + m[4] * v[1] + m[5] * v[2];
-    out[2] = m[6] * v[0] + m[7] * v[1] + m[8] * v[2];
+    aero_rotation3(k, cos(phi), sin(phi), m);
 }
 
 /* one-pole relaxation processes with corners an octave apart, summed with
@@ -153,7 +123,7 @@ static void place_branches(const aero_tree_motion *m, int which)
                 r[k] += st->rotvec[3 * b->parent + k];
                 rel[k] = b->a[k] - p->a[k];
             }
-            mat_vec(&st->rot[which][9 * b->parent], rel, moved);
+            aero_mat3_apply(&st->rot[which][9 * b->parent], rel, moved);
             for (k = 0; k < 3; k++)
                 o[k] = st->origin[which][3 * b->parent + k] + moved[k];
         } else {
@@ -171,7 +141,7 @@ static void motion_step(aero_tree_motion *m)
     const aero_tree *t = m->tree;
     const double dt = 1.0 / AERO_TREE_MOTION_RATE;
     const double *u = m->wind;
-    double speed2 = dot3(u, u), speed = sqrt(speed2);
+    double speed2 = aero_dot3(u, u), speed = sqrt(speed2);
     double sqrt_stiff = sqrt(m->stiffness);
     double cd_leaf = speed > LEAF_RECONFIGURE_SPEED
         ? CD_LEAF * LEAF_RECONFIGURE_SPEED / speed : CD_LEAF;
@@ -180,11 +150,11 @@ static void motion_step(aero_tree_motion *m)
     /* own loads: mean drag plus noise (eqs. 3-4) */
     for (i = 0; i < st->n; i++) {
         motion_branch *mb = &st->br[i];
-        double *f = &st->force[3 * i], along = dot3(u, mb->e), uperp[3];
+        double *f = &st->force[3 * i], along = aero_dot3(u, mb->e), uperp[3];
         double nperp, q, pb, nx = 0.0, ny = 0.0;
         for (k = 0; k < 3; k++)
             uperp[k] = u[k] - along * mb->e[k];
-        nperp = sqrt(dot3(uperp, uperp));
+        nperp = sqrt(aero_dot3(uperp, uperp));
         q = 0.5 * AERO_RHO;
         for (k = 0; k < 3; k++)
             f[k] = q * (CD_BRANCH * mb->area_branch * nperp * uperp[k]
@@ -216,8 +186,8 @@ static void motion_step(aero_tree_motion *m)
     for (i = 0; i < st->n; i++) {
         motion_branch *mb = &st->br[i];
         double *f = &st->force[3 * i], target[2], mag, omega;
-        target[0] = mb->flex / m->stiffness * dot3(f, mb->x);
-        target[1] = mb->flex / m->stiffness * dot3(f, mb->y);
+        target[0] = mb->flex / m->stiffness * aero_dot3(f, mb->x);
+        target[1] = mb->flex / m->stiffness * aero_dot3(f, mb->y);
         mag = sqrt(target[0] * target[0] + target[1] * target[1]);
         if (mag > 1e-12) {
             double lim = MAX_ANGLE * tanh(mag / MAX_ANGLE) / mag;
@@ -241,104 +211,92 @@ static void motion_step(aero_tree_motion *m)
     }
 }
 
-int aero_tree_motion_init(aero_tree_motion *m, const aero_tree *t,
-                          uint32_t seed)
+/* the state's arrays for n branches, zeroed; 0 or -1 */
+static int alloc_state(aero_tree_motion_state *st, int n)
 {
-    aero_tree_motion_state *st;
-    int n = t ? t->nbranches : 0, i, j, k;
-    double *mass, *inertia;
-    memset(m, 0, sizeof *m);
-    m->tree = t;
-    m->stiffness = 1.0;
-    m->beta = 5.0 / 3.0; /* Kolmogorov's inertial-range spectrum of wind */
-    if (!t || n < 1)
-        return -1;
-    st = calloc(1, sizeof *st);
-    if (!st)
-        return -1;
-    m->state = st;
+    int k;
     st->n = n;
     st->br = calloc((size_t)n, sizeof *st->br);
     st->force = calloc((size_t)n * 3, sizeof(double));
     st->rotvec = calloc((size_t)n * 3, sizeof(double));
-    mass = calloc((size_t)n, sizeof(double));
     for (k = 0; k < 2; k++) {
         st->origin[k] = calloc((size_t)n * 3, sizeof(double));
         st->rot[k] = calloc((size_t)n * 9, sizeof(double));
     }
-    if (!st->br || !st->force || !st->rotvec || !mass || !st->origin[0]
-        || !st->origin[1] || !st->rot[0] || !st->rot[1]) {
-        free(mass);
-        aero_tree_motion_free(m);
-        return -1;
-    }
+    return st->br && st->force && st->rotvec && st->origin[0]
+        && st->origin[1] && st->rot[0] && st->rot[1] ? 0 : -1;
+}
+
+/* the noise's one-pole relaxations, an octave apart from NOISE_F_LOW */
+static void set_noise_poles(aero_tree_motion_state *st)
+{
+    int j;
     for (j = 0; j < NOISE_POLES; j++) {
         double fj = NOISE_F_LOW * pow(2.0, j);
         st->pole[j] = exp(-2.0 * AERO_PI * fj / AERO_TREE_MOTION_RATE);
         st->pole_gain[j] = sqrt(1.0 - st->pole[j] * st->pole[j]);
     }
-    set_noise_weights(st, m->beta);
+}
 
-    for (i = 0; i < n; i++) {
-        const aero_branch *b = &t->branches[i];
-        motion_branch *mb = &st->br[i];
-        double len, up[3] = {0.0, 0.0, 1.0}, dm = 0.5 * (b->d0 + b->d1);
-        uint32_t rng;
-        for (k = 0; k < 3; k++)
-            mb->e[k] = b->b[k] - b->a[k];
-        len = sqrt(dot3(mb->e, mb->e));
-        if (!(len > 0.0))
-            len = 1e-6; /* the parser refuses these; stay finite anyway */
-        for (k = 0; k < 3; k++)
-            mb->e[k] /= len;
-        if (fabs(mb->e[2]) > 0.9) {
-            up[0] = 1.0;
-            up[2] = 0.0;
-        }
-        cross3(mb->e, up, mb->x);
-        {
-            double nx = sqrt(dot3(mb->x, mb->x));
-            for (k = 0; k < 3; k++)
-                mb->x[k] /= nx;
-        }
-        cross3(mb->e, mb->x, mb->y);
-        mb->area_branch = dm * len;
-        /* frustum volume pi l (d0^2 + d0 d1 + d1^2) / 12 */
-        mass[i] += WOOD_RHO * AERO_PI * len
-            * (b->d0 * b->d0 + b->d0 * b->d1 + b->d1 * b->d1) / 12.0;
-        {
-            double area_moment = AERO_PI * pow(b->d0, 4.0) / 64.0; /* m^4 */
-            mb->flex = len * len / (2.0 * WOOD_E * area_moment);
-        }
-        /* per-branch random stream from (seed, index) */
-        rng = (seed * 2654435761u) ^ ((uint32_t)(i + 1) * 0x85ebca6bu);
-        if (!rng)
-            rng = 0x6d2b79f5u;
-        for (k = 0; k < 3; k++)
-            aero_xorshift32(&rng);
-        mb->rng = rng;
-        /* start the noise in its stationary state: no start-up transient */
-        for (k = 0; k < 2; k++)
-            for (j = 0; j < NOISE_POLES; j++)
-                mb->noise[k][j] = 1.7320508075688772 * aero_uniform(&mb->rng);
-    }
+/* branch i at rest: its axis and frame, projected area and flexibility
+   (tip rotation of a cantilever under a tip load, l^2 / (2 E I)); its
+   wood's mass is added to *mass; its own random stream from (seed, i),
+   the noise started in its stationary state (no start-up transient) */
+static void init_branch(motion_branch *mb, const aero_branch *b, int i,
+                        uint32_t seed, double *mass)
+{
+    double len, dm = 0.5 * (b->d0 + b->d1), area_moment;
+    uint32_t rng;
+    int j, k;
+    for (k = 0; k < 3; k++)
+        mb->e[k] = b->b[k] - b->a[k];
+    len = sqrt(aero_dot3(mb->e, mb->e));
+    if (!(len > 0.0))
+        len = 1e-6; /* the parser refuses these; stay finite anyway */
+    for (k = 0; k < 3; k++)
+        mb->e[k] /= len;
+    aero_tree_perpendiculars(mb->e, mb->x, mb->y);
+    mb->area_branch = dm * len;
+    /* frustum volume pi l (d0^2 + d0 d1 + d1^2) / 12 */
+    *mass += WOOD_RHO * AERO_PI * len
+        * (b->d0 * b->d0 + b->d0 * b->d1 + b->d1 * b->d1) / 12.0;
+    area_moment = AERO_PI * pow(b->d0, 4.0) / 64.0; /* m^4 */
+    mb->flex = len * len / (2.0 * WOOD_E * area_moment);
+    rng = (seed * 2654435761u) ^ ((uint32_t)(i + 1) * 0x85ebca6bu);
+    if (!rng)
+        rng = 0x6d2b79f5u;
+    for (k = 0; k < 3; k++)
+        aero_xorshift32(&rng);
+    mb->rng = rng;
+    for (k = 0; k < 2; k++)
+        for (j = 0; j < NOISE_POLES; j++)
+            mb->noise[k][j] = 1.7320508075688772 * aero_uniform(&mb->rng);
+}
+
+/* the leaves' area and mass, each on its own branch */
+static void add_leaves(aero_tree_motion_state *st, const aero_tree *t,
+                       double *mass)
+{
+    int i;
     for (i = 0; i < t->nleaves; i++) {
         int bi = t->leaves[i].branch;
-        if (bi >= 0 && bi < n) {
+        if (bi >= 0 && bi < st->n) {
             double area = t->leaves[i].length * t->leaves[i].width;
             st->br[bi].area_leaf += area;
             mass[bi] += LEAF_MASS_AREA * area;
         }
     }
-    /* rotational inertia of everything a branch carries about its start:
-       own mass as a rod about its end, m l^2 / 3, and each descendant's
-       mass at its midpoint, m |c - a|^2 */
-    inertia = calloc((size_t)n, sizeof(double));
-    if (!inertia) {
-        free(mass);
-        aero_tree_motion_free(m);
-        return -1;
-    }
+}
+
+/* each branch's sway rate: the rotational spring of a cantilever bent by
+   a tip moment, E I / l, over the rotational inertia of everything it
+   carries about its start (own mass as a rod about its end, m l^2 / 3,
+   each descendant's mass at its midpoint, m |c - a|^2); inertia is
+   scratch of n values, zeroed */
+static void set_sway_rates(aero_tree_motion_state *st, const aero_tree *t,
+                           const double *mass, double *inertia)
+{
+    int i, j, k, n = st->n;
     for (j = 0; j < n; j++) {
         const aero_branch *b = &t->branches[j];
         double c[3], l2 = 0.0;
@@ -361,13 +319,43 @@ int aero_tree_motion_init(aero_tree_motion *m, const aero_tree *t,
                           + (b->b[1] - b->a[1]) * (b->b[1] - b->a[1])
                           + (b->b[2] - b->a[2]) * (b->b[2] - b->a[2]));
         double ei = WOOD_E * AERO_PI * pow(b->d0, 4.0) / 64.0;
-        /* rotational spring of a cantilever bent by a tip moment,
-           E I / l, over the inertia it swings */
         double omega = sqrt(ei / (len * inertia[i]));
         if (!(omega > OMEGA_MIN))
             omega = OMEGA_MIN;
         st->br[i].omega = omega;
     }
+}
+
+int aero_tree_motion_init(aero_tree_motion *m, const aero_tree *t,
+                          uint32_t seed)
+{
+    aero_tree_motion_state *st;
+    int n = t ? t->nbranches : 0, i;
+    double *mass, *inertia;
+    memset(m, 0, sizeof *m);
+    m->tree = t;
+    m->stiffness = 1.0;
+    m->beta = 5.0 / 3.0; /* Kolmogorov's inertial-range spectrum of wind */
+    if (!t || n < 1)
+        return -1;
+    st = calloc(1, sizeof *st);
+    if (!st)
+        return -1;
+    m->state = st;
+    mass = calloc((size_t)n, sizeof(double));
+    inertia = calloc((size_t)n, sizeof(double));
+    if (!mass || !inertia || alloc_state(st, n)) {
+        free(mass);
+        free(inertia);
+        aero_tree_motion_free(m);
+        return -1;
+    }
+    set_noise_poles(st);
+    set_noise_weights(st, m->beta);
+    for (i = 0; i < n; i++)
+        init_branch(&st->br[i], &t->branches[i], i, seed, &mass[i]);
+    add_leaves(st, t, mass);
+    set_sway_rates(st, t, mass, inertia);
     free(inertia);
     free(mass);
     place_branches(m, 0);
@@ -441,7 +429,7 @@ void aero_tree_motion_point(const aero_tree_motion *m, int i, double u,
     for (k = 0; k < 3; k++)
         rest[k] = b->b[k] * u + b->a[k] * (1.0 - u) - b->a[k];
     for (s = 0; s < 2; s++) {
-        mat_vec(&st->rot[s][9 * i], rest, p[s]);
+        aero_mat3_apply(&st->rot[s][9 * i], rest, p[s]);
         for (k = 0; k < 3; k++)
             p[s][k] += st->origin[s][3 * i + k];
     }

@@ -10,7 +10,8 @@
 #include <string.h>
 
 /* Sectional rms lift coefficient of a circular cylinder, subcritical range
-   (Norberg 2003; the value aeolian_model.c uses) */
+   (Norberg 2003), held at this one value for every branch (aeolian_model.c
+   follows C_L'(Re), aero_lift_rms) */
 #define LIFT_RMS 0.45
 /* spanwise correlation length of the shedding, in diameters (the 3 d of
    Dobashi et al. 2003) */
@@ -18,7 +19,8 @@
 /* power of the high-frequency tail relative to the tone, as the spectral
    density at the tone's frequency times f_0: with alpha 2 the whole tail
    holds TAIL_LEVEL / (alpha - 1) = 1/4 of the tone's power (-6 dB). The
-   paper gives no value; this keeps the Strouhal tone on top. */
+   paper (Matsuyama et al. 2005) gives no value; this keeps the Strouhal
+   tone on top. */
 #define TAIL_LEVEL 0.25
 #define FRAME_SECONDS 0.08     /* FFT size: the power of 2 at or above this */
 #define MAX_DISTANCE 1000.0    /* m, longest delay kept */
@@ -28,16 +30,9 @@
 #define PHASES 1024            /* table of unit phasors */
 
 struct aero_treebranch_fft {
-    fftwf_complex *spectrum;
-    float *frame;
-    fftwf_plan plan;
+    aero_fftw_c2r c2r;
     float phase_cos[PHASES], phase_sin[PHASES];
 };
-
-static double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
 
 static int finite3(const double v[3])
 {
@@ -54,12 +49,7 @@ static void free_buffers(aero_treebranch *tb)
     free(tb->ola);
     free(tb->ring);
     if (tb->fft) {
-        if (tb->fft->plan) {
-            aero_fftw_serialise();
-            fftwf_destroy_plan(tb->fft->plan);
-        }
-        fftwf_free(tb->fft->spectrum);
-        fftwf_free(tb->fft->frame);
+        aero_fftw_c2r_free(&tb->fft->c2r);
         free(tb->fft);
     }
     tb->power = tb->tail_start = tb->tail_shape = NULL;
@@ -102,14 +92,7 @@ static int make_buffers(aero_treebranch *tb)
     if (!tb->power || !tb->tail_start || !tb->tail_shape || !tb->window
         || !tb->ola || !tb->ring || !tb->fft)
         goto fail;
-    tb->fft->spectrum = fftwf_malloc(sizeof(fftwf_complex) * tb->nbins);
-    tb->fft->frame = fftwf_malloc(sizeof(float) * n);
-    if (!tb->fft->spectrum || !tb->fft->frame)
-        goto fail;
-    aero_fftw_serialise();
-    tb->fft->plan = fftwf_plan_dft_c2r_1d(n, tb->fft->spectrum,
-                                          tb->fft->frame, FFTW_ESTIMATE);
-    if (!tb->fft->plan)
+    if (aero_fftw_c2r_make(&tb->fft->c2r, n))
         goto fail;
     for (k = 0; k < PHASES; k++) {
         tb->fft->phase_cos[k] = (float)cos(2.0 * AERO_PI * k / PHASES);
@@ -157,14 +140,20 @@ int aero_treebranch_init(aero_treebranch *tb, double sample_rate,
     return make_buffers(tb);
 }
 
-void aero_treebranch_free(aero_treebranch *tb)
+/* drops the tree and its motion: silent */
+static void clear_tree(aero_treebranch *tb)
 {
-    free_buffers(tb);
     if (tb->has_tree) {
         aero_tree_motion_free(&tb->motion);
         aero_tree_free(&tb->tree);
     }
     tb->has_tree = 0;
+}
+
+void aero_treebranch_free(aero_treebranch *tb)
+{
+    free_buffers(tb);
+    clear_tree(tb);
 }
 
 /* the motion restarts from tb->seed with the current parameters */
@@ -185,11 +174,7 @@ int aero_treebranch_set_tree(aero_treebranch *tb, aero_tree *t)
 {
     const aero_branch *root;
     int k;
-    if (tb->has_tree) {
-        aero_tree_motion_free(&tb->motion);
-        aero_tree_free(&tb->tree);
-        tb->has_tree = 0;
-    }
+    clear_tree(tb);
     if (!t || t->nbranches < 1) {
         if (t)
             aero_tree_free(t);
@@ -226,7 +211,7 @@ int aero_treebranch_set_wind(aero_treebranch *tb, const double w[3])
     int clamped = 0, k;
     if (!finite3(w))
         return -1;
-    speed = sqrt(dot3(w, w));
+    speed = sqrt(aero_dot3(w, w));
     for (k = 0; k < 3; k++)
         tb->wind[k] = speed > limit ? w[k] * limit / speed : w[k];
     if (speed > limit)
@@ -238,18 +223,16 @@ int aero_treebranch_set_wind(aero_treebranch *tb, const double w[3])
 
 int aero_treebranch_set_alpha(aero_treebranch *tb, double alpha)
 {
-    if (!aero_is_finite(alpha) || alpha < 0.5 || alpha > 8.0)
+    if (aero_set_within(&tb->alpha, alpha, 0.5, 8.0))
         return -1;
-    tb->alpha = alpha;
     update_tail_shape(tb);
     return 0;
 }
 
 int aero_treebranch_set_stiffness(aero_treebranch *tb, double s)
 {
-    if (!aero_is_finite(s) || s < 1e-3 || s > 1e3)
+    if (aero_set_within(&tb->motion.stiffness, s, 1e-3, 1e3))
         return -1;
-    tb->motion.stiffness = s;
     if (tb->has_tree)
         aero_tree_motion_set_stiffness(&tb->motion, s);
     return 0;
@@ -268,18 +251,12 @@ int aero_treebranch_set_beta(aero_treebranch *tb, double beta)
 
 int aero_treebranch_set_gain_db(aero_treebranch *tb, double db)
 {
-    if (!aero_is_finite(db) || db < -200.0 || db > 120.0)
-        return -1;
-    tb->gain = pow(10.0, db / 20.0);
-    return 0;
+    return aero_set_gain_db(&tb->gain, db);
 }
 
 int aero_treebranch_set_ramp_ms(aero_treebranch *tb, double ms)
 {
-    if (!aero_is_finite(ms) || ms < 0.0 || ms > 600000.0)
-        return -1;
-    tb->ramp_samples = ms * 0.001 * tb->sample_rate;
-    return 0;
+    return aero_set_ramp_ms(&tb->ramp_samples, ms, tb->sample_rate);
 }
 
 int aero_treebranch_set_mic(aero_treebranch *tb, const double dir[3])
@@ -288,7 +265,7 @@ int aero_treebranch_set_mic(aero_treebranch *tb, const double dir[3])
     int k;
     if (!finite3(dir))
         return -1;
-    n = sqrt(dot3(dir, dir));
+    n = sqrt(aero_dot3(dir, dir));
     for (k = 0; k < 3; k++)
         tb->mic_dir[k] = n > 0.0 ? dir[k] / n : 0.0;
     return 0;
@@ -296,10 +273,7 @@ int aero_treebranch_set_mic(aero_treebranch *tb, const double dir[3])
 
 int aero_treebranch_set_mic_k(aero_treebranch *tb, double k)
 {
-    if (!aero_is_finite(k) || k < 0.0 || k > 20.0)
-        return -1;
-    tb->mic_k = k;
-    return 0;
+    return aero_set_within(&tb->mic_k, k, 0.0, 20.0);
 }
 
 static int valid_point(const double p[3])
@@ -359,8 +333,7 @@ int aero_treebranch_set_seed(aero_treebranch *tb, uint32_t seed)
     if (!tb->has_tree)
         return 0;
     if (restart_motion(tb)) {
-        aero_tree_free(&tb->tree);
-        tb->has_tree = 0;
+        clear_tree(tb);
         return -1;
     }
     return 0;
@@ -413,7 +386,7 @@ static void add_branch(aero_treebranch *tb, int i)
     aero_tree_motion_point(&tb->motion, i, 1.0, pb, vb);
     for (k = 0; k < 3; k++)
         e[k] = pb[k] - pa[k];
-    len = sqrt(dot3(e, e));
+    len = sqrt(aero_dot3(e, e));
     if (!(len > 0.0))
         return;
     for (k = 0; k < 3; k++)
@@ -423,8 +396,8 @@ static void add_branch(aero_treebranch *tb, int i)
         double rel[3], along, u2;
         for (k = 0; k < 3; k++)
             rel[k] = tb->wind[k] - v[k];
-        along = dot3(rel, e);
-        u2 = dot3(rel, rel) - along * along; /* perpendicular part */
+        along = aero_dot3(rel, e);
+        u2 = aero_dot3(rel, rel) - along * along; /* perpendicular part */
         end_source(u2 > 0.0 ? sqrt(u2) : 0.0, end ? b->d1 : b->d0, len,
                    &f[end], &dens[end]);
     }
@@ -436,7 +409,8 @@ static void add_branch(aero_treebranch *tb, int i)
     if (dens[1] <= 0.0)
         f[1] = f[0];
     /* the frequency group: points spaced at most one bin apart along the
-       branch, each carrying its share of the power (paper Fig. 8) */
+       branch, each carrying its share of the power (Matsuyama et al. 2005,
+       Fig. 8) */
     /* compared before converting: a twig of 1e-30 m sheds at ~1e28 Hz,
        beyond int (undefined behaviour) */
     {
@@ -449,7 +423,7 @@ static void add_branch(aero_treebranch *tb, int i)
         add_line(tb, f[0] + s * (f[1] - f[0]), p);
         ptotal += p;
     }
-    /* the tail above the group (eq. 8), as a density
+    /* the tail above the group (Matsuyama et al. 2005, eq. 8), as a density
        S(f) = TAIL_LEVEL P / f0 (f / f0)^-alpha: it enters at the first bin
        above f0 with the coefficient TAIL_LEVEL P df f0^(alpha - 1) of
        f^-alpha, and a running sum over bins adds every branch's tail */
@@ -500,12 +474,12 @@ static void synth_frame(aero_treebranch *tb)
         /* the c2r transform makes 2 |X| cos(...): mean square 2 |X|^2 */
         float amp = p > 0.0 && p < 1e30 ? (float)sqrt(0.5 * p) : 0.0f;
         uint32_t r = aero_xorshift32(&tb->rng) >> 22; /* 10 bits */
-        fft->spectrum[k][0] = amp * fft->phase_cos[r];
-        fft->spectrum[k][1] = amp * fft->phase_sin[r];
+        fft->c2r.spectrum[k][0] = amp * fft->phase_cos[r];
+        fft->c2r.spectrum[k][1] = amp * fft->phase_sin[r];
     }
-    fftwf_execute(fft->plan);
+    fftwf_execute(fft->c2r.plan);
     for (k = 0; k < n; k++)
-        tb->ola[k] += tb->window[k] * fft->frame[k];
+        tb->ola[k] += tb->window[k] * fft->c2r.signal[k];
     w = tb->written;
     for (k = 0; k < tb->hop; k++) {
         float v = tb->ola[k];
@@ -545,9 +519,9 @@ static void ear_path(const aero_treebranch *tb, const double p[3],
     int k;
     for (k = 0; k < 3; k++)
         to_tree[k] = tb->source[k] - p[k];
-    r = sqrt(dot3(to_tree, to_tree));
-    if (dot3(tb->mic_dir, tb->mic_dir) > 0.0 && r > 0.0)
-        cosmu = dot3(tb->mic_dir, to_tree) / r;
+    r = sqrt(aero_dot3(to_tree, to_tree));
+    if (aero_dot3(tb->mic_dir, tb->mic_dir) > 0.0 && r > 0.0)
+        cosmu = aero_dot3(tb->mic_dir, to_tree) / r;
     if (r < MIN_DISTANCE)
         r = MIN_DISTANCE;
     if (r > MAX_DISTANCE)

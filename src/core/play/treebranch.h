@@ -1,36 +1,36 @@
-/* aero: the sound of a tree's branches in the wind (Matsuyama et al.,
- * Matsuyama et al. 2005, "Generation of Branch Sound"), in real time.
+/* aero: the sound of a tree's branches in the wind (Matsuyama et al. 2005,
+ * section "Generation of Branch Sound"), in real time.
  *
  * Every branch (internode) of a tree (tree.h) moves with the wind
  * (tree_motion.h). Once per synthesis frame, for every branch:
  *   - the wind relative to the branch, U_rel = W - v, at both ends, and its
  *     component perpendicular to the (moved) branch axis, U;
  *   - the shedding frequency f = St(Re) U / d at each end (St ~ 0.2 for
- *     4e2 < Re < 2e5, paper eq. 5; St(Re) of strouhal.h, silent below
+ *     4e2 < Re < 2e5, their eq. 5; St(Re) of strouhal.h, silent below
  *     Re ~ 47) and the radiated power per unit length at each end,
  *     p^2 ~ (rho St C_L' U^3 / (4 c0))^2 L_c / 3 (Curle, a compact lift
- *     dipole coherent over L_c = 3 d, averaged over directions as the paper
- *     treats the branch as non-directional): amplitude ~ U^3 sqrt(l) / r
- *     (Curle 1955; paper eq. 6 is an intensity law);
+ *     dipole coherent over L_c = 3 d, averaged over directions as Matsuyama
+ *     et al. treat the branch as non-directional): amplitude ~ U^3 sqrt(l) /
+ *     r (Curle 1955; their eq. 6 is an intensity law);
  *   - the "frequency group" between the two ends: frequency and power
- *     interpolated linearly along the branch (paper Fig. 8), integrated
+ *     interpolated linearly along the branch (their Fig. 8), integrated
  *     so the group's total power does not depend on the FFT resolution;
  *   - the high-frequency tail I = I_0 (f / f_0)^-alpha above the group's
- *     top frequency f_0 (paper eq. 8), as a spectral density.
+ *     top frequency f_0 (their eq. 8), as a spectral density.
  * All branches are summed as powers in one spectrum (their phases are
  * random and independent, so their powers add), given random phases and
  * turned into sound by one inverse FFT per frame (FFTW, planned at init),
- * Gaussian-windowed (paper eq. 7) and overlap-added with a hop of 1/8
+ * Gaussian-windowed (their eq. 7) and overlap-added with a hop of 1/8
  * frame, where the shifted Gaussians sum to a constant (ripple < 1e-7), so
  * frames join without clicks or tremolo.
  *
- * Rendering (paper, "Sound Rendering"): the tree's sound, as pressure at
- * 1 m, is written to a delay line and read at the distance d from the
- * listener to the trunk (the midpoint of the first root branch) by a
- * moving stylus (Doppler follows), scaled by 1/d (amplitude; the paper's
- * (d0/d)^2 is an intensity law) and by the cardioid microphone
- * S(mu) = ((1 + cos mu)/2)^k (eq. 16), mu the angle between the mic's axis
- * and the direction from the mic to the tree. Mono, or two ears.
+ * Rendering (their section "Sound Rendering"): the tree's sound, as pressure
+ * at 1 m, is written to a delay line and read at the distance d from the
+ * listener to the trunk (the midpoint of the first root branch) by a moving
+ * stylus (Doppler follows), scaled by 1/d (amplitude; their (d0/d)^2 is an
+ * intensity law) and by the cardioid microphone S(mu) = ((1 + cos mu)/2)^k
+ * (eq. 16), mu the angle between the mic's axis and the direction from the
+ * mic to the tree. Mono, or two ears.
  *
  * Life cycle: init, set_tree, set_*, process, free. No globals. */
 #ifndef AERO_TREEBRANCH_H

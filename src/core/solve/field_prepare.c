@@ -199,7 +199,7 @@ static void spatial(aero_field_pre *p, const float *raw, int j)
     float **vel = p->vel, **tens = p->tens;
     const size_t n = p->n;
 
-    /* 1. acoustic mapping (paper 3.2.2) */
+    /* 1. acoustic mapping (Shin and Bajaj, sec. 3.2.2) */
     for (size_t i = 0; i < n; i++) {
         double s = raw[i];
         if (p->par.log_input)

@@ -403,7 +403,8 @@ static double club_radius(const aero_body_shape *b, double z)
     return b->r_handle + (b->r_tip - b->r_handle) * s;
 }
 
-/* does the ray p + t dir (t > 0) cross triangle a b c (Moller and Trumbore 1997) */
+/* does the ray p + t dir (t > 0) cross triangle a b c (Moller and Trumbore
+   1997) */
 static int ray_crosses(const double *p, const double *dir, const double *a,
                        const double *bb, const double *c)
 {

@@ -237,13 +237,7 @@ static void random_case(fuzz_run *r, fuzz_case *c)
         default:
             break;
         }
-        if (m->args == AERO_PD_SWITCH) { /* a flag only: as a message */
-            char flag[MAXPDSTRING];
-            snprintf(flag, sizeof flag, "%s", m->name);
-            c->sel[k] = gensym(flag);
-            c->nargs[k] = 0;
-            continue;
-        }
+        /* a SWITCH is a flag only: sent as a message it has no method */
         c->sel[k] = gensym(m->name);
         c->nargs[k] = hostile_args(r, m, c->args[k], MAX_ATOMS);
     }

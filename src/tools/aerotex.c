@@ -1,5 +1,5 @@
 /* aerotex: sound textures of moving air from a 2D flow solver.
- * Paper 000 (Dobashi et al. 2003): the sound source function g = dF/dt of
+ * Dobashi et al. 2003: the sound source function g = dF/dt of
  * an object is precomputed by fluid simulation and stored as a texture;
  * real-time objects only read it. See textures/README.md. */
 #include "aerotex.h"

@@ -148,6 +148,14 @@ int aerotex_job_parse(const aerotex_command *cmd, void *job, int argc,
    aerotex_job_end frees raw. */
 int aerotex_job_start(aerotex_job *j, int argc, char **argv, int channels);
 void aerotex_job_end(aerotex_job *j);
+/* the stages of every texture command after its own checks: the job
+   started with `channels`, `runs` zeroed tasks of task_size bytes, run()
+   then write() on (state, tasks); the tasks freed and the job ended
+   whatever happened. The exit status. */
+int aerotex_job_run(aerotex_job *j, int argc, char **argv, int channels,
+                    int runs, size_t task_size, void *state,
+                    int (*run)(void *state, void *tasks),
+                    int (*write)(void *state, void *tasks));
 /* "NAME: message" on stderr: 1 (the exit status of a failed run) */
 int aerotex_job_fail(const aerotex_job *j, const char *message);
 /* the number of threads for n parallel runs */

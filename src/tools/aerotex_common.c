@@ -144,6 +144,24 @@ int aerotex_job_start(aerotex_job *j, int argc, char **argv, int channels)
     return 0;
 }
 
+int aerotex_job_run(aerotex_job *j, int argc, char **argv, int channels,
+                    int runs, size_t task_size, void *state,
+                    int (*run)(void *state, void *tasks),
+                    int (*write)(void *state, void *tasks))
+{
+    void *tasks = NULL;
+    int status = aerotex_job_start(j, argc, argv, channels);
+    if (!status && !(tasks = calloc((size_t)runs, task_size)))
+        status = aerotex_job_fail(j, "out of memory");
+    if (!status)
+        status = run(state, tasks);
+    if (!status)
+        status = write(state, tasks);
+    free(tasks);
+    aerotex_job_end(j);
+    return status;
+}
+
 int aerotex_job_fail(const aerotex_job *j, const char *message)
 {
     aerotex_error("%s: %s", j->name, message);

@@ -180,8 +180,10 @@ static int plan_object(object_job *j, object_plan *o)
 }
 
 /* every direction in parallel into the job's raw: 0 or 1 */
-static int run_directions(object_plan *o, direction_task *ctx)
+static int run_directions(void *plan, void *tasks)
 {
+    object_plan *o = plan;
+    direction_task *ctx = tasks;
     object_job *j = o->j;
     const int nd = o->nd, avail = j->job.loop.avail;
     const int threads = aerotex_job_threads(&j->job, nd);
@@ -299,8 +301,10 @@ static void describe(const object_plan *o, const direction_task *ctx,
 }
 
 /* the looped texture, saved and reported: the exit status */
-static int write_texture(const object_plan *o, const direction_task *ctx)
+static int write_texture(void *plan, void *tasks)
 {
+    const object_plan *o = plan;
+    const direction_task *ctx = tasks;
     object_job *j = o->j;
     const int len = aerotex_job_loop(&j->job), nd = o->nd;
     aero_texture tex;
@@ -334,22 +338,15 @@ static int object_run(int argc, char **argv)
 {
     object_job j;
     object_plan o;
-    direction_task *ctx = NULL;
     int status;
     if (aerotex_job_parse(&aerotex_object_command, &j, argc, argv))
         return 2;
     memset(&o, 0, sizeof o);
     status = plan_object(&j, &o);
     if (!status)
-        status = aerotex_job_start(&j.job, argc, argv, o.ch);
-    if (!status && !(ctx = calloc((size_t)o.nd, sizeof *ctx)))
-        status = aerotex_job_fail(&j.job, "out of memory");
-    if (!status)
-        status = run_directions(&o, ctx);
-    if (!status)
-        status = write_texture(&o, ctx);
-    free(ctx);
-    aerotex_job_end(&j.job);
+        status = aerotex_job_run(&j.job, argc, argv, o.ch, o.nd,
+                                 sizeof(direction_task), &o, run_directions,
+                                 write_texture);
     aero_body_free(&o.body);
     return status;
 }

@@ -417,11 +417,30 @@ static int write_texture(aeolian_job *j, const direction *r, const char *desc)
     return status;
 }
 
+/* what the stages under aerotex_job_run share */
+typedef struct {
+    aeolian_job *j;
+    const aero_shape2d *shape;
+    const char *desc;
+} aeolian_plan;
+
+static int run_stage(void *plan, void *tasks)
+{
+    aeolian_plan *p = plan;
+    sample_directions(p->j, tasks);
+    return run_directions(p->j, p->shape, p->desc, tasks);
+}
+
+static int write_stage(void *plan, void *tasks)
+{
+    aeolian_plan *p = plan;
+    return write_texture(p->j, tasks, p->desc);
+}
+
 static int aeolian_run(const aerotex_command *cmd, int argc, char **argv)
 {
     aeolian_job j;
     aero_shape2d shape;
-    direction *r = NULL;
     char desc[512];
     int status;
     if (aerotex_job_parse(cmd, &j, argc, argv))
@@ -430,18 +449,12 @@ static int aeolian_run(const aerotex_command *cmd, int argc, char **argv)
     status = make_shape(&j, &shape, desc, sizeof desc);
     if (!status)
         status = check_flow(&j, &shape);
-    if (!status)
-        status = aerotex_job_start(&j.job, argc, argv, 3 * j.directions);
-    if (!status && !(r = calloc((size_t)j.directions, sizeof *r)))
-        status = aerotex_job_fail(&j.job, "out of memory");
     if (!status) {
-        sample_directions(&j, r);
-        status = run_directions(&j, &shape, desc, r);
+        aeolian_plan plan = {&j, &shape, desc};
+        status = aerotex_job_run(&j.job, argc, argv, 3 * j.directions,
+                                 j.directions, sizeof(direction), &plan,
+                                 run_stage, write_stage);
     }
-    if (!status)
-        status = write_texture(&j, r, desc);
-    free(r);
-    aerotex_job_end(&j.job);
     aero_shape2d_free(&shape);
     return status;
 }

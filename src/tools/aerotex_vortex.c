@@ -154,8 +154,10 @@ static void vortex_init(void *job)
 }
 
 /* every speed in parallel into the job's raw (one channel each): 0 or 1 */
-static int run_speeds(vortex_job *j, speed_task *ctx)
+static int run_speeds(void *job, void *tasks)
 {
+    vortex_job *j = job;
+    speed_task *ctx = tasks;
     const int ns = j->nspeeds, avail = j->job.loop.avail;
     const int threads = aerotex_job_threads(&j->job, ns);
     long total = 0;
@@ -284,8 +286,10 @@ static void describe(const vortex_job *j, const speed_task *ctx,
 }
 
 /* the looped texture, saved and reported: the exit status */
-static int write_texture(vortex_job *j, const speed_task *ctx)
+static int write_texture(void *job, void *tasks)
 {
+    vortex_job *j = job;
+    const speed_task *ctx = tasks;
     const int ns = j->nspeeds, len = aerotex_job_loop(&j->job);
     double rms[MAX_SPEEDS];
     aero_texture tex;
@@ -321,8 +325,6 @@ static int write_texture(vortex_job *j, const speed_task *ctx)
 static int vortex_run(int argc, char **argv)
 {
     vortex_job j;
-    speed_task *ctx = NULL;
-    int status;
     if (aerotex_job_parse(&aerotex_vortex_command, &j, argc, argv))
         return 2;
     if (j.vp.n & 1) {
@@ -336,16 +338,8 @@ static int vortex_run(int argc, char **argv)
     }
     if (j.vp.nz < 0)
         j.vp.nz = j.vp.n * 3 / 2;
-    status = aerotex_job_start(&j.job, argc, argv, j.nspeeds);
-    if (!status && !(ctx = calloc((size_t)j.nspeeds, sizeof *ctx)))
-        status = aerotex_job_fail(&j.job, "out of memory");
-    if (!status)
-        status = run_speeds(&j, ctx);
-    if (!status)
-        status = write_texture(&j, ctx);
-    free(ctx);
-    aerotex_job_end(&j.job);
-    return status;
+    return aerotex_job_run(&j.job, argc, argv, j.nspeeds, j.nspeeds,
+                           sizeof(speed_task), &j, run_speeds, write_texture);
 }
 
 const aerotex_command aerotex_vortex_command = {

@@ -4,8 +4,9 @@
 # libpd from ../shared/vendor into build/libpd/ (single- and
 # multi-instance, once: tests/libpd/build-libpd.sh), links aero statically
 # into host programs (one aero_setup()), renders patches and judges the
-# sound with build/aero-analyze as tests/run.sh does in Pd; then several
-# instances in several threads under helgrind. Ends with `N passed, N
+# sound with build/aero-analyze as tests/run.sh does in Pd; fuzzes every
+# object's method table through Pd's parsing layer (fuzz_tables.c); then
+# several instances in several threads under helgrind. Ends with `N passed, N
 # failed`; skips (exit 0) when the libpd archives are absent.
 # Run from the repository root after `make all`. LIBPD_VENDOR overrides
 # ../shared/vendor.
@@ -262,6 +263,48 @@ for w in tone tx every sword; do
         fail "$w: single- and multi-instance renders differ"
     fi
 done
+
+# --- every object's table, fuzzed through Pd's parsing layer ------------------
+# tests/libpd/fuzz_tables.c, built once per wrapper with the wrapper included
+# (its aero_pd_spec table, class and setup) and ASan/UBSan: hostile creation
+# flags and messages made from the table, sent as a patch would send them,
+# the corpus tests/libpd/fuzz-corpus.txt first, then FUZZ_TABLE_CASES
+# (default 100) random cases from seed 1; every sample must be finite.
+# The negative control puts a NaN into the output: it must fail.
+section "every object's method table fuzzed through Pd (single-instance libpd)"
+V=build/libpd/single
+fuzz_build() { # NAME: build/libpd/out/fuzz-NAME from src/pd/NAME~.c
+    # shellcheck disable=SC2086
+    $CC -std=c99 -D_POSIX_C_SOURCE=200809L -O1 -g -Wall -Wextra -Werror \
+        -fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all \
+        -DAERO_FUZZ_WRAPPER="\"$1~.c\"" -DAERO_FUZZ_NAME="$1" \
+        -I$V/libpd_wrapper -I$V/pure-data/src -Isrc/pd -Isrc/core/common \
+        -Isrc/core/solve -Isrc/core/play tests/libpd/fuzz_tables.c src/pd/aero_pd.c \
+        $V/libs/libpd.a build/libaero_core.a -lsndfile -lfftw3f_threads -lfftw3f \
+        -lm -lpthread -ldl -fopenmp -o "$OUT/fuzz-$1" >"$OUT/fuzz-$1.build.log" 2>&1
+}
+for w in src/pd/*~.c; do
+    name=$(basename "$w" .c)
+    name=${name%\~}
+    if ! fuzz_build "$name"; then
+        fail "fuzz harness for [$name~] does not build"; head -20 "$OUT/fuzz-$name.build.log"
+        continue
+    fi
+    if "$OUT/fuzz-$name" -cases "${FUZZ_TABLE_CASES:-100}" -data "$ROOT" \
+        tests/libpd/fuzz-corpus.txt >"$OUT/fuzz-$name.log" 2>&1; then
+        pass "$(tail -n 1 "$OUT/fuzz-$name.log")"
+    else
+        fail "[$name~] under the table fuzzer; the case that broke it (add it to tests/libpd/fuzz-corpus.txt):"
+        grep -v "^ " "$OUT/fuzz-$name.log" | tail -n 6 | cut -c1-400
+    fi
+done
+if "$OUT/fuzz-cavity" -cases 5 -control 1 -data "$ROOT" >"$OUT/fuzz-control.log" 2>&1; then
+    fail "negative control: a NaN in the output went unnoticed"
+elif grep -q "^FAIL cavity~: output sample nan" "$OUT/fuzz-control.log"; then
+    pass "negative control: $(grep "^FAIL" "$OUT/fuzz-control.log")"
+else
+    fail "negative control ended otherwise:"; tail -n 5 "$OUT/fuzz-control.log"
+fi
 
 # --- several instances in several threads ------------------------------------
 # Four instances, each in its own thread, open every-object.pd, render 50

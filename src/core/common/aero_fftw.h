@@ -1,7 +1,7 @@
 /* aero: FFTW's planner is process state. Making and destroying plans
  * (fftwf_plan_*, fftwf_destroy_plan) reads and writes FFTW's one planner and
- * its wisdom, so two threads doing it at once corrupt it (helgrind showed
- * the races with four libpd instances in four threads);
+ * its wisdom, so two threads doing it at once corrupt it (as four libpd
+ * instances in four threads would);
  * executing a plan is thread-safe. Every plan aero makes or destroys calls
  * aero_fftw_serialise() first: it has FFTW take its own process-wide
  * planner lock around every later planner call

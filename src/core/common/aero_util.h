@@ -3,7 +3,51 @@
 #define AERO_UTIL_H
 
 #include <math.h>
+#include <stdarg.h>
 #include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+/* writes a message to err (of errlen bytes) when the caller gave one */
+static inline void aero_say(char *err, size_t errlen, const char *fmt, ...)
+{
+    va_list ap;
+    if (!err || !errlen)
+        return;
+    va_start(ap, fmt);
+    vsnprintf(err, errlen, fmt, ap);
+    va_end(ap);
+}
+
+/* releases each of n pointers with `release` (free, fftwf_free, ...) */
+static inline void aero_release_each(void (*release)(void *),
+                                     void *const *p, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        release(p[i]);
+}
+
+/* AERO_FREE_ALL(s->a, s->b, ...) frees every array of a module in one line;
+ * AERO_RELEASE_ALL(fftwf_free, s->u, s->v) the same with another release */
+#define AERO_RELEASE_ALL(release, ...)                                        \
+    aero_release_each((release), (void *const[]){__VA_ARGS__},                \
+                      sizeof((void *const[]){__VA_ARGS__}) / sizeof(void *))
+#define AERO_FREE_ALL(...) AERO_RELEASE_ALL(free, __VA_ARGS__)
+
+/* makes room for item n of `size` bytes in buf (capacity *cap items, doubled
+ * from 64 when full); returns the buffer to keep, or NULL (buf untouched) */
+static inline void *aero_grow(void *buf, int n, int *cap, size_t size)
+{
+    int more;
+    void *bigger;
+    if (n < *cap)
+        return buf;
+    more = *cap ? 2 * *cap : 64;
+    if (!(bigger = realloc(buf, size * (size_t)more)))
+        return NULL;
+    *cap = more;
+    return bigger;
+}
 
 /* xorshift32 (Marsaglia 2003); the state must never be 0 */
 static inline uint32_t aero_xorshift32(uint32_t *state)

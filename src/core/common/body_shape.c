@@ -1,6 +1,7 @@
 /* aero: closed 3D bodies (see body_shape.h). */
 #include "body_shape.h"
 #include "aero_air.h"
+#include "aero_util.h"
 
 #include <ctype.h>
 #include <math.h>
@@ -97,13 +98,9 @@ typedef struct {
 
 static int push_vertex(mesh_build *m, const double *x)
 {
-    if (m->nv == m->capv) {
-        int cap = m->capv ? 2 * m->capv : 64;
-        double *v = realloc(m->v, sizeof(double) * 3 * (size_t)cap);
-        if (!v) return -1;
-        m->v = v;
-        m->capv = cap;
-    }
+    double *v = aero_grow(m->v, m->nv, &m->capv, 3 * sizeof(double));
+    if (!v) return -1;
+    m->v = v;
     memcpy(m->v + 3 * (size_t)m->nv, x, 3 * sizeof(double));
     m->nv++;
     return 0;
@@ -111,13 +108,9 @@ static int push_vertex(mesh_build *m, const double *x)
 
 static int push_triangle(mesh_build *m, int a, int b, int c)
 {
-    if (m->nt == m->capt) {
-        int cap = m->capt ? 2 * m->capt : 64;
-        int *t = realloc(m->t, sizeof(int) * 3 * (size_t)cap);
-        if (!t) return -1;
-        m->t = t;
-        m->capt = cap;
-    }
+    int *t = aero_grow(m->t, m->nt, &m->capt, 3 * sizeof(int));
+    if (!t) return -1;
+    m->t = t;
     m->t[3 * (size_t)m->nt] = a;
     m->t[3 * (size_t)m->nt + 1] = b;
     m->t[3 * (size_t)m->nt + 2] = c;
@@ -177,6 +170,152 @@ static int check_closed(const mesh_build *m, char *err, size_t errlen)
     return 0;
 }
 
+/* "v x y z": 0, or -1 with a message */
+static int read_vertex(mesh_build *m, char *q, int line, char *err,
+                       size_t errlen)
+{
+    double x[3];
+    char *e = q + 1;
+    for (int k = 0; k < 3; k++) {
+        char *s = e;
+        x[k] = strtod(s, &e);
+        if (e == s || !isfinite(x[k]) || fabs(x[k]) > MAX_SIZE_M) {
+            snprintf(err, errlen, "line %d: a vertex takes three "
+                     "numbers within +-%g m", line, MAX_SIZE_M);
+            return -1;
+        }
+    }
+    if (m->nv >= AERO_BODY_MAX_MESH_VERTICES) {
+        snprintf(err, errlen, "line %d: more than %d vertices", line,
+                 AERO_BODY_MAX_MESH_VERTICES);
+        return -1;
+    }
+    if (push_vertex(m, x)) {
+        snprintf(err, errlen, "out of memory reading the mesh");
+        return -1;
+    }
+    return 0;
+}
+
+/* "f i j k ..." (1-based, negative counts back, "/t/n" ignored), split
+   into a fan of triangles: 0, or -1 with a message */
+static int read_face(mesh_build *m, char *q, int line, char *err,
+                     size_t errlen)
+{
+    int idx[64], k = 0;
+    char *e = q + 1;
+    for (;;) {
+        char *s = e;
+        long v;
+        while (isspace((unsigned char)*s))
+            s++;
+        if (!*s)
+            break;
+        v = strtol(s, &e, 10);
+        if (e == s || v == 0 || v > m->nv || v < -(long)m->nv) {
+            snprintf(err, errlen, "line %d: a face's vertex index "
+                     "must name one of the %d vertices so far",
+                     line, m->nv);
+            return -1;
+        }
+        while (*e && !isspace((unsigned char)*e)) /* "/t/n" */
+            e++;
+        if (k == 64) {
+            snprintf(err, errlen, "line %d: a face of more than 64 "
+                     "vertices", line);
+            return -1;
+        }
+        idx[k++] = v > 0 ? (int)v - 1 : m->nv + (int)v;
+    }
+    if (k < 3) {
+        snprintf(err, errlen, "line %d: a face needs at least 3 "
+                 "vertices", line);
+        return -1;
+    }
+    for (int i = 1; i + 1 < k; i++) {
+        if (m->nt >= AERO_BODY_MAX_MESH_FACES) {
+            snprintf(err, errlen, "line %d: more than %d triangles",
+                     line, AERO_BODY_MAX_MESH_FACES);
+            return -1;
+        }
+        if (push_triangle(m, idx[0], idx[i], idx[i + 1])) {
+            snprintf(err, errlen, "out of memory reading the mesh");
+            return -1;
+        }
+    }
+    return 0;
+}
+
+/* one line of the OBJ subset: 0, or -1 with a message */
+static int read_line(mesh_build *m, char *q, int line, char *err,
+                     size_t errlen)
+{
+    while (isspace((unsigned char)*q))
+        q++;
+    if (!*q || *q == '#')
+        return 0;
+    if (starts_with_word(q, "vn") || starts_with_word(q, "vt") ||
+        starts_with_word(q, "o") || starts_with_word(q, "g") ||
+        starts_with_word(q, "s") || starts_with_word(q, "usemtl") ||
+        starts_with_word(q, "mtllib"))
+        return 0;
+    if (starts_with_word(q, "v"))
+        return read_vertex(m, q, line, err, errlen);
+    if (starts_with_word(q, "f"))
+        return read_face(m, q, line, err, errlen);
+    snprintf(err, errlen, "line %d: expected 'v x y z' or 'f i j k' "
+             "(got '%.40s')", line, q);
+    return -1;
+}
+
+/* enough faces, none degenerate, the surface closed: 0, or -1 */
+static int check_mesh(const mesh_build *m, char *err, size_t errlen)
+{
+    if (m->nt < 4 || m->nv < 4) {
+        snprintf(err, errlen, "a closed mesh needs at least 4 vertices and 4 "
+                 "faces (got %d and %d)", m->nv, m->nt);
+        return -1;
+    }
+    for (int t = 0; t < m->nt; t++) {
+        int a = m->t[3 * t], c = m->t[3 * t + 1], d = m->t[3 * t + 2];
+        if (a == c || c == d || a == d) {
+            snprintf(err, errlen, "face %d repeats a vertex", t + 1);
+            return -1;
+        }
+    }
+    return check_closed(m, err, errlen);
+}
+
+/* hands m's arrays to b and bounds them; a flat mesh is refused (and b
+   freed): 0 or -1 */
+static int take_mesh(aero_body_shape *b, const mesh_build *m, char *err,
+                     size_t errlen)
+{
+    b->kind = AERO_BODY_MESH;
+    b->vertices = m->v;
+    b->triangles = m->t;
+    b->n_vertices = m->nv;
+    b->n_triangles = m->nt;
+    for (int k = 0; k < 3; k++) {
+        b->lo[k] = HUGE_VAL;
+        b->hi[k] = -HUGE_VAL;
+    }
+    for (int i = 0; i < m->nv; i++)
+        for (int k = 0; k < 3; k++) {
+            double x = m->v[3 * (size_t)i + k];
+            if (x < b->lo[k]) b->lo[k] = x;
+            if (x > b->hi[k]) b->hi[k] = x;
+        }
+    for (int k = 0; k < 3; k++)
+        if (!(b->hi[k] - b->lo[k] > 1e-6)) {
+            snprintf(err, errlen, "the mesh is flat (extent %g m along %c)",
+                     b->hi[k] - b->lo[k], "xyz"[k]);
+            aero_body_free(b);
+            return -1;
+        }
+    return 0;
+}
+
 int aero_body_mesh_parse(aero_body_shape *b, const char *text, char *err,
                          size_t errlen)
 {
@@ -189,7 +328,6 @@ int aero_body_mesh_parse(aero_body_shape *b, const char *text, char *err,
         const char *end = strchr(p, '\n');
         size_t n = end ? (size_t)(end - p) : strlen(p);
         char buf[1024];
-        char *q;
         line++;
         if (n >= sizeof buf) {
             snprintf(err, errlen, "line %d is longer than %zu characters",
@@ -199,120 +337,12 @@ int aero_body_mesh_parse(aero_body_shape *b, const char *text, char *err,
         memcpy(buf, p, n);
         buf[n] = 0;
         p = end ? end + 1 : NULL;
-        q = buf;
-        while (isspace((unsigned char)*q))
-            q++;
-        if (!*q || *q == '#')
-            continue;
-        if (starts_with_word(q, "vn") || starts_with_word(q, "vt") ||
-            starts_with_word(q, "o") || starts_with_word(q, "g") ||
-            starts_with_word(q, "s") || starts_with_word(q, "usemtl") ||
-            starts_with_word(q, "mtllib"))
-            continue;
-        if (starts_with_word(q, "v")) {
-            double x[3];
-            char *e = q + 1;
-            for (int k = 0; k < 3; k++) {
-                char *s = e;
-                x[k] = strtod(s, &e);
-                if (e == s || !isfinite(x[k]) || fabs(x[k]) > MAX_SIZE_M) {
-                    snprintf(err, errlen, "line %d: a vertex takes three "
-                             "numbers within +-%g m", line, MAX_SIZE_M);
-                    goto fail;
-                }
-            }
-            if (m.nv >= AERO_BODY_MAX_MESH_VERTICES) {
-                snprintf(err, errlen, "line %d: more than %d vertices", line,
-                         AERO_BODY_MAX_MESH_VERTICES);
-                goto fail;
-            }
-            if (push_vertex(&m, x)) goto oom;
-            continue;
-        }
-        if (starts_with_word(q, "f")) {
-            int idx[64], k = 0;
-            char *e = q + 1;
-            for (;;) {
-                char *s = e;
-                long v;
-                while (isspace((unsigned char)*s))
-                    s++;
-                if (!*s)
-                    break;
-                v = strtol(s, &e, 10);
-                if (e == s || v == 0 || v > m.nv || v < -(long)m.nv) {
-                    snprintf(err, errlen, "line %d: a face's vertex index "
-                             "must name one of the %d vertices so far",
-                             line, m.nv);
-                    goto fail;
-                }
-                while (*e && !isspace((unsigned char)*e)) /* "/t/n" */
-                    e++;
-                if (k == 64) {
-                    snprintf(err, errlen, "line %d: a face of more than 64 "
-                             "vertices", line);
-                    goto fail;
-                }
-                idx[k++] = v > 0 ? (int)v - 1 : m.nv + (int)v;
-            }
-            if (k < 3) {
-                snprintf(err, errlen, "line %d: a face needs at least 3 "
-                         "vertices", line);
-                goto fail;
-            }
-            for (int i = 1; i + 1 < k; i++) {
-                if (m.nt >= AERO_BODY_MAX_MESH_FACES) {
-                    snprintf(err, errlen, "line %d: more than %d triangles",
-                             line, AERO_BODY_MAX_MESH_FACES);
-                    goto fail;
-                }
-                if (push_triangle(&m, idx[0], idx[i], idx[i + 1])) goto oom;
-            }
-            continue;
-        }
-        snprintf(err, errlen, "line %d: expected 'v x y z' or 'f i j k' "
-                 "(got '%.40s')", line, q);
-        goto fail;
-    }
-    if (m.nt < 4 || m.nv < 4) {
-        snprintf(err, errlen, "a closed mesh needs at least 4 vertices and 4 "
-                 "faces (got %d and %d)", m.nv, m.nt);
-        goto fail;
-    }
-    for (int t = 0; t < m.nt; t++) {
-        int a = m.t[3 * t], c = m.t[3 * t + 1], d = m.t[3 * t + 2];
-        if (a == c || c == d || a == d) {
-            snprintf(err, errlen, "face %d repeats a vertex", t + 1);
+        if (read_line(&m, buf, line, err, errlen))
             goto fail;
-        }
     }
-    if (check_closed(&m, err, errlen))
+    if (check_mesh(&m, err, errlen))
         goto fail;
-    b->kind = AERO_BODY_MESH;
-    b->vertices = m.v;
-    b->triangles = m.t;
-    b->n_vertices = m.nv;
-    b->n_triangles = m.nt;
-    for (int k = 0; k < 3; k++) {
-        b->lo[k] = HUGE_VAL;
-        b->hi[k] = -HUGE_VAL;
-    }
-    for (int i = 0; i < m.nv; i++)
-        for (int k = 0; k < 3; k++) {
-            double x = m.v[3 * (size_t)i + k];
-            if (x < b->lo[k]) b->lo[k] = x;
-            if (x > b->hi[k]) b->hi[k] = x;
-        }
-    for (int k = 0; k < 3; k++)
-        if (!(b->hi[k] - b->lo[k] > 1e-6)) {
-            snprintf(err, errlen, "the mesh is flat (extent %g m along %c)",
-                     b->hi[k] - b->lo[k], "xyz"[k]);
-            aero_body_free(b);
-            return -1;
-        }
-    return 0;
-oom:
-    snprintf(err, errlen, "out of memory reading the mesh");
+    return take_mesh(b, &m, err, errlen);
 fail:
     free(m.v);
     free(m.t);
@@ -373,7 +403,8 @@ static double club_radius(const aero_body_shape *b, double z)
     return b->r_handle + (b->r_tip - b->r_handle) * s;
 }
 
-/* does the ray p + t dir (t > 0) cross triangle a b c (Moller-Trumbore) */
+/* does the ray p + t dir (t > 0) cross triangle a b c (Moller and Trumbore
+   1997) */
 static int ray_crosses(const double *p, const double *dir, const double *a,
                        const double *bb, const double *c)
 {

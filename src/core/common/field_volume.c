@@ -7,20 +7,9 @@
 
 #include <errno.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static void say(char *err, size_t errlen, const char *fmt, ...)
-{
-    va_list ap;
-    if (!err || !errlen)
-        return;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
 
 static int host_is_little_endian(void)
 {
@@ -83,139 +72,187 @@ static int numbers(char *rest, double *x, int n)
     return *rest ? -1 : 0;
 }
 
+/* the keys a header must hold, marked as they are read */
+enum {
+    HAVE_DIMS = 1,
+    HAVE_SPACING = 2,
+    HAVE_RATE = 4,
+    HAVE_FRAMES = 8,
+    HAVE_FIELDS = 16
+};
+
+/* cuts the comment and the blanks off a header line and splits it into its
+ * key and the rest; 0 for a line with nothing left */
+static int split_line(char *line, char **key, char **rest)
+{
+    char *c = strchr(line, '#');
+    if (c)
+        *c = 0;
+    c = line + strlen(line);
+    while (c > line && (c[-1] == '\n' || c[-1] == '\r' || c[-1] == ' ' ||
+                        c[-1] == '\t'))
+        *--c = 0;
+    *key = line;
+    while (**key == ' ' || **key == '\t')
+        (*key)++;
+    if (!**key)
+        return 0;
+    c = *key;
+    while (*c && *c != ' ' && *c != '\t')
+        c++;
+    if (*c)
+        *c++ = 0;
+    while (*c == ' ' || *c == '\t')
+        c++;
+    *rest = c;
+    return 1;
+}
+
+static int read_magic(const char *key, const char *rest, char *msg,
+                      size_t len)
+{
+    if (!strcmp(key, "aero-volume") && !strcmp(rest, "1"))
+        return 0;
+    aero_say(msg, len, "not an aero volume header (the first line must be "
+                       "'aero-volume 1')");
+    return -1;
+}
+
+/* reads the value of one key into v and marks it in *have; 0, or -1 with
+ * what is wrong in msg */
+static int read_key(aero_volume_info *v, const char *key, char *rest,
+                    int *have, char *msg, size_t len)
+{
+    double x[4];
+    if (!strcmp(key, "dims")) {
+        if (numbers(rest, x, 3) || x[0] < 2 || x[1] < 2 || x[2] < 2 ||
+            x[0] > AERO_VOLUME_MAX_DIM || x[1] > AERO_VOLUME_MAX_DIM ||
+            x[2] > AERO_VOLUME_MAX_DIM || x[0] != floor(x[0]) ||
+            x[1] != floor(x[1]) || x[2] != floor(x[2])) {
+            aero_say(msg, len, "'dims' needs three whole numbers in 2..%d",
+                     AERO_VOLUME_MAX_DIM);
+            return -1;
+        }
+        v->nx = (int)x[0], v->ny = (int)x[1], v->nz = (int)x[2];
+        *have |= HAVE_DIMS;
+    } else if (!strcmp(key, "spacing")) {
+        if (numbers(rest, x, 3) || x[0] <= 0 || x[1] <= 0 || x[2] <= 0 ||
+            x[0] > 1e4 || x[1] > 1e4 || x[2] > 1e4) {
+            aero_say(msg, len, "'spacing' needs three lengths in metres, > 0");
+            return -1;
+        }
+        memcpy(v->spacing, x, sizeof v->spacing);
+        *have |= HAVE_SPACING;
+    } else if (!strcmp(key, "origin")) {
+        if (numbers(rest, x, 3) || fabs(x[0]) > 1e6 || fabs(x[1]) > 1e6 ||
+            fabs(x[2]) > 1e6) {
+            aero_say(msg, len, "'origin' needs three coordinates in metres");
+            return -1;
+        }
+        memcpy(v->origin, x, sizeof v->origin);
+    } else if (!strcmp(key, "rate")) {
+        if (numbers(rest, x, 1) || x[0] <= 0 || x[0] > 1e6) {
+            aero_say(msg, len, "'rate' needs frames per second, "
+                               "0 < rate <= 1e6");
+            return -1;
+        }
+        v->rate = x[0];
+        *have |= HAVE_RATE;
+    } else if (!strcmp(key, "frames")) {
+        if (numbers(rest, x, 1) || x[0] < 1 || x[0] > 1e6 ||
+            x[0] != floor(x[0])) {
+            aero_say(msg, len, "'frames' needs a whole number >= 1");
+            return -1;
+        }
+        v->frames = (int)x[0];
+        *have |= HAVE_FRAMES;
+    } else if (!strcmp(key, "fields")) {
+        if (!strcmp(rest, "density"))
+            v->fields = 1;
+        else if (!strcmp(rest, "density vx vy vz"))
+            v->fields = 4;
+        else {
+            aero_say(msg, len, "'fields' must be 'density' or "
+                               "'density vx vy vz', not '%s'", rest);
+            return -1;
+        }
+        *have |= HAVE_FIELDS;
+    } else if (!strcmp(key, "files")) {
+        if (strlen(rest) >= sizeof v->pattern || !pattern_ok(rest)) {
+            aero_say(msg, len, "'files' needs a file name pattern with one "
+                               "%%d, e.g. frame%%05d.f32");
+            return -1;
+        }
+        strcpy(v->pattern, rest);
+    } else {
+        aero_say(msg, len, "unknown key '%s' (keys: dims spacing origin rate "
+                           "frames fields files)", key);
+        return -1;
+    }
+    return 0;
+}
+
+/* reads the header lines; 0, or -1 with "path:line: what" in err */
+static int read_lines(FILE *f, const char *path, aero_volume_info *v,
+                      int *have, int *lines, char *err, size_t errlen)
+{
+    char line[512], msg[640];
+    while (fgets(line, sizeof line, f)) {
+        char *key, *rest;
+        int bad;
+        ++*lines;
+        if (!split_line(line, &key, &rest))
+            continue;
+        if (*lines == 1 ||
+            (!(*have & HAVE_DIMS) && !strcmp(key, "aero-volume")))
+            bad = read_magic(key, rest, msg, sizeof msg);
+        else
+            bad = read_key(v, key, rest, have, msg, sizeof msg);
+        if (bad) {
+            aero_say(err, errlen, "%s:%d: %s", path, *lines, msg);
+            return -1;
+        }
+    }
+    return 0;
+}
+
 int aero_volume_read_header(const char *dir, aero_volume_info *v, char *err,
                             size_t errlen)
 {
-    char path[AERO_VOLUME_PATH + 32], line[512];
-    int have_dims = 0, have_spacing = 0, have_rate = 0, have_frames = 0;
-    int have_fields = 0, lineno = 0, rc = -1;
+    char path[AERO_VOLUME_PATH + 32];
+    int have = 0, lines = 0, rc;
+    FILE *f;
     memset(v, 0, sizeof *v);
     strcpy(v->pattern, "frame%05d.f32");
     if (strlen(dir) >= sizeof v->dir) {
-        say(err, errlen, "volume directory name too long");
+        aero_say(err, errlen, "volume directory name too long");
         return -1;
     }
     strcpy(v->dir, dir);
     snprintf(path, sizeof path, "%s/%s", dir, AERO_VOLUME_HEADER);
-    FILE *f = fopen(path, "r");
-    if (!f) {
-        say(err, errlen, "can't open %s: %s", path, strerror(errno));
+    if (!(f = fopen(path, "r"))) {
+        aero_say(err, errlen, "can't open %s: %s", path, strerror(errno));
         return -1;
     }
-    while (fgets(line, sizeof line, f)) {
-        char *c = strchr(line, '#'), *key, *rest;
-        double x[4];
-        lineno++;
-        if (c)
-            *c = 0;
-        c = line + strlen(line);
-        while (c > line && (c[-1] == '\n' || c[-1] == '\r' || c[-1] == ' ' ||
-                            c[-1] == '\t'))
-            *--c = 0;
-        key = line;
-        while (*key == ' ' || *key == '\t')
-            key++;
-        if (!*key)
-            continue;
-        rest = key;
-        while (*rest && *rest != ' ' && *rest != '\t')
-            rest++;
-        if (*rest)
-            *rest++ = 0;
-        while (*rest == ' ' || *rest == '\t')
-            rest++;
-        if (lineno == 1 || (!have_dims && !strcmp(key, "aero-volume"))) {
-            if (strcmp(key, "aero-volume") || strcmp(rest, "1")) {
-                say(err, errlen, "%s:%d: not an aero volume header (the first "
-                    "line must be 'aero-volume 1')", path, lineno);
-                goto done;
-            }
-            continue;
-        }
-        if (!strcmp(key, "dims")) {
-            if (numbers(rest, x, 3) || x[0] < 2 || x[1] < 2 || x[2] < 2 ||
-                x[0] > AERO_VOLUME_MAX_DIM || x[1] > AERO_VOLUME_MAX_DIM ||
-                x[2] > AERO_VOLUME_MAX_DIM || x[0] != floor(x[0]) ||
-                x[1] != floor(x[1]) || x[2] != floor(x[2])) {
-                say(err, errlen, "%s:%d: 'dims' needs three whole numbers in "
-                    "2..%d", path, lineno, AERO_VOLUME_MAX_DIM);
-                goto done;
-            }
-            v->nx = (int)x[0], v->ny = (int)x[1], v->nz = (int)x[2];
-            have_dims = 1;
-        } else if (!strcmp(key, "spacing")) {
-            if (numbers(rest, x, 3) || x[0] <= 0 || x[1] <= 0 || x[2] <= 0 ||
-                x[0] > 1e4 || x[1] > 1e4 || x[2] > 1e4) {
-                say(err, errlen, "%s:%d: 'spacing' needs three lengths in "
-                    "metres, > 0", path, lineno);
-                goto done;
-            }
-            memcpy(v->spacing, x, sizeof v->spacing);
-            have_spacing = 1;
-        } else if (!strcmp(key, "origin")) {
-            if (numbers(rest, x, 3) || fabs(x[0]) > 1e6 || fabs(x[1]) > 1e6 ||
-                fabs(x[2]) > 1e6) {
-                say(err, errlen, "%s:%d: 'origin' needs three coordinates in "
-                    "metres", path, lineno);
-                goto done;
-            }
-            memcpy(v->origin, x, sizeof v->origin);
-        } else if (!strcmp(key, "rate")) {
-            if (numbers(rest, x, 1) || x[0] <= 0 || x[0] > 1e6) {
-                say(err, errlen, "%s:%d: 'rate' needs frames per second, "
-                    "0 < rate <= 1e6", path, lineno);
-                goto done;
-            }
-            v->rate = x[0];
-            have_rate = 1;
-        } else if (!strcmp(key, "frames")) {
-            if (numbers(rest, x, 1) || x[0] < 1 || x[0] > 1e6 ||
-                x[0] != floor(x[0])) {
-                say(err, errlen, "%s:%d: 'frames' needs a whole number >= 1",
-                    path, lineno);
-                goto done;
-            }
-            v->frames = (int)x[0];
-            have_frames = 1;
-        } else if (!strcmp(key, "fields")) {
-            if (!strcmp(rest, "density"))
-                v->fields = 1;
-            else if (!strcmp(rest, "density vx vy vz"))
-                v->fields = 4;
-            else {
-                say(err, errlen, "%s:%d: 'fields' must be 'density' or "
-                    "'density vx vy vz', not '%s'", path, lineno, rest);
-                goto done;
-            }
-            have_fields = 1;
-        } else if (!strcmp(key, "files")) {
-            if (strlen(rest) >= sizeof v->pattern || !pattern_ok(rest)) {
-                say(err, errlen, "%s:%d: 'files' needs a file name pattern "
-                    "with one %%d, e.g. frame%%05d.f32", path, lineno);
-                goto done;
-            }
-            strcpy(v->pattern, rest);
-        } else {
-            say(err, errlen, "%s:%d: unknown key '%s' (keys: dims spacing "
-                "origin rate frames fields files)", path, lineno, key);
-            goto done;
-        }
-    }
-    if (lineno == 0) {
-        say(err, errlen, "%s is empty", path);
-        goto done;
-    }
-    if (!have_dims || !have_spacing || !have_rate || !have_frames ||
-        !have_fields) {
-        say(err, errlen, "%s: missing %s", path,
-            !have_dims ? "'dims'" : !have_spacing ? "'spacing'" :
-            !have_rate ? "'rate'" : !have_frames ? "'frames'" : "'fields'");
-        goto done;
-    }
-    rc = 0;
-done:
+    rc = read_lines(f, path, v, &have, &lines, err, errlen);
     fclose(f);
-    return rc;
+    if (rc)
+        return -1;
+    if (lines == 0) {
+        aero_say(err, errlen, "%s is empty", path);
+        return -1;
+    }
+    if (have != (HAVE_DIMS | HAVE_SPACING | HAVE_RATE | HAVE_FRAMES |
+                 HAVE_FIELDS)) {
+        aero_say(err, errlen, "%s: missing %s", path,
+                 !(have & HAVE_DIMS)      ? "'dims'"
+                 : !(have & HAVE_SPACING) ? "'spacing'"
+                 : !(have & HAVE_RATE)    ? "'rate'"
+                 : !(have & HAVE_FRAMES)  ? "'frames'"
+                                          : "'fields'");
+        return -1;
+    }
+    return 0;
 }
 
 /* opens frame k and checks its size: the file, or NULL with a message */
@@ -226,29 +263,29 @@ static FILE *open_frame(const aero_volume_info *v, int k, char *err,
     size_t n = aero_volume_count(v) * (size_t)v->fields;
     long want = (long)(n * sizeof(float)), size;
     if (k < 0 || k >= v->frames) {
-        say(err, errlen, "frame %d out of range 0..%d", k, v->frames - 1);
+        aero_say(err, errlen, "frame %d out of range 0..%d", k, v->frames - 1);
         return NULL;
     }
     if (frame_path(v, k, path, sizeof path)) {
-        say(err, errlen, "frame file name too long");
+        aero_say(err, errlen, "frame file name too long");
         return NULL;
     }
     FILE *f = fopen(path, "rb");
     if (!f) {
-        say(err, errlen, "can't open frame %d: %s: %s", k, path,
-            strerror(errno));
+        aero_say(err, errlen, "can't open frame %d: %s: %s", k, path,
+                 strerror(errno));
         return NULL;
     }
     if (fseek(f, 0, SEEK_END) || (size = ftell(f)) < 0 ||
         fseek(f, 0, SEEK_SET)) {
-        say(err, errlen, "can't read %s", path);
+        aero_say(err, errlen, "can't read %s", path);
         fclose(f);
         return NULL;
     }
     if (size != want) {
-        say(err, errlen, "%s is %ld bytes, expected %ld (%d field(s) of "
-            "%dx%dx%d float32)%s", path, size, want, v->fields, v->nx, v->ny,
-            v->nz, size < want ? ": truncated" : ": too long");
+        aero_say(err, errlen, "%s is %ld bytes, expected %ld (%d field(s) of "
+                 "%dx%dx%d float32)%s", path, size, want, v->fields, v->nx,
+                 v->ny, v->nz, size < want ? ": truncated" : ": too long");
         fclose(f);
         return NULL;
     }
@@ -277,7 +314,7 @@ int aero_volume_read_frame(const aero_volume_info *v, int k, float *data,
     size_t got = fread(data, sizeof(float), n, f);
     fclose(f);
     if (got != n) {
-        say(err, errlen, "%s: read %zu of %zu values", path, got, n);
+        aero_say(err, errlen, "%s: read %zu of %zu values", path, got, n);
         return -1;
     }
     if (!host_is_little_endian())
@@ -292,7 +329,7 @@ int aero_volume_write_header(const aero_volume_info *v, char *err,
     snprintf(path, sizeof path, "%s/%s", v->dir, AERO_VOLUME_HEADER);
     FILE *f = fopen(path, "w");
     if (!f) {
-        say(err, errlen, "can't write %s: %s", path, strerror(errno));
+        aero_say(err, errlen, "can't write %s: %s", path, strerror(errno));
         return -1;
     }
     fprintf(f, "aero-volume 1\n"
@@ -303,7 +340,7 @@ int aero_volume_write_header(const aero_volume_info *v, char *err,
             v->origin[0], v->origin[1], v->origin[2], v->rate, v->frames,
             v->fields == 4 ? "density vx vy vz" : "density", v->pattern);
     if (fclose(f)) {
-        say(err, errlen, "can't write %s", path);
+        aero_say(err, errlen, "can't write %s", path);
         return -1;
     }
     return 0;
@@ -315,12 +352,12 @@ int aero_volume_write_frame(const aero_volume_info *v, int k,
     char path[AERO_VOLUME_PATH + 160];
     size_t n = aero_volume_count(v) * (size_t)v->fields, put;
     if (frame_path(v, k, path, sizeof path)) {
-        say(err, errlen, "frame file name too long");
+        aero_say(err, errlen, "frame file name too long");
         return -1;
     }
     FILE *f = fopen(path, "wb");
     if (!f) {
-        say(err, errlen, "can't write %s: %s", path, strerror(errno));
+        aero_say(err, errlen, "can't write %s: %s", path, strerror(errno));
         return -1;
     }
     if (host_is_little_endian()) {
@@ -334,7 +371,7 @@ int aero_volume_write_frame(const aero_volume_info *v, int k,
         }
     }
     if (fclose(f) || put != n) {
-        say(err, errlen, "can't write %s", path);
+        aero_say(err, errlen, "can't write %s", path);
         return -1;
     }
     return 0;

@@ -2,6 +2,7 @@
  * (see texture.h). */
 #include "texture.h"
 #include "aero_air.h"
+#include "aero_util.h"
 
 #include <math.h>
 #include <sndfile.h>
@@ -82,10 +83,7 @@ int aero_texture_init_speeds(aero_texture *t, int frames, int nspeeds,
 
 void aero_texture_free(aero_texture *t)
 {
-    free(t->data);
-    free(t->speeds);
-    free(t->angles);
-    free(t->meta);
+    AERO_FREE_ALL(t->data, t->speeds, t->angles, t->meta);
     memset(t, 0, sizeof *t);
 }
 
@@ -259,20 +257,53 @@ static int parse_angles(aero_texture *t)
     return (*p == '\n' || *p == 0) ? 0 : -1;
 }
 
-/* the rest of a vortex texture's load (meta read; the file is reopened):
-   one channel per speed, speeds= increasing and positive */
-static int load_vortex(const char *path, aero_texture *t, const SF_INFO *in,
-                       char *err, size_t errlen)
+/* frames= and rate= against the file's own: t->frames and t->rate set, 0;
+   or -1 with a message */
+static int take_size(aero_texture *t, const SF_INFO *in, const char *path,
+                     char *err, size_t errlen)
 {
-    SF_INFO info = *in;
-    SNDFILE *f;
+    if (aero_texture_getd(t, "frames", (double)in->frames) != in->frames) {
+        snprintf(err, errlen, "%s is truncated: %ld of %g frames", path,
+                 (long)in->frames, aero_texture_getd(t, "frames", 0.0));
+        return -1;
+    }
+    t->frames = (int)in->frames;
+    t->rate = aero_texture_getd(t, "rate", (double)in->samplerate);
+    if (!(t->rate > 0.0) || fabs(t->rate - in->samplerate) > 0.5) {
+        snprintf(err, errlen, "%s: rate=%g does not match the file's %d Hz",
+                 path, t->rate, in->samplerate);
+        return -1;
+    }
+    return 0;
+}
+
+/* t->frames x t->channels samples from f into t->data, every one finite:
+   0, or -1 with a message */
+static int read_samples(SNDFILE *f, aero_texture *t, const char *path,
+                        char *err, size_t errlen)
+{
+    if (sf_readf_float(f, t->data, t->frames) != t->frames) {
+        snprintf(err, errlen, "%s is truncated (expected %d frames)", path,
+                 t->frames);
+        return -1;
+    }
+    for (size_t k = 0; k < (size_t)t->frames * t->channels; k++)
+        if (!isfinite(t->data[k])) {
+            snprintf(err, errlen, "%s holds a non-finite sample at frame %ld",
+                     path, (long)(k / t->channels));
+            return -1;
+        }
+    return 0;
+}
+
+/* speeds=: n increasing positive speeds into t->speeds: 0, or -1 */
+static int read_speeds(aero_texture *t, int n, const char *path, char *err,
+                       size_t errlen)
+{
     const char *p = value_of(t, "speeds");
-    int n = info.channels;
-    memset(&info, 0, sizeof info);
     t->speeds = malloc(sizeof(double) * (n > 0 ? n : 1));
     if (!t->speeds) {
         snprintf(err, errlen, "out of memory reading %s", path);
-        aero_texture_free(t);
         return -1;
     }
     for (int k = 0; k < n; k++) {
@@ -285,50 +316,103 @@ static int load_vortex(const char *path, aero_texture *t, const SF_INFO *in,
             (k == n - 1 && *end != '\n' && *end)) {
             snprintf(err, errlen, "%s: speeds= must list %d increasing "
                      "positive speeds, one per channel", path, n);
-            aero_texture_free(t);
             return -1;
         }
         p = end + 1;
     }
-    if (aero_texture_getd(t, "frames", (double)in->frames) != in->frames) {
-        snprintf(err, errlen, "%s is truncated: %ld of %g frames", path,
-                 (long)in->frames, aero_texture_getd(t, "frames", 0.0));
-        aero_texture_free(t);
-        return -1;
-    }
-    t->frames = (int)in->frames;
+    return 0;
+}
+
+/* the rest of a vortex texture's load (meta read; the file is reopened):
+   one channel per speed, speeds= increasing and positive */
+static int load_vortex(const char *path, aero_texture *t, const SF_INFO *in,
+                       char *err, size_t errlen)
+{
+    SF_INFO info;
+    SNDFILE *f = NULL;
+    const int n = in->channels;
+    memset(&info, 0, sizeof info);
+    if (read_speeds(t, n, path, err, errlen) ||
+        take_size(t, in, path, err, errlen))
+        goto fail;
     t->channels = n;
     t->directions = 0;
-    t->rate = aero_texture_getd(t, "rate", (double)in->samplerate);
-    if (!(t->rate > 0.0) || fabs(t->rate - in->samplerate) > 0.5) {
-        snprintf(err, errlen, "%s: rate=%g does not match the file's %d Hz",
-                 path, t->rate, in->samplerate);
-        aero_texture_free(t);
-        return -1;
-    }
     t->data = malloc(sizeof(float) * (size_t)t->frames * n);
     f = sf_open(path, SFM_READ, &info);
     if (!t->data || !f) {
         snprintf(err, errlen, "can't read %s", path);
-        if (f) sf_close(f);
-        aero_texture_free(t);
-        return -1;
+        goto fail;
     }
-    if (sf_readf_float(f, t->data, t->frames) != t->frames) {
-        snprintf(err, errlen, "%s is truncated (expected %d frames)", path,
-                 t->frames);
-        sf_close(f);
-        aero_texture_free(t);
-        return -1;
-    }
+    if (read_samples(f, t, path, err, errlen))
+        goto fail;
     sf_close(f);
-    for (size_t k = 0; k < (size_t)t->frames * n; k++)
-        if (!isfinite(t->data[k])) {
-            snprintf(err, errlen, "%s holds a non-finite sample at frame %ld",
-                     path, (long)(k / n));
-            aero_texture_free(t);
-            return -1;
-        }
+    return 0;
+fail:
+    if (f) sf_close(f);
+    aero_texture_free(t);
+    return -1;
+}
+
+/* opens a texture file and copies its metadata into t->meta (one key per
+   line, ending in a newline): the file, or NULL with a message */
+static SNDFILE *open_texture(const char *path, aero_texture *t,
+                             SF_INFO *info, char *err, size_t errlen)
+{
+    SNDFILE *f = sf_open(path, SFM_READ, info);
+    const char *c;
+    if (!f) {
+        snprintf(err, errlen, "can't open texture %s: %s", path,
+                 sf_strerror(NULL));
+        return NULL;
+    }
+    c = sf_get_string(f, SF_STR_COMMENT);
+    if (!c || !strstr(c, "kind=")) {
+        snprintf(err, errlen, "%s is not an aero texture (no metadata)", path);
+        sf_close(f);
+        return NULL;
+    }
+    if (info->frames < 2 || info->frames > 100000000 ||
+        info->samplerate <= 0) {
+        snprintf(err, errlen, "%s: bad texture size (%ld frames at %d Hz)",
+                 path, (long)info->frames, info->samplerate);
+        sf_close(f);
+        return NULL;
+    }
+    t->meta = malloc(strlen(c) + 2);
+    if (!t->meta) {
+        snprintf(err, errlen, "out of memory reading %s", path);
+        sf_close(f);
+        return NULL;
+    }
+    strcpy(t->meta, c);
+    if (t->meta[0] && t->meta[strlen(t->meta) - 1] != '\n')
+        strcat(t->meta, "\n");
+    return f;
+}
+
+/* directions= and regions= against the channels (3 per direction and
+   region): 0, or -1 with a message */
+static int read_layout(aero_texture *t, int channels, const char *path,
+                       char *err, size_t errlen)
+{
+    /* range before the cast: the file may say directions=1e300 */
+    double dirs_value = aero_texture_getd(t, "directions", 0.0);
+    double regions_value = aero_texture_getd(t, "regions", 1.0);
+    int dirs = dirs_value >= 1.0 && dirs_value <= 1e6 ? (int)dirs_value : 0;
+    int regions = regions_value >= 1.0 && regions_value <= 4096.0 &&
+                          regions_value == floor(regions_value)
+                      ? (int)regions_value : 0;
+    if (dirs < 1 || regions < 1 ||
+        (double)channels != 3.0 * dirs * regions) {
+        snprintf(err, errlen,
+                 "%s: %d channels do not match directions=%d regions=%d (3 "
+                 "per direction and region)", path, channels, dirs,
+                 regions);
+        return -1;
+    }
+    t->channels = channels;
+    t->directions = dirs;
+    t->regions = regions;
     return 0;
 }
 
@@ -337,85 +421,29 @@ int aero_texture_load(const char *path, aero_texture *t, char *err,
 {
     SF_INFO info;
     SNDFILE *f;
-    const char *c;
-    int dirs, regions;
+    char kind[32];
     memset(t, 0, sizeof *t);
     memset(&info, 0, sizeof info);
-    f = sf_open(path, SFM_READ, &info);
-    if (!f) {
-        snprintf(err, errlen, "can't open texture %s: %s", path,
-                 sf_strerror(NULL));
+    if (!(f = open_texture(path, t, &info, err, errlen))) {
+        aero_texture_free(t);
         return -1;
     }
-    c = sf_get_string(f, SF_STR_COMMENT);
-    if (!c || !strstr(c, "kind=")) {
-        snprintf(err, errlen, "%s is not an aero texture (no metadata)", path);
+    if (aero_texture_get(t, "kind", kind, sizeof kind) &&
+        !strcmp(kind, "vortex")) {
         sf_close(f);
-        return -1;
+        return load_vortex(path, t, &info, err, errlen);
     }
-    if (info.frames < 2 || info.frames > 100000000 || info.samplerate <= 0) {
-        snprintf(err, errlen, "%s: bad texture size (%ld frames at %d Hz)",
-                 path, (long)info.frames, info.samplerate);
-        sf_close(f);
-        return -1;
-    }
-    t->meta = malloc(strlen(c) + 2);
-    if (!t->meta) goto oom;
-    strcpy(t->meta, c);
-    if (t->meta[0] && t->meta[strlen(t->meta) - 1] != '\n')
-        strcat(t->meta, "\n");
-    {
-        char kind[32];
-        if (aero_texture_get(t, "kind", kind, sizeof kind) &&
-            !strcmp(kind, "vortex")) {
-            sf_close(f);
-            return load_vortex(path, t, &info, err, errlen);
-        }
-    }
-    /* range before the cast: the file may say directions=1e300 */
-    double dirs_value = aero_texture_getd(t, "directions", 0.0);
-    double regions_value = aero_texture_getd(t, "regions", 1.0);
-    dirs = dirs_value >= 1.0 && dirs_value <= 1e6 ? (int)dirs_value : 0;
-    regions = regions_value >= 1.0 && regions_value <= 4096.0 &&
-                      regions_value == floor(regions_value)
-                  ? (int)regions_value : 0;
-    if (dirs < 1 || regions < 1 ||
-        (double)info.channels != 3.0 * dirs * regions) {
-        snprintf(err, errlen,
-                 "%s: %d channels do not match directions=%d regions=%d (3 "
-                 "per direction and region)", path, info.channels, dirs,
-                 regions);
+    if (read_layout(t, info.channels, path, err, errlen) ||
+        take_size(t, &info, path, err, errlen))
         goto fail;
-    }
-    if (aero_texture_getd(t, "frames", (double)info.frames) != info.frames) {
-        snprintf(err, errlen, "%s is truncated: %ld of %g frames", path,
-                 (long)info.frames, aero_texture_getd(t, "frames", 0.0));
-        goto fail;
-    }
-    t->frames = (int)info.frames;
-    t->channels = info.channels;
-    t->directions = dirs;
-    t->regions = regions;
-    t->rate = aero_texture_getd(t, "rate", (double)info.samplerate);
-    if (!(t->rate > 0.0) || fabs(t->rate - info.samplerate) > 0.5) {
-        snprintf(err, errlen, "%s: rate=%g does not match the file's %d Hz",
-                 path, t->rate, info.samplerate);
-        goto fail;
-    }
     t->data = malloc(sizeof(float) * (size_t)t->frames * t->channels);
-    t->angles = malloc(sizeof(double) * dirs);
-    if (!t->data || !t->angles) goto oom;
-    if (sf_readf_float(f, t->data, t->frames) != t->frames) {
-        snprintf(err, errlen, "%s is truncated (expected %d frames)", path,
-                 t->frames);
+    t->angles = malloc(sizeof(double) * t->directions);
+    if (!t->data || !t->angles) {
+        snprintf(err, errlen, "out of memory reading %s", path);
         goto fail;
     }
-    for (size_t k = 0; k < (size_t)t->frames * t->channels; k++)
-        if (!isfinite(t->data[k])) {
-            snprintf(err, errlen, "%s holds a non-finite sample at frame %ld",
-                     path, (long)(k / t->channels));
-            goto fail;
-        }
+    if (read_samples(f, t, path, err, errlen))
+        goto fail;
     if (parse_angles(t)) {
         snprintf(err, errlen, "%s: bad angles= list", path);
         goto fail;
@@ -426,8 +454,6 @@ int aero_texture_load(const char *path, aero_texture *t, char *err,
     }
     sf_close(f);
     return 0;
-oom:
-    snprintf(err, errlen, "out of memory reading %s", path);
 fail:
     sf_close(f);
     aero_texture_free(t);

@@ -1,4 +1,5 @@
-/* aero: sound textures (Dobashi 2003) as float WAV files via libsndfile.
+/* aero: sound textures (Dobashi et al. 2003) as float WAV files via
+ * libsndfile.
  *
  * Frames hold the sound source function g = dF/dt (N/(m s) per unit span
  * for 2D simulations) at the base speed v0, channels x, y, z per sampled

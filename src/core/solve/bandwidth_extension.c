@@ -17,49 +17,64 @@ static double taper(double f, double a, double b)
     return 0.5 + 0.5 * cos(AERO_PI * (f - a) / (b - a));
 }
 
-int aero_bandext_apply(float *x, int n, int stride, double rate, double f1,
-                       double f2, double f_top, uint32_t seed,
-                       aero_bandext_info *info)
-{
-    const int nh = n / 2 + 1;
-    const double df = rate / n, fit_lo = f1 / 4.0, fit_hi = f1;
-    double *t = NULL, *e = NULL;
-    fftw_complex *X = NULL, *W = NULL, *z = NULL;
-    fftw_plan fwd = NULL, inv = NULL, zinv = NULL;
-    double sx = 0, sy = 0, sxx = 0, sxy = 0, slope, icpt, ms = 0.0;
-    int bands = 0, status = -1;
-    uint32_t rng = seed ? seed : 1;
-    aero_bandext_info dummy;
-    if (!info) info = &dummy;
-    memset(info, 0, sizeof *info);
-    if (n < 64 || stride < 1 || !(rate > 0.0) || !(f1 > 0.0) || !(f2 > f1) ||
-        !(f_top >= f2) || !(f_top < 0.5 * rate) || fit_lo < 2.0 * df)
-        return -1;
-    info->fit_lo = fit_lo;
-    info->fit_hi = fit_hi;
-    t = fftw_malloc(sizeof(double) * (size_t)n);
-    e = fftw_malloc(sizeof(double) * (size_t)n);
-    X = fftw_malloc(sizeof(fftw_complex) * (size_t)nh);
-    W = fftw_malloc(sizeof(fftw_complex) * (size_t)nh);
-    z = fftw_malloc(sizeof(fftw_complex) * (size_t)n);
-    if (!t || !e || !X || !W || !z)
-        goto out;
-    fwd = fftw_plan_dft_r2c_1d(n, t, X, FFTW_ESTIMATE);
-    inv = fftw_plan_dft_c2r_1d(n, W, t, FFTW_ESTIMATE);
-    zinv = fftw_plan_dft_1d(n, z, z, FFTW_BACKWARD, FFTW_ESTIMATE);
-    if (!fwd || !inv || !zinv)
-        goto out;
+/* the FFT buffers and plans of one extension over n frames */
+typedef struct {
+    int n, nh;
+    double df;
+    double *t, *e;
+    fftw_complex *X, *W, *z;
+    fftw_plan fwd, inv, zinv;
+} bandext_work;
 
-    /* 1. the law on the top two octaves of the resolved band */
-    for (int k = 0; k < n; k++)
-        t[k] = x[(size_t)k * stride];
-    fftw_execute(fwd);
-    for (double f = fit_lo; f * 1.2599 <= fit_hi * 1.0001; f *= 1.2599) {
+static void work_close(bandext_work *w)
+{
+    if (w->fwd) fftw_destroy_plan(w->fwd);
+    if (w->inv) fftw_destroy_plan(w->inv);
+    if (w->zinv) fftw_destroy_plan(w->zinv);
+    AERO_RELEASE_ALL(fftw_free, w->t, w->e, w->X, w->W, w->z);
+}
+
+/* 0, or -1 (out of memory: w closed) */
+static int work_open(bandext_work *w, int n, double rate)
+{
+    memset(w, 0, sizeof *w);
+    w->n = n;
+    w->nh = n / 2 + 1;
+    w->df = rate / n;
+    w->t = fftw_malloc(sizeof(double) * (size_t)n);
+    w->e = fftw_malloc(sizeof(double) * (size_t)n);
+    w->X = fftw_malloc(sizeof(fftw_complex) * (size_t)w->nh);
+    w->W = fftw_malloc(sizeof(fftw_complex) * (size_t)w->nh);
+    w->z = fftw_malloc(sizeof(fftw_complex) * (size_t)n);
+    if (w->t && w->e && w->X && w->W && w->z) {
+        w->fwd = fftw_plan_dft_r2c_1d(n, w->t, w->X, FFTW_ESTIMATE);
+        w->inv = fftw_plan_dft_c2r_1d(n, w->W, w->t, FFTW_ESTIMATE);
+        w->zinv = fftw_plan_dft_1d(n, w->z, w->z, FFTW_BACKWARD,
+                                   FFTW_ESTIMATE);
+        if (w->fwd && w->inv && w->zinv)
+            return 0;
+    }
+    work_close(w);
+    return -1;
+}
+
+/* 1. the law |X|^2 = 10^icpt f^slope on third octaves of [lo, hi] (the
+   spectrum of x left in w->X): the number of bands it rests on */
+static int fit_law(bandext_work *w, const float *x, int stride, double lo,
+                   double hi, double *slope, double *icpt)
+{
+    const double df = w->df;
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    int bands = 0;
+    for (int k = 0; k < w->n; k++)
+        w->t[k] = x[(size_t)k * stride];
+    fftw_execute(w->fwd);
+    for (double f = lo; f * 1.2599 <= hi * 1.0001; f *= 1.2599) {
         int k0 = (int)ceil(f / df), k1 = (int)floor(f * 1.2599 / df);
         double p = 0.0;
         if (k1 < k0) continue;
         for (int k = k0; k <= k1; k++)
-            p += X[k][0] * X[k][0] + X[k][1] * X[k][1];
+            p += w->X[k][0] * w->X[k][0] + w->X[k][1] * w->X[k][1];
         p /= k1 - k0 + 1;
         if (!(p > 0.0)) continue;
         {
@@ -68,71 +83,102 @@ int aero_bandext_apply(float *x, int n, int stride, double rate, double f1,
             bands++;
         }
     }
-    status = 0;
-    if (bands < 3)
-        goto out;
-    slope = (bands * sxy - sx * sy) / (bands * sxx - sx * sx);
-    icpt = (sy - slope * sx) / bands;
-    info->slope = slope;
-    if (!(slope < 0.0))
-        goto out; /* nothing to continue */
+    if (bands >= 3) {
+        *slope = (bands * sxy - sx * sy) / (bands * sxx - sx * sx);
+        *icpt = (sy - *slope * sx) / bands;
+    }
+    return bands;
+}
 
-    /* 2. the band's envelope: |analytic signal|, low-passed */
-    memset(z, 0, sizeof(fftw_complex) * (size_t)n);
-    for (int k = 1; k < nh; k++) {
+/* 2. the envelope of [lo, hi] of the spectrum in w->X: |analytic signal|,
+   low-passed below lo, into w->e; its mean square (w->X used up) */
+static double envelope(bandext_work *w, double lo, double hi)
+{
+    const int n = w->n;
+    const double df = w->df;
+    double ms = 0.0;
+    memset(w->z, 0, sizeof(fftw_complex) * (size_t)n);
+    for (int k = 1; k < w->nh; k++) {
         double f = k * df;
-        if (f >= fit_lo && f <= fit_hi) {
-            z[k][0] = 2.0 * X[k][0] / n;
-            z[k][1] = 2.0 * X[k][1] / n;
+        if (f >= lo && f <= hi) {
+            w->z[k][0] = 2.0 * w->X[k][0] / n;
+            w->z[k][1] = 2.0 * w->X[k][1] / n;
         }
     }
-    fftw_execute(zinv);
+    fftw_execute(w->zinv);
     for (int k = 0; k < n; k++)
-        t[k] = sqrt(z[k][0] * z[k][0] + z[k][1] * z[k][1]);
-    fftw_execute(fwd); /* t -> X (the signal's spectrum is used up) */
-    for (int k = 0; k < nh; k++) {
-        double g = taper(k * df, 0.5 * fit_lo, fit_lo) / n;
-        W[k][0] = X[k][0] * g;
-        W[k][1] = X[k][1] * g;
+        w->t[k] = sqrt(w->z[k][0] * w->z[k][0] + w->z[k][1] * w->z[k][1]);
+    fftw_execute(w->fwd);
+    for (int k = 0; k < w->nh; k++) {
+        double g = taper(k * df, 0.5 * lo, lo) / n;
+        w->W[k][0] = w->X[k][0] * g;
+        w->W[k][1] = w->X[k][1] * g;
     }
-    fftw_execute(inv);
+    fftw_execute(w->inv);
     for (int k = 0; k < n; k++) {
-        e[k] = t[k] > 0.0 ? t[k] : 0.0;
-        ms += e[k] * e[k];
+        w->e[k] = w->t[k] > 0.0 ? w->t[k] : 0.0;
+        ms += w->e[k] * w->e[k];
     }
-    ms /= n;
-    if (!(ms > 0.0))
-        goto out;
-    /* 3. enveloped noise with the law's spectrum above the band */
+    return ms / n;
+}
+
+/* 3. noise under the envelope w->e (mean square ms), shaped to the law
+   above f1 (cross-faded over [f1, f2], faded out over [f_top, 1.1 f_top]),
+   added to x */
+static void add_noise(bandext_work *w, float *x, int stride, double ms,
+                      double rate, double f1, double f2, double f_top,
+                      double slope, double icpt, uint32_t *rng)
+{
+    const int n = w->n;
     for (int k = 0; k < n; k++)
-        t[k] = e[k] / sqrt(ms) *
-               (aero_uniform(&rng) + aero_uniform(&rng) + aero_uniform(&rng));
-    fftw_execute(fwd);
-    for (int k = 0; k < nh; k++) {
-        double f = k * df, g, tt, p;
+        w->t[k] = w->e[k] / sqrt(ms) *
+                  (aero_uniform(rng) + aero_uniform(rng) + aero_uniform(rng));
+    fftw_execute(w->fwd);
+    for (int k = 0; k < w->nh; k++) {
+        double f = k * w->df, g, tt, p;
         if (f <= f1) {
-            W[k][0] = W[k][1] = 0.0;
+            w->W[k][0] = w->W[k][1] = 0.0;
             continue;
         }
         tt = taper(f, f1, f2);
         g = (1.0 - tt * tt) * taper(f, f_top, fmin(1.1 * f_top, 0.5 * rate));
         p = pow(10.0, icpt + slope * log10(f)); /* the law's |X|^2 */
         g = sqrt(p * g / n) / n; /* to the law, and c2r's factor n */
-        W[k][0] = X[k][0] * g;
-        W[k][1] = X[k][1] * g;
+        w->W[k][0] = w->X[k][0] * g;
+        w->W[k][1] = w->X[k][1] * g;
     }
-    fftw_execute(inv);
+    fftw_execute(w->inv);
     for (int k = 0; k < n; k++)
-        x[(size_t)k * stride] += (float)t[k];
-    info->extended = 1;
-out:
-    if (fwd) fftw_destroy_plan(fwd);
-    if (inv) fftw_destroy_plan(inv);
-    if (zinv) fftw_destroy_plan(zinv);
-    fftw_free(t);
-    fftw_free(e);
-    fftw_free(X);
-    fftw_free(W);
-    fftw_free(z);
-    return status;
+        x[(size_t)k * stride] += (float)w->t[k];
+}
+
+int aero_bandext_apply(float *x, int n, int stride, double rate, double f1,
+                       double f2, double f_top, uint32_t seed,
+                       aero_bandext_info *info)
+{
+    const double fit_lo = f1 / 4.0, fit_hi = f1;
+    bandext_work w;
+    double slope = 0.0, icpt = 0.0, ms;
+    uint32_t rng = seed ? seed : 1;
+    aero_bandext_info dummy;
+    if (!info) info = &dummy;
+    memset(info, 0, sizeof *info);
+    if (n < 64 || stride < 1 || !(rate > 0.0) || !(f1 > 0.0) || !(f2 > f1) ||
+        !(f_top >= f2) || !(f_top < 0.5 * rate) || fit_lo < 2.0 * (rate / n))
+        return -1;
+    info->fit_lo = fit_lo;
+    info->fit_hi = fit_hi;
+    if (work_open(&w, n, rate))
+        return -1;
+    if (fit_law(&w, x, stride, fit_lo, fit_hi, &slope, &icpt) >= 3) {
+        info->slope = slope;
+        /* a rising spectrum has no law to continue */
+        if (slope < 0.0 && (ms = envelope(&w, fit_lo, fit_hi)) > 0.0) {
+            add_noise(&w, x, stride, ms, rate, f1, f2, f_top, slope, icpt,
+                      &rng);
+            info->extended = 1;
+        }
+    }
+    work_close(&w);
+    return 0;
 }

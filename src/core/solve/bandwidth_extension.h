@@ -1,8 +1,8 @@
 /* aero: spectral bandwidth extension of a looped sound texture above the
- * band a simulation resolves (after Chadwick & James 2011, "Animating
- * fire with sound", ACM TOG 30(4): their physically based fire sound
- * stops at the simulation's low band and is extended upwards by noise
- * whose spectrum continues the band's and whose envelope follows it).
+ * band a simulation resolves (after Chadwick and James 2011: their
+ * physically based fire sound stops at the simulation's low band and is
+ * extended upwards by noise whose spectrum continues the band's and whose
+ * envelope follows it).
  *
  * The physical band is left as it is: below f1 (where the simulation's
  * own taper starts) not one bin changes. Over the loop (n frames, taken

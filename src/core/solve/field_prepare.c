@@ -7,35 +7,17 @@
 #include "aero_util.h"
 
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-static void say(char *err, size_t errlen, const char *fmt, ...)
-{
-    va_list ap;
-    if (!err || !errlen)
-        return;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
-
 void aero_field_params_default(aero_field_params *p)
 {
-    memset(p, 0, sizeof *p);
-    p->in_lo = 0;
-    p->in_hi = 1;
-    p->rho_lo = 0;
-    p->rho_hi = 1;
-    p->log_input = 0;
-    p->vscale = 1;
-    p->use_velocity = 1;
-    p->threshold[0] = 40;
-    p->threshold[1] = 2e5;
-    p->threshold[2] = 2e5;
-    p->zero = 1;
+    /* ranges, velocity, thresholds (monopole, dipole, quadrupole), ~0 */
+    *p = (aero_field_params){
+        .in_lo = 0, .in_hi = 1, .rho_lo = 0, .rho_hi = 1, .log_input = 0,
+        .vscale = 1, .use_velocity = 1, .threshold = {40, 2e5, 2e5},
+        .zero = 1};
 }
 
 int aero_field_params_check(const aero_field_params *p, char *err,
@@ -43,30 +25,31 @@ int aero_field_params_check(const aero_field_params *p, char *err,
 {
     if (!aero_is_finite(p->in_lo) || !aero_is_finite(p->in_hi) ||
         p->in_hi == p->in_lo || fabs(p->in_hi - p->in_lo) < 1e-30) {
-        say(err, errlen, "input range %g..%g is empty", p->in_lo, p->in_hi);
+        aero_say(err, errlen, "input range %g..%g is empty", p->in_lo,
+                 p->in_hi);
         return -1;
     }
     if (!aero_is_finite(p->rho_lo) || !aero_is_finite(p->rho_hi) ||
         p->rho_lo < 0 || p->rho_hi < 0 || p->rho_hi > 1e6 ||
         p->rho_lo > 1e6) {
-        say(err, errlen, "density range %g..%g kg/m^3 must lie in 0..1e6",
-            p->rho_lo, p->rho_hi);
+        aero_say(err, errlen, "density range %g..%g kg/m^3 must lie in 0..1e6",
+                 p->rho_lo, p->rho_hi);
         return -1;
     }
     if (!aero_is_finite(p->vscale) || fabs(p->vscale) > 1e6) {
-        say(err, errlen, "velocity scale %g out of range (-1e6..1e6)",
-            p->vscale);
+        aero_say(err, errlen, "velocity scale %g out of range (-1e6..1e6)",
+                 p->vscale);
         return -1;
     }
     for (int t = 0; t < 3; t++)
         if (!(p->threshold[t] > 0) || p->threshold[t] > 1e30) {
-            say(err, errlen, "%s threshold %g must be > 0",
-                t == 0 ? "monopole" : t == 1 ? "dipole" : "quadrupole",
-                p->threshold[t]);
+            aero_say(err, errlen, "%s threshold %g must be > 0",
+                     t == 0 ? "monopole" : t == 1 ? "dipole" : "quadrupole",
+                     p->threshold[t]);
             return -1;
         }
     if (!(p->zero >= 0 && p->zero <= 1)) {
-        say(err, errlen, "zero fraction %g out of range (0..1)", p->zero);
+        aero_say(err, errlen, "zero fraction %g out of range (0..1)", p->zero);
         return -1;
     }
     return 0;
@@ -74,12 +57,7 @@ int aero_field_params_check(const aero_field_params *p, char *err,
 
 void aero_field_sources_free(aero_field_sources *s)
 {
-    free(s->pos);
-    free(s->vertex);
-    free(s->g);
-    free(s->type);
-    free(s->first);
-    free(s->last);
+    AERO_FREE_ALL(s->pos, s->vertex, s->g, s->type, s->first, s->last);
     memset(s, 0, sizeof *s);
 }
 
@@ -87,21 +65,13 @@ void aero_field_sources_free(aero_field_sources *s)
 
 void aero_field_pre_free(aero_field_pre *p)
 {
-    for (int k = 0; k < AERO_FIELD_RING; k++) {
-        free(p->rho[k]);
-        free(p->dv[k]);
-        free(p->q[k]);
-        free(p->quad[k]);
-    }
-    for (int a = 0; a < 3; a++) {
-        free(p->vel[a]);
-        free(p->strength[a]);
-    }
+    for (int k = 0; k < AERO_FIELD_RING; k++)
+        AERO_FREE_ALL(p->rho[k], p->dv[k], p->q[k], p->quad[k]);
+    for (int a = 0; a < 3; a++)
+        AERO_FREE_ALL(p->vel[a], p->strength[a]);
     for (int a = 0; a < 6; a++)
         free(p->tens[a]);
-    free(p->cls);
-    free(p->work);
-    free(p->entries);
+    AERO_FREE_ALL(p->cls, p->work, p->entries);
     memset(p, 0, sizeof *p);
 }
 
@@ -115,7 +85,8 @@ int aero_field_pre_init(aero_field_pre *p, const aero_volume_info *info,
         return -1;
     if (info->nx < 2 || info->ny < 2 || info->nz < 2 || info->frames < 1 ||
         !(info->rate > 0) || (info->fields != 1 && info->fields != 4)) {
-        say(err, errlen, "unusable volume (dims, frames, rate or fields)");
+        aero_say(err, errlen,
+                 "unusable volume (dims, frames, rate or fields)");
         return -1;
     }
     p->info = *info;
@@ -138,8 +109,8 @@ int aero_field_pre_init(aero_field_pre *p, const aero_volume_info *info,
     ok &= !!(p->work = malloc(2 * p->n * sizeof(double)));
     if (!ok) {
         aero_field_pre_free(p);
-        say(err, errlen, "out of memory for a %dx%dx%d volume", info->nx,
-            info->ny, info->nz);
+        aero_say(err, errlen, "out of memory for a %dx%dx%d volume", info->nx,
+                 info->ny, info->nz);
         return -1;
     }
     return 0;
@@ -228,7 +199,7 @@ static void spatial(aero_field_pre *p, const float *raw, int j)
     float **vel = p->vel, **tens = p->tens;
     const size_t n = p->n;
 
-    /* 1. acoustic mapping (paper 3.2.2) */
+    /* 1. acoustic mapping (Shin and Bajaj, sec. 3.2.2) */
     for (size_t i = 0; i < n; i++) {
         double s = raw[i];
         if (p->par.log_input)
@@ -426,13 +397,13 @@ int aero_field_pre_push(aero_field_pre *p, const float *raw, char *err,
 {
     int j = p->pushed;
     if (j >= p->info.frames) {
-        say(err, errlen, "more frames pushed than the volume has");
+        aero_say(err, errlen, "more frames pushed than the volume has");
         return -1;
     }
     spatial(p, raw, j);
     p->pushed++;
     if (advance(p)) {
-        say(err, errlen, "out of memory for the source list");
+        aero_say(err, errlen, "out of memory for the source list");
         return -1;
     }
     return 0;
@@ -446,11 +417,12 @@ int aero_field_pre_finish(aero_field_pre *p, aero_field_sources *out,
     int *id = NULL;
     memset(out, 0, sizeof *out);
     if (p->pushed != frames) {
-        say(err, errlen, "only %d of %d frames were read", p->pushed, frames);
+        aero_say(err, errlen, "only %d of %d frames were read", p->pushed,
+                 frames);
         return -1;
     }
     if (advance(p) || p->emitted != frames) {
-        say(err, errlen, "out of memory for the source list");
+        aero_say(err, errlen, "out of memory for the source list");
         return -1;
     }
     /* active vertices: a source in at least one frame */
@@ -531,7 +503,7 @@ int aero_field_pre_finish(aero_field_pre *p, aero_field_sources *out,
 oom:
     free(id);
     aero_field_sources_free(out);
-    say(err, errlen, "out of memory for the sources");
+    aero_say(err, errlen, "out of memory for the sources");
     return -1;
 }
 
@@ -553,7 +525,7 @@ int aero_field_prepare(const aero_volume_info *info,
         return -1;
     raw = malloc(aero_volume_count(info) * info->fields * sizeof(float));
     if (!raw) {
-        say(err, errlen, "out of memory");
+        aero_say(err, errlen, "out of memory");
         aero_field_pre_free(&pre);
         return -1;
     }
@@ -565,7 +537,7 @@ int aero_field_prepare(const aero_volume_info *info,
         if (aero_field_pre_push(&pre, raw, err, errlen))
             goto done;
         if (progress && progress(ctx, k + 1, info->frames)) {
-            say(err, errlen, "cancelled");
+            aero_say(err, errlen, "cancelled");
             goto done;
         }
     }

@@ -1,12 +1,12 @@
 /* aero: field auralization of time-varying volume data, the offline half
  * (the sources of sound in each frame; field_render.h plays them), after
- * Shin and Bajaj, "Auralization I: Vortex Sound Synthesis", made fast.
+ * Shin and Bajaj (Auralization I: vortex sound synthesis), made fast.
  *
- * 1. Acoustic mapping (paper 3.2.2): the field value s (10^s if the data
- *    are logarithms) is mapped linearly from [in_lo, in_hi] onto an air
- *    density [rho_lo, rho_hi] (kg/m^3). The particle velocity is the
- *    volume's own velocity fields if it has them (a flow), else the paper's
- *    mapping v = vscale * grad(rho).
+ * 1. Acoustic mapping (Shin and Bajaj, sec. 3.2.2): the field value s
+ *    (10^s if the data are logarithms) is mapped linearly from
+ *    [in_lo, in_hi] onto an air density [rho_lo, rho_hi] (kg/m^3). The
+ *    particle velocity is the volume's own velocity fields if it has them
+ *    (a flow), else the paper's mapping v = vscale * grad(rho).
  * 2. Per vertex and frame, by plain central differences (no search, so
  *    O(vertices) per frame: milliseconds, not the paper's 6200 s at 64^3):
  *      monopole strength   |q|,  q = d rho/dt + div(rho v) with a flow

@@ -10,20 +10,12 @@
 
 void aero_vortex_defaults(aero_vortex_params *p)
 {
-    memset(p, 0, sizeof *p);
-    p->speed = 4.0;
-    p->box = 0.1;
-    p->n = 32;
-    p->nz = 48;
-    p->nu = AERO_NU;
-    p->confinement = 9.6;
-    p->turbulence = 0.3;
-    p->cfl = 0.5;
-    p->settle = 3.0;
-    p->receivers = 8;
-    p->elevation = 0.0;
-    p->source = AERO_VORTEX_WINDOW;
-    p->seed = 1;
+    /* the flow and its box; the forcing and the step; the listeners */
+    *p = (aero_vortex_params){
+        .speed = 4.0, .box = 0.1, .n = 32, .nz = 48, .nu = AERO_NU,
+        .confinement = 9.6, .turbulence = 0.3, .cfl = 0.5, .settle = 3.0,
+        .receivers = 8, .elevation = 0.0, .source = AERO_VORTEX_WINDOW,
+        .seed = 1};
 }
 
 /* C-infinity step from 0 (t <= 0) to 1 (t >= 1) */
@@ -333,13 +325,8 @@ static int open_run(vortex_run *v, const aero_vortex_params *p, double rate,
 static void close_run(vortex_run *v, void *ctx)
 {
     const aero_vortex_params *p = v->p;
-    free(v->win);
-    free(v->tab);
-    free(v->rec_s);
-    free(v->series);
-    free(v->pj);
-    free(v->pbar);
-    free(v->xh);
+    AERO_FREE_ALL(v->win, v->tab, v->rec_s, v->series, v->pj, v->pbar,
+                  v->xh);
     if (v->solver_up) {
         if (p->plan_lock) p->plan_lock(ctx, 1);
         aero_flow3d_free(&v->s);

@@ -1,10 +1,10 @@
-/* aero: vortex sound of a turbulent box of air (Dobashi et al. 2004;
- * Yamamoto and Nishita 2004), the offline half: one sound texture
- * channel Q(u, t) per average flow speed u.
+/* aero: vortex sound of a turbulent box of air (Dobashi et al. 2004), the
+ * offline half: one sound texture channel Q(u, t) per average flow speed
+ * u.
  *
- * Howe's compact vortex-sound formula (Howe, "Theory of Vortex Sound",
- * 2003, eq. 2.3.x, which corrects Dobashi et al. 2004's eq. 1: c0^2 goes
- * in the denominator and the far field falls as 1/r, not 1/r^3):
+ * Howe's compact vortex-sound formula (Howe 2003, eq. 2.3.x, which
+ * corrects Dobashi et al. 2004's eq. 1: c0^2 goes in the denominator and
+ * the far field falls as 1/r, not 1/r^3):
  *     p(x, t) = rho0 x_a x_b / (12 pi c0^2 |x|^3) d^3/dt^3 S_ab(t - r/c0),
  *     S_ab = INT y_a (y x omega)_b dy,
  * with y measured from the source volume's centre. A texture holds the

@@ -184,7 +184,11 @@ static int run_directions(object_plan *o, direction_task *ctx)
 {
     object_job *j = o->j;
     const int nd = o->nd, avail = j->job.loop.avail;
+    /* the directions in parallel; threads left over (fewer directions
+       than threads: a sphere) go inside each simulation */
     const int threads = aerotex_job_threads(&j->job, nd);
+    const int inner = j->job.threads / threads > 1 ? j->job.threads / threads
+                                                   : 1;
     int status = 0;
     aerotex_progress_start(&j->job.prog, NULL,
                            (long)nd * aero_body_flow_steps(&o->base,
@@ -195,13 +199,14 @@ static int run_directions(object_plan *o, direction_task *ctx)
                 "%d direction%s, %d region%s, %g cells per d, %ld steps, %d "
                 "thread%s\n", o->desc, o->d, j->speed,
                 j->speed * o->d / AERO_NU, nd, nd > 1 ? "s" : "", o->nr,
-                o->nr > 1 ? "s" : "", j->grid, j->job.prog.total, threads,
-                threads > 1 ? "s" : "");
-#pragma omp parallel for schedule(dynamic, 1) num_threads(j->job.threads)
+                o->nr > 1 ? "s" : "", j->grid, j->job.prog.total, threads * inner,
+                threads * inner > 1 ? "s" : "");
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int k = 0; k < nd; k++) {
         aero_body_flow_params p = o->base;
         direction_task *c = &ctx[k];
         p.angle = o->angles[k];
+        p.threads = inner;
         p.seed = j->seed * 2654435761u + 7919u * (unsigned)(k + 1);
         p.plan_lock = aerotex_plan_lock;
         c->task.job = &j->job;

@@ -346,6 +346,7 @@ static int open_run(body_run *b, const aero_body_flow_params *p, double rate,
     fp.u_ref = p->speed;
     fp.confinement = p->confinement;
     fp.advection = AERO_F3_MACCORMACK;
+    fp.threads = p->threads;
     fp.sponge = p->downstream > 0.0
                     ? fmin(0.5, p->sponge * p->downstream /
                                     (b->L.nz * p->cell))

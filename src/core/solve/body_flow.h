@@ -51,6 +51,8 @@ typedef struct {
     double settle;       /* start-up discarded, s */
     double noise;        /* rms lateral inflow noise / v0 */
     uint32_t seed;
+    int threads;         /* OpenMP threads inside the one simulation
+                            (flow3d.h; 0 or 1: one) */
     /* FFTW's planner is not thread-safe: called with on = 1 / 0 around
        the solver's init and free when directions run in parallel */
     void (*plan_lock)(void *ctx, int on);

@@ -10,6 +10,13 @@
 
 #define NEAR_BODY_CELLS 2
 
+/* the loop that follows, over z-slabs (or planes of spectral modes), on
+   the solver's threads: every iteration writes its own cells, so the
+   result does not depend on the number of threads */
+#define F3_SLABS                                                          \
+    _Pragma("omp parallel for schedule(static) num_threads(s->p.threads) \
+             if (s->p.threads > 1)")
+
 /* i modulo n for any int (the common case is one step out of range) */
 static inline int wrap(int i, int n)
 {
@@ -44,6 +51,8 @@ int aero_flow3d_init(aero_flow3d *s, const aero_flow3d_params *p, char *err,
         return -1;
     }
     s->p = *p;
+    if (s->p.threads < 1) s->p.threads = 1;
+    if (s->p.threads > 64) s->p.threads = 64;
     s->nx = p->nx;
     s->ny = p->ny;
     s->nz = p->nz;
@@ -170,6 +179,11 @@ static void apply_boundaries(aero_flow3d *s)
            sizeof(float) * pl);
 }
 
+/* the smaller and larger of two finite floats, inline (fminf and fmaxf
+   are library calls without -ffast-math: a quarter of a step's time) */
+static inline float min_f(float a, float b) { return b < a ? b : a; }
+static inline float max_f(float a, float b) { return b > a ? b : a; }
+
 /* the smallest and largest of the 8 lattice values around a sample point
    (layers a and b, rows j0 and j1, columns i0 and i1): the MacCormack
    limiter's bounds */
@@ -181,23 +195,26 @@ static inline void corner_range(const float *a, const float *b, int nx,
                         b[j1 * nx + i0], b[j1 * nx + i1]};
     float lo = c[0], hi = c[0];
     for (int q = 1; q < 8; q++) {
-        lo = fminf(lo, c[q]);
-        hi = fmaxf(hi, c[q]);
+        lo = min_f(lo, c[q]);
+        hi = max_f(hi, c[q]);
     }
     mm[0] = lo;
     mm[1] = hi;
 }
 
-/* trilinear sample of a u- or v-type field (layers -1..nz) at grid
-   coordinates (fi, fj, fk) of its own lattice; periodic in i, j. With mm
-   (not NULL) also the smallest and largest of the 8 values around it
-   (the MacCormack limiter) */
-static inline float sample_uv(const aero_flow3d *s, const float *f, float fi,
-                              float fj, float fk, float *mm)
+/* trilinear sample of a face field at grid coordinates (fi, fj, fk) of its
+   own lattice; periodic in i, j. first is the field's lowest layer (-1 for
+   u and v, which carry a ghost layer below; 0 for w), layer0 the address
+   of its layer 0; both reach up to layer nz. With mm (not NULL) also the
+   smallest and largest of the 8 values around it (the MacCormack
+   limiter) */
+static inline float sample_face(const aero_flow3d *s, const float *layer0,
+                                int first, float fi, float fj, float fk,
+                                float *mm)
 {
     int i0, j0, k0, i1, j1;
     float tx, ty, tz;
-    if (fk < -1.0f) fk = -1.0f;
+    if (fk < (float)first) fk = (float)first;
     if (fk > (float)s->nz) fk = (float)s->nz;
     i0 = (int)floorf(fi);
     j0 = (int)floorf(fj);
@@ -214,44 +231,7 @@ static inline float sample_uv(const aero_flow3d *s, const float *f, float fi,
     i1 = i0 + 1 == s->nx ? 0 : i0 + 1;
     j1 = j0 + 1 == s->ny ? 0 : j0 + 1;
     {
-        const float *a = f + AERO_F3_UV(s, 0, 0, k0);
-        const float *b = a + s->plane;
-        const int nx = s->nx;
-        float a00 = a[j0 * nx + i0] + tx * (a[j0 * nx + i1] - a[j0 * nx + i0]);
-        float a10 = a[j1 * nx + i0] + tx * (a[j1 * nx + i1] - a[j1 * nx + i0]);
-        float b00 = b[j0 * nx + i0] + tx * (b[j0 * nx + i1] - b[j0 * nx + i0]);
-        float b10 = b[j1 * nx + i0] + tx * (b[j1 * nx + i1] - b[j1 * nx + i0]);
-        float a0 = a00 + ty * (a10 - a00), b0 = b00 + ty * (b10 - b00);
-        if (mm)
-            corner_range(a, b, nx, i0, i1, j0, j1, mm);
-        return a0 + tz * (b0 - a0);
-    }
-}
-
-/* the same for w (layers 0..nz) */
-static inline float sample_w(const aero_flow3d *s, const float *f, float fi,
-                             float fj, float fk, float *mm)
-{
-    int i0, j0, k0, i1, j1;
-    float tx, ty, tz;
-    if (fk < 0.0f) fk = 0.0f;
-    if (fk > (float)s->nz) fk = (float)s->nz;
-    i0 = (int)floorf(fi);
-    j0 = (int)floorf(fj);
-    k0 = (int)floorf(fk);
-    tx = fi - i0;
-    ty = fj - j0;
-    tz = fk - k0;
-    if (k0 >= s->nz) {
-        k0 = s->nz - 1;
-        tz = 1.0f;
-    }
-    i0 = wrap(i0, s->nx);
-    j0 = wrap(j0, s->ny);
-    i1 = i0 + 1 == s->nx ? 0 : i0 + 1;
-    j1 = j0 + 1 == s->ny ? 0 : j0 + 1;
-    {
-        const float *a = f + AERO_F3_C(s, 0, 0, k0);
+        const float *a = layer0 + (ptrdiff_t)k0 * (ptrdiff_t)s->plane;
         const float *b = a + s->plane;
         const int nx = s->nx;
         float a00 = a[j0 * nx + i0] + tx * (a[j0 * nx + i1] - a[j0 * nx + i0]);
@@ -280,6 +260,7 @@ static void advect_pass(aero_flow3d *s, const advect_io *io, double dt)
     const float c = (float)(dt / s->p.h), lim = (float)nx;
     const float *u = s->u, *v = s->v, *w = s->w;
     const size_t uvn = s->plane * (size_t)(nz + 2);
+    F3_SLABS
     for (int k = 0; k < nz; k++)
         for (int j = 0; j < ny; j++) {
             int jm = j ? j - 1 : ny - 1, jp = j + 1 == ny ? 0 : j + 1;
@@ -297,12 +278,12 @@ static void advect_pass(aero_flow3d *s, const advect_io *io, double dt)
                                    w[AERO_F3_C(s, i, j, k)] +
                                    w[AERO_F3_C(s, im, j, k + 1)] +
                                    w[AERO_F3_C(s, i, j, k + 1)]);
-                float dx = fmaxf(-lim, fminf(lim, U * c));
-                float dy = fmaxf(-lim, fminf(lim, V * c));
+                float dx = max_f(-lim, min_f(lim, U * c));
+                float dy = max_f(-lim, min_f(lim, V * c));
                 float dz = W * c;
                 a = AERO_F3_UV(s, i, j, k);
-                io->du[a] = sample_uv(s, io->u, i - dx, j - dy, k - dz,
-                                      io->lo ? mm : NULL);
+                io->du[a] = sample_face(s, io->u + s->plane, -1, i - dx,
+                                        j - dy, k - dz, io->lo ? mm : NULL);
                 if (io->lo) {
                     io->lo[a] = mm[0];
                     io->hi[a] = mm[1];
@@ -317,11 +298,11 @@ static void advect_pass(aero_flow3d *s, const advect_io *io, double dt)
                              w[AERO_F3_C(s, i, j, k)] +
                              w[AERO_F3_C(s, i, jm, k + 1)] +
                              w[AERO_F3_C(s, i, j, k + 1)]);
-                dx = fmaxf(-lim, fminf(lim, U * c));
-                dy = fmaxf(-lim, fminf(lim, V * c));
+                dx = max_f(-lim, min_f(lim, U * c));
+                dy = max_f(-lim, min_f(lim, V * c));
                 dz = W * c;
-                io->dv[a] = sample_uv(s, io->v, i - dx, j - dy, k - dz,
-                                      io->lo ? mm : NULL);
+                io->dv[a] = sample_face(s, io->v + s->plane, -1, i - dx,
+                                        j - dy, k - dz, io->lo ? mm : NULL);
                 if (io->lo) {
                     io->lo[uvn + a] = mm[0];
                     io->hi[uvn + a] = mm[1];
@@ -336,12 +317,12 @@ static void advect_pass(aero_flow3d *s, const advect_io *io, double dt)
                              v[AERO_F3_UV(s, i, j, k + 1)] +
                              v[AERO_F3_UV(s, i, jp, k + 1)]);
                 W = w[AERO_F3_C(s, i, j, k + 1)];
-                dx = fmaxf(-lim, fminf(lim, U * c));
-                dy = fmaxf(-lim, fminf(lim, V * c));
+                dx = max_f(-lim, min_f(lim, U * c));
+                dy = max_f(-lim, min_f(lim, V * c));
                 dz = W * c;
                 a = AERO_F3_C(s, i, j, k + 1);
-                io->dw[a] = sample_w(s, io->w, i - dx, j - dy, (k + 1) - dz,
-                                     io->lo ? mm : NULL);
+                io->dw[a] = sample_face(s, io->w, 0, i - dx, j - dy,
+                                        (k + 1) - dz, io->lo ? mm : NULL);
                 if (io->lo) {
                     io->lo[2 * uvn + a] = mm[0];
                     io->hi[2 * uvn + a] = mm[1];
@@ -412,6 +393,7 @@ static void advect(aero_flow3d *s, double dt)
             const float *rt = f == 0 ? bu : f == 1 ? bv : bw;
             const float *lo = s->mc_lo + f * uvn, *hi = s->mc_hi + f * uvn;
             /* layers 0..nz-1 of u, v and 1..nz of w: the same range */
+            F3_SLABS
             for (size_t a = s->plane; a < wn; a++) {
                 float x = dst[a] + 0.5f * (old[a] - rt[a]);
                 dst[a] = x < lo[a] ? lo[a] : x > hi[a] ? hi[a] : x;
@@ -425,6 +407,7 @@ static void advect(aero_flow3d *s, double dt)
 static void centre_velocity(aero_flow3d *s)
 {
     const int nx = s->nx, ny = s->ny, nz = s->nz;
+    F3_SLABS
     for (int k = 0; k < nz; k++)
         for (int j = 0; j < ny; j++) {
             int jp = j + 1 == ny ? 0 : j + 1;
@@ -457,6 +440,7 @@ void aero_flow3d_vorticity(aero_flow3d *s)
     const int nx = s->nx, ny = s->ny, nz = s->nz;
     const float ih = (float)(1.0 / s->p.h);
     centre_velocity(s);
+    F3_SLABS
     for (int k = 0; k < nz; k++)
         for (int j = 0; j < ny; j++) {
             int jm = j ? j - 1 : ny - 1, jp = j + 1 == ny ? 0 : j + 1;
@@ -494,6 +478,7 @@ static void confine(aero_flow3d *s, double dt)
     aero_flow3d_vorticity(s);
     /* the force goes into cx, cy, cz (the centred velocity is not needed
        any more) */
+    F3_SLABS
     for (int k = 0; k < nz; k++)
         for (int j = 0; j < ny; j++) {
             int jm = j ? j - 1 : ny - 1, jp = j + 1 == ny ? 0 : j + 1;
@@ -515,6 +500,7 @@ static void confine(aero_flow3d *s, double dt)
                 s->cz[c] = Nx * s->oy[c] - Ny * s->ox[c];
             }
         }
+    F3_SLABS
     for (int k = 0; k < nz; k++)
         for (int j = 0; j < ny; j++) {
             int jm = j ? j - 1 : ny - 1;
@@ -539,6 +525,7 @@ static void diffuse_field(const aero_flow3d *s, const float *src, float *dst,
                           int k0, int k1, int uv, float r)
 {
     const int nx = s->nx, ny = s->ny;
+    F3_SLABS
     for (int k = k0; k <= k1; k++)
         for (int j = 0; j < ny; j++) {
             int jm = j ? j - 1 : ny - 1, jp = j + 1 == ny ? 0 : j + 1;
@@ -582,6 +569,7 @@ void aero_flow3d_project(aero_flow3d *s)
     fftwf_complex *sp = s->spec;
     apply_boundaries(s);
     /* h^2 div u, the right-hand side (h^2 lap phi = h^2 div u) */
+    F3_SLABS
     for (int k = 0; k < nz; k++)
         for (int j = 0; j < ny; j++) {
             int jp = j + 1 == ny ? 0 : j + 1;
@@ -599,6 +587,7 @@ void aero_flow3d_project(aero_flow3d *s)
     /* tridiagonal along z per (kx, ky) (sub- and super-diagonal 1) */
     {
         const size_t stride = (size_t)nxh * ny;
+        F3_SLABS
         for (size_t m = 0; m < stride; m++) {
             const float *tm = s->tri_m + m;
             fftwf_complex *d = sp + m;
@@ -620,6 +609,7 @@ void aero_flow3d_project(aero_flow3d *s)
     /* u -= grad phi (phi scaled by the unnormalised inverse FFT) */
     {
         const float g = norm * ih;
+        F3_SLABS
         for (int k = 0; k < nz; k++)
             for (int j = 0; j < ny; j++) {
                 int jm = j ? j - 1 : ny - 1;
@@ -706,6 +696,39 @@ static void sponge(aero_flow3d *s, double dt)
     }
 }
 
+/* the cells whose low faces the forcing must visit: a face is solid only
+   when one of its two cells is, so the solid cells' box and one cell past
+   its high side (the whole width across a periodic side the box touches) */
+static void body_box(aero_flow3d *s, const float *solid)
+{
+    const int n[3] = {s->nx, s->ny, s->nz};
+    int lo[3] = {n[0], n[1], n[2]}, hi[3] = {-1, -1, -1};
+    for (int k = 0; k < n[2]; k++)
+        for (int j = 0; j < n[1]; j++)
+            for (int i = 0; i < n[0]; i++) {
+                const int at[3] = {i, j, k};
+                if (!(solid[AERO_F3_C(s, i, j, k)] > 0.0f))
+                    continue;
+                for (int d = 0; d < 3; d++) {
+                    if (at[d] < lo[d]) lo[d] = at[d];
+                    if (at[d] > hi[d]) hi[d] = at[d];
+                }
+            }
+    for (int d = 0; d < 3; d++) {
+        if (hi[d] < 0) { /* no solid cell: an empty range */
+            s->body_lo[d] = 0;
+            s->body_hi[d] = -1;
+            continue;
+        }
+        s->body_lo[d] = lo[d];
+        s->body_hi[d] = hi[d] + 1 < n[d] ? hi[d] + 1 : n[d] - 1;
+        if (d < 2 && (lo[d] == 0 || hi[d] + 1 >= n[d])) {
+            s->body_lo[d] = 0;
+            s->body_hi[d] = n[d] - 1;
+        }
+    }
+}
+
 void aero_flow3d_set_body(aero_flow3d *s, const float *solid,
                           const int *region, int n_regions, double *force)
 {
@@ -736,6 +759,8 @@ void aero_flow3d_set_body(aero_flow3d *s, const float *solid,
                                 }
                     }
     }
+    if (solid)
+        body_box(s, solid);
     s->solid = solid;
     s->region = solid ? region : NULL;
     s->n_regions = solid && force ? n_regions : 0;
@@ -747,7 +772,7 @@ void aero_flow3d_set_body(aero_flow3d *s, const float *solid,
    body (flow3d.h) */
 static void force_body(aero_flow3d *s, double dt)
 {
-    const int nx = s->nx, ny = s->ny, nz = s->nz;
+    const int nx = s->nx, ny = s->ny;
     const size_t pl = s->plane;
     const float *chi = s->solid;
     const int *reg = s->region;
@@ -756,10 +781,10 @@ static void force_body(aero_flow3d *s, double dt)
     double *F = s->region_force;
     if (F)
         memset(F, 0, sizeof(double) * 3 * (size_t)nr);
-    for (int k = 0; k < nz; k++)
-        for (int j = 0; j < ny; j++) {
+    for (int k = s->body_lo[2]; k <= s->body_hi[2]; k++)
+        for (int j = s->body_lo[1]; j <= s->body_hi[1]; j++) {
             int jm = j ? j - 1 : ny - 1;
-            for (int i = 0; i < nx; i++) {
+            for (int i = s->body_lo[0]; i <= s->body_hi[0]; i++) {
                 int im = i ? i - 1 : nx - 1;
                 size_t c = AERO_F3_C(s, i, j, k);
                 size_t n3[3] = {AERO_F3_C(s, im, j, k), AERO_F3_C(s, i, jm, k),

@@ -30,12 +30,9 @@ static inline int wrap(int i, int n)
     return i;
 }
 
-int aero_flow3d_init(aero_flow3d *s, const aero_flow3d_params *p, char *err,
-                     size_t errlen)
+/* the parameters a solver can run with: 0, or -1 with a message */
+static int check_params(const aero_flow3d_params *p, char *err, size_t errlen)
 {
-    size_t cells, uvn, wn, specn;
-    int nxh;
-    memset(s, 0, sizeof *s);
     if (p->nx < 4 || p->ny < 4 || p->nz < 3 || (p->nx & 1) || (p->ny & 1) ||
         p->nx > 1024 || p->ny > 1024 || p->nz > 1024) {
         snprintf(err, errlen, "grid %d x %d x %d: nx, ny even and >= 4, "
@@ -50,18 +47,15 @@ int aero_flow3d_init(aero_flow3d *s, const aero_flow3d_params *p, char *err,
         snprintf(err, errlen, "bad cell size, viscosity or confinement");
         return -1;
     }
-    s->p = *p;
-    if (s->p.threads < 1) s->p.threads = 1;
-    if (s->p.threads > 64) s->p.threads = 64;
-    s->nx = p->nx;
-    s->ny = p->ny;
-    s->nz = p->nz;
-    s->plane = (size_t)p->nx * p->ny;
-    cells = s->plane * p->nz;
-    uvn = s->plane * (p->nz + 2);
-    wn = s->plane * (p->nz + 1);
-    nxh = p->nx / 2 + 1;
-    specn = (size_t)nxh * p->ny * p->nz;
+    return 0;
+}
+
+/* every field of the grid (s->nx.. set): 0, or -1 (out of memory) */
+static int alloc_fields(aero_flow3d *s)
+{
+    const size_t cells = s->plane * s->nz;
+    const size_t uvn = s->plane * (s->nz + 2), wn = s->plane * (s->nz + 1);
+    const size_t specn = (size_t)(s->nx / 2 + 1) * s->ny * s->nz;
     s->u = calloc(uvn, sizeof(float));
     s->v = calloc(uvn, sizeof(float));
     s->w = calloc(wn, sizeof(float));
@@ -81,7 +75,7 @@ int aero_flow3d_init(aero_flow3d *s, const aero_flow3d_params *p, char *err,
     s->in_v = calloc(s->plane, sizeof(float));
     s->in_w = calloc(s->plane, sizeof(float));
     s->tri_m = malloc(sizeof(float) * specn);
-    if (p->advection == AERO_F3_MACCORMACK) {
+    if (s->p.advection == AERO_F3_MACCORMACK) {
         s->mc = calloc(3 * uvn, sizeof(float));
         s->mc_lo = calloc(3 * uvn, sizeof(float));
         s->mc_hi = calloc(3 * uvn, sizeof(float));
@@ -89,46 +83,74 @@ int aero_flow3d_init(aero_flow3d *s, const aero_flow3d_params *p, char *err,
     if (!s->u || !s->v || !s->w || !s->u1 || !s->v1 || !s->w1 || !s->cx ||
         !s->cy || !s->cz || !s->ox || !s->oy || !s->oz || !s->omag ||
         !s->phi || !s->spec || !s->in_u || !s->in_v || !s->in_w ||
-        !s->tri_m || (p->advection == AERO_F3_MACCORMACK &&
-                      (!s->mc || !s->mc_lo || !s->mc_hi))) {
+        !s->tri_m || (s->p.advection == AERO_F3_MACCORMACK &&
+                      (!s->mc || !s->mc_lo || !s->mc_hi)))
+        return -1;
+    return 0;
+}
+
+/* the FFTs across x and y of the pressure solve: 0 or -1 */
+static int plan_fft(aero_flow3d *s)
+{
+    const int n[2] = {s->ny, s->nx}, nxh = s->nx / 2 + 1;
+    aero_fftw_serialise(); /* one planner per process: aero_fftw.h */
+    s->fwd = fftwf_plan_many_dft_r2c(2, n, s->nz, s->phi, NULL, 1,
+                                     (int)s->plane, s->spec, NULL, 1,
+                                     nxh * s->ny, FFTW_ESTIMATE);
+    s->inv = fftwf_plan_many_dft_c2r(2, n, s->nz, s->spec, NULL, 1,
+                                     nxh * s->ny, s->phi, NULL, 1,
+                                     (int)s->plane, FFTW_ESTIMATE);
+    return s->fwd && s->inv ? 0 : -1;
+}
+
+/* Thomas factors of (phi[k-1] + (mu - 2) phi[k] + phi[k+1]) per mode,
+   mu = 2 cos(2 pi kx / nx) + 2 cos(2 pi ky / ny) - 4 (the eigenvalue of
+   the periodic 5-point Laplacian times h^2); rows 0 (Neumann: the inflow
+   is prescribed) and nz-1 (phi = 0 on the top face) differ */
+static void factor_poisson(aero_flow3d *s)
+{
+    const int nx = s->nx, ny = s->ny, nz = s->nz, nxh = nx / 2 + 1;
+    for (int ky = 0; ky < ny; ky++)
+        for (int kx = 0; kx < nxh; kx++) {
+            double mu = 2.0 * cos(2.0 * AERO_PI * kx / nx) +
+                        2.0 * cos(2.0 * AERO_PI * ky / ny) - 4.0;
+            double cprev = 0.0;
+            for (int k = 0; k < nz; k++) {
+                double b = mu - 2.0;
+                if (k == 0) b = mu - 1.0;
+                if (k == nz - 1) b = mu - 3.0;
+                double m = 1.0 / (b - (k ? cprev : 0.0));
+                s->tri_m[((size_t)k * ny + ky) * nxh + kx] = (float)m;
+                cprev = m;
+            }
+        }
+}
+
+int aero_flow3d_init(aero_flow3d *s, const aero_flow3d_params *p, char *err,
+                     size_t errlen)
+{
+    memset(s, 0, sizeof *s);
+    if (check_params(p, err, errlen))
+        return -1;
+    s->p = *p;
+    if (s->p.threads < 1) s->p.threads = 1;
+    if (s->p.threads > 64) s->p.threads = 64;
+    s->nx = p->nx;
+    s->ny = p->ny;
+    s->nz = p->nz;
+    s->plane = (size_t)p->nx * p->ny;
+    if (alloc_fields(s)) {
         aero_flow3d_free(s);
         snprintf(err, errlen, "out of memory for a %d x %d x %d grid", p->nx,
                  p->ny, p->nz);
         return -1;
     }
-    {
-        int n[2] = {p->ny, p->nx};
-        aero_fftw_serialise(); /* one planner per process: aero_fftw.h */
-        s->fwd = fftwf_plan_many_dft_r2c(2, n, p->nz, s->phi, NULL, 1,
-                                         (int)s->plane, s->spec, NULL, 1,
-                                         nxh * p->ny, FFTW_ESTIMATE);
-        s->inv = fftwf_plan_many_dft_c2r(2, n, p->nz, s->spec, NULL, 1,
-                                         nxh * p->ny, s->phi, NULL, 1,
-                                         (int)s->plane, FFTW_ESTIMATE);
-    }
-    if (!s->fwd || !s->inv) {
+    if (plan_fft(s)) {
         aero_flow3d_free(s);
         snprintf(err, errlen, "FFTW could not plan the pressure solve");
         return -1;
     }
-    /* Thomas factors of (phi[k-1] + (mu - 2) phi[k] + phi[k+1]) per mode,
-       mu = 2 cos(2 pi kx / nx) + 2 cos(2 pi ky / ny) - 4 (the eigenvalue of
-       the periodic 5-point Laplacian times h^2); rows 0 (Neumann: the
-       inflow is prescribed) and nz-1 (phi = 0 on the top face) differ */
-    for (int ky = 0; ky < p->ny; ky++)
-        for (int kx = 0; kx < nxh; kx++) {
-            double mu = 2.0 * cos(2.0 * AERO_PI * kx / p->nx) +
-                        2.0 * cos(2.0 * AERO_PI * ky / p->ny) - 4.0;
-            double cprev = 0.0;
-            for (int k = 0; k < p->nz; k++) {
-                double b = mu - 2.0;
-                if (k == 0) b = mu - 1.0;
-                if (k == p->nz - 1) b = mu - 3.0;
-                double m = 1.0 / (b - (k ? cprev : 0.0));
-                s->tri_m[((size_t)k * p->ny + ky) * nxh + kx] = (float)m;
-                cprev = m;
-            }
-        }
+    factor_poisson(s);
     s->solid = NULL;
     s->t = 0.0;
     return 0;

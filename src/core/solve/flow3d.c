@@ -206,6 +206,15 @@ static void apply_boundaries(aero_flow3d *s)
 static inline float min_f(float a, float b) { return b < a ? b : a; }
 static inline float max_f(float a, float b) { return b > a ? b : a; }
 
+/* floor of a float well inside the int range (the sample coordinates are
+   clamped to a few grid lengths): a truncation and a correction, cheaper
+   than floorf's exact rounding of any float */
+static inline int floor_int(float x)
+{
+    int i = (int)x;
+    return i - (x < (float)i);
+}
+
 /* the smallest and largest of the 8 lattice values around a sample point
    (layers a and b, rows j0 and j1, columns i0 and i1): the MacCormack
    limiter's bounds */
@@ -238,9 +247,9 @@ static inline float sample_face(const aero_flow3d *s, const float *layer0,
     float tx, ty, tz;
     if (fk < (float)first) fk = (float)first;
     if (fk > (float)s->nz) fk = (float)s->nz;
-    i0 = (int)floorf(fi);
-    j0 = (int)floorf(fj);
-    k0 = (int)floorf(fk);
+    i0 = floor_int(fi);
+    j0 = floor_int(fj);
+    k0 = floor_int(fk);
     tx = fi - i0;
     ty = fj - j0;
     tz = fk - k0;

@@ -50,43 +50,46 @@ static int check_params(const aero_flow3d_params *p, char *err, size_t errlen)
     return 0;
 }
 
+/* the solver's float fields allocated with calloc, with their lengths
+   (0: not used with these parameters); fills up to 20 */
+static int float_fields(aero_flow3d *s, float ***field, size_t *len)
+{
+    const size_t cells = s->plane * s->nz;
+    const size_t uvn = s->plane * (s->nz + 2), wn = s->plane * (s->nz + 1);
+    const size_t mc = s->p.advection == AERO_F3_MACCORMACK ? 3 * uvn : 0;
+    float **f[] = {&s->u,  &s->v,  &s->w,    &s->u1,   &s->v1, &s->w1,
+                   &s->cx, &s->cy, &s->cz,   &s->ox,   &s->oy, &s->oz,
+                   &s->omag, &s->in_u, &s->in_v, &s->in_w, &s->tri_m,
+                   &s->mc, &s->mc_lo, &s->mc_hi};
+    const size_t n[] = {uvn,   uvn,   wn,    uvn,   uvn,      wn,
+                        cells, cells, cells, cells, cells,    cells,
+                        cells, s->plane, s->plane, s->plane,
+                        (size_t)(s->nx / 2 + 1) * s->ny * s->nz, mc, mc, mc};
+    const int count = (int)(sizeof f / sizeof f[0]);
+    for (int q = 0; q < count; q++) {
+        field[q] = f[q];
+        len[q] = n[q];
+    }
+    return count;
+}
+
 /* every field of the grid (s->nx.. set): 0, or -1 (out of memory) */
 static int alloc_fields(aero_flow3d *s)
 {
     const size_t cells = s->plane * s->nz;
-    const size_t uvn = s->plane * (s->nz + 2), wn = s->plane * (s->nz + 1);
     const size_t specn = (size_t)(s->nx / 2 + 1) * s->ny * s->nz;
-    s->u = calloc(uvn, sizeof(float));
-    s->v = calloc(uvn, sizeof(float));
-    s->w = calloc(wn, sizeof(float));
-    s->u1 = calloc(uvn, sizeof(float));
-    s->v1 = calloc(uvn, sizeof(float));
-    s->w1 = calloc(wn, sizeof(float));
-    s->cx = calloc(cells, sizeof(float));
-    s->cy = calloc(cells, sizeof(float));
-    s->cz = calloc(cells, sizeof(float));
-    s->ox = calloc(cells, sizeof(float));
-    s->oy = calloc(cells, sizeof(float));
-    s->oz = calloc(cells, sizeof(float));
-    s->omag = calloc(cells, sizeof(float));
+    float **field[20];
+    size_t len[20];
+    const int count = float_fields(s, field, len);
+    int ok = 1;
+    for (int q = 0; q < count; q++)
+        if (len[q]) {
+            *field[q] = calloc(len[q], sizeof(float));
+            ok = ok && *field[q];
+        }
     s->phi = fftwf_malloc(sizeof(float) * cells);
     s->spec = fftwf_malloc(sizeof(fftwf_complex) * specn);
-    s->in_u = calloc(s->plane, sizeof(float));
-    s->in_v = calloc(s->plane, sizeof(float));
-    s->in_w = calloc(s->plane, sizeof(float));
-    s->tri_m = malloc(sizeof(float) * specn);
-    if (s->p.advection == AERO_F3_MACCORMACK) {
-        s->mc = calloc(3 * uvn, sizeof(float));
-        s->mc_lo = calloc(3 * uvn, sizeof(float));
-        s->mc_hi = calloc(3 * uvn, sizeof(float));
-    }
-    if (!s->u || !s->v || !s->w || !s->u1 || !s->v1 || !s->w1 || !s->cx ||
-        !s->cy || !s->cz || !s->ox || !s->oy || !s->oz || !s->omag ||
-        !s->phi || !s->spec || !s->in_u || !s->in_v || !s->in_w ||
-        !s->tri_m || (s->p.advection == AERO_F3_MACCORMACK &&
-                      (!s->mc || !s->mc_lo || !s->mc_hi)))
-        return -1;
-    return 0;
+    return ok && s->phi && s->spec ? 0 : -1;
 }
 
 /* the FFTs across x and y of the pressure solve: 0 or -1 */
@@ -158,31 +161,16 @@ int aero_flow3d_init(aero_flow3d *s, const aero_flow3d_params *p, char *err,
 
 void aero_flow3d_free(aero_flow3d *s)
 {
+    float **field[20];
+    size_t len[20];
+    const int count = float_fields(s, field, len);
     aero_fftw_serialise();
     if (s->fwd) fftwf_destroy_plan(s->fwd);
     if (s->inv) fftwf_destroy_plan(s->inv);
-    free(s->u);
-    free(s->v);
-    free(s->w);
-    free(s->u1);
-    free(s->v1);
-    free(s->w1);
-    free(s->cx);
-    free(s->cy);
-    free(s->cz);
-    free(s->ox);
-    free(s->oy);
-    free(s->oz);
-    free(s->omag);
+    for (int q = 0; q < count; q++)
+        free(*field[q]);
     if (s->phi) fftwf_free(s->phi);
     if (s->spec) fftwf_free(s->spec);
-    free(s->in_u);
-    free(s->in_v);
-    free(s->in_w);
-    free(s->tri_m);
-    free(s->mc);
-    free(s->mc_lo);
-    free(s->mc_hi);
     free(s->near_body);
     memset(s, 0, sizeof *s);
 }

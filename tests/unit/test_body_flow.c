@@ -130,7 +130,7 @@ static void sphere_flow(void)
     aero_body_flow_stats st;
     char err[256];
     const double rate = 4000.0;
-    const int nout = 1600; /* 0.4 s: ~8 shedding periods */
+    const int nout = 1600; /* 0.4 s: 4.8 periods of the measured 11.9 Hz */
     float *out = calloc(3 * (size_t)nout, sizeof(float));
     double d = 0.1, rms_lat = 0.0, rms_drag = 0.0;
     int ok;

@@ -23,7 +23,7 @@ typedef struct {
     const char *mesh;
     double radius, length, handle, tip; /* 0: the shape's default */
     int sources, directions, mirror;   /* 0, 0, -1: by the body */
-    double speed, grid, settle, cfl;
+    double speed, grid, settle, cfl, confinement;
     uint32_t seed;
 } object_job;
 
@@ -103,6 +103,8 @@ static const aerotex_option object_options[] = {
      "start-up discarded", NULL, NULL},
     {"--cfl", AEROTEX_NUMBER, "c", 0.7, 0.05, 1.5, AT(cfl),
      "step = c h / v0", NULL, NULL},
+    {"--confinement", AEROTEX_NUMBER, "eps", 1.5, 0.0, 50.0, AT(confinement),
+     "vorticity confinement a = eps (h / d) v0 (N x omega)", NULL, NULL},
     {"--seed", AEROTEX_SEED, "n", 1.0, 0, 0, AT(seed), "start-up noise seed",
      NULL, NULL},
     AEROTEX_JOB_OPTIONS("directions",
@@ -174,6 +176,7 @@ static int plan_object(object_job *j, object_plan *o)
     o->base.cell = o->d / j->grid;
     o->base.regions = o->nr;
     o->base.cfl = j->cfl;
+    o->base.confinement = j->confinement;
     o->base.settle = j->settle * o->d / j->speed;
     aero_body_describe(&o->body, o->desc, sizeof o->desc);
     return 0;

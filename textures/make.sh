@@ -8,6 +8,9 @@ if [ ! -x "$T" ]; then
     echo "textures/make.sh: $T is missing: run 'make tools' first" >&2
     exit 1
 fi
+# idle OpenMP threads sleep instead of spinning (textures/README.md)
+OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive}
+export OMP_WAIT_POLICY
 set -x
 # circular cylinder, d = 1 cm at 10 m/s (Re ~ 6800), one direction
 $T aeolian --shape circle --diameter 0.01 --speed 10 -o textures/cylinder.wav

@@ -23,7 +23,7 @@ typedef struct {
     const char *mesh;
     double radius, length, handle, tip; /* 0: the shape's default */
     int sources, directions, mirror;   /* 0, 0, -1: by the body */
-    double speed, grid, settle, cfl;
+    double speed, grid, settle, cfl, confinement;
     uint32_t seed;
 } object_job;
 
@@ -103,6 +103,8 @@ static const aerotex_option object_options[] = {
      "start-up discarded", NULL, NULL},
     {"--cfl", AEROTEX_NUMBER, "c", 0.7, 0.05, 1.5, AT(cfl),
      "step = c h / v0", NULL, NULL},
+    {"--confinement", AEROTEX_NUMBER, "eps", 1.5, 0.0, 50.0, AT(confinement),
+     "vorticity confinement a = eps (h / d) v0 (N x omega)", NULL, NULL},
     {"--seed", AEROTEX_SEED, "n", 1.0, 0, 0, AT(seed), "start-up noise seed",
      NULL, NULL},
     AEROTEX_JOB_OPTIONS("directions",
@@ -174,6 +176,7 @@ static int plan_object(object_job *j, object_plan *o)
     o->base.cell = o->d / j->grid;
     o->base.regions = o->nr;
     o->base.cfl = j->cfl;
+    o->base.confinement = j->confinement;
     o->base.settle = j->settle * o->d / j->speed;
     aero_body_describe(&o->body, o->desc, sizeof o->desc);
     return 0;
@@ -186,7 +189,11 @@ static int run_directions(void *plan, void *tasks)
     direction_task *ctx = tasks;
     object_job *j = o->j;
     const int nd = o->nd, avail = j->job.loop.avail;
+    /* the directions in parallel; threads left over (fewer directions
+       than threads: a sphere) go inside each simulation */
     const int threads = aerotex_job_threads(&j->job, nd);
+    const int inner = j->job.threads / threads > 1 ? j->job.threads / threads
+                                                   : 1;
     int status = 0;
     aerotex_progress_start(&j->job.prog, NULL,
                            (long)nd * aero_body_flow_steps(&o->base,
@@ -197,13 +204,14 @@ static int run_directions(void *plan, void *tasks)
                 "%d direction%s, %d region%s, %g cells per d, %ld steps, %d "
                 "thread%s\n", o->desc, o->d, j->speed,
                 j->speed * o->d / AERO_NU, nd, nd > 1 ? "s" : "", o->nr,
-                o->nr > 1 ? "s" : "", j->grid, j->job.prog.total, threads,
-                threads > 1 ? "s" : "");
-#pragma omp parallel for schedule(dynamic, 1) num_threads(j->job.threads)
+                o->nr > 1 ? "s" : "", j->grid, j->job.prog.total, threads * inner,
+                threads * inner > 1 ? "s" : "");
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int k = 0; k < nd; k++) {
         aero_body_flow_params p = o->base;
         direction_task *c = &ctx[k];
         p.angle = o->angles[k];
+        p.threads = inner;
         p.seed = j->seed * 2654435761u + 7919u * (unsigned)(k + 1);
         p.plan_lock = aerotex_plan_lock;
         c->task.job = &j->job;

@@ -30,7 +30,9 @@ void aero_body_flow_defaults(aero_body_flow_params *p,
     p->settle = 25.0 * d / p->speed;
     p->noise = 0.01;
     p->sponge = 0.2;
-    p->confinement = 0.15;
+    /* eps h / d (FSJ01): 1.5 is the former fixed 0.15 at 10 cells per d,
+       the grid the sphere texture was first made on */
+    p->confinement = 1.5;
     p->seed = 1;
 }
 
@@ -225,7 +227,9 @@ static int check_params(const aero_body_flow_params *p, double rate,
     if (!(p->speed > 0.0 && p->speed <= AERO_MACH_LIMIT * AERO_C0) ||
         !(p->cell > 0.0 && p->cell < 10.0) || !(p->side >= 0.0) ||
         !(p->upstream >= 0.0) || !(p->downstream >= 0.0) ||
-        !(p->nu >= 0.0) || !(p->confinement >= 0.0 && p->confinement <= 5.0) || !(p->cfl > 0.0 && p->cfl <= 2.0) ||
+        !(p->nu >= 0.0) ||
+        !(p->confinement >= 0.0 && p->confinement <= 50.0) ||
+        !(p->cfl > 0.0 && p->cfl <= 2.0) ||
         !(p->settle >= 0.0 && p->settle < 1e3) ||
         !(p->noise >= 0.0 && p->noise <= 1.0) ||
         !(p->sponge >= 0.0 && p->sponge <= 1.0) || !aero_is_finite(p->angle) ||
@@ -345,7 +349,12 @@ static int open_run(body_run *b, const aero_body_flow_params *p, double rate,
     fp.nu = p->nu;
     fp.u_ref = p->speed;
     fp.confinement = p->confinement;
+    /* eps h (Fedkiw, Stam and Jensen 2001) with the body's size as the
+       length: the forcing of grid-scale eddies is the same at any grid,
+       and a resolved wake's vanishes as the grid is refined */
+    fp.confinement_length = b->d;
     fp.advection = AERO_F3_MACCORMACK;
+    fp.threads = p->threads;
     fp.sponge = p->downstream > 0.0
                     ? fmin(0.5, p->sponge * p->downstream /
                                     (b->L.nz * p->cell))

@@ -46,11 +46,15 @@ typedef struct {
                             absorbing layer (flow3d.h) */
     int regions;         /* 1..AERO_BODY_MAX_REGIONS */
     double nu;           /* kinematic viscosity, m^2/s (explicit term) */
-    double confinement;  /* vorticity confinement eps (flow3d.h) */
+    double confinement;  /* vorticity confinement eps: a = eps (h / d) v0
+                            (N x omega), d the body's reference size
+                            (flow3d.h, confinement_length = d) */
     double cfl;          /* step = cfl h / v0 */
     double settle;       /* start-up discarded, s */
     double noise;        /* rms lateral inflow noise / v0 */
     uint32_t seed;
+    int threads;         /* OpenMP threads inside the one simulation
+                            (flow3d.h; 0 or 1: one) */
     /* FFTW's planner is not thread-safe: called with on = 1 / 0 around
        the solver's init and free when directions run in parallel */
     void (*plan_lock)(void *ctx, int on);
@@ -73,8 +77,8 @@ typedef struct {
 
 /* defaults: angle 90, v0 10 m/s, 12 cells per reference size, sides 2.5 d,
    upstream 3 d, downstream 8 d (its last 0.2 absorbing), 1 region, air,
-   confinement 0.15, cfl 0.7, settle 25 d/v0, noise 0.01, seed 1 (body
-   must be set) */
+   confinement 1.5 (eps h / d), cfl 0.7, settle 25 d/v0, noise 0.01,
+   seed 1 (body must be set) */
 void aero_body_flow_defaults(aero_body_flow_params *p,
                              const aero_body_shape *body);
 

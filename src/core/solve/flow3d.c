@@ -10,6 +10,13 @@
 
 #define NEAR_BODY_CELLS 2
 
+/* the loop that follows, over z-slabs (or planes of spectral modes), on
+   the solver's threads: every iteration writes its own cells, so the
+   result does not depend on the number of threads */
+#define F3_SLABS                                                          \
+    _Pragma("omp parallel for schedule(static) num_threads(s->p.threads) \
+             if (s->p.threads > 1)")
+
 /* i modulo n for any int (the common case is one step out of range) */
 static inline int wrap(int i, int n)
 {
@@ -23,12 +30,9 @@ static inline int wrap(int i, int n)
     return i;
 }
 
-int aero_flow3d_init(aero_flow3d *s, const aero_flow3d_params *p, char *err,
-                     size_t errlen)
+/* the parameters a solver can run with: 0, or -1 with a message */
+static int check_params(const aero_flow3d_params *p, char *err, size_t errlen)
 {
-    size_t cells, uvn, wn, specn;
-    int nxh;
-    memset(s, 0, sizeof *s);
     if (p->nx < 4 || p->ny < 4 || p->nz < 3 || (p->nx & 1) || (p->ny & 1) ||
         p->nx > 1024 || p->ny > 1024 || p->nz > 1024) {
         snprintf(err, errlen, "grid %d x %d x %d: nx, ny even and >= 4, "
@@ -43,83 +47,113 @@ int aero_flow3d_init(aero_flow3d *s, const aero_flow3d_params *p, char *err,
         snprintf(err, errlen, "bad cell size, viscosity or confinement");
         return -1;
     }
+    return 0;
+}
+
+/* the solver's float fields allocated with calloc, with their lengths
+   (0: not used with these parameters); fills up to 20 */
+static int float_fields(aero_flow3d *s, float ***field, size_t *len)
+{
+    const size_t cells = s->plane * s->nz;
+    const size_t uvn = s->plane * (s->nz + 2), wn = s->plane * (s->nz + 1);
+    const size_t mc = s->p.advection == AERO_F3_MACCORMACK ? 3 * uvn : 0;
+    float **f[] = {&s->u,  &s->v,  &s->w,    &s->u1,   &s->v1, &s->w1,
+                   &s->cx, &s->cy, &s->cz,   &s->ox,   &s->oy, &s->oz,
+                   &s->omag, &s->in_u, &s->in_v, &s->in_w, &s->tri_m,
+                   &s->mc, &s->mc_lo, &s->mc_hi};
+    const size_t n[] = {uvn,   uvn,   wn,    uvn,   uvn,      wn,
+                        cells, cells, cells, cells, cells,    cells,
+                        cells, s->plane, s->plane, s->plane,
+                        (size_t)(s->nx / 2 + 1) * s->ny * s->nz, mc, mc, mc};
+    const int count = (int)(sizeof f / sizeof f[0]);
+    for (int q = 0; q < count; q++) {
+        field[q] = f[q];
+        len[q] = n[q];
+    }
+    return count;
+}
+
+/* every field of the grid (s->nx.. set): 0, or -1 (out of memory) */
+static int alloc_fields(aero_flow3d *s)
+{
+    const size_t cells = s->plane * s->nz;
+    const size_t specn = (size_t)(s->nx / 2 + 1) * s->ny * s->nz;
+    float **field[20];
+    size_t len[20];
+    const int count = float_fields(s, field, len);
+    int ok = 1;
+    for (int q = 0; q < count; q++)
+        if (len[q]) {
+            *field[q] = calloc(len[q], sizeof(float));
+            ok = ok && *field[q];
+        }
+    s->phi = fftwf_malloc(sizeof(float) * cells);
+    s->spec = fftwf_malloc(sizeof(fftwf_complex) * specn);
+    return ok && s->phi && s->spec ? 0 : -1;
+}
+
+/* the FFTs across x and y of the pressure solve: 0 or -1 */
+static int plan_fft(aero_flow3d *s)
+{
+    const int n[2] = {s->ny, s->nx}, nxh = s->nx / 2 + 1;
+    aero_fftw_serialise(); /* one planner per process: aero_fftw.h */
+    s->fwd = fftwf_plan_many_dft_r2c(2, n, s->nz, s->phi, NULL, 1,
+                                     (int)s->plane, s->spec, NULL, 1,
+                                     nxh * s->ny, FFTW_ESTIMATE);
+    s->inv = fftwf_plan_many_dft_c2r(2, n, s->nz, s->spec, NULL, 1,
+                                     nxh * s->ny, s->phi, NULL, 1,
+                                     (int)s->plane, FFTW_ESTIMATE);
+    return s->fwd && s->inv ? 0 : -1;
+}
+
+/* Thomas factors of (phi[k-1] + (mu - 2) phi[k] + phi[k+1]) per mode,
+   mu = 2 cos(2 pi kx / nx) + 2 cos(2 pi ky / ny) - 4 (the eigenvalue of
+   the periodic 5-point Laplacian times h^2); rows 0 (Neumann: the inflow
+   is prescribed) and nz-1 (phi = 0 on the top face) differ */
+static void factor_poisson(aero_flow3d *s)
+{
+    const int nx = s->nx, ny = s->ny, nz = s->nz, nxh = nx / 2 + 1;
+    for (int ky = 0; ky < ny; ky++)
+        for (int kx = 0; kx < nxh; kx++) {
+            double mu = 2.0 * cos(2.0 * AERO_PI * kx / nx) +
+                        2.0 * cos(2.0 * AERO_PI * ky / ny) - 4.0;
+            double cprev = 0.0;
+            for (int k = 0; k < nz; k++) {
+                double b = mu - 2.0;
+                if (k == 0) b = mu - 1.0;
+                if (k == nz - 1) b = mu - 3.0;
+                double m = 1.0 / (b - (k ? cprev : 0.0));
+                s->tri_m[((size_t)k * ny + ky) * nxh + kx] = (float)m;
+                cprev = m;
+            }
+        }
+}
+
+int aero_flow3d_init(aero_flow3d *s, const aero_flow3d_params *p, char *err,
+                     size_t errlen)
+{
+    memset(s, 0, sizeof *s);
+    if (check_params(p, err, errlen))
+        return -1;
     s->p = *p;
+    if (s->p.threads < 1) s->p.threads = 1;
+    if (s->p.threads > 64) s->p.threads = 64;
     s->nx = p->nx;
     s->ny = p->ny;
     s->nz = p->nz;
     s->plane = (size_t)p->nx * p->ny;
-    cells = s->plane * p->nz;
-    uvn = s->plane * (p->nz + 2);
-    wn = s->plane * (p->nz + 1);
-    nxh = p->nx / 2 + 1;
-    specn = (size_t)nxh * p->ny * p->nz;
-    s->u = calloc(uvn, sizeof(float));
-    s->v = calloc(uvn, sizeof(float));
-    s->w = calloc(wn, sizeof(float));
-    s->u1 = calloc(uvn, sizeof(float));
-    s->v1 = calloc(uvn, sizeof(float));
-    s->w1 = calloc(wn, sizeof(float));
-    s->cx = calloc(cells, sizeof(float));
-    s->cy = calloc(cells, sizeof(float));
-    s->cz = calloc(cells, sizeof(float));
-    s->ox = calloc(cells, sizeof(float));
-    s->oy = calloc(cells, sizeof(float));
-    s->oz = calloc(cells, sizeof(float));
-    s->omag = calloc(cells, sizeof(float));
-    s->phi = fftwf_malloc(sizeof(float) * cells);
-    s->spec = fftwf_malloc(sizeof(fftwf_complex) * specn);
-    s->in_u = calloc(s->plane, sizeof(float));
-    s->in_v = calloc(s->plane, sizeof(float));
-    s->in_w = calloc(s->plane, sizeof(float));
-    s->tri_m = malloc(sizeof(float) * specn);
-    if (p->advection == AERO_F3_MACCORMACK) {
-        s->mc = calloc(3 * uvn, sizeof(float));
-        s->mc_lo = calloc(3 * uvn, sizeof(float));
-        s->mc_hi = calloc(3 * uvn, sizeof(float));
-    }
-    if (!s->u || !s->v || !s->w || !s->u1 || !s->v1 || !s->w1 || !s->cx ||
-        !s->cy || !s->cz || !s->ox || !s->oy || !s->oz || !s->omag ||
-        !s->phi || !s->spec || !s->in_u || !s->in_v || !s->in_w ||
-        !s->tri_m || (p->advection == AERO_F3_MACCORMACK &&
-                      (!s->mc || !s->mc_lo || !s->mc_hi))) {
+    if (alloc_fields(s)) {
         aero_flow3d_free(s);
         snprintf(err, errlen, "out of memory for a %d x %d x %d grid", p->nx,
                  p->ny, p->nz);
         return -1;
     }
-    {
-        int n[2] = {p->ny, p->nx};
-        aero_fftw_serialise(); /* one planner per process: aero_fftw.h */
-        s->fwd = fftwf_plan_many_dft_r2c(2, n, p->nz, s->phi, NULL, 1,
-                                         (int)s->plane, s->spec, NULL, 1,
-                                         nxh * p->ny, FFTW_ESTIMATE);
-        s->inv = fftwf_plan_many_dft_c2r(2, n, p->nz, s->spec, NULL, 1,
-                                         nxh * p->ny, s->phi, NULL, 1,
-                                         (int)s->plane, FFTW_ESTIMATE);
-    }
-    if (!s->fwd || !s->inv) {
+    if (plan_fft(s)) {
         aero_flow3d_free(s);
         snprintf(err, errlen, "FFTW could not plan the pressure solve");
         return -1;
     }
-    /* Thomas factors of (phi[k-1] + (mu - 2) phi[k] + phi[k+1]) per mode,
-       mu = 2 cos(2 pi kx / nx) + 2 cos(2 pi ky / ny) - 4 (the eigenvalue of
-       the periodic 5-point Laplacian times h^2); rows 0 (Neumann: the
-       inflow is prescribed) and nz-1 (phi = 0 on the top face) differ */
-    for (int ky = 0; ky < p->ny; ky++)
-        for (int kx = 0; kx < nxh; kx++) {
-            double mu = 2.0 * cos(2.0 * AERO_PI * kx / p->nx) +
-                        2.0 * cos(2.0 * AERO_PI * ky / p->ny) - 4.0;
-            double cprev = 0.0;
-            for (int k = 0; k < p->nz; k++) {
-                double b = mu - 2.0;
-                if (k == 0) b = mu - 1.0;
-                if (k == p->nz - 1) b = mu - 3.0;
-                double m = 1.0 / (b - (k ? cprev : 0.0));
-                s->tri_m[((size_t)k * p->ny + ky) * nxh + kx] = (float)m;
-                cprev = m;
-            }
-        }
+    factor_poisson(s);
     s->solid = NULL;
     s->t = 0.0;
     return 0;
@@ -127,31 +161,16 @@ int aero_flow3d_init(aero_flow3d *s, const aero_flow3d_params *p, char *err,
 
 void aero_flow3d_free(aero_flow3d *s)
 {
+    float **field[20];
+    size_t len[20];
+    const int count = float_fields(s, field, len);
     aero_fftw_serialise();
     if (s->fwd) fftwf_destroy_plan(s->fwd);
     if (s->inv) fftwf_destroy_plan(s->inv);
-    free(s->u);
-    free(s->v);
-    free(s->w);
-    free(s->u1);
-    free(s->v1);
-    free(s->w1);
-    free(s->cx);
-    free(s->cy);
-    free(s->cz);
-    free(s->ox);
-    free(s->oy);
-    free(s->oz);
-    free(s->omag);
+    for (int q = 0; q < count; q++)
+        free(*field[q]);
     if (s->phi) fftwf_free(s->phi);
     if (s->spec) fftwf_free(s->spec);
-    free(s->in_u);
-    free(s->in_v);
-    free(s->in_w);
-    free(s->tri_m);
-    free(s->mc);
-    free(s->mc_lo);
-    free(s->mc_hi);
     free(s->near_body);
     memset(s, 0, sizeof *s);
 }
@@ -170,6 +189,20 @@ static void apply_boundaries(aero_flow3d *s)
            sizeof(float) * pl);
 }
 
+/* the smaller and larger of two finite floats, inline (fminf and fmaxf
+   are library calls without -ffast-math: a quarter of a step's time) */
+static inline float min_f(float a, float b) { return b < a ? b : a; }
+static inline float max_f(float a, float b) { return b > a ? b : a; }
+
+/* floor of a float well inside the int range (the sample coordinates are
+   clamped to a few grid lengths): a truncation and a correction, cheaper
+   than floorf's exact rounding of any float */
+static inline int floor_int(float x)
+{
+    int i = (int)x;
+    return i - (x < (float)i);
+}
+
 /* the smallest and largest of the 8 lattice values around a sample point
    (layers a and b, rows j0 and j1, columns i0 and i1): the MacCormack
    limiter's bounds */
@@ -181,27 +214,30 @@ static inline void corner_range(const float *a, const float *b, int nx,
                         b[j1 * nx + i0], b[j1 * nx + i1]};
     float lo = c[0], hi = c[0];
     for (int q = 1; q < 8; q++) {
-        lo = fminf(lo, c[q]);
-        hi = fmaxf(hi, c[q]);
+        lo = min_f(lo, c[q]);
+        hi = max_f(hi, c[q]);
     }
     mm[0] = lo;
     mm[1] = hi;
 }
 
-/* trilinear sample of a u- or v-type field (layers -1..nz) at grid
-   coordinates (fi, fj, fk) of its own lattice; periodic in i, j. With mm
-   (not NULL) also the smallest and largest of the 8 values around it
-   (the MacCormack limiter) */
-static inline float sample_uv(const aero_flow3d *s, const float *f, float fi,
-                              float fj, float fk, float *mm)
+/* trilinear sample of a face field at grid coordinates (fi, fj, fk) of its
+   own lattice; periodic in i, j. first is the field's lowest layer (-1 for
+   u and v, which carry a ghost layer below; 0 for w), layer0 the address
+   of its layer 0; both reach up to layer nz. With mm (not NULL) also the
+   smallest and largest of the 8 values around it (the MacCormack
+   limiter) */
+static inline float sample_face(const aero_flow3d *s, const float *layer0,
+                                int first, float fi, float fj, float fk,
+                                float *mm)
 {
     int i0, j0, k0, i1, j1;
     float tx, ty, tz;
-    if (fk < -1.0f) fk = -1.0f;
+    if (fk < (float)first) fk = (float)first;
     if (fk > (float)s->nz) fk = (float)s->nz;
-    i0 = (int)floorf(fi);
-    j0 = (int)floorf(fj);
-    k0 = (int)floorf(fk);
+    i0 = floor_int(fi);
+    j0 = floor_int(fj);
+    k0 = floor_int(fk);
     tx = fi - i0;
     ty = fj - j0;
     tz = fk - k0;
@@ -214,44 +250,7 @@ static inline float sample_uv(const aero_flow3d *s, const float *f, float fi,
     i1 = i0 + 1 == s->nx ? 0 : i0 + 1;
     j1 = j0 + 1 == s->ny ? 0 : j0 + 1;
     {
-        const float *a = f + AERO_F3_UV(s, 0, 0, k0);
-        const float *b = a + s->plane;
-        const int nx = s->nx;
-        float a00 = a[j0 * nx + i0] + tx * (a[j0 * nx + i1] - a[j0 * nx + i0]);
-        float a10 = a[j1 * nx + i0] + tx * (a[j1 * nx + i1] - a[j1 * nx + i0]);
-        float b00 = b[j0 * nx + i0] + tx * (b[j0 * nx + i1] - b[j0 * nx + i0]);
-        float b10 = b[j1 * nx + i0] + tx * (b[j1 * nx + i1] - b[j1 * nx + i0]);
-        float a0 = a00 + ty * (a10 - a00), b0 = b00 + ty * (b10 - b00);
-        if (mm)
-            corner_range(a, b, nx, i0, i1, j0, j1, mm);
-        return a0 + tz * (b0 - a0);
-    }
-}
-
-/* the same for w (layers 0..nz) */
-static inline float sample_w(const aero_flow3d *s, const float *f, float fi,
-                             float fj, float fk, float *mm)
-{
-    int i0, j0, k0, i1, j1;
-    float tx, ty, tz;
-    if (fk < 0.0f) fk = 0.0f;
-    if (fk > (float)s->nz) fk = (float)s->nz;
-    i0 = (int)floorf(fi);
-    j0 = (int)floorf(fj);
-    k0 = (int)floorf(fk);
-    tx = fi - i0;
-    ty = fj - j0;
-    tz = fk - k0;
-    if (k0 >= s->nz) {
-        k0 = s->nz - 1;
-        tz = 1.0f;
-    }
-    i0 = wrap(i0, s->nx);
-    j0 = wrap(j0, s->ny);
-    i1 = i0 + 1 == s->nx ? 0 : i0 + 1;
-    j1 = j0 + 1 == s->ny ? 0 : j0 + 1;
-    {
-        const float *a = f + AERO_F3_C(s, 0, 0, k0);
+        const float *a = layer0 + (ptrdiff_t)k0 * (ptrdiff_t)s->plane;
         const float *b = a + s->plane;
         const int nx = s->nx;
         float a00 = a[j0 * nx + i0] + tx * (a[j0 * nx + i1] - a[j0 * nx + i0]);
@@ -280,6 +279,7 @@ static void advect_pass(aero_flow3d *s, const advect_io *io, double dt)
     const float c = (float)(dt / s->p.h), lim = (float)nx;
     const float *u = s->u, *v = s->v, *w = s->w;
     const size_t uvn = s->plane * (size_t)(nz + 2);
+    F3_SLABS
     for (int k = 0; k < nz; k++)
         for (int j = 0; j < ny; j++) {
             int jm = j ? j - 1 : ny - 1, jp = j + 1 == ny ? 0 : j + 1;
@@ -297,12 +297,12 @@ static void advect_pass(aero_flow3d *s, const advect_io *io, double dt)
                                    w[AERO_F3_C(s, i, j, k)] +
                                    w[AERO_F3_C(s, im, j, k + 1)] +
                                    w[AERO_F3_C(s, i, j, k + 1)]);
-                float dx = fmaxf(-lim, fminf(lim, U * c));
-                float dy = fmaxf(-lim, fminf(lim, V * c));
+                float dx = max_f(-lim, min_f(lim, U * c));
+                float dy = max_f(-lim, min_f(lim, V * c));
                 float dz = W * c;
                 a = AERO_F3_UV(s, i, j, k);
-                io->du[a] = sample_uv(s, io->u, i - dx, j - dy, k - dz,
-                                      io->lo ? mm : NULL);
+                io->du[a] = sample_face(s, io->u + s->plane, -1, i - dx,
+                                        j - dy, k - dz, io->lo ? mm : NULL);
                 if (io->lo) {
                     io->lo[a] = mm[0];
                     io->hi[a] = mm[1];
@@ -317,11 +317,11 @@ static void advect_pass(aero_flow3d *s, const advect_io *io, double dt)
                              w[AERO_F3_C(s, i, j, k)] +
                              w[AERO_F3_C(s, i, jm, k + 1)] +
                              w[AERO_F3_C(s, i, j, k + 1)]);
-                dx = fmaxf(-lim, fminf(lim, U * c));
-                dy = fmaxf(-lim, fminf(lim, V * c));
+                dx = max_f(-lim, min_f(lim, U * c));
+                dy = max_f(-lim, min_f(lim, V * c));
                 dz = W * c;
-                io->dv[a] = sample_uv(s, io->v, i - dx, j - dy, k - dz,
-                                      io->lo ? mm : NULL);
+                io->dv[a] = sample_face(s, io->v + s->plane, -1, i - dx,
+                                        j - dy, k - dz, io->lo ? mm : NULL);
                 if (io->lo) {
                     io->lo[uvn + a] = mm[0];
                     io->hi[uvn + a] = mm[1];
@@ -336,12 +336,12 @@ static void advect_pass(aero_flow3d *s, const advect_io *io, double dt)
                              v[AERO_F3_UV(s, i, j, k + 1)] +
                              v[AERO_F3_UV(s, i, jp, k + 1)]);
                 W = w[AERO_F3_C(s, i, j, k + 1)];
-                dx = fmaxf(-lim, fminf(lim, U * c));
-                dy = fmaxf(-lim, fminf(lim, V * c));
+                dx = max_f(-lim, min_f(lim, U * c));
+                dy = max_f(-lim, min_f(lim, V * c));
                 dz = W * c;
                 a = AERO_F3_C(s, i, j, k + 1);
-                io->dw[a] = sample_w(s, io->w, i - dx, j - dy, (k + 1) - dz,
-                                     io->lo ? mm : NULL);
+                io->dw[a] = sample_face(s, io->w, 0, i - dx, j - dy,
+                                        (k + 1) - dz, io->lo ? mm : NULL);
                 if (io->lo) {
                     io->lo[2 * uvn + a] = mm[0];
                     io->hi[2 * uvn + a] = mm[1];
@@ -412,6 +412,7 @@ static void advect(aero_flow3d *s, double dt)
             const float *rt = f == 0 ? bu : f == 1 ? bv : bw;
             const float *lo = s->mc_lo + f * uvn, *hi = s->mc_hi + f * uvn;
             /* layers 0..nz-1 of u, v and 1..nz of w: the same range */
+            F3_SLABS
             for (size_t a = s->plane; a < wn; a++) {
                 float x = dst[a] + 0.5f * (old[a] - rt[a]);
                 dst[a] = x < lo[a] ? lo[a] : x > hi[a] ? hi[a] : x;
@@ -425,6 +426,7 @@ static void advect(aero_flow3d *s, double dt)
 static void centre_velocity(aero_flow3d *s)
 {
     const int nx = s->nx, ny = s->ny, nz = s->nz;
+    F3_SLABS
     for (int k = 0; k < nz; k++)
         for (int j = 0; j < ny; j++) {
             int jp = j + 1 == ny ? 0 : j + 1;
@@ -457,6 +459,7 @@ void aero_flow3d_vorticity(aero_flow3d *s)
     const int nx = s->nx, ny = s->ny, nz = s->nz;
     const float ih = (float)(1.0 / s->p.h);
     centre_velocity(s);
+    F3_SLABS
     for (int k = 0; k < nz; k++)
         for (int j = 0; j < ny; j++) {
             int jm = j ? j - 1 : ny - 1, jp = j + 1 == ny ? 0 : j + 1;
@@ -494,6 +497,7 @@ static void confine(aero_flow3d *s, double dt)
     aero_flow3d_vorticity(s);
     /* the force goes into cx, cy, cz (the centred velocity is not needed
        any more) */
+    F3_SLABS
     for (int k = 0; k < nz; k++)
         for (int j = 0; j < ny; j++) {
             int jm = j ? j - 1 : ny - 1, jp = j + 1 == ny ? 0 : j + 1;
@@ -515,6 +519,7 @@ static void confine(aero_flow3d *s, double dt)
                 s->cz[c] = Nx * s->oy[c] - Ny * s->ox[c];
             }
         }
+    F3_SLABS
     for (int k = 0; k < nz; k++)
         for (int j = 0; j < ny; j++) {
             int jm = j ? j - 1 : ny - 1;
@@ -539,6 +544,7 @@ static void diffuse_field(const aero_flow3d *s, const float *src, float *dst,
                           int k0, int k1, int uv, float r)
 {
     const int nx = s->nx, ny = s->ny;
+    F3_SLABS
     for (int k = k0; k <= k1; k++)
         for (int j = 0; j < ny; j++) {
             int jm = j ? j - 1 : ny - 1, jp = j + 1 == ny ? 0 : j + 1;
@@ -582,6 +588,7 @@ void aero_flow3d_project(aero_flow3d *s)
     fftwf_complex *sp = s->spec;
     apply_boundaries(s);
     /* h^2 div u, the right-hand side (h^2 lap phi = h^2 div u) */
+    F3_SLABS
     for (int k = 0; k < nz; k++)
         for (int j = 0; j < ny; j++) {
             int jp = j + 1 == ny ? 0 : j + 1;
@@ -599,6 +606,7 @@ void aero_flow3d_project(aero_flow3d *s)
     /* tridiagonal along z per (kx, ky) (sub- and super-diagonal 1) */
     {
         const size_t stride = (size_t)nxh * ny;
+        F3_SLABS
         for (size_t m = 0; m < stride; m++) {
             const float *tm = s->tri_m + m;
             fftwf_complex *d = sp + m;
@@ -620,6 +628,7 @@ void aero_flow3d_project(aero_flow3d *s)
     /* u -= grad phi (phi scaled by the unnormalised inverse FFT) */
     {
         const float g = norm * ih;
+        F3_SLABS
         for (int k = 0; k < nz; k++)
             for (int j = 0; j < ny; j++) {
                 int jm = j ? j - 1 : ny - 1;
@@ -706,6 +715,39 @@ static void sponge(aero_flow3d *s, double dt)
     }
 }
 
+/* the cells whose low faces the forcing must visit: a face is solid only
+   when one of its two cells is, so the solid cells' box and one cell past
+   its high side (the whole width across a periodic side the box touches) */
+static void body_box(aero_flow3d *s, const float *solid)
+{
+    const int n[3] = {s->nx, s->ny, s->nz};
+    int lo[3] = {n[0], n[1], n[2]}, hi[3] = {-1, -1, -1};
+    for (int k = 0; k < n[2]; k++)
+        for (int j = 0; j < n[1]; j++)
+            for (int i = 0; i < n[0]; i++) {
+                const int at[3] = {i, j, k};
+                if (!(solid[AERO_F3_C(s, i, j, k)] > 0.0f))
+                    continue;
+                for (int d = 0; d < 3; d++) {
+                    if (at[d] < lo[d]) lo[d] = at[d];
+                    if (at[d] > hi[d]) hi[d] = at[d];
+                }
+            }
+    for (int d = 0; d < 3; d++) {
+        if (hi[d] < 0) { /* no solid cell: an empty range */
+            s->body_lo[d] = 0;
+            s->body_hi[d] = -1;
+            continue;
+        }
+        s->body_lo[d] = lo[d];
+        s->body_hi[d] = hi[d] + 1 < n[d] ? hi[d] + 1 : n[d] - 1;
+        if (d < 2 && (lo[d] == 0 || hi[d] + 1 >= n[d])) {
+            s->body_lo[d] = 0;
+            s->body_hi[d] = n[d] - 1;
+        }
+    }
+}
+
 void aero_flow3d_set_body(aero_flow3d *s, const float *solid,
                           const int *region, int n_regions, double *force)
 {
@@ -736,6 +778,8 @@ void aero_flow3d_set_body(aero_flow3d *s, const float *solid,
                                 }
                     }
     }
+    if (solid)
+        body_box(s, solid);
     s->solid = solid;
     s->region = solid ? region : NULL;
     s->n_regions = solid && force ? n_regions : 0;
@@ -747,7 +791,7 @@ void aero_flow3d_set_body(aero_flow3d *s, const float *solid,
    body (flow3d.h) */
 static void force_body(aero_flow3d *s, double dt)
 {
-    const int nx = s->nx, ny = s->ny, nz = s->nz;
+    const int nx = s->nx, ny = s->ny;
     const size_t pl = s->plane;
     const float *chi = s->solid;
     const int *reg = s->region;
@@ -756,10 +800,10 @@ static void force_body(aero_flow3d *s, double dt)
     double *F = s->region_force;
     if (F)
         memset(F, 0, sizeof(double) * 3 * (size_t)nr);
-    for (int k = 0; k < nz; k++)
-        for (int j = 0; j < ny; j++) {
+    for (int k = s->body_lo[2]; k <= s->body_hi[2]; k++)
+        for (int j = s->body_lo[1]; j <= s->body_hi[1]; j++) {
             int jm = j ? j - 1 : ny - 1;
-            for (int i = 0; i < nx; i++) {
+            for (int i = s->body_lo[0]; i <= s->body_hi[0]; i++) {
                 int im = i ? i - 1 : nx - 1;
                 size_t c = AERO_F3_C(s, i, j, k);
                 size_t n3[3] = {AERO_F3_C(s, im, j, k), AERO_F3_C(s, i, jm, k),

@@ -70,6 +70,8 @@ typedef struct {
                              flow's forcing vanishes as h -> 0; 0: the
                              older a = eps U_ref (N x omega), whose forcing
                              of grid-scale eddies grows as 1 / h */
+    int threads;          /* OpenMP threads of one step (<= 1: one; inside
+                             another active parallel region: one) */
 } aero_flow3d_params;
 
 typedef struct aero_flow3d {
@@ -90,6 +92,8 @@ typedef struct aero_flow3d {
     double *region_force; /* body: 3 per region, F / rho of the last step
                              (m^4/s^2), in grid axes */
     unsigned char *near_body; /* cells near the body: no confinement */
+    int body_lo[3], body_hi[3]; /* cells (i, j, k) whose faces the body
+                             can touch: its box and one cell above */
     /* Poisson solver */
     void *fwd, *inv;      /* fftwf plans */
     void *spec;           /* fftwf_complex, nz * ny * (nx/2+1) */

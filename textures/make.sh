@@ -9,8 +9,10 @@ if [ ! -x "$T" ]; then
     exit 1
 fi
 set -x
-# circular cylinder, d = 1 cm at 10 m/s (Re ~ 6800), one direction
-$T aeolian --shape circle --diameter 0.01 --speed 10 -o textures/cylinder.wav
+# circular cylinder, d = 1 cm at 10 m/s (Re ~ 6800), one direction, 24
+# cells per diameter, corrected to a 3D cylinder (--span3d circle, default)
+$T aeolian --shape circle --diameter 0.01 --speed 10 --grid 24 \
+    -o textures/cylinder.wav
 # square prism, side 1 cm at 10 m/s, 8 directions over 0-45 deg
 $T aeolian --shape square --diameter 0.01 --speed 10 --directions 8 \
     -o textures/square.wav

@@ -105,11 +105,36 @@ double aero_spectral_st(const double *t, const double *c, int n,
         power[k] = 0;
         for (int s = 0; s < 3; s++)
             power[k] += segment_power(x, win, s * (m - seg) / 2, seg, f);
-        if (power[k] > best) {
+    }
+    /* the strongest tonal peak inside the scan: a slow drift of the force
+       (an irregular wake wanders) can hold more power at low frequencies
+       than the shedding, at the scan's edge or in the random maxima of its
+       falling spectrum. A peak is tonal when it stands 10 x above the mean
+       power on either side of it (St / 2 to St and St to 2 St, without
+       its own Hann main lobe, +-2 resolutions = +-8 scan steps); without
+       a tonal peak, the strongest interior maximum. */
+    for (int pass = 0; pass < 2 && best_k < 0; pass++)
+        for (int k = 1; k < nf - 1; k++) {
+            if (!(power[k] > power[k - 1] && power[k] >= power[k + 1] &&
+                  power[k] > best))
+                continue;
+            if (!pass) {
+                double st_k = st_min + k * df, below = 0, above = 0;
+                int lo = (int)((st_k / 2.0 - st_min) / df), nb = 0, na = 0;
+                int hi = (int)((st_k * 2.0 - st_min) / df);
+                if (lo < 0) lo = 0;
+                if (hi > nf - 1) hi = nf - 1;
+                for (int q = lo; q < k - 8; q++, nb++)
+                    below += power[q];
+                for (int q = k + 9; q <= hi; q++, na++)
+                    above += power[q];
+                if (nb == 0 || na == 0 || power[k] < 10.0 * below / nb ||
+                    power[k] < 10.0 * above / na)
+                    continue;
+            }
             best = power[k];
             best_k = k;
         }
-    }
     double best_st = best_k >= 0 ? st_min + best_k * df : 0.0;
     if (best_k > 0 && best_k < nf - 1 && power[best_k - 1] > 0 &&
         power[best_k + 1] > 0) {

@@ -40,8 +40,10 @@ void aero_span3d_none(aero_span3d *c, double re);
 /* Strouhal number of the spectral peak of a coefficient history c(t),
  * t in d/U (increasing, about uniformly stepped): Welch average of three
  * Hann-windowed half-length segments, scanned finely between St_min and
- * St_max, the peak refined by a parabola. 0 when the history is too short
- * or flat. */
+ * St_max, the peak refined by a parabola: the strongest tonal maximum
+ * inside the scan (10 x above its neighbourhood), not the edge or the
+ * falling spectrum of a slow drift. 0 when the history is too short or
+ * flat. */
 double aero_spectral_st(const double *t, const double *c, int n,
                         double st_min, double st_max);
 

@@ -142,7 +142,10 @@ static void statistics(const history *h, aero_flowstats *st, double *st_peak)
             cl[m] = 2.0 * h->fy[m];
         }
         aero_flow2d_stats(h->t, cd, cl, h->n, st);
-        *st_peak = aero_spectral_st(h->t, cl, h->n, 0.02, 3.0);
+        /* no periodic lift (flow2d.h's St 0: no shedding, or too short
+           a record): no spectral St either, rather than a peak of noise */
+        *st_peak = st->st > 0.0 ? aero_spectral_st(h->t, cl, h->n, 0.02, 3.0)
+                                : 0.0;
     }
     free(cd);
     free(cl);

@@ -18,7 +18,7 @@ echo "## Texture generation (aerotex): $(nproc) cores, $(date -u +%Y-%m-%d)"
 
 t0=$(stamp)
 OMP_NUM_THREADS=1 $T aeolian --shape circle --diameter 0.01 --speed 10 \
-    --threads 1 -q -o "$OUT/cylinder.wav" >"$OUT/cylinder.txt"
+    --grid 24 --threads 1 -q -o "$OUT/cylinder.wav" >"$OUT/cylinder.txt"
 t1=$(stamp)
 cyl=$(elapsed "$t0" "$t1")
 echo "cylinder d = 1 cm, v0 = 10 m/s, 1 core: ${cyl} s (target <= 60 s;" \

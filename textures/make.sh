@@ -12,8 +12,10 @@ fi
 OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive}
 export OMP_WAIT_POLICY
 set -x
-# circular cylinder, d = 1 cm at 10 m/s (Re ~ 6800), one direction
-$T aeolian --shape circle --diameter 0.01 --speed 10 -o textures/cylinder.wav
+# circular cylinder, d = 1 cm at 10 m/s (Re ~ 6800), one direction, 24
+# cells per diameter, corrected to a 3D cylinder (--span3d circle, default)
+$T aeolian --shape circle --diameter 0.01 --speed 10 --grid 24 \
+    -o textures/cylinder.wav
 # square prism, side 1 cm at 10 m/s, 8 directions over 0-45 deg
 $T aeolian --shape square --diameter 0.01 --speed 10 --directions 8 \
     -o textures/square.wav
@@ -35,4 +37,5 @@ $T vortex --speeds 1,2,3,4,6,8,12,16 --box 0.1 --grid 32 --duration 0.5 \
 $T object --shape sphere --radius 0.05 --speed 10 --grid 10 --duration 0.6 \
     -o textures/sphere.wav
 $T object --shape club --handle 0.0125 --tip 0.03 --length 0.8 --sources 10 \
-    --directions 5 --speed 10 --grid 8 --duration 0.4 -o textures/club.wav
+    --directions 5 --speed 10 --grid 8 --duration 0.4 --confinement 1.2 \
+    -o textures/club.wav

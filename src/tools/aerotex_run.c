@@ -18,7 +18,10 @@ typedef struct {
     const char *shape_name, *poly_file;
     double d, aspect, v0, re, nu, grid, settle, cfl;
     double length, depth;
+    double thin;          /* the section's thinnest frontal width, m */
     int directions, symmetry, mirror; /* symmetry, mirror: -1 by shape */
+    int span3d;           /* 1: the circle-calibrated 2D-to-3D correction */
+    aero_span3d correction; /* what the texture carries (span3d.h) */
 } aeolian_job;
 
 /* one sampled direction: the first member is its task */
@@ -97,6 +100,10 @@ static const aerotex_option aeolian_options[] = {
      "yes for square and ellipse", NULL},
     {"--no-mirror", AEROTEX_SWITCH, NULL, NAN, 0, 0, AT(mirror),
      "it is not", NULL, NULL},
+    {"--span3d", AEROTEX_CHOICE, "none|circle", 1.0, 0, 0, AT(span3d),
+     "2D section to 3D body above Re 190: frequencies and\nforce scaled by "
+     "the 2D circle's error at this Re and\ngrid against Roshko's St and "
+     "Norberg's C_L'\n(textures/README.md)", NULL, NULL},
     FLOW_OPTIONS(16.0, -1.0, "30, 100 below Re 300")};
 
 static const aerotex_option cavity_options[] = {
@@ -195,6 +202,8 @@ static aero_aeolian_flow_params flow_params(const aeolian_job *j,
     p.settle = j->settle;
     p.duration = j->job.duration;
     p.angle = alpha;
+    p.span3d = &j->correction;
+    p.span3d_self = 0;
     return p;
 }
 
@@ -224,6 +233,7 @@ static int check_flow(aeolian_job *j, const aero_shape2d *shape)
     }
     if (j->settle < 0.0)
         j->settle = j->re < 300.0 ? 100.0 : 30.0;
+    j->thin = j->cavity ? j->d : aero_aeolian_flow_thinnest(shape);
     p = flow_params(j, shape, 0.0);
     if (aero_aeolian_flow_domain(&p, &fp, err, sizeof err)) {
         aerotex_error("%s: %s", j->job.name, err);
@@ -279,12 +289,47 @@ static int run_directions(aeolian_job *j, const aero_shape2d *shape,
     aero_aeolian_flow_plan plan;
     char err[512];
     int status = 0;
+    /* the 2D-to-3D correction: a circle calibrates it on itself, any other
+       shape on a circle run first at the same Re and grid (span3d.h) */
+    const int corrected = j->span3d && !j->cavity &&
+                          j->re > AERO_SPAN3D_RE_2D;
+    const int self = corrected && !strcmp(desc, "circle");
+    const int calibrate = corrected && !self;
+    aero_span3d_none(&j->correction, j->re);
     if (aero_aeolian_flow_estimate(&p0, j->job.rate, &plan, err, sizeof err)) {
         aerotex_error("%s", err);
         return 1;
     }
-    aerotex_progress_start(&j->job.prog, NULL, (long)nd * plan.steps,
-                           j->job.quiet);
+    aerotex_progress_start(&j->job.prog, NULL,
+                           (long)(nd + calibrate) * plan.steps, j->job.quiet);
+    if (calibrate) {
+        aero_shape2d circle;
+        aero_aeolian_flow_params pc;
+        direction *c = &r[nd];
+        aero_shape2d_circle(&circle, j->d);
+        pc = flow_params(j, &circle, 0.0);
+        pc.span3d_self = 1;
+        c->task.job = &j->job;
+        c->task.index = nd;
+        c->task.snap_every = (long)(plan.t_end / plan.dt) / 24 + 1;
+        c->wmax = 5.0f;
+        if (!j->job.quiet)
+            fprintf(stderr, "aerotex: the calibration circle of the 2D-to-3D "
+                    "correction, Re %.4g\n", j->re);
+        if (aero_aeolian_flow_simulate(&pc, j->job.rate, NULL, 0, 0, &c->st,
+                                       hook, 1, c, c->task.err,
+                                       sizeof c->task.err)) {
+            aerotex_error("%s", c->task.err);
+            status = 1;
+        }
+        free(c->w);
+        aero_shape2d_free(&circle);
+        if (status) {
+            aerotex_progress_end(&j->job.prog);
+            return status;
+        }
+        j->correction = c->st.span3d;
+    }
     if (!j->job.quiet)
         fprintf(stderr, "aerotex: %s, Re %.4g, %d direction%s, grid %d x %d, "
                 "%d thread%s\n", desc, j->re, nd, nd > 1 ? "s" : "", plan.nx,
@@ -292,6 +337,7 @@ static int run_directions(aeolian_job *j, const aero_shape2d *shape,
 #pragma omp parallel for schedule(dynamic, 1) num_threads(j->job.threads)
     for (int k = 0; k < nd; k++) {
         aero_aeolian_flow_params p = flow_params(j, shape, r[k].alpha);
+        p.span3d_self = self;
         r[k].task.job = &j->job;
         r[k].task.index = k;
         r[k].task.snap_every = (long)(plan.t_end / plan.dt) / 24 + 1;
@@ -309,18 +355,33 @@ static int run_directions(aeolian_job *j, const aero_shape2d *shape,
                           r[k].task.err);
             status = 1;
         }
+    if (self && !status)
+        j->correction = r[0].st.span3d;
     return status;
 }
 
-/* the statistic `what` (0 angle, 1 St, 2 Cd, 3 Cl rms) of every direction */
+/* the statistic `what` (0 angle, 1 St, 2 Cd, 3 Cl rms) of every direction,
+   St (spectral peak) and Cl rms as the texture holds them, after the
+   2D-to-3D correction c; Cd the 2D one */
 static void join_stat(char *buf, size_t len, const direction *r, int n,
-                      int what)
+                      int what, const aero_span3d *c)
 {
     double x[360];
     for (int k = 0; k < n; k++)
-        x[k] = what == 0 ? r[k].alpha : what == 1 ? r[k].st.flow.st
-               : what == 2 ? r[k].st.flow.cd : r[k].st.flow.cl_rms;
+        x[k] = what == 0 ? r[k].alpha
+               : what == 1 ? r[k].st.st_peak * c->frequency_scale
+               : what == 2 ? r[k].st.flow.cd
+                           : r[k].st.flow.cl_rms * c->force_scale;
     aerotex_join(buf, len, x, n, "%.6g");
+}
+
+/* cells across the section's smallest dimension: a cavity's shorter side,
+   a stick's thinnest frontal width */
+static double cells(const aeolian_job *j)
+{
+    if (j->cavity)
+        return j->grid * fmin(j->length, j->depth) / j->length;
+    return j->grid * j->thin / j->d;
 }
 
 /* the texture's metadata */
@@ -329,6 +390,7 @@ static void describe(const aeolian_job *j, const direction *r,
 {
     const int nd = j->directions;
     const double tunit = j->d / j->v0; /* s per d/v0 */
+    const aero_span3d *c = &j->correction;
     char buf[8192];
     aero_texture_set(tex, "kind", j->cavity ? "cavity" : "aeolian");
     aero_texture_set(tex, "shape", desc);
@@ -346,7 +408,7 @@ static void describe(const aeolian_job *j, const direction *r,
     aero_texture_setd(tex, "directions", nd);
     aero_texture_setd(tex, "symmetry", j->symmetry);
     aero_texture_setd(tex, "mirror", j->mirror);
-    join_stat(buf, sizeof buf, r, nd, 0);
+    join_stat(buf, sizeof buf, r, nd, 0, c);
     aero_texture_set(tex, "angles", buf);
     aero_texture_setd(tex, "angle_start", r[0].alpha);
     aero_texture_setd(tex, "angle_step",
@@ -354,18 +416,33 @@ static void describe(const aeolian_job *j, const direction *r,
     aerotex_job_loop_meta(&j->job, tex);
     aero_texture_set(tex, "frame", "x=flow,y=across,z=axis");
     aero_texture_set(tex, "units", "N/(m s)");
-    aero_texture_setd(tex, "st", r[0].st.flow.st);
+    /* St of the lift's spectral peak and the rms lift as the texture holds
+       them (after the 2D-to-3D correction), the 2D solver's own beside
+       them; the mean drag is the 2D one */
+    aero_texture_setd(tex, "st", r[0].st.st_peak * c->frequency_scale);
+    aero_texture_setd(tex, "st_2d", r[0].st.st_peak);
+    aero_texture_setd(tex, "st_2d_crossings", r[0].st.flow.st);
     aero_texture_setd(tex, "cd", r[0].st.flow.cd);
-    aero_texture_setd(tex, "cl_rms", r[0].st.flow.cl_rms);
-    aero_texture_setd(tex, "f", r[0].st.flow.st * j->v0 / j->d);
+    aero_texture_setd(tex, "cl_rms", r[0].st.flow.cl_rms * c->force_scale);
+    aero_texture_setd(tex, "cl_rms_2d", r[0].st.flow.cl_rms);
+    aero_texture_setd(tex, "f",
+                      r[0].st.st_peak * c->frequency_scale * j->v0 / j->d);
     if (nd > 1) {
-        join_stat(buf, sizeof buf, r, nd, 1);
+        join_stat(buf, sizeof buf, r, nd, 1, c);
         aero_texture_set(tex, "st_list", buf);
-        join_stat(buf, sizeof buf, r, nd, 2);
+        join_stat(buf, sizeof buf, r, nd, 2, c);
         aero_texture_set(tex, "cd_list", buf);
-        join_stat(buf, sizeof buf, r, nd, 3);
+        join_stat(buf, sizeof buf, r, nd, 3, c);
         aero_texture_set(tex, "cl_rms_list", buf);
     }
+    aero_texture_set(tex, "span3d", c->applied ? "circle-calibrated" : "none");
+    aero_texture_setd(tex, "span3d_frequency_scale", c->frequency_scale);
+    aero_texture_setd(tex, "span3d_force_scale", c->force_scale);
+    if (c->applied) {
+        aero_texture_setd(tex, "span3d_circle_st_2d", c->st_2d);
+        aero_texture_setd(tex, "span3d_circle_cl_rms_2d", c->cl_rms_2d);
+    }
+    aero_texture_setd(tex, "cells", cells(j));
     aero_texture_setd(tex, "grid", j->grid);
     aero_texture_setd(tex, "settle", j->settle * tunit);
     aero_texture_setd(tex, "dt", r[0].st.dt * tunit);
@@ -378,14 +455,25 @@ static void report(const aeolian_job *j, const direction *r, const char *desc,
                    int frames)
 {
     const aero_flowstats *s0 = &r[0].st.flow;
+    const aero_span3d *c = &j->correction;
     printf("%s: %s, Re %.4g, %d direction%s, %d frames (%.3f s at %g Hz)\n",
            j->job.out, desc, j->re, j->directions,
            j->directions > 1 ? "s" : "", frames, frames / j->job.rate,
            j->job.rate);
+    if (c->applied)
+        printf("  2D-to-3D (circle-calibrated): the 2D circle at Re %.4g "
+               "sheds at St %.4f with Cl rms %.3f; Roshko St %.4f, Norberg "
+               "Cl' %.3f: frequencies x %.3f, force x %.3f\n", j->re,
+               c->st_2d, c->cl_rms_2d, c->st_ref, c->cl_rms_ref,
+               c->frequency_scale, c->force_scale);
+    printf("  %.1f cells across the smallest dimension\n", cells(j));
     for (int k = 0; k < j->directions; k++)
-        printf("  %6.2f deg: St %.4f (f = %.1f Hz)  Cd %.3f  Cl rms %.3f\n",
-               r[k].alpha, r[k].st.flow.st, r[k].st.flow.st * j->v0 / j->d,
-               r[k].st.flow.cd, r[k].st.flow.cl_rms);
+        printf("  %6.2f deg: St %.4f (f = %.1f Hz; 2D %.4f, zero crossings "
+               "%.4f)  Cd(2D) %.3f  Cl rms %.3f (2D %.3f)\n", r[k].alpha,
+               r[k].st.st_peak * c->frequency_scale,
+               r[k].st.st_peak * c->frequency_scale * j->v0 / j->d,
+               r[k].st.st_peak, r[k].st.flow.st, r[k].st.flow.cd,
+               r[k].st.flow.cl_rms * c->force_scale, r[k].st.flow.cl_rms);
     if (s0->st == 0.0 && !j->cavity && s0->cl_rms < 0.01)
         printf("  no vortex shedding at Re %.3g: the tone is silent\n", j->re);
     else if (s0->st == 0.0 && !j->cavity)
@@ -451,8 +539,10 @@ static int aeolian_run(const aerotex_command *cmd, int argc, char **argv)
         status = check_flow(&j, &shape);
     if (!status) {
         aeolian_plan plan = {&j, &shape, desc};
+        /* one task more for the calibration circle of the 2D-to-3D
+           correction (run_directions) */
         status = aerotex_job_run(&j.job, argc, argv, 3 * j.directions,
-                                 j.directions, sizeof(direction), &plan,
+                                 j.directions + 1, sizeof(direction), &plan,
                                  run_stage, write_stage);
     }
     aero_shape2d_free(&shape);

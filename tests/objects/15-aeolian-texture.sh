@@ -97,12 +97,18 @@ judge $ANALYZE onsetdiff "$OUT/tx-ears.wav" \
     --expect "$(awk 'BEGIN { print 2000 / 343 }')" --tol 0.1
 
 # 8. a whirled stick (1 turn/s, ends at 0.5 and 1.5 m) passing the ears:
-#    finite, no clicks from the pose stream's steps
+#    finite, audible (30 dB SPL for the uncorrected 2D texture, lowered by
+#    the texture's own 2D-to-3D correction of g = dF/dt, textures/README.md),
+#    no clicks from the pose stream's steps
 PD_EXTRA="tests/pd/aero-rotor 0.5 1.5 0 360 5" \
     pd_render tx-whirl "aeolian~ -texture cylinder -stereo" 2 2000 \
     "; aero-obj ears -0.1 3 0 0.1 3 0"
 judge $ANALYZE finite "$OUT/tx-whirl.wav" --max 100
-judge $ANALYZE level "$OUT/tx-whirl.wav" --min 30
+whirl_floor=$(build/aerotex info textures/cylinder.wav | awk -F= '
+    { m[$1] = $2 }
+    END { f = m["span3d_force_scale"] * m["span3d_frequency_scale"]
+          printf "%.2f", 30 + (f > 0 ? 20 * log(f) / log(10) : 0) }')
+judge $ANALYZE level "$OUT/tx-whirl.wav" --min "$whirl_floor"
 judge $ANALYZE clicks "$OUT/tx-whirl.wav" --max 3
 judge $ANALYZE clicks "$OUT/tx-whirl.wav" --ch 1 --max 3
 
@@ -134,3 +140,46 @@ pd_render tx-bad-msgs "aeolian~ -texture cylinder -n -3 -exponent 99" 1 1000 \
     "700 ; aero-obj texture nosuch2" "800 ; aero-obj texture cylinder"
 judge $ANALYZE finite "$OUT/tx-bad-msgs.wav" --max 100
 reports_at_least "$OUT/tx-bad-msgs.log" "[aeolian~]" 8
+
+# 11. the shipped cylinder texture against published flow data (aerotex
+#     info: St of the lift's spectral peak, coefficients per unit span).
+#     St and C_L' are what the 2D-to-3D correction is calibrated on
+#     (textures/README.md), so these check that it was applied. Still open
+#     and not asserted here (textures/README.md, "Open"): the 2D mean drag
+#     (Cd 1.0-1.3, Roshko 1961; the texture's is ~1.76), the square
+#     prism's St and Cd onto a face, the sword's clicks
+tex_meta() { build/aerotex info "textures/$1.wav" | sed -n "s/^$2=//p"; }
+in_range() { # name value lo hi source
+    if awk -v x="$2" -v lo="$3" -v hi="$4" 'BEGIN { exit !(x >= lo && x <= hi) }'; then
+        pass "$1 = $2 in $3..$4 ($5)"
+    else
+        fail "$1 = $2 not in $3..$4 ($5)"
+    fi
+}
+cyl_re=$(tex_meta cylinder re)
+in_range "cylinder St" "$(tex_meta cylinder st)" 0.19 0.21 "Roshko 1954"
+cl_fit=$(awk -v re="$cyl_re" 'BEGIN { x = log(re / 1600) / log(10)
+    print (re < 5400) ? 0.045 + 3 * x^4.6 : 0.52 - 0.06 * x^-2.6 }')
+in_range "cylinder sectional C_L'" "$(tex_meta cylinder cl_rms)" \
+    "$(awk -v c="$cl_fit" 'BEGIN { print 0.7 * c }')" \
+    "$(awk -v c="$cl_fit" 'BEGIN { print 1.3 * c }')" "Norberg 2003 fit +-30 %"
+in_range "cylinder cells per diameter" "$(tex_meta cylinder cells)" 24 1000 \
+    "issue 19: at least 24"
+
+# 12. texture mode and model mode agree on the same stick (d = 1 cm,
+#     l = 30 cm), speed and listener (3 m across the flow): the spectral
+#     peak within 5 %, the level within 3 dB, at two speeds. Model mode's
+#     tone follows Roshko (1954) St(Re) and Norberg (2003) C_L'(Re)
+for u in 10 14; do
+    pd_render "agree-model-u$u" "aeolian~ -d 0.01 -l 0.3 -seed 4" 1 4000 \
+        "; aero-speed $u; aero-obj listener 0 3 0"
+    pd_render "agree-texture-u$u" "aeolian~ -texture cylinder -d 0.01 -l 0.3 -seed 4" 1 4000 \
+        "; aero-speed $u; aero-obj listener 0 3 0"
+    f=$(awk -v u="$u" 'BEGIN { re = 1.225 * u * 0.01 / 1.81e-5
+        printf "%.1f", 0.198 * (1 - 19.7 / re) * u / 0.01 }')
+    judge $ANALYZE peakratio "$OUT/agree-model-u$u.wav" "$OUT/agree-texture-u$u.wav" \
+        --expect 1 --tol 0.05 --fmin "$(awk -v f="$f" 'BEGIN{print f/2}')" \
+        --fmax "$(awk -v f="$f" 'BEGIN{print f*1.5}')" --smooth "$(awk -v f="$f" 'BEGIN{print f*0.04}')"
+    judge $ANALYZE leveldiff "$OUT/agree-model-u$u.wav" "$OUT/agree-texture-u$u.wav" \
+        --expect 0 --tol 3
+done

@@ -64,6 +64,7 @@ int main(void)
     bad("aeolian --grid 2 -o x.wav", "out of range");
     bad("aeolian --shape ellipse --aspect 0.02 --grid 16 -o x.wav", "thin");
     bad("aeolian --frobnicate -o x.wav", "unknown option");
+    bad("aeolian --span3d sphere -o x.wav", "--span3d takes");
     bad("cavity --length 0.02 -o x.wav", "--depth");
     bad("cavity --length 0.02 --depth 1 -o x.wav", "depth/length");
     bad("info /nonexistent.wav", "can't open");
@@ -92,8 +93,10 @@ int main(void)
         r = run("info build/tests/aerotex_tiny.wav");
         UNIT_CHECK(r == 0 && said("kind=aeolian") && said("re=80") &&
                        said("directions=1") && said("st=") &&
+                       said("cells=8") && said("span3d=none") &&
                        said("command=aerotex aeolian"),
-                   "info prints kind, Re, directions, St, command");
+                   "info prints kind, Re, directions, St, cells, the "
+                   "2D-to-3D method (none at Re 80: a 2D wake), command");
         remove("build/tests/aerotex_tiny.wav");
     }
     remove(OUT);

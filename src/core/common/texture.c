@@ -209,6 +209,9 @@ int aero_texture_save(const char *path, const aero_texture *t, char *err,
         free(tmp.meta);
         return -1;
     }
+    /* no PEAK chunk: it holds the time of writing, so that two runs of
+       the same command would not give the same file */
+    sf_command(f, SFC_SET_ADD_PEAK_CHUNK, NULL, SF_FALSE);
     bad = sf_set_string(f, SF_STR_COMMENT, tmp.meta);
     free(tmp.meta);
     if (bad ||

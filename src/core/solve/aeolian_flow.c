@@ -9,11 +9,21 @@
 #include <stdlib.h>
 #include <string.h>
 
+double aero_aeolian_flow_thinnest(const aero_shape2d *shape)
+{
+    double thin = 1e300;
+    for (int a = 0; a < 180; a++) {
+        double w = aero_shape2d_frontal(shape, a * AERO_PI / 180.0);
+        if (w < thin) thin = w;
+    }
+    return thin;
+}
+
 int aero_aeolian_flow_domain(const aero_aeolian_flow_params *p,
                              aero_flow2d_params *fp, char *err,
                              size_t errlen)
 {
-    double ext, thin = 1e300;
+    double ext, thin;
     aero_flow2d_defaults(fp, p->re);
     fp->grid = p->grid;
     fp->cfl = p->cfl;
@@ -33,10 +43,7 @@ int aero_aeolian_flow_domain(const aero_aeolian_flow_params *p,
         fp->ymin *= ext;
         fp->ymax *= ext;
     }
-    for (int a = 0; a < 180; a++) {
-        double w = aero_shape2d_frontal(p->shape, a * AERO_PI / 180.0);
-        if (w < thin) thin = w;
-    }
+    thin = aero_aeolian_flow_thinnest(p->shape);
     if (thin * p->grid / p->size < 1.5) {
         snprintf(err, errlen, "the shape is %.3g cells thin at --grid %g: "
                  "use a finer --grid (at least %.0f)",
@@ -123,8 +130,9 @@ static int run(const aero_aeolian_flow_params *p, aero_flow2d *s,
     return 0;
 }
 
-/* statistics of the coefficients Cd = 2 Fx, Cl = 2 Fy */
-static void statistics(const history *h, aero_flowstats *st)
+/* statistics of the coefficients Cd = 2 Fx, Cl = 2 Fy, and the St of the
+   lift's spectral peak */
+static void statistics(const history *h, aero_flowstats *st, double *st_peak)
 {
     double *cd = malloc(sizeof(double) * (h->n + 1));
     double *cl = malloc(sizeof(double) * (h->n + 1));
@@ -134,6 +142,10 @@ static void statistics(const history *h, aero_flowstats *st)
             cl[m] = 2.0 * h->fy[m];
         }
         aero_flow2d_stats(h->t, cd, cl, h->n, st);
+        /* no periodic lift (flow2d.h's St 0: no shedding, or too short
+           a record): no spectral St either, rather than a peak of noise */
+        *st_peak = st->st > 0.0 ? aero_spectral_st(h->t, cl, h->n, 0.02, 3.0)
+                                : 0.0;
     }
     free(cd);
     free(cl);
@@ -141,11 +153,13 @@ static void statistics(const history *h, aero_flowstats *st)
 
 /* g = dF/dt in N/(m s) at the texture rate: 0 or -1 */
 static int resample(const aero_aeolian_flow_params *p, const history *h,
-                    double rate, float *out, int stride, int nout, char *err,
-                    size_t errlen)
+                    const aero_span3d *c, double rate, float *out, int stride,
+                    int nout, char *err, size_t errlen)
 {
-    const double tunit = p->size / p->speed;                 /* s per d/v0 */
-    const double scale = AERO_RHO * p->speed * p->speed * p->size; /* N/m */
+    /* s per d/v0, and the force in N/m, as a 3D body's (span3d.h) */
+    const double tunit = p->size / p->speed / c->frequency_scale;
+    const double scale = AERO_RHO * p->speed * p->speed * p->size *
+                         c->force_scale;
     const double t0 = 20.0 / rate;                           /* kernel reach */
     double *ts = malloc(sizeof(double) * (h->n + 1)), start;
     if (!ts) {
@@ -156,7 +170,8 @@ static int resample(const aero_aeolian_flow_params *p, const history *h,
         ts[m] = h->t[m] * tunit;
     start = ts[0] + t0;
     if (h->n < 2 || ts[h->n - 1] < start + nout / rate + 18.0 / rate) {
-        snprintf(err, errlen, "internal: recording too short");
+        snprintf(err, errlen, "internal: recording too short (2D-to-3D "
+                 "frequency scale %g)", c->frequency_scale);
         free(ts);
         return -1;
     }
@@ -165,6 +180,27 @@ static int resample(const aero_aeolian_flow_params *p, const history *h,
     aero_texture_resample_derivative(ts, h->fy, h->n, rate, start, scale,
                                      out + 1, stride, nout);
     free(ts);
+    return 0;
+}
+
+/* the 2D-to-3D correction this run's output carries: 0 or -1 */
+static int correction(const aero_aeolian_flow_params *p,
+                      aero_aeolian_flow_stats *st, char *err, size_t errlen)
+{
+    aero_span3d_none(&st->span3d, p->re);
+    if (!p->span3d_self) {
+        if (p->span3d)
+            st->span3d = *p->span3d;
+        return 0;
+    }
+    if (aero_span3d_calibrate(&st->span3d, p->re, st->st_peak,
+                              st->flow.cl_rms)) {
+        snprintf(err, errlen, "the calibration circle at Re %.4g did not "
+                 "shed (St %g, Cl rms %g): no 2D-to-3D correction; use "
+                 "--span3d none to make the texture anyway", p->re,
+                 st->st_peak, st->flow.cl_rms);
+        return -1;
+    }
     return 0;
 }
 
@@ -187,8 +223,11 @@ int aero_aeolian_flow_simulate(const aero_aeolian_flow_params *p,
         st->dt = s.dt;
         if (run(p, &s, p->settle + record_time(p, rate), &h, hook, every, ctx,
                 err, errlen) == 0) {
-            statistics(&h, &st->flow);
-            status = resample(p, &h, rate, out, stride, nout, err, errlen);
+            statistics(&h, &st->flow, &st->st_peak);
+            status = correction(p, st, err, errlen);
+            if (status == 0 && out)
+                status = resample(p, &h, &st->span3d, rate, out, stride, nout,
+                                  err, errlen);
         }
     }
     free(h.t);

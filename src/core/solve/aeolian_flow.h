@@ -12,6 +12,7 @@
 
 #include "flow2d.h"
 #include "shape2d.h"
+#include "span3d.h"
 
 #include <stddef.h>
 
@@ -29,7 +30,15 @@ typedef struct {
                             it with the loop search, cross-fade and the
                             resampling kernel's reach */
     double angle;        /* flow direction in the shape's frame, deg */
+    /* the 2D-to-3D correction of the recorded force (span3d.h): NULL for
+       none; with span3d_self the run itself (a circle) calibrates it at
+       re, otherwise *span3d is applied as it is */
+    const aero_span3d *span3d;
+    int span3d_self;
 } aero_aeolian_flow_params;
+
+/* the shape's thinnest frontal width over all directions, m */
+double aero_aeolian_flow_thinnest(const aero_shape2d *shape);
 
 /* the solver's domain for p (units of d): room around tall shapes, the
    space over a cavity's wall; -1 with a message when the shape is under
@@ -49,10 +58,14 @@ int aero_aeolian_flow_estimate(const aero_aeolian_flow_params *p, double rate,
                                aero_aeolian_flow_plan *plan, char *err,
                                size_t errlen);
 
-/* what a run measured: the force statistics (flow2d.h), the first step */
+/* what a run measured: the 2D force statistics (flow2d.h), the St of the
+   lift's spectral peak, the first step, and the 2D-to-3D correction the
+   output carries (the identity without one) */
 typedef struct {
     aero_flowstats flow;
+    double st_peak;      /* 2D, before the correction */
     double dt;           /* d/v0 */
+    aero_span3d span3d;
 } aero_aeolian_flow_stats;
 
 /* called every `every` steps (may be NULL): progress and snapshots */
@@ -61,7 +74,9 @@ typedef void (*aero_aeolian_flow_hook)(void *ctx, const aero_flow2d *s,
 
 /* Runs one direction and writes nout samples of g = dF/dt (N/(m s)) at
    `rate` Hz: the x component (along the flow) to out[k * stride], y to
-   out[k * stride + 1]. 0, or -1 with a message in err. */
+   out[k * stride + 1], after the 2D-to-3D correction of p->span3d (time
+   stretched by 1 / frequency_scale, force times force_scale). 0, or -1
+   with a message in err. out NULL: the statistics only. */
 int aero_aeolian_flow_simulate(const aero_aeolian_flow_params *p,
                                double rate, float *out, int stride, int nout,
                                aero_aeolian_flow_stats *st,

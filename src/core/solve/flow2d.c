@@ -124,17 +124,39 @@ int aero_flow2d_init(aero_flow2d *s, const aero_flow2d_params *p, char *err,
         }
     }
     /* cosine transforms along x, one per row (planned one at a time
-       process-wide: aero_fftw.h) */
+       process-wide: aero_fftw.h). FFTW_ESTIMATE: the plan, and with it the
+       rounding of every step, does not depend on timings, so a texture is
+       the same to the last bit however loaded the machine is. For an even
+       nx the pair DCT-II / DCT-III is made from one real FFT of the
+       reordered row (Makhoul 1980): FFTW's real FFTs are vectorised, its
+       r2r cosine kinds are not, and the transforms took 2/3 of a step. */
     aero_fftw_serialise();
-    {
+    if (s->nx % 2 == 0) {
+        int n = s->nx, nc = s->nx / 2 + 1;
+        s->dct_rows = zalloc((size_t)s->nx * s->ny);
+        s->dct_spec = zalloc(2 * (size_t)nc * s->ny);
+        s->dct_tw = zalloc(2 * (size_t)nc);
+        if (s->dct_rows && s->dct_spec && s->dct_tw) {
+            for (int k = 0; k < nc; k++) {
+                s->dct_tw[2 * k] = (float)cos(AERO_PI * k / (2.0 * n));
+                s->dct_tw[2 * k + 1] = (float)sin(AERO_PI * k / (2.0 * n));
+            }
+            s->plan_fwd = fftwf_plan_many_dft_r2c(
+                1, &n, s->ny, s->dct_rows, NULL, 1, n,
+                (fftwf_complex *)s->dct_spec, NULL, 1, nc, FFTW_ESTIMATE);
+            s->plan_inv = fftwf_plan_many_dft_c2r(
+                1, &n, s->ny, (fftwf_complex *)s->dct_spec, NULL, 1, nc,
+                s->dct_rows, NULL, 1, n, FFTW_ESTIMATE);
+        }
+    } else {
         int n = s->nx;
         fftwf_r2r_kind k10 = FFTW_REDFT10, k01 = FFTW_REDFT01;
         s->plan_fwd = fftwf_plan_many_r2r(1, &n, s->ny, s->dphi, NULL, 1,
                                           s->nx, s->dphi, NULL, 1, s->nx,
-                                          &k10, FFTW_MEASURE);
+                                          &k10, FFTW_ESTIMATE);
         s->plan_inv = fftwf_plan_many_r2r(1, &n, s->ny, s->dphi, NULL, 1,
                                           s->nx, s->dphi, NULL, 1, s->nx,
-                                          &k01, FFTW_MEASURE);
+                                          &k01, FFTW_ESTIMATE);
     }
     if (!s->plan_fwd || !s->plan_inv) {
         aero_flow2d_free(s);
@@ -180,6 +202,9 @@ void aero_flow2d_free(aero_flow2d *s)
     fftwf_free(s->uin);
     fftwf_free(s->phi);
     fftwf_free(s->dphi);
+    fftwf_free(s->dct_rows);
+    fftwf_free(s->dct_spec);
+    fftwf_free(s->dct_tw);
     fftwf_free(s->ieig);
     fftwf_free(s->solid);
     fftwf_free(s->sponge);
@@ -327,7 +352,22 @@ int aero_flow2d_set_body(aero_flow2d *s, const aero_shape2d *shape,
     return 0;
 }
 
+/* the step's loops (the functions marked so) are memory-bound sweeps that
+   vectorise: where the compiler can dispatch at load time (GCC or Clang,
+   x86-64 ELF), an AVX2 clone runs on the machines that have it. AVX2 without FMA: the same
+   IEEE operations on each element as the SSE2 build, so a texture is the
+   same to the bit on either. */
+#if defined(__x86_64__) && defined(__linux__) && defined(__has_attribute)
+#if __has_attribute(target_clones)
+#define AERO_FLOW2D_CLONES __attribute__((target_clones("avx2", "default")))
+#endif
+#endif
+#ifndef AERO_FLOW2D_CLONES
+#define AERO_FLOW2D_CLONES
+#endif
+
 /* ghost layers: uniform inflow, free-slip sides, zero-gradient outflow */
+AERO_FLOW2D_CLONES
 static void fill_ghosts(aero_flow2d *s)
 {
     const int nx = s->nx, ny = s->ny;
@@ -369,6 +409,7 @@ static inline float upwind_flux(float a, float m, float p0, float p1, float q1)
 /* fluxes of u momentum through the faces of the u control volumes of row
    j: x faces at the cell centres (i + 1/2, j), fx[i] for -1 <= i < nx, and
    y faces at the corners (i, j + 1), fy[i] for 0 <= i <= nx */
+AERO_FLOW2D_CLONES
 static void flux_u_x(const aero_flow2d *s, int j, float *restrict fx)
 {
     const float *restrict u = s->u + AT(0, j);
@@ -377,6 +418,7 @@ static void flux_u_x(const aero_flow2d *s, int j, float *restrict fx)
                             u[i + 1], u[i + 2]);
 }
 
+AERO_FLOW2D_CLONES
 static void flux_u_y(const aero_flow2d *s, int j, float *restrict fy)
 {
     const int sx = s->sx;
@@ -387,6 +429,7 @@ static void flux_u_y(const aero_flow2d *s, int j, float *restrict fy)
 }
 
 /* H_u = -d(uu)/dx - d(vu)/dy + nu lap u at interior u nodes */
+AERO_FLOW2D_CLONES
 static void momentum_u(aero_flow2d *s)
 {
     const int nx = s->nx, ny = s->ny, sx = s->sx;
@@ -410,6 +453,7 @@ static void momentum_u(aero_flow2d *s)
 
 /* fluxes of v momentum of row j: x faces at the corners (i + 1, j),
    fx[i] for -1 <= i < nx, y faces at the cell centres (i, j + 1/2) */
+AERO_FLOW2D_CLONES
 static void flux_v_x(const aero_flow2d *s, int j, float *restrict fx)
 {
     const int sx = s->sx;
@@ -419,6 +463,7 @@ static void flux_v_x(const aero_flow2d *s, int j, float *restrict fx)
                             v[i + 1], v[i + 2]);
 }
 
+AERO_FLOW2D_CLONES
 static void flux_v_y(const aero_flow2d *s, int j, float *restrict fy)
 {
     const int sx = s->sx;
@@ -429,6 +474,7 @@ static void flux_v_y(const aero_flow2d *s, int j, float *restrict fy)
 }
 
 /* H_v = -d(uv)/dx - d(vv)/dy + nu lap v at interior v nodes */
+AERO_FLOW2D_CLONES
 static void momentum_v(aero_flow2d *s)
 {
     const int nx = s->nx, ny = s->ny, sx = s->sx;
@@ -453,6 +499,7 @@ static void momentum_v(aero_flow2d *s)
 /* u* = u^n + dt ((1 + r/2) H^n - r/2 H^(n-1) - grad p^(n-1/2)),
    r = dt / dt_prev (Adams-Bashforth 2 with a variable step, Euler at the
    first step; incremental pressure) */
+AERO_FLOW2D_CLONES
 static void advance_explicit(aero_flow2d *s)
 {
     const int nx = s->nx, ny = s->ny;
@@ -500,6 +547,7 @@ static void convective_outflow(aero_flow2d *s)
 
 /* sponge layer: u <- U + (u - U)(1 - sigma dt), v <- v (1 - sigma dt),
    so that vortices leave through the convective outflow without feedback */
+AERO_FLOW2D_CLONES
 static void damp_outflow(aero_flow2d *s)
 {
     const int nx = s->nx, ny = s->ny;
@@ -542,6 +590,7 @@ static void force_body(aero_flow2d *s)
 
 /* the y direction of the Poisson problem, all x modes at once (Thomas);
    the cosine transform pair along x scales by 2 nx */
+AERO_FLOW2D_CLONES
 static void solve_tridiagonal(aero_flow2d *s)
 {
     const int nx = s->nx, ny = s->ny;
@@ -581,7 +630,82 @@ static void force_cavity_walls(aero_flow2d *s)
     s->fy = fy * s->h;
 }
 
+/* dphi <- its DCT-II along x as FFTW_REDFT10 defines it, Y[k] = 2 sum_j
+   x[j] cos(pi k (j + 1/2) / n): with v the row reordered (x[0], x[2],
+   ..., x[3], x[1]) and V its DFT, Y[k] = 2 Re(W_k V[k]) and Y[n - k] =
+   -2 Im(W_k V[k]), W_k = exp(-i pi k / (2 n)) (Makhoul 1980) */
+AERO_FLOW2D_CLONES
+static void cosine_forward(aero_flow2d *s)
+{
+    const int n = s->nx, h = n / 2, nc = h + 1;
+    if (!s->dct_rows) {
+        fftwf_execute((fftwf_plan)s->plan_fwd);
+        return;
+    }
+    for (int j = 0; j < s->ny; j++) {
+        const float *restrict x = s->dphi + (size_t)j * n;
+        float *restrict v = s->dct_rows + (size_t)j * n;
+        for (int k = 0; k < h; k++) {
+            v[k] = x[2 * k];
+            v[n - 1 - k] = x[2 * k + 1];
+        }
+    }
+    fftwf_execute((fftwf_plan)s->plan_fwd);
+    for (int j = 0; j < s->ny; j++) {
+        const float *restrict c = s->dct_spec + 2 * (size_t)j * nc;
+        const float *restrict tw = s->dct_tw;
+        float *restrict y = s->dphi + (size_t)j * n;
+        y[0] = 2.0f * c[0];
+        y[h] = 2.0f * tw[2 * h] * c[2 * h];
+        for (int k = 1; k < h; k++) {
+            float cr = c[2 * k], ci = c[2 * k + 1];
+            float co = tw[2 * k], si = tw[2 * k + 1];
+            y[k] = 2.0f * (co * cr + si * ci);
+            y[n - k] = -2.0f * (co * ci - si * cr);
+        }
+    }
+}
+
+/* dphi <- its DCT-III along x as FFTW_REDFT01 defines it, x[j] = Y[0] +
+   2 sum_k Y[k] cos(pi k (j + 1/2) / n) = 2 n times the inverse of
+   cosine_forward: V[k] = conj(W_k) (Y[k] - i Y[n - k]) (V[0] = Y[0],
+   V[n/2] = sqrt(2) Y[n/2]), its real inverse DFT unordered */
+AERO_FLOW2D_CLONES
+static void cosine_inverse(aero_flow2d *s)
+{
+    const int n = s->nx, h = n / 2, nc = h + 1;
+    if (!s->dct_rows) {
+        fftwf_execute((fftwf_plan)s->plan_inv);
+        return;
+    }
+    for (int j = 0; j < s->ny; j++) {
+        const float *restrict y = s->dphi + (size_t)j * n;
+        const float *restrict tw = s->dct_tw;
+        float *restrict c = s->dct_spec + 2 * (size_t)j * nc;
+        c[0] = y[0];
+        c[1] = 0.0f;
+        c[2 * h] = y[h] * (float)1.41421356237309505;
+        c[2 * h + 1] = 0.0f;
+        for (int k = 1; k < h; k++) {
+            float a = y[k], b = y[n - k];
+            float co = tw[2 * k], si = tw[2 * k + 1];
+            c[2 * k] = co * a + si * b;
+            c[2 * k + 1] = si * a - co * b;
+        }
+    }
+    fftwf_execute((fftwf_plan)s->plan_inv);
+    for (int j = 0; j < s->ny; j++) {
+        const float *restrict v = s->dct_rows + (size_t)j * n;
+        float *restrict x = s->dphi + (size_t)j * n;
+        for (int k = 0; k < h; k++) {
+            x[2 * k] = v[k];
+            x[2 * k + 1] = v[n - 1 - k];
+        }
+    }
+}
+
 /* lap(dp) = div(u*) / dt, u = u* - dt grad(dp), p += dp */
+AERO_FLOW2D_CLONES
 static void project(aero_flow2d *s)
 {
     const int nx = s->nx, ny = s->ny;
@@ -593,9 +717,9 @@ static void project(aero_flow2d *s)
         for (int i = 0; i < nx; i++)
             phi[j * nx + i] = (u[i + 1] - u[i] + v[i + sx] - v[i]) * idt_h;
     }
-    fftwf_execute((fftwf_plan)s->plan_fwd);
+    cosine_forward(s);
     solve_tridiagonal(s);
-    fftwf_execute((fftwf_plan)s->plan_inv);
+    cosine_inverse(s);
     for (int j = 0; j < ny; j++) {
         float *u = s->u + AT(0, j);
         const float *p = phi + j * nx;
@@ -630,6 +754,7 @@ static int check_finite(aero_flow2d *s)
 
 /* dt = cfl h / max(|u| + |v|) (at least the free stream's 2 U), capped
    by the AB2 limit of diffusion and upwinding; measured every 4 steps */
+AERO_FLOW2D_CLONES
 static void choose_step(aero_flow2d *s)
 {
     float m = 2.0f;

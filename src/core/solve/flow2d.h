@@ -45,6 +45,11 @@ typedef struct {
     float *sponge;       /* outflow sponge: rate per column (U/d), nx + 1 */
     float *work;         /* three rows of face fluxes */
     void *plan_fwd, *plan_inv; /* fftwf_plan */
+    /* the cosine transforms through a real FFT (even nx, flow2d.c):
+       rows reordered, their spectra, the quarter-wave twiddles */
+    float *dct_rows;     /* nx * ny */
+    float *dct_spec;     /* (nx / 2 + 1) * ny complex (interleaved) */
+    float *dct_tw;       /* cos, sin of pi k / (2 nx), k <= nx / 2 */
     /* immersed boundary nodes: u nodes then v nodes */
     int nib, nibu;
     int *ib_idx;         /* index into u (first nibu) or v */

@@ -234,9 +234,10 @@ int aero_leafwave_table_for(const aero_leafwave *lw, double length,
                             double width);
 const float *aero_leafwave_table(const aero_leafwave *lw, int i);
 
-/* n samples; speed (m/s along the wind's direction, NULL = 0) is read per
- * frame; outs[ear] get the pressure in Pa. speed may alias outs[0].
- * Returns 1 if a speed was clamped (Mach 0.3). */
+/* n samples; speed (m/s along the set direction, else the wind's; its
+ * block's mean, NaN samples skipped; NULL: set_speed's, 0 until set) is
+ * added to the wind; outs[ear] get the pressure in Pa. speed may alias
+ * outs[0]. Returns 1 if the wind was clamped (Mach 0.3). */
 int aero_leafwave_process(aero_leafwave *lw, const float *speed,
                           float *const *outs, int n);
 

@@ -202,8 +202,10 @@ static void *aeolian_tilde_new(t_symbol *s, int argc, t_atom *argv)
     (void)s;
     t_aeolian_tilde *x = (t_aeolian_tilde *)pd_new(aeolian_tilde_class);
     aero_pd_base_init(&x->x_base, x, &aeolian_tilde_spec, argc, argv);
-    aero_aeolian_init(&x->x_engine, sys_getsr(), x->x_base.stereo ? 2 : 1,
-                      aero_pd_default_seed());
+    if (aero_aeolian_init(&x->x_engine, sys_getsr(),
+                          x->x_base.stereo ? 2 : 1, aero_pd_default_seed()))
+        pd_error(x, OBJ ": sample rate %g not usable: 44100 Hz until the "
+                 "DSP starts", sys_getsr());
     x->x_pose_time = clock_getlogicaltime();
     aero_pd_parse_flags(x, &aeolian_tilde_spec, argc, argv);
     aero_pd_base_outlets(&x->x_base);

@@ -297,7 +297,6 @@ void aero_pd_wind_init(aero_pd_wind *w)
 {
     w->dir[0] = 1.0;
     w->dir[1] = w->dir[2] = 0.0;
-    w->speed = 0.0;
 }
 
 double aero_pd_wind_message(aero_pd_base *b, aero_pd_wind *w, t_symbol *s,
@@ -315,17 +314,6 @@ double aero_pd_wind_message(aero_pd_base *b, aero_pd_wind *w, t_symbol *s,
         for (int k = 0; k < 3; k++)
             w->dir[k] = v[k] / speed;
     return speed;
-}
-
-double aero_pd_block_mean(const float *in, int n)
-{
-    double sum = 0.0;
-    if (!in)
-        return 0.0;
-    for (int i = 0; i < n; i++)
-        sum += in[i];
-    double mean = n > 0 ? sum / n : 0.0;
-    return mean == mean && fabs(mean) <= 1e30 ? mean : 0.0;
 }
 
 /* --- the host's data folder (aero.h) -------------------------------------- */

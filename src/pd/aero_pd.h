@@ -142,10 +142,9 @@ void aero_pd_bad_ears(aero_pd_base *b, int ears);
 
 /* --- a wind along a direction ([treebranch~], [leafwave~]) ---------------
  * The inlet is the speed along the direction of the last `wind vx vy vz`
- * (+x until then), taken as the block's mean. */
+ * (+x until then); the cores take the block's mean. */
 typedef struct {
     double dir[3]; /* unit vector */
-    double speed;  /* the speed last applied, m/s */
 } aero_pd_wind;
 
 void aero_pd_wind_init(aero_pd_wind *w);
@@ -153,9 +152,6 @@ void aero_pd_wind_init(aero_pd_wind *w);
  * speed, or -1 after reporting an error */
 double aero_pd_wind_message(aero_pd_base *b, aero_pd_wind *w, t_symbol *s,
                             int argc, const t_atom *argv);
-/* the block's mean speed (finite; 0 without an input), read before any
- * output is written */
-double aero_pd_block_mean(const float *in, int n);
 
 /* --- textures: one loader, one failure policy ------------------------------
  * A texture that can't be found or read is reported once (the name, the

@@ -136,7 +136,10 @@ static void *cavity_tilde_new(t_symbol *s, int argc, t_atom *argv)
     (void)s;
     t_cavity_tilde *x = (t_cavity_tilde *)pd_new(cavity_tilde_class);
     aero_pd_base_init(&x->x_base, x, &cavity_tilde_spec, argc, argv);
-    aero_cavity_model_init(&x->x_model, sys_getsr(), aero_pd_default_seed());
+    if (aero_cavity_model_init(&x->x_model, sys_getsr(),
+                               aero_pd_default_seed()))
+        pd_error(x, OBJ ": sample rate %g not usable: 44100 Hz until the "
+                 "DSP starts", sys_getsr());
     aero_pd_parse_flags(x, &cavity_tilde_spec, argc, argv);
     aero_pd_base_outlets(&x->x_base);
     return x;

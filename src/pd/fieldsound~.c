@@ -389,7 +389,9 @@ static void *fieldsound_tilde_new(t_symbol *s, int argc, t_atom *argv)
     clock_free(x->x_base.clock);
     x->x_base.clock = NULL;
     aero_field_params_default(&x->x_par);
-    aero_field_render_init(&x->x_render, sys_getsr());
+    if (aero_field_render_init(&x->x_render, sys_getsr()))
+        pd_error(x, OBJ ": sample rate %g not usable: 44100 Hz until the "
+                 "DSP starts", sys_getsr());
     aero_ears start = aero_ears_at(1, 0, 0);
     aero_field_render_place_ears(&x->x_render, &start);
     x->x_poll = clock_new(x, (t_method)fieldsound_tilde_poll);

@@ -28,15 +28,6 @@ typedef struct _leafwave_tilde {
 
 #define OBJ "[leafwave~]"
 
-/* the wind along its direction at `speed`; 1 when clamped at Mach 0.3 */
-static int leafwave_tilde_apply_wind(t_leafwave_tilde *x, double speed)
-{
-    const double *dir = x->x_wind.dir;
-    x->x_wind.speed = speed;
-    return aero_leafwave_set_wind(&x->x_model, dir[0] * speed, dir[1] * speed,
-                                  dir[2] * speed) != 0;
-}
-
 static int leafwave_tilde_process(void *obj, const float *in,
                                   float *const *out, int n)
 {
@@ -47,15 +38,9 @@ static int leafwave_tilde_process(void *obj, const float *in,
                 out[e][i] = 0;
         return 0;
     }
-    /* the wind, as [treebranch~] takes it: the inlet is the speed along
-       the wind's direction, the block's mean; read before writing (in and
-       out may share a buffer) */
-    double speed = aero_pd_block_mean(in, n);
-    int clamped = 0;
-    if (n > 0 && speed != x->x_wind.speed)
-        clamped = leafwave_tilde_apply_wind(x, speed);
-    aero_leafwave_process(&x->x_model, NULL, out, n);
-    return clamped;
+    /* the inlet is the speed along the wind's direction; the core takes
+       the block's mean and reports a clamp */
+    return aero_leafwave_process(&x->x_model, in, out, n);
 }
 
 static void leafwave_tilde_dsp(t_leafwave_tilde *x, t_signal **sp)
@@ -190,7 +175,9 @@ static void leafwave_tilde_wind(t_leafwave_tilde *x, t_symbol *s, int argc,
     /* the inlet's float is the speed along the direction (a connected
        signal overrides it), as in [treebranch~] */
     x->x_f = (t_float)speed;
-    if (leafwave_tilde_apply_wind(x, speed))
+    const double *dir = x->x_wind.dir;
+    aero_leafwave_set_direction(&x->x_model, dir[0], dir[1], dir[2]);
+    if (aero_leafwave_set_speed(&x->x_model, speed) == 1)
         aero_pd_clamped(&x->x_base);
 }
 

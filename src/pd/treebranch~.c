@@ -24,28 +24,13 @@ typedef struct _treebranch_tilde {
 
 #define OBJ "[treebranch~]"
 
-/* the wind along its direction at `speed`; 1 when clamped at Mach 0.3 */
-static int treebranch_tilde_apply_wind(t_treebranch_tilde *x, double speed)
-{
-    double w[3];
-    for (int k = 0; k < 3; k++)
-        w[k] = x->x_wind.dir[k] * speed;
-    x->x_wind.speed = speed;
-    return aero_treebranch_set_wind(&x->x_tb, w) == 1;
-}
-
 static int treebranch_tilde_process(void *obj, const float *in,
                                     float *const *out, int n)
 {
     t_treebranch_tilde *x = obj;
-    /* the wind speed is the block's mean (frames are ~10 ms apart); read
-       before writing: in and out may share a buffer */
-    double speed = aero_pd_block_mean(in, n);
-    int clamped = 0;
-    if (n > 0 && speed != x->x_wind.speed)
-        clamped = treebranch_tilde_apply_wind(x, speed);
-    aero_treebranch_process(&x->x_tb, out[0], out[1], n);
-    return clamped;
+    /* the inlet is the speed along the wind's direction; the core takes
+       the block's mean and reports a clamp */
+    return aero_treebranch_process_speed(&x->x_tb, in, out[0], out[1], n);
 }
 
 static void treebranch_tilde_dsp(t_treebranch_tilde *x, t_signal **sp)
@@ -108,7 +93,8 @@ static void treebranch_tilde_wind(t_treebranch_tilde *x, t_symbol *s,
     /* the inlet's float is the speed along the direction (a connected
        signal overrides it) */
     x->x_f = (t_float)speed;
-    if (treebranch_tilde_apply_wind(x, speed))
+    aero_treebranch_set_direction(&x->x_tb, x->x_wind.dir);
+    if (aero_treebranch_set_speed(&x->x_tb, speed) == 1)
         aero_pd_clamped(&x->x_base);
 }
 

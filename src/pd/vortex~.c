@@ -140,28 +140,28 @@ static void vortex_tilde_ramp(t_vortex_tilde *x, t_floatarg f)
 /* combustion noise (combustion_noise.h): the flame's mean heat release */
 static void vortex_tilde_power(t_vortex_tilde *x, t_floatarg f)
 {
-    if (aero_combustion_set_power_kw(&x->x_player.combustion, f))
+    if (aero_vortex_player_set_power_kw(&x->x_player, f))
         pd_error(x, OBJ ": power %g kW out of range (0 = no combustion "
                  "noise, up to %g)", f, AERO_COMBUSTION_POWER_KW_MAX);
 }
 
 static void vortex_tilde_length(t_vortex_tilde *x, t_floatarg f)
 {
-    if (aero_combustion_set_length(&x->x_player.combustion, f))
+    if (aero_vortex_player_set_flame_length(&x->x_player, f))
         pd_error(x, OBJ ": length %g m out of range (%g..%g)", f,
                  AERO_COMBUSTION_LENGTH_MIN, AERO_COMBUSTION_LENGTH_MAX);
 }
 
 static void vortex_tilde_strouhal(t_vortex_tilde *x, t_floatarg f)
 {
-    if (aero_combustion_set_strouhal(&x->x_player.combustion, f))
+    if (aero_vortex_player_set_strouhal(&x->x_player, f))
         pd_error(x, OBJ ": strouhal %g out of range (%g..%g)", f,
                  AERO_COMBUSTION_ST_MIN, AERO_COMBUSTION_ST_MAX);
 }
 
 static void vortex_tilde_fluctuation(t_vortex_tilde *x, t_floatarg f)
 {
-    if (aero_combustion_set_fluctuation(&x->x_player.combustion, f))
+    if (aero_vortex_player_set_fluctuation(&x->x_player, f))
         pd_error(x, OBJ ": fluctuation %g out of range (0..1)", f);
 }
 

@@ -152,43 +152,4 @@ static inline int aero_set_ramp_ms(double *samples, double ms, double rate)
     return 0;
 }
 
-/* a value that moves linearly to its target in whole chunks of samples */
-typedef struct {
-    double value, target, step;
-    int chunks_left;
-} aero_ramp;
-
-static inline void aero_ramp_jump(aero_ramp *r, double v)
-{
-    r->value = r->target = v;
-    r->step = 0.0;
-    r->chunks_left = 0;
-}
-
-/* reaches v after ~ramp_samples, in whole chunks of `chunk` samples */
-static inline void aero_ramp_to(aero_ramp *r, double v, double ramp_samples,
-                                int chunk)
-{
-    int chunks = (int)ceil(ramp_samples / chunk);
-    r->target = v;
-    if (!(chunks >= 1)) {
-        r->value = v;
-        r->chunks_left = 0;
-        return;
-    }
-    r->chunks_left = chunks;
-    r->step = (v - r->value) / chunks;
-}
-
-/* the value after one more chunk */
-static inline double aero_ramp_advance(aero_ramp *r)
-{
-    if (r->chunks_left > 0) {
-        r->value += r->step;
-        if (--r->chunks_left == 0)
-            r->value = r->target;
-    }
-    return r->value;
-}
-
 #endif

@@ -4,7 +4,7 @@
 
 #include "aero_air.h"
 #include "aero_util.h"
-#include "glide.h"
+#include "aero_ramp.h"
 #include "strouhal.h"
 
 #include <math.h>

@@ -3,7 +3,7 @@
 
 #include "aero_air.h"
 #include "aero_util.h"
-#include "glide.h"
+#include "aero_ramp.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -6,7 +6,7 @@
 
 #include "aero_air.h"
 #include "aero_util.h"
-#include "glide.h"
+#include "aero_ramp.h"
 
 #include <math.h>
 #include <stdarg.h>

@@ -1108,8 +1108,10 @@ int aero_leafwave_set_wind(aero_leafwave *lw, double vx, double vy, double vz)
     if (s > lim)
         for (int k = 0; k < 3; k++)
             v[k] *= lim / s;
-    for (int k = 0; k < 3; k++)
+    for (int k = 0; k < 3; k++) {
         lw->wind[k] = v[k];
+        lw->speed_dir[k] = 0.0;
+    }
     return s > lim ? -1 : 0;
 }
 
@@ -1118,6 +1120,18 @@ int aero_leafwave_set_speed(aero_leafwave *lw, double speed)
     if (!aero_is_finite(speed))
         return -1;
     lw->inlet_speed = speed;
+    return fabs(speed) > AERO_MACH_LIMIT * AERO_C0;
+}
+
+int aero_leafwave_set_direction(aero_leafwave *lw, double x, double y,
+                                double z)
+{
+    double d[3] = {x, y, z};
+    if (!aero_is_finite(x) || !aero_is_finite(y) || !aero_is_finite(z) ||
+        !(aero_normalise3(d) > 0.0))
+        return -1;
+    for (int k = 0; k < 3; k++)
+        lw->speed_dir[k] = d[k];
     return 0;
 }
 
@@ -1285,7 +1299,8 @@ static double mic_factor(const aero_leafwave *lw, const double ear[3])
 }
 
 /* the wind now: the `wind` vector plus the inlet speed (the mean of the
-   block, read before any output) along its direction (+x without one),
+   block, read before any output) along the set direction, else the
+   wind's (+x without one),
    clamped at Mach 0.3; returns 1 when clamped */
 static int wind_now(const aero_leafwave *lw, const float *speed, int n,
                     double w[3], double *u)
@@ -1300,7 +1315,10 @@ static int wind_now(const aero_leafwave *lw, const float *speed, int n,
             u_in = 0.0;
     }
     double dir[3] = {lw->wind[0], lw->wind[1], lw->wind[2]};
-    if (aero_normalise3(dir) <= 0.0) {
+    if (aero_dot3(lw->speed_dir, lw->speed_dir) > 0.0) {
+        for (int k = 0; k < 3; k++)
+            dir[k] = lw->speed_dir[k];
+    } else if (aero_normalise3(dir) <= 0.0) {
         dir[0] = 1.0;
         dir[1] = dir[2] = 0.0;
     }

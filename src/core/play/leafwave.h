@@ -150,6 +150,7 @@ typedef struct aero_leafwave {
     /* parameters */
     double wind[3];      /* from the `wind` message */
     double inlet_speed;  /* added along the wind's direction (or +x) */
+    double speed_dir[3]; /* unit direction of the speed; 0 0 0: the wind's */
     double stiffness, beta;
     double sway;         /* rad, largest lateral amplitude */
     double coupling;     /* x-r coupling a (eq. 12) */
@@ -197,7 +198,14 @@ void aero_leafwave_clear_tree(aero_leafwave *lw);
 int aero_leafwave_set_sample_rate(aero_leafwave *lw, double sr);
 int aero_leafwave_set_wind(aero_leafwave *lw, double vx, double vy,
                            double vz);
+/* the speed used when process gets none (NULL); 1 when it is beyond Mach
+   0.3 (process clamps it) */
 int aero_leafwave_set_speed(aero_leafwave *lw, double speed);
+/* the direction the speed blows along, instead of the wind vector's own
+   (a later set_wind goes back to the wind's); 0, or -1 when zero or not
+   finite */
+int aero_leafwave_set_direction(aero_leafwave *lw, double x, double y,
+                                double z);
 /* ears 0..e->n-1 (e->n at most the ears it was made with) */
 int aero_leafwave_set_ears(aero_leafwave *lw, const aero_ears *e);
 int aero_leafwave_set_gain_db(aero_leafwave *lw, double db);
@@ -226,9 +234,10 @@ int aero_leafwave_table_for(const aero_leafwave *lw, double length,
                             double width);
 const float *aero_leafwave_table(const aero_leafwave *lw, int i);
 
-/* n samples; speed (m/s along the wind's direction, NULL = 0) is read per
- * frame; outs[ear] get the pressure in Pa. speed may alias outs[0].
- * Returns 1 if a speed was clamped (Mach 0.3). */
+/* n samples; speed (m/s along the set direction, else the wind's; its
+ * block's mean, NaN samples skipped; NULL: set_speed's, 0 until set) is
+ * added to the wind; outs[ear] get the pressure in Pa. speed may alias
+ * outs[0]. Returns 1 if the wind was clamped (Mach 0.3). */
 int aero_leafwave_process(aero_leafwave *lw, const float *speed,
                           float *const *outs, int n);
 

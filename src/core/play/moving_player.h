@@ -10,6 +10,7 @@
 
 #include "aero_air.h"
 #include "aero_ears.h"
+#include "aero_ramp.h"
 #include "aero_ranges.h"
 #include "aero_util.h"
 #include "arrivals.h"

@@ -124,6 +124,7 @@ int aero_treebranch_init(aero_treebranch *tb, double sample_rate,
         ? sample_rate : 44100.0;
     tb->seed = seed;
     tb->rng = seed ? seed : 0x2545f491u;
+    tb->speed_dir[0] = 1.0;
     tb->alpha = 2.0;
     tb->mic_k = 1.0;
     tb->gain = 1.0;
@@ -219,6 +220,31 @@ int aero_treebranch_set_wind(aero_treebranch *tb, const double w[3])
     if (tb->has_tree)
         aero_tree_motion_set_wind(&tb->motion, tb->wind);
     return clamped;
+}
+
+int aero_treebranch_set_speed(aero_treebranch *tb, double speed)
+{
+    double w[3];
+    if (!aero_is_finite(speed))
+        return -1;
+    for (int k = 0; k < 3; k++)
+        w[k] = tb->speed_dir[k] * speed;
+    tb->speed = speed;
+    return aero_treebranch_set_wind(tb, w);
+}
+
+int aero_treebranch_set_direction(aero_treebranch *tb, const double d[3])
+{
+    double u[3];
+    if (!finite3(d))
+        return -1;
+    for (int k = 0; k < 3; k++)
+        u[k] = d[k];
+    if (!(aero_normalise3(u) > 0.0))
+        return -1;
+    for (int k = 0; k < 3; k++)
+        tb->speed_dir[k] = u[k];
+    return 0;
 }
 
 int aero_treebranch_set_alpha(aero_treebranch *tb, double alpha)
@@ -595,4 +621,28 @@ void aero_treebranch_process(aero_treebranch *tb, float *out0, float *out1,
         process_chunk(tb, out0 + done, out1 ? out1 + done : NULL, m);
         done += m;
     }
+}
+
+/* the mean of a block of speeds; 0 when not finite or beyond 1e30 */
+static double block_mean(const float *in, int n)
+{
+    double sum = 0.0;
+    for (int i = 0; i < n; i++)
+        sum += in[i];
+    double mean = sum / n;
+    return mean == mean && fabs(mean) <= 1e30 ? mean : 0.0;
+}
+
+int aero_treebranch_process_speed(aero_treebranch *tb, const float *speed,
+                                  float *out0, float *out1, int n)
+{
+    int clamped = 0;
+    /* frames are ~10 ms apart: one speed a block is enough */
+    if (speed && n > 0) {
+        double u = block_mean(speed, n);
+        if (u != tb->speed)
+            clamped = aero_treebranch_set_speed(tb, u) == 1;
+    }
+    aero_treebranch_process(tb, out0, out1, n);
+    return clamped;
 }

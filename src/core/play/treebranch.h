@@ -54,6 +54,8 @@ typedef struct aero_treebranch {
 
     /* parameters */
     double wind[3];            /* m/s */
+    double speed_dir[3];       /* unit: the direction speeds blow along */
+    double speed;              /* the last speed given, m/s */
     double alpha;              /* tail exponent */
     double mic_k;              /* cardioid exponent */
     double mic_dir[3];         /* unit axis; 0 0 0: aimed at the tree */
@@ -96,6 +98,12 @@ int aero_treebranch_set_tree(aero_treebranch *tb, aero_tree *t);
 int aero_treebranch_set_sample_rate(aero_treebranch *tb, double sr);
 /* wind vector, m/s; its speed is clamped to Mach 0.3: returns 1 then */
 int aero_treebranch_set_wind(aero_treebranch *tb, const double w[3]);
+/* the wind as a speed along speed_dir (+x until set_direction): sets the
+   wind vector; 1 when clamped (Mach 0.3), -1 when not finite */
+int aero_treebranch_set_speed(aero_treebranch *tb, double speed);
+/* the direction of later speeds (not the wind now); 0, or -1 when zero or
+   not finite */
+int aero_treebranch_set_direction(aero_treebranch *tb, const double d[3]);
 int aero_treebranch_set_alpha(aero_treebranch *tb, double alpha);
 int aero_treebranch_set_stiffness(aero_treebranch *tb, double s);
 int aero_treebranch_set_beta(aero_treebranch *tb, double beta);
@@ -116,6 +124,12 @@ int aero_treebranch_set_seed(aero_treebranch *tb, uint32_t seed);
    (right, may be NULL when mono) */
 void aero_treebranch_process(aero_treebranch *tb, float *out0, float *out1,
                              int n);
+/* the same, with the wind's speed along speed_dir from the mean of speed[0..
+   n-1] (m/s; NULL: the wind as set; a block whose mean is not finite or
+   beyond 1e30 counts as 0), read before any output (speed may alias
+   out0); 1 when that speed was clamped (Mach 0.3) */
+int aero_treebranch_process_speed(aero_treebranch *tb, const float *speed,
+                                  float *out0, float *out1, int n);
 
 /* one frame's spectrum for tests: per-bin power (Pa^2 at 1 m, before
    rendering), nbins values, from the current motion and wind; returns

@@ -4,7 +4,7 @@
 
 #include "aero_air.h"
 #include "aero_util.h"
-#include "glide.h"
+#include "aero_ramp.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -186,6 +186,26 @@ int aero_vortex_player_set_falloff(aero_vortex_player *m, int exponent)
         return -1;
     m->falloff = exponent;
     return 0;
+}
+
+int aero_vortex_player_set_power_kw(aero_vortex_player *m, double kw)
+{
+    return aero_combustion_set_power_kw(&m->combustion, kw);
+}
+
+int aero_vortex_player_set_flame_length(aero_vortex_player *m, double l)
+{
+    return aero_combustion_set_length(&m->combustion, l);
+}
+
+int aero_vortex_player_set_strouhal(aero_vortex_player *m, double st)
+{
+    return aero_combustion_set_strouhal(&m->combustion, st);
+}
+
+int aero_vortex_player_set_fluctuation(aero_vortex_player *m, double eps)
+{
+    return aero_combustion_set_fluctuation(&m->combustion, eps);
 }
 
 void aero_vortex_player_set_seed(aero_vortex_player *m, uint32_t seed)

@@ -105,6 +105,13 @@ int aero_vortex_player_set_clip(aero_vortex_player *m, double pa);
 int aero_vortex_player_set_ramp_ms(aero_vortex_player *m, double ms);
 /* 1 (1/r, the far field) or 3 (the paper's 1/r^3) */
 int aero_vortex_player_set_falloff(aero_vortex_player *m, int exponent);
+/* the combustion noise (combustion_noise.h, its ranges): the flame's
+   mean heat release (kW, 0: off), length (m), Strouhal number and
+   fluctuation (0..1); 0, or -1 when out of range */
+int aero_vortex_player_set_power_kw(aero_vortex_player *m, double kw);
+int aero_vortex_player_set_flame_length(aero_vortex_player *m, double l);
+int aero_vortex_player_set_strouhal(aero_vortex_player *m, double st);
+int aero_vortex_player_set_fluctuation(aero_vortex_player *m, double eps);
 /* new random texture offsets from this seed */
 void aero_vortex_player_set_seed(aero_vortex_player *m, uint32_t seed);
 /* takes ownership of a loaded kind=vortex texture (returns -1 and frees

@@ -47,13 +47,10 @@ static int good_size(int n)
     }
 }
 
-int aero_flow2d_init(aero_flow2d *s, const aero_flow2d_params *p, char *err,
-                     size_t errlen)
+static int check_params(const aero_flow2d_params *p, char *err,
+                        size_t errlen)
 {
-    size_t nv;
     double lx = p->xmax - p->xmin, ly = p->ymax - p->ymin;
-    memset(s, 0, sizeof *s);
-    s->p = *p;
     if (!(p->re > 0.0 && p->re < 1e7)) {
         snprintf(err, errlen, "Reynolds number %g out of range (0, 1e7)", p->re);
         return -1;
@@ -71,6 +68,14 @@ int aero_flow2d_init(aero_flow2d *s, const aero_flow2d_params *p, char *err,
         snprintf(err, errlen, "CFL number %g out of range (0, 1]", p->cfl);
         return -1;
     }
+    return 0;
+}
+
+/* cell size, cell counts (FFT-friendly), viscosity and the first step */
+static int size_grid(aero_flow2d *s, char *err, size_t errlen)
+{
+    const aero_flow2d_params *p = &s->p;
+    double lx = p->xmax - p->xmin, ly = p->ymax - p->ymin;
     s->h = (float)(1.0 / p->grid);
     s->nx = good_size((int)ceil(lx * p->grid));
     s->ny = good_size((int)ceil(ly * p->grid));
@@ -79,18 +84,21 @@ int aero_flow2d_init(aero_flow2d *s, const aero_flow2d_params *p, char *err,
         return -1;
     }
     s->nu = (float)(1.0 / p->re);
-    {
-        /* AB2 is stable on the negative real axis down to -1: the
-           diffusion (8 nu / h^2) and the upwind dissipation of the free
-           stream (~2.7 U / h) share that budget (dt_max); advection is
-           held below the CFL number at the measured peak speed
-           (choose_step), starting from 2 U */
-        s->dt_max = (float)(0.9 / (8.0 * s->nu / ((double)s->h * s->h) +
-                                   2.7 / s->h));
-        s->dt = (float)(p->cfl * s->h / 2.0);
-        if (s->dt > s->dt_max) s->dt = s->dt_max;
-        s->dt_prev = s->dt;
-    }
+    /* AB2 is stable on the negative real axis down to -1: the diffusion
+       (8 nu / h^2) and the upwind dissipation of the free stream (~2.7 U /
+       h) share that budget (dt_max); advection is held below the CFL
+       number at the measured peak speed (choose_step), starting from 2 U */
+    s->dt_max = (float)(0.9 / (8.0 * s->nu / ((double)s->h * s->h) +
+                               2.7 / s->h));
+    s->dt = (float)(p->cfl * s->h / 2.0);
+    if (s->dt > s->dt_max) s->dt = s->dt_max;
+    s->dt_prev = s->dt;
+    return 0;
+}
+
+static int alloc_fields(aero_flow2d *s, char *err, size_t errlen)
+{
+    size_t nv;
     s->sx = s->nx + 1 + 2 * G;
     nv = (size_t)s->sx * (size_t)(s->ny + 1 + 2 * G);
     s->u = zalloc(nv);
@@ -113,23 +121,31 @@ int aero_flow2d_init(aero_flow2d *s, const aero_flow2d_params *p, char *err,
         snprintf(err, errlen, "out of memory for a %d x %d grid", s->nx, s->ny);
         return -1;
     }
-    /* sponge before the outflow: relaxation rate sigma(x) = 2 U/d ((x - x0)
-       / L)^2 over the last L = 4 d (or a fifth of the wake) */
-    {
-        double len = 0.2 * p->xmax < 4.0 ? 0.2 * p->xmax : 4.0;
-        for (int i = 0; i <= s->nx; i++) {
-            double x = p->xmin + i * (double)s->h, q = (x - (p->xmax - len)) / len;
-            double sig = q > 0.0 ? 2.0 * q * q : 0.0;
-            s->sponge[i] = (float)sig;
-        }
+    return 0;
+}
+
+/* sponge before the outflow: relaxation rate sigma(x) = 2 U/d ((x - x0)
+   / L)^2 over the last L = 4 d (or a fifth of the wake) */
+static void fill_sponge(aero_flow2d *s)
+{
+    const aero_flow2d_params *p = &s->p;
+    double len = 0.2 * p->xmax < 4.0 ? 0.2 * p->xmax : 4.0;
+    for (int i = 0; i <= s->nx; i++) {
+        double x = p->xmin + i * (double)s->h, q = (x - (p->xmax - len)) / len;
+        double sig = q > 0.0 ? 2.0 * q * q : 0.0;
+        s->sponge[i] = (float)sig;
     }
-    /* cosine transforms along x, one per row (planned one at a time
-       process-wide: aero_fftw.h). FFTW_ESTIMATE: the plan, and with it the
-       rounding of every step, does not depend on timings, so a texture is
-       the same to the last bit however loaded the machine is. For an even
-       nx the pair DCT-II / DCT-III is made from one real FFT of the
-       reordered row (Makhoul 1980): FFTW's real FFTs are vectorised, its
-       r2r cosine kinds are not, and the transforms took 2/3 of a step. */
+}
+
+/* cosine transforms along x, one per row (planned one at a time
+   process-wide: aero_fftw.h). FFTW_ESTIMATE: the plan, and with it the
+   rounding of every step, does not depend on timings, so a texture is
+   the same to the last bit however loaded the machine is. For an even
+   nx the pair DCT-II / DCT-III is made from one real FFT of the
+   reordered row (Makhoul 1980): FFTW's real FFTs are vectorised, its
+   r2r cosine kinds are not, and the transforms took 2/3 of a step. */
+static int plan_transforms(aero_flow2d *s, char *err, size_t errlen)
+{
     aero_fftw_serialise();
     if (s->nx % 2 == 0) {
         int n = s->nx, nc = s->nx / 2 + 1;
@@ -164,11 +180,16 @@ int aero_flow2d_init(aero_flow2d *s, const aero_flow2d_params *p, char *err,
                  s->ny);
         return -1;
     }
-    /* per cosine mode k along x the Neumann Laplacian along y is the
-       tridiagonal x[j-1] + b x[j] + x[j+1] = h^2 r[j], b = 2 cos(pi k/nx) - 4
-       (b + 1 at both ends); its Thomas factors 1 / (b_j - c_(j-1)) are also
-       the eliminated upper diagonal c_j (the off-diagonals are 1). Mode 0
-       is singular: its first value is pinned to 0. */
+    return 0;
+}
+
+/* per cosine mode k along x the Neumann Laplacian along y is the
+   tridiagonal x[j-1] + b x[j] + x[j+1] = h^2 r[j], b = 2 cos(pi k/nx) - 4
+   (b + 1 at both ends); its Thomas factors 1 / (b_j - c_(j-1)) are also
+   the eliminated upper diagonal c_j (the off-diagonals are 1). Mode 0
+   is singular: its first value is pinned to 0. */
+static void factor_poisson_y(aero_flow2d *s)
+{
     for (int k = 0; k < s->nx; k++) {
         double b = 2.0 * cos(AERO_PI * k / s->nx) - 4.0, c = 0.0;
         for (int j = 0; j < s->ny; j++) {
@@ -183,6 +204,19 @@ int aero_flow2d_init(aero_flow2d *s, const aero_flow2d_params *p, char *err,
             *m = (float)c;
         }
     }
+}
+
+int aero_flow2d_init(aero_flow2d *s, const aero_flow2d_params *p, char *err,
+                     size_t errlen)
+{
+    memset(s, 0, sizeof *s);
+    s->p = *p;
+    if (check_params(p, err, errlen) || size_grid(s, err, errlen) ||
+        alloc_fields(s, err, errlen))
+        return -1;
+    fill_sponge(s);
+    if (plan_transforms(s, err, errlen)) return -1;
+    factor_poisson_y(s);
     return 0;
 }
 
@@ -236,15 +270,8 @@ static int counts_into_force(const aero_shape2d *shape)
     return shape->kind != AERO_SHAPE_CAVITY;
 }
 
-int aero_flow2d_set_body(aero_flow2d *s, const aero_shape2d *shape,
-                         double alpha, char *err, size_t errlen)
+static void free_ib_lists(aero_flow2d *s)
 {
-    const double h = s->h, d = shape->size;
-    int cap = 0, n = 0, pass;
-    if (!(d > 0.0)) {
-        snprintf(err, errlen, "body size must be positive");
-        return -1;
-    }
     free(s->ib_idx);
     free(s->ib_chi);
     free(s->ib_x);
@@ -253,50 +280,56 @@ int aero_flow2d_set_body(aero_flow2d *s, const aero_shape2d *shape,
     s->ib_idx = NULL;
     s->ib_chi = s->ib_x = s->ib_y = NULL;
     s->ib_count = NULL;
-    /* two passes: count the forced nodes, then fill the lists */
-    for (pass = 0; pass < 2; pass++) {
-        n = 0;
-        for (int c = 0; c < 2; c++) {
-            int ni = c ? s->nx : s->nx + 1, nj = c ? s->ny + 1 : s->ny;
-            if (pass && c) s->nibu = n;
-            for (int j = 0; j < nj; j++)
-                for (int i = 0; i < ni; i++) {
-                    double x = s->p.xmin + (i + (c ? 0.5 : 0.0)) * h;
-                    double y = s->p.ymin + (j + (c ? 0.0 : 0.5)) * h;
-                    float chi = solid_fraction(shape, d, alpha, x, y, h);
-                    if (chi <= 0.0f) continue;
-                    if (pass) {
-                        s->ib_idx[n] = (int)AT(i, j);
-                        s->ib_chi[n] = chi;
-                        s->ib_x[n] = (float)x;
-                        s->ib_y[n] = (float)y;
-                        s->ib_count[n] =
-                            (unsigned char)counts_into_force(shape);
-                    }
-                    n++;
-                }
-        }
-        if (!pass) {
-            cap = n;
-            s->ib_idx = malloc(sizeof(int) * (cap ? cap : 1));
-            s->ib_chi = malloc(sizeof(float) * (cap ? cap : 1));
-            s->ib_x = malloc(sizeof(float) * (cap ? cap : 1));
-            s->ib_y = malloc(sizeof(float) * (cap ? cap : 1));
-            s->ib_count = malloc(cap ? cap : 1);
-            if (!s->ib_idx || !s->ib_chi || !s->ib_x || !s->ib_y ||
-                !s->ib_count) {
-                snprintf(err, errlen, "out of memory");
-                return -1;
-            }
-        }
-    }
-    s->nib = n;
-    if (n == 0) {
-        snprintf(err, errlen,
-                 "the body is smaller than the grid: use a finer --grid");
+}
+
+static int alloc_ib_lists(aero_flow2d *s, int cap, char *err, size_t errlen)
+{
+    s->ib_idx = malloc(sizeof(int) * (cap ? cap : 1));
+    s->ib_chi = malloc(sizeof(float) * (cap ? cap : 1));
+    s->ib_x = malloc(sizeof(float) * (cap ? cap : 1));
+    s->ib_y = malloc(sizeof(float) * (cap ? cap : 1));
+    s->ib_count = malloc(cap ? cap : 1);
+    if (!s->ib_idx || !s->ib_chi || !s->ib_x || !s->ib_y || !s->ib_count) {
+        snprintf(err, errlen, "out of memory");
         return -1;
     }
-    /* cell-centre solid fraction (pictures) and inflow profile */
+    return 0;
+}
+
+/* the velocity nodes inside or on the body, u nodes first (nibu of them),
+   then v nodes: counted only (fill = 0) or written into the lists */
+static int scan_forced_nodes(aero_flow2d *s, const aero_shape2d *shape,
+                             double alpha, int fill)
+{
+    const double h = s->h, d = shape->size;
+    int n = 0;
+    for (int c = 0; c < 2; c++) {
+        int ni = c ? s->nx : s->nx + 1, nj = c ? s->ny + 1 : s->ny;
+        if (fill && c) s->nibu = n;
+        for (int j = 0; j < nj; j++)
+            for (int i = 0; i < ni; i++) {
+                double x = s->p.xmin + (i + (c ? 0.5 : 0.0)) * h;
+                double y = s->p.ymin + (j + (c ? 0.0 : 0.5)) * h;
+                float chi = solid_fraction(shape, d, alpha, x, y, h);
+                if (chi <= 0.0f) continue;
+                if (fill) {
+                    s->ib_idx[n] = (int)AT(i, j);
+                    s->ib_chi[n] = chi;
+                    s->ib_x[n] = (float)x;
+                    s->ib_y[n] = (float)y;
+                    s->ib_count[n] = (unsigned char)counts_into_force(shape);
+                }
+                n++;
+            }
+    }
+    return n;
+}
+
+/* cell-centre solid fraction (pictures) and inflow profile */
+static void rasterise_cells(aero_flow2d *s, const aero_shape2d *shape,
+                            double alpha)
+{
+    const double h = s->h, d = shape->size;
     for (int j = 0; j < s->ny; j++) {
         for (int i = 0; i < s->nx; i++)
             s->solid[j * s->nx + i] = solid_fraction(
@@ -305,37 +338,44 @@ int aero_flow2d_set_body(aero_flow2d *s, const aero_shape2d *shape,
         s->uin[j] = 1.0f - solid_fraction(shape, d, alpha, s->p.xmin,
                                           s->p.ymin + (j + 0.5) * h, h);
     }
-    {
-        /* reject bodies that touch the domain's edges (other than a wall) */
-        int touch = 0;
-        for (int i = 0; i < s->nx; i++)
-            if (s->solid[(s->ny - 1) * s->nx + i] > 0.0f ||
-                (shape->kind != AERO_SHAPE_CAVITY && s->solid[i] > 0.0f))
-                touch = 1;
-        for (int j = 0; j < s->ny; j++)
-            if (shape->kind != AERO_SHAPE_CAVITY &&
-                (s->solid[j * s->nx] > 0.0f ||
-                 s->solid[j * s->nx + s->nx - 1] > 0.0f))
-                touch = 1;
-        if (touch) {
-            snprintf(err, errlen, "the body does not fit in the flow domain");
-            return -1;
-        }
+}
+
+/* does the body touch the domain's edges (other than a cavity's wall)? */
+static int body_touches_edges(const aero_flow2d *s, const aero_shape2d *shape)
+{
+    int touch = 0;
+    for (int i = 0; i < s->nx; i++)
+        if (s->solid[(s->ny - 1) * s->nx + i] > 0.0f ||
+            (shape->kind != AERO_SHAPE_CAVITY && s->solid[i] > 0.0f))
+            touch = 1;
+    for (int j = 0; j < s->ny; j++)
+        if (shape->kind != AERO_SHAPE_CAVITY &&
+            (s->solid[j * s->nx] > 0.0f ||
+             s->solid[j * s->nx + s->nx - 1] > 0.0f))
+            touch = 1;
+    return touch;
+}
+
+/* cells along the cavity's walls: x from 0 to l, y from -depth to 0 */
+static int locate_cavity(aero_flow2d *s, const aero_shape2d *shape,
+                         char *err, size_t errlen)
+{
+    const double h = s->h, d = shape->size;
+    s->cav_i0 = (int)lround((0.0 - s->p.xmin) / h);
+    s->cav_i1 = (int)lround((shape->a / d - s->p.xmin) / h);
+    s->cav_jd = (int)lround((-shape->b / d - s->p.ymin) / h);
+    s->cav_j0 = (int)lround((0.0 - s->p.ymin) / h);
+    if (s->cav_i0 < 1 || s->cav_i1 > s->nx - 1 || s->cav_jd < 1 ||
+        s->cav_i1 - s->cav_i0 < 2 || s->cav_j0 - s->cav_jd < 2) {
+        snprintf(err, errlen, "the cavity does not fit the grid");
+        return -1;
     }
-    s->cavity = shape->kind == AERO_SHAPE_CAVITY;
-    if (s->cavity) {
-        /* cells along the cavity's walls: x from 0 to l, y from -depth to 0 */
-        s->cav_i0 = (int)lround((0.0 - s->p.xmin) / h);
-        s->cav_i1 = (int)lround((shape->a / d - s->p.xmin) / h);
-        s->cav_jd = (int)lround((-shape->b / d - s->p.ymin) / h);
-        s->cav_j0 = (int)lround((0.0 - s->p.ymin) / h);
-        if (s->cav_i0 < 1 || s->cav_i1 > s->nx - 1 || s->cav_jd < 1 ||
-            s->cav_i1 - s->cav_i0 < 2 || s->cav_j0 - s->cav_jd < 2) {
-            snprintf(err, errlen, "the cavity does not fit the grid");
-            return -1;
-        }
-    }
-    /* the uniform stream (zero inside the body) */
+    return 0;
+}
+
+/* the uniform stream (zero inside the body), at rest otherwise */
+static void start_uniform_stream(aero_flow2d *s)
+{
     memset(s->v, 0, sizeof(float) * (size_t)s->sx * (s->ny + 1 + 2 * G));
     for (int j = -G; j < s->ny + 1 + G; j++)
         for (int i = -G; i <= s->nx + G; i++) {
@@ -349,6 +389,34 @@ int aero_flow2d_set_body(aero_flow2d *s, const aero_shape2d *shape,
     s->steps = 0;
     s->fx = s->fy = 0.0;
     s->diverged = 0;
+}
+
+int aero_flow2d_set_body(aero_flow2d *s, const aero_shape2d *shape,
+                         double alpha, char *err, size_t errlen)
+{
+    if (!(shape->size > 0.0)) {
+        snprintf(err, errlen, "body size must be positive");
+        return -1;
+    }
+    free_ib_lists(s);
+    /* two passes: count the forced nodes, then fill the lists */
+    if (alloc_ib_lists(s, scan_forced_nodes(s, shape, alpha, 0), err,
+                       errlen))
+        return -1;
+    s->nib = scan_forced_nodes(s, shape, alpha, 1);
+    if (s->nib == 0) {
+        snprintf(err, errlen,
+                 "the body is smaller than the grid: use a finer --grid");
+        return -1;
+    }
+    rasterise_cells(s, shape, alpha);
+    if (body_touches_edges(s, shape)) {
+        snprintf(err, errlen, "the body does not fit in the flow domain");
+        return -1;
+    }
+    s->cavity = shape->kind == AERO_SHAPE_CAVITY;
+    if (s->cavity && locate_cavity(s, shape, err, errlen)) return -1;
+    start_uniform_stream(s);
     return 0;
 }
 
@@ -428,29 +496,6 @@ static void flux_u_y(const aero_flow2d *s, int j, float *restrict fy)
                             u[i], u[i + sx], u[i + 2 * sx]);
 }
 
-/* H_u = -d(uu)/dx - d(vu)/dy + nu lap u at interior u nodes */
-AERO_FLOW2D_CLONES
-static void momentum_u(aero_flow2d *s)
-{
-    const int nx = s->nx, ny = s->ny, sx = s->sx;
-    const float ih = 1.0f / s->h, nu_h2 = s->nu / (s->h * s->h);
-    float *fx = s->work + 2, *fs = s->work + (nx + 8) + 2,
-          *fn = s->work + 2 * (nx + 8) + 2;
-    flux_u_y(s, -1, fs);
-    for (int j = 0; j < ny; j++) {
-        const float *restrict u = s->u + AT(0, j);
-        float *restrict hu = s->hu + AT(0, j);
-        float *t;
-        flux_u_x(s, j, fx);
-        flux_u_y(s, j, fn);
-        for (int i = 1; i < nx; i++) {
-            float lap = u[i + 1] + u[i - 1] + u[i + sx] + u[i - sx] - 4.0f * u[i];
-            hu[i] = -(fx[i] - fx[i - 1] + fn[i] - fs[i]) * ih + nu_h2 * lap;
-        }
-        t = fs; fs = fn; fn = t;
-    }
-}
-
 /* fluxes of v momentum of row j: x faces at the corners (i + 1, j),
    fx[i] for -1 <= i < nx, y faces at the cell centres (i, j + 1/2) */
 AERO_FLOW2D_CLONES
@@ -473,24 +518,30 @@ static void flux_v_y(const aero_flow2d *s, int j, float *restrict fy)
                             v[i + sx], v[i + 2 * sx]);
 }
 
-/* H_v = -d(uv)/dx - d(vv)/dy + nu lap v at interior v nodes */
+typedef void flux_row(const aero_flow2d *s, int j, float *restrict f);
+
+/* H = -d(uq)/dx - d(vq)/dy + nu lap q at the interior nodes i >= i0 of
+   the rows j >= j0 of one velocity component q (u: rows from 0, nodes
+   from 1; v: rows from 1, nodes from 0), each row's y fluxes through its
+   bottom faces being those of the row below */
 AERO_FLOW2D_CLONES
-static void momentum_v(aero_flow2d *s)
+static void momentum(aero_flow2d *s, const float *q, float *hq,
+                     flux_row *flux_x, flux_row *flux_y, int j0, int i0)
 {
     const int nx = s->nx, ny = s->ny, sx = s->sx;
     const float ih = 1.0f / s->h, nu_h2 = s->nu / (s->h * s->h);
     float *fx = s->work + 2, *fs = s->work + (nx + 8) + 2,
           *fn = s->work + 2 * (nx + 8) + 2;
-    flux_v_y(s, 0, fs);
-    for (int j = 1; j < ny; j++) {
-        const float *restrict v = s->v + AT(0, j);
-        float *restrict hv = s->hv + AT(0, j);
+    flux_y(s, j0 - 1, fs);
+    for (int j = j0; j < ny; j++) {
+        const float *restrict c = q + AT(0, j);
+        float *restrict h = hq + AT(0, j);
         float *t;
-        flux_v_x(s, j, fx);
-        flux_v_y(s, j, fn);
-        for (int i = 0; i < nx; i++) {
-            float lap = v[i + 1] + v[i - 1] + v[i + sx] + v[i - sx] - 4.0f * v[i];
-            hv[i] = -(fx[i] - fx[i - 1] + fn[i] - fs[i]) * ih + nu_h2 * lap;
+        flux_x(s, j, fx);
+        flux_y(s, j, fn);
+        for (int i = i0; i < nx; i++) {
+            float lap = c[i + 1] + c[i - 1] + c[i + sx] + c[i - sx] - 4.0f * c[i];
+            h[i] = -(fx[i] - fx[i - 1] + fn[i] - fs[i]) * ih + nu_h2 * lap;
         }
         t = fs; fs = fn; fn = t;
     }
@@ -780,8 +831,8 @@ int aero_flow2d_step(aero_flow2d *s)
         return -1;
     choose_step(s);
     fill_ghosts(s);
-    momentum_u(s);
-    momentum_v(s);
+    momentum(s, s->u, s->hu, flux_u_x, flux_u_y, 0, 1);
+    momentum(s, s->v, s->hv, flux_v_x, flux_v_y, 1, 0);
     convective_outflow(s);
     advance_explicit(s);
     damp_outflow(s);

@@ -422,25 +422,40 @@ static void advect(aero_flow3d *s, double dt)
     }
 }
 
+/* cell (i, j, k): its index c among the cell-centred values and its
+   neighbours' columns and rows across the periodic x and y sides */
+typedef struct {
+    int im, ip, jm, jp;
+    size_t c;
+} f3_cell;
+
+static inline f3_cell cell_at(const aero_flow3d *s, int i, int j, int k)
+{
+    f3_cell n;
+    n.im = i ? i - 1 : s->nx - 1;
+    n.ip = i + 1 == s->nx ? 0 : i + 1;
+    n.jm = j ? j - 1 : s->ny - 1;
+    n.jp = j + 1 == s->ny ? 0 : j + 1;
+    n.c = AERO_F3_C(s, i, j, k);
+    return n;
+}
+
 /* cell-centred velocity into cx, cy, cz */
 static void centre_velocity(aero_flow3d *s)
 {
     const int nx = s->nx, ny = s->ny, nz = s->nz;
     F3_SLABS
     for (int k = 0; k < nz; k++)
-        for (int j = 0; j < ny; j++) {
-            int jp = j + 1 == ny ? 0 : j + 1;
+        for (int j = 0; j < ny; j++)
             for (int i = 0; i < nx; i++) {
-                int ip = i + 1 == nx ? 0 : i + 1;
-                size_t c = AERO_F3_C(s, i, j, k);
-                s->cx[c] = 0.5f * (s->u[AERO_F3_UV(s, i, j, k)] +
-                                   s->u[AERO_F3_UV(s, ip, j, k)]);
-                s->cy[c] = 0.5f * (s->v[AERO_F3_UV(s, i, j, k)] +
-                                   s->v[AERO_F3_UV(s, i, jp, k)]);
-                s->cz[c] = 0.5f * (s->w[AERO_F3_C(s, i, j, k)] +
-                                   s->w[AERO_F3_C(s, i, j, k + 1)]);
+                const f3_cell n = cell_at(s, i, j, k);
+                s->cx[n.c] = 0.5f * (s->u[AERO_F3_UV(s, i, j, k)] +
+                                     s->u[AERO_F3_UV(s, n.ip, j, k)]);
+                s->cy[n.c] = 0.5f * (s->v[AERO_F3_UV(s, i, j, k)] +
+                                     s->v[AERO_F3_UV(s, i, n.jp, k)]);
+                s->cz[n.c] = 0.5f * (s->w[AERO_F3_C(s, i, j, k)] +
+                                     s->w[AERO_F3_C(s, i, j, k + 1)]);
             }
-        }
 }
 
 /* d/dz of a cell-centred field at (i, j, k): central inside, one-sided at
@@ -461,13 +476,12 @@ void aero_flow3d_vorticity(aero_flow3d *s)
     centre_velocity(s);
     F3_SLABS
     for (int k = 0; k < nz; k++)
-        for (int j = 0; j < ny; j++) {
-            int jm = j ? j - 1 : ny - 1, jp = j + 1 == ny ? 0 : j + 1;
+        for (int j = 0; j < ny; j++)
             for (int i = 0; i < nx; i++) {
-                int im = i ? i - 1 : nx - 1, ip = i + 1 == nx ? 0 : i + 1;
-                size_t c = AERO_F3_C(s, i, j, k);
-                size_t xm = AERO_F3_C(s, im, j, k), xp = AERO_F3_C(s, ip, j, k);
-                size_t ym = AERO_F3_C(s, i, jm, k), yp = AERO_F3_C(s, i, jp, k);
+                const f3_cell n = cell_at(s, i, j, k);
+                const size_t c = n.c;
+                size_t xm = AERO_F3_C(s, n.im, j, k), xp = AERO_F3_C(s, n.ip, j, k);
+                size_t ym = AERO_F3_C(s, i, n.jm, k), yp = AERO_F3_C(s, i, n.jp, k);
                 float dwdy = 0.5f * (s->cz[yp] - s->cz[ym]);
                 float dvdz = ddz(s, s->cy, c, k);
                 float dudz = ddz(s, s->cx, c, k);
@@ -481,7 +495,6 @@ void aero_flow3d_vorticity(aero_flow3d *s)
                 s->oz[c] = oz;
                 s->omag[c] = sqrtf(ox * ox + oy * oy + oz * oz);
             }
-        }
 }
 
 /* vorticity confinement (FSJ01 eq. 11-12): a = eps (h / L) U_ref
@@ -499,15 +512,14 @@ static void confine(aero_flow3d *s, double dt)
        any more) */
     F3_SLABS
     for (int k = 0; k < nz; k++)
-        for (int j = 0; j < ny; j++) {
-            int jm = j ? j - 1 : ny - 1, jp = j + 1 == ny ? 0 : j + 1;
+        for (int j = 0; j < ny; j++)
             for (int i = 0; i < nx; i++) {
-                int im = i ? i - 1 : nx - 1, ip = i + 1 == nx ? 0 : i + 1;
-                size_t c = AERO_F3_C(s, i, j, k);
-                float gx = 0.5f * (s->omag[AERO_F3_C(s, ip, j, k)] -
-                                   s->omag[AERO_F3_C(s, im, j, k)]);
-                float gy = 0.5f * (s->omag[AERO_F3_C(s, i, jp, k)] -
-                                   s->omag[AERO_F3_C(s, i, jm, k)]);
+                const f3_cell n = cell_at(s, i, j, k);
+                const size_t c = n.c;
+                float gx = 0.5f * (s->omag[AERO_F3_C(s, n.ip, j, k)] -
+                                   s->omag[AERO_F3_C(s, n.im, j, k)]);
+                float gy = 0.5f * (s->omag[AERO_F3_C(s, i, n.jp, k)] -
+                                   s->omag[AERO_F3_C(s, i, n.jm, k)]);
                 float gz = ddz(s, s->omag, c, k);
                 float g = sqrtf(gx * gx + gy * gy + gz * gz);
                 float inv = g > 1e-20f ? a / g : 0.0f;
@@ -518,22 +530,19 @@ static void confine(aero_flow3d *s, double dt)
                 s->cy[c] = Nz * s->ox[c] - Nx * s->oz[c];
                 s->cz[c] = Nx * s->oy[c] - Ny * s->ox[c];
             }
-        }
     F3_SLABS
     for (int k = 0; k < nz; k++)
-        for (int j = 0; j < ny; j++) {
-            int jm = j ? j - 1 : ny - 1;
+        for (int j = 0; j < ny; j++)
             for (int i = 0; i < nx; i++) {
-                int im = i ? i - 1 : nx - 1;
-                size_t c = AERO_F3_C(s, i, j, k);
+                const f3_cell n = cell_at(s, i, j, k);
+                const size_t c = n.c;
                 s->u[AERO_F3_UV(s, i, j, k)] +=
-                    0.5f * (s->cx[c] + s->cx[AERO_F3_C(s, im, j, k)]);
+                    0.5f * (s->cx[c] + s->cx[AERO_F3_C(s, n.im, j, k)]);
                 s->v[AERO_F3_UV(s, i, j, k)] +=
-                    0.5f * (s->cy[c] + s->cy[AERO_F3_C(s, i, jm, k)]);
+                    0.5f * (s->cy[c] + s->cy[AERO_F3_C(s, i, n.jm, k)]);
                 if (k > 0)
                     s->w[c] += 0.5f * (s->cz[c] + s->cz[c - pl]);
             }
-        }
     for (size_t c = 0; c < pl; c++) /* the top face: its one cell */
         s->w[(size_t)nz * pl + c] += s->cz[(size_t)(nz - 1) * pl + c];
 }
@@ -590,18 +599,15 @@ void aero_flow3d_project(aero_flow3d *s)
     /* h^2 div u, the right-hand side (h^2 lap phi = h^2 div u) */
     F3_SLABS
     for (int k = 0; k < nz; k++)
-        for (int j = 0; j < ny; j++) {
-            int jp = j + 1 == ny ? 0 : j + 1;
+        for (int j = 0; j < ny; j++)
             for (int i = 0; i < nx; i++) {
-                int ip = i + 1 == nx ? 0 : i + 1;
-                size_t c = AERO_F3_C(s, i, j, k);
-                s->phi[c] = h * (s->u[AERO_F3_UV(s, ip, j, k)] -
-                                 s->u[AERO_F3_UV(s, i, j, k)] +
-                                 s->v[AERO_F3_UV(s, i, jp, k)] -
-                                 s->v[AERO_F3_UV(s, i, j, k)] +
-                                 s->w[c + pl] - s->w[c]);
+                const f3_cell n = cell_at(s, i, j, k);
+                s->phi[n.c] = h * (s->u[AERO_F3_UV(s, n.ip, j, k)] -
+                                   s->u[AERO_F3_UV(s, i, j, k)] +
+                                   s->v[AERO_F3_UV(s, i, n.jp, k)] -
+                                   s->v[AERO_F3_UV(s, i, j, k)] +
+                                   s->w[n.c + pl] - s->w[n.c]);
             }
-        }
     fftwf_execute(s->fwd);
     /* tridiagonal along z per (kx, ky) (sub- and super-diagonal 1) */
     {
@@ -630,20 +636,17 @@ void aero_flow3d_project(aero_flow3d *s)
         const float g = norm * ih;
         F3_SLABS
         for (int k = 0; k < nz; k++)
-            for (int j = 0; j < ny; j++) {
-                int jm = j ? j - 1 : ny - 1;
+            for (int j = 0; j < ny; j++)
                 for (int i = 0; i < nx; i++) {
-                    int im = i ? i - 1 : nx - 1;
-                    size_t c = AERO_F3_C(s, i, j, k);
-                    float p = s->phi[c];
+                    const f3_cell n = cell_at(s, i, j, k);
+                    float p = s->phi[n.c];
                     s->u[AERO_F3_UV(s, i, j, k)] -=
-                        g * (p - s->phi[AERO_F3_C(s, im, j, k)]);
+                        g * (p - s->phi[AERO_F3_C(s, n.im, j, k)]);
                     s->v[AERO_F3_UV(s, i, j, k)] -=
-                        g * (p - s->phi[AERO_F3_C(s, i, jm, k)]);
+                        g * (p - s->phi[AERO_F3_C(s, i, n.jm, k)]);
                     if (k > 0)
-                        s->w[c] -= g * (p - s->phi[c - pl]);
+                        s->w[n.c] -= g * (p - s->phi[n.c - pl]);
                 }
-            }
         /* top face: phi = 0 there, so the ghost value is -phi[nz-1] */
         for (size_t c = 0; c < pl; c++)
             s->w[(size_t)nz * pl + c] += 2.0f * g * s->phi[(size_t)(nz - 1) * pl + c];

@@ -17,6 +17,14 @@
     _Pragma("omp parallel for schedule(static) num_threads(s->p.threads) \
              if (s->p.threads > 1)")
 
+/* the loop over every cell (i, j, k) of the layers 0..nz-1, on the
+   solver's threads (F3_SLABS); the loop's body follows */
+#define F3_EACH_CELL(i, j, k)                                             \
+    F3_SLABS                                                              \
+    for (int k = 0; k < s->nz; k++)                                       \
+        for (int j = 0; j < s->ny; j++)                                   \
+            for (int i = 0; i < s->nx; i++)
+
 /* i modulo n for any int (the common case is one step out of range) */
 static inline int wrap(int i, int n)
 {
@@ -443,19 +451,15 @@ static inline f3_cell cell_at(const aero_flow3d *s, int i, int j, int k)
 /* cell-centred velocity into cx, cy, cz */
 static void centre_velocity(aero_flow3d *s)
 {
-    const int nx = s->nx, ny = s->ny, nz = s->nz;
-    F3_SLABS
-    for (int k = 0; k < nz; k++)
-        for (int j = 0; j < ny; j++)
-            for (int i = 0; i < nx; i++) {
-                const f3_cell n = cell_at(s, i, j, k);
-                s->cx[n.c] = 0.5f * (s->u[AERO_F3_UV(s, i, j, k)] +
-                                     s->u[AERO_F3_UV(s, n.ip, j, k)]);
-                s->cy[n.c] = 0.5f * (s->v[AERO_F3_UV(s, i, j, k)] +
-                                     s->v[AERO_F3_UV(s, i, n.jp, k)]);
-                s->cz[n.c] = 0.5f * (s->w[AERO_F3_C(s, i, j, k)] +
-                                     s->w[AERO_F3_C(s, i, j, k + 1)]);
-            }
+    F3_EACH_CELL(i, j, k) {
+        const f3_cell n = cell_at(s, i, j, k);
+        s->cx[n.c] = 0.5f * (s->u[AERO_F3_UV(s, i, j, k)] +
+                             s->u[AERO_F3_UV(s, n.ip, j, k)]);
+        s->cy[n.c] = 0.5f * (s->v[AERO_F3_UV(s, i, j, k)] +
+                             s->v[AERO_F3_UV(s, i, n.jp, k)]);
+        s->cz[n.c] = 0.5f * (s->w[AERO_F3_C(s, i, j, k)] +
+                             s->w[AERO_F3_C(s, i, j, k + 1)]);
+    }
 }
 
 /* d/dz of a cell-centred field at (i, j, k): central inside, one-sided at
@@ -471,37 +475,33 @@ static inline float ddz(const aero_flow3d *s, const float *f, size_t c,
 
 void aero_flow3d_vorticity(aero_flow3d *s)
 {
-    const int nx = s->nx, ny = s->ny, nz = s->nz;
     const float ih = (float)(1.0 / s->p.h);
     centre_velocity(s);
-    F3_SLABS
-    for (int k = 0; k < nz; k++)
-        for (int j = 0; j < ny; j++)
-            for (int i = 0; i < nx; i++) {
-                const f3_cell n = cell_at(s, i, j, k);
-                const size_t c = n.c;
-                size_t xm = AERO_F3_C(s, n.im, j, k), xp = AERO_F3_C(s, n.ip, j, k);
-                size_t ym = AERO_F3_C(s, i, n.jm, k), yp = AERO_F3_C(s, i, n.jp, k);
-                float dwdy = 0.5f * (s->cz[yp] - s->cz[ym]);
-                float dvdz = ddz(s, s->cy, c, k);
-                float dudz = ddz(s, s->cx, c, k);
-                float dwdx = 0.5f * (s->cz[xp] - s->cz[xm]);
-                float dvdx = 0.5f * (s->cy[xp] - s->cy[xm]);
-                float dudy = 0.5f * (s->cx[yp] - s->cx[ym]);
-                float ox = (dwdy - dvdz) * ih, oy = (dudz - dwdx) * ih,
-                      oz = (dvdx - dudy) * ih;
-                s->ox[c] = ox;
-                s->oy[c] = oy;
-                s->oz[c] = oz;
-                s->omag[c] = sqrtf(ox * ox + oy * oy + oz * oz);
-            }
+    F3_EACH_CELL(i, j, k) {
+        const f3_cell n = cell_at(s, i, j, k);
+        const size_t c = n.c;
+        size_t xm = AERO_F3_C(s, n.im, j, k), xp = AERO_F3_C(s, n.ip, j, k);
+        size_t ym = AERO_F3_C(s, i, n.jm, k), yp = AERO_F3_C(s, i, n.jp, k);
+        float dwdy = 0.5f * (s->cz[yp] - s->cz[ym]);
+        float dvdz = ddz(s, s->cy, c, k);
+        float dudz = ddz(s, s->cx, c, k);
+        float dwdx = 0.5f * (s->cz[xp] - s->cz[xm]);
+        float dvdx = 0.5f * (s->cy[xp] - s->cy[xm]);
+        float dudy = 0.5f * (s->cx[yp] - s->cx[ym]);
+        float ox = (dwdy - dvdz) * ih, oy = (dudz - dwdx) * ih,
+              oz = (dvdx - dudy) * ih;
+        s->ox[c] = ox;
+        s->oy[c] = oy;
+        s->oz[c] = oz;
+        s->omag[c] = sqrtf(ox * ox + oy * oy + oz * oz);
+    }
 }
 
 /* vorticity confinement (FSJ01 eq. 11-12): a = eps (h / L) U_ref
    (N x omega) at the cell centres, averaged onto the faces */
 static void confine(aero_flow3d *s, double dt)
 {
-    const int nx = s->nx, ny = s->ny, nz = s->nz;
+    const int nz = s->nz;
     const double h_over_l = s->p.confinement_length > 0.0
                                 ? s->p.h / s->p.confinement_length
                                 : 1.0;
@@ -510,39 +510,33 @@ static void confine(aero_flow3d *s, double dt)
     aero_flow3d_vorticity(s);
     /* the force goes into cx, cy, cz (the centred velocity is not needed
        any more) */
-    F3_SLABS
-    for (int k = 0; k < nz; k++)
-        for (int j = 0; j < ny; j++)
-            for (int i = 0; i < nx; i++) {
-                const f3_cell n = cell_at(s, i, j, k);
-                const size_t c = n.c;
-                float gx = 0.5f * (s->omag[AERO_F3_C(s, n.ip, j, k)] -
-                                   s->omag[AERO_F3_C(s, n.im, j, k)]);
-                float gy = 0.5f * (s->omag[AERO_F3_C(s, i, n.jp, k)] -
-                                   s->omag[AERO_F3_C(s, i, n.jm, k)]);
-                float gz = ddz(s, s->omag, c, k);
-                float g = sqrtf(gx * gx + gy * gy + gz * gz);
-                float inv = g > 1e-20f ? a / g : 0.0f;
-                if (s->near_body && s->near_body[c])
-                    inv = 0.0f;
-                float Nx = gx * inv, Ny = gy * inv, Nz = gz * inv;
-                s->cx[c] = Ny * s->oz[c] - Nz * s->oy[c];
-                s->cy[c] = Nz * s->ox[c] - Nx * s->oz[c];
-                s->cz[c] = Nx * s->oy[c] - Ny * s->ox[c];
-            }
-    F3_SLABS
-    for (int k = 0; k < nz; k++)
-        for (int j = 0; j < ny; j++)
-            for (int i = 0; i < nx; i++) {
-                const f3_cell n = cell_at(s, i, j, k);
-                const size_t c = n.c;
-                s->u[AERO_F3_UV(s, i, j, k)] +=
-                    0.5f * (s->cx[c] + s->cx[AERO_F3_C(s, n.im, j, k)]);
-                s->v[AERO_F3_UV(s, i, j, k)] +=
-                    0.5f * (s->cy[c] + s->cy[AERO_F3_C(s, i, n.jm, k)]);
-                if (k > 0)
-                    s->w[c] += 0.5f * (s->cz[c] + s->cz[c - pl]);
-            }
+    F3_EACH_CELL(i, j, k) {
+        const f3_cell n = cell_at(s, i, j, k);
+        const size_t c = n.c;
+        float gx = 0.5f * (s->omag[AERO_F3_C(s, n.ip, j, k)] -
+                           s->omag[AERO_F3_C(s, n.im, j, k)]);
+        float gy = 0.5f * (s->omag[AERO_F3_C(s, i, n.jp, k)] -
+                           s->omag[AERO_F3_C(s, i, n.jm, k)]);
+        float gz = ddz(s, s->omag, c, k);
+        float g = sqrtf(gx * gx + gy * gy + gz * gz);
+        float inv = g > 1e-20f ? a / g : 0.0f;
+        if (s->near_body && s->near_body[c])
+            inv = 0.0f;
+        float Nx = gx * inv, Ny = gy * inv, Nz = gz * inv;
+        s->cx[c] = Ny * s->oz[c] - Nz * s->oy[c];
+        s->cy[c] = Nz * s->ox[c] - Nx * s->oz[c];
+        s->cz[c] = Nx * s->oy[c] - Ny * s->ox[c];
+    }
+    F3_EACH_CELL(i, j, k) {
+        const f3_cell n = cell_at(s, i, j, k);
+        const size_t c = n.c;
+        s->u[AERO_F3_UV(s, i, j, k)] +=
+            0.5f * (s->cx[c] + s->cx[AERO_F3_C(s, n.im, j, k)]);
+        s->v[AERO_F3_UV(s, i, j, k)] +=
+            0.5f * (s->cy[c] + s->cy[AERO_F3_C(s, i, n.jm, k)]);
+        if (k > 0)
+            s->w[c] += 0.5f * (s->cz[c] + s->cz[c - pl]);
+    }
     for (size_t c = 0; c < pl; c++) /* the top face: its one cell */
         s->w[(size_t)nz * pl + c] += s->cz[(size_t)(nz - 1) * pl + c];
 }
@@ -597,17 +591,14 @@ void aero_flow3d_project(aero_flow3d *s)
     fftwf_complex *sp = s->spec;
     apply_boundaries(s);
     /* h^2 div u, the right-hand side (h^2 lap phi = h^2 div u) */
-    F3_SLABS
-    for (int k = 0; k < nz; k++)
-        for (int j = 0; j < ny; j++)
-            for (int i = 0; i < nx; i++) {
-                const f3_cell n = cell_at(s, i, j, k);
-                s->phi[n.c] = h * (s->u[AERO_F3_UV(s, n.ip, j, k)] -
-                                   s->u[AERO_F3_UV(s, i, j, k)] +
-                                   s->v[AERO_F3_UV(s, i, n.jp, k)] -
-                                   s->v[AERO_F3_UV(s, i, j, k)] +
-                                   s->w[n.c + pl] - s->w[n.c]);
-            }
+    F3_EACH_CELL(i, j, k) {
+        const f3_cell n = cell_at(s, i, j, k);
+        s->phi[n.c] = h * (s->u[AERO_F3_UV(s, n.ip, j, k)] -
+                           s->u[AERO_F3_UV(s, i, j, k)] +
+                           s->v[AERO_F3_UV(s, i, n.jp, k)] -
+                           s->v[AERO_F3_UV(s, i, j, k)] +
+                           s->w[n.c + pl] - s->w[n.c]);
+    }
     fftwf_execute(s->fwd);
     /* tridiagonal along z per (kx, ky) (sub- and super-diagonal 1) */
     {
@@ -634,19 +625,16 @@ void aero_flow3d_project(aero_flow3d *s)
     /* u -= grad phi (phi scaled by the unnormalised inverse FFT) */
     {
         const float g = norm * ih;
-        F3_SLABS
-        for (int k = 0; k < nz; k++)
-            for (int j = 0; j < ny; j++)
-                for (int i = 0; i < nx; i++) {
-                    const f3_cell n = cell_at(s, i, j, k);
-                    float p = s->phi[n.c];
-                    s->u[AERO_F3_UV(s, i, j, k)] -=
-                        g * (p - s->phi[AERO_F3_C(s, n.im, j, k)]);
-                    s->v[AERO_F3_UV(s, i, j, k)] -=
-                        g * (p - s->phi[AERO_F3_C(s, i, n.jm, k)]);
-                    if (k > 0)
-                        s->w[n.c] -= g * (p - s->phi[n.c - pl]);
-                }
+        F3_EACH_CELL(i, j, k) {
+            const f3_cell n = cell_at(s, i, j, k);
+            float p = s->phi[n.c];
+            s->u[AERO_F3_UV(s, i, j, k)] -=
+                g * (p - s->phi[AERO_F3_C(s, n.im, j, k)]);
+            s->v[AERO_F3_UV(s, i, j, k)] -=
+                g * (p - s->phi[AERO_F3_C(s, i, n.jm, k)]);
+            if (k > 0)
+                s->w[n.c] -= g * (p - s->phi[n.c - pl]);
+        }
         /* top face: phi = 0 there, so the ghost value is -phi[nz-1] */
         for (size_t c = 0; c < pl; c++)
             s->w[(size_t)nz * pl + c] += 2.0f * g * s->phi[(size_t)(nz - 1) * pl + c];

@@ -95,34 +95,41 @@ static void leafwave_tilde_open(t_leafwave_tilde *x, t_symbol *name)
 
 /* --- messages (each also a creation flag of the same name) -------------- */
 
-#define SETTER(fn, call, what)                                            \
+/* a setter whose range the core states (leafwave.h, tree_motion.h,
+   aero_ranges.h): the message quotes it */
+#define SETTER(fn, call, what, lo, hi)                                    \
     static void leafwave_tilde_##fn(t_leafwave_tilde *x, t_floatarg f)    \
     {                                                                     \
         if (x->x_ok && call(&x->x_model, f))                              \
-            pd_error(x, OBJ ": " what, f);                                \
+            pd_error(x, OBJ ": " what " out of range (%g..%g)", f,        \
+                     (double)(lo), (double)(hi));                         \
     }
 
-SETTER(gain, aero_leafwave_set_gain_db, "gain %g dB out of range (-200..120)")
-SETTER(ramp, aero_leafwave_set_ramp_ms, "ramp %g ms out of range (0..600000)")
-SETTER(stiffness, aero_leafwave_set_stiffness,
-       "stiffness %g out of range (0.001..1000)")
-SETTER(beta, aero_leafwave_set_beta, "beta %g out of range (0..2)")
-SETTER(k, aero_leafwave_set_mic_k, "k %g out of range (0..100)")
-SETTER(sway, aero_leafwave_set_sway, "sway %g rad out of range (0..1.5)")
-SETTER(coupling, aero_leafwave_set_coupling,
-       "coupling %g out of range (-10..10)")
-SETTER(flutter, aero_leafwave_set_flutter,
-       "flutter %g Hz out of range (0.01..30)")
-SETTER(hit, aero_leafwave_set_hit, "hit %g Pa out of range (0..100)")
-SETTER(rub, aero_leafwave_set_rub, "rub %g Pa out of range (0..100)")
-SETTER(reach, aero_leafwave_set_reach, "reach %g out of range (0.1..10)")
+SETTER(gain, aero_leafwave_set_gain_db, "gain %g dB", AERO_GAIN_DB_MIN,
+       AERO_GAIN_DB_MAX)
+SETTER(ramp, aero_leafwave_set_ramp_ms, "ramp %g ms", 0, AERO_RAMP_MS_MAX)
+SETTER(stiffness, aero_leafwave_set_stiffness, "stiffness %g",
+       AERO_TREE_STIFFNESS_MIN, AERO_TREE_STIFFNESS_MAX)
+SETTER(beta, aero_leafwave_set_beta, "beta %g", 0, AERO_TREE_BETA_MAX)
+SETTER(k, aero_leafwave_set_mic_k, "k %g", 0, AERO_LEAFWAVE_MIC_K_MAX)
+SETTER(sway, aero_leafwave_set_sway, "sway %g rad", 0,
+       AERO_LEAFWAVE_SWAY_MAX)
+SETTER(coupling, aero_leafwave_set_coupling, "coupling %g",
+       -AERO_LEAFWAVE_COUPLING_MAX, AERO_LEAFWAVE_COUPLING_MAX)
+SETTER(flutter, aero_leafwave_set_flutter, "flutter %g Hz",
+       AERO_LEAFWAVE_FLUTTER_MIN, AERO_LEAFWAVE_FLUTTER_MAX)
+SETTER(hit, aero_leafwave_set_hit, "hit %g Pa", 0, AERO_LEAFWAVE_PA_MAX)
+SETTER(rub, aero_leafwave_set_rub, "rub %g Pa", 0, AERO_LEAFWAVE_PA_MAX)
+SETTER(reach, aero_leafwave_set_reach, "reach %g", AERO_LEAFWAVE_REACH_MIN,
+       AERO_LEAFWAVE_REACH_MAX)
 
 static void leafwave_tilde_voices(t_leafwave_tilde *x, t_floatarg f)
 {
     int n;
-    if (x->x_ok && (aero_pd_whole(f, 1, 65536, &n) ||
+    if (x->x_ok && (aero_pd_whole(f, 1, AERO_LEAFWAVE_VOICES_MAX, &n) ||
                     aero_leafwave_set_voices(&x->x_model, n)))
-        pd_error(x, OBJ ": voices %g out of range (1..65536)", f);
+        pd_error(x, OBJ ": voices %g out of range (1..%d)", f,
+                 AERO_LEAFWAVE_VOICES_MAX);
 }
 
 static void leafwave_tilde_set_tables(t_leafwave_tilde *x, double fm,
@@ -132,12 +139,14 @@ static void leafwave_tilde_set_tables(t_leafwave_tilde *x, double fm,
     int per, oct;
     if (!x->x_ok)
         return;
-    if (aero_pd_whole(per_octave, 1, 128, &per) ||
-        aero_pd_whole(octaves, 1, 8, &oct) ||
+    if (aero_pd_whole(per_octave, 1, AERO_LEAFWAVE_PER_OCTAVE_MAX, &per) ||
+        aero_pd_whole(octaves, 1, AERO_LEAFWAVE_OCTAVES_MAX, &oct) ||
         aero_leafwave_set_tables(&x->x_model, fm, per, oct))
-        pd_error(x, OBJ ": %s %g out of range (fm 20..10000 Hz, tables "
-                 "1..128 per octave, octaves 1..8, at most 512 tables)",
-                 what, value);
+        pd_error(x, OBJ ": %s %g out of range (fm %g..%g Hz, tables "
+                 "1..%d per octave, octaves 1..%d, at most %d tables)",
+                 what, value, AERO_LEAFWAVE_FM_MIN, AERO_LEAFWAVE_FM_MAX,
+                 AERO_LEAFWAVE_PER_OCTAVE_MAX, AERO_LEAFWAVE_OCTAVES_MAX,
+                 AERO_LEAFWAVE_TABLES_MAX);
 }
 
 static void leafwave_tilde_fm(t_leafwave_tilde *x, t_floatarg f)

@@ -135,37 +135,43 @@ static void treebranch_tilde_mic(t_treebranch_tilde *x, t_symbol *s,
 static void treebranch_tilde_k(t_treebranch_tilde *x, t_floatarg f)
 {
     if (aero_treebranch_set_mic_k(&x->x_tb, f))
-        pd_error(x, OBJ ": k %g out of range (0..20)", f);
+        pd_error(x, OBJ ": k %g out of range (0..%g)", f,
+                 AERO_TREEBRANCH_MIC_K_MAX);
 }
 
 static void treebranch_tilde_gain(t_treebranch_tilde *x, t_floatarg f)
 {
     if (aero_treebranch_set_gain_db(&x->x_tb, f))
-        pd_error(x, OBJ ": gain %g dB out of range (-200..120)", f);
+        pd_error(x, OBJ ": gain %g dB out of range (%g..%g)", f,
+                 AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX);
 }
 
 static void treebranch_tilde_ramp(t_treebranch_tilde *x, t_floatarg f)
 {
     if (aero_treebranch_set_ramp_ms(&x->x_tb, f))
-        pd_error(x, OBJ ": ramp %g ms out of range (0..600000)", f);
+        pd_error(x, OBJ ": ramp %g ms out of range (0..%g)", f,
+                 AERO_RAMP_MS_MAX);
 }
 
 static void treebranch_tilde_stiffness(t_treebranch_tilde *x, t_floatarg f)
 {
     if (aero_treebranch_set_stiffness(&x->x_tb, f))
-        pd_error(x, OBJ ": stiffness %g out of range (0.001..1000)", f);
+        pd_error(x, OBJ ": stiffness %g out of range (%g..%g)", f,
+                 AERO_TREE_STIFFNESS_MIN, AERO_TREE_STIFFNESS_MAX);
 }
 
 static void treebranch_tilde_beta(t_treebranch_tilde *x, t_floatarg f)
 {
     if (aero_treebranch_set_beta(&x->x_tb, f))
-        pd_error(x, OBJ ": beta %g out of range (0..2)", f);
+        pd_error(x, OBJ ": beta %g out of range (0..%g)", f,
+                 AERO_TREE_BETA_MAX);
 }
 
 static void treebranch_tilde_alpha(t_treebranch_tilde *x, t_floatarg f)
 {
     if (aero_treebranch_set_alpha(&x->x_tb, f))
-        pd_error(x, OBJ ": alpha %g out of range (0.5..8)", f);
+        pd_error(x, OBJ ": alpha %g out of range (%g..%g)", f,
+                 AERO_TREEBRANCH_ALPHA_MIN, AERO_TREEBRANCH_ALPHA_MAX);
 }
 
 static void treebranch_tilde_seed(t_treebranch_tilde *x, t_floatarg f)

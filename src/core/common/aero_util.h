@@ -2,6 +2,8 @@
 #ifndef AERO_UTIL_H
 #define AERO_UTIL_H
 
+#include "aero_ranges.h"
+
 #include <math.h>
 #include <stdarg.h>
 #include <stdint.h>
@@ -133,20 +135,20 @@ static inline int aero_set_within(double *field, double v, double lo,
 }
 
 /* the gain setters' range and law: *gain = 10^(db/20) for db within
-   [-200, 120] dB: 0; else -1 (kept) */
+   [AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX]: 0; else -1 (kept) */
 static inline int aero_set_gain_db(double *gain, double db)
 {
-    if (aero_set_within(&db, db, -200.0, 120.0))
+    if (aero_set_within(&db, db, AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX))
         return -1;
     *gain = pow(10.0, db / 20.0);
     return 0;
 }
 
 /* the ramp setters' range: *samples = ms at `rate` for ms within
-   [0, 600000]: 0; else -1 (kept) */
+   [0, AERO_RAMP_MS_MAX]: 0; else -1 (kept) */
 static inline int aero_set_ramp_ms(double *samples, double ms, double rate)
 {
-    if (aero_set_within(&ms, ms, 0.0, 600000.0))
+    if (aero_set_within(&ms, ms, 0.0, AERO_RAMP_MS_MAX))
         return -1;
     *samples = ms * 0.001 * rate;
     return 0;

@@ -1165,7 +1165,8 @@ int aero_leafwave_set_ramp_ms(aero_leafwave *lw, double ms)
 
 int aero_leafwave_set_stiffness(aero_leafwave *lw, double s)
 {
-    if (aero_set_within(&lw->stiffness, s, 1e-3, 1e3))
+    if (aero_set_within(&lw->stiffness, s, AERO_TREE_STIFFNESS_MIN,
+                        AERO_TREE_STIFFNESS_MAX))
         return -1;
     if (lw->has_motion)
         aero_tree_motion_set_stiffness(&lw->motion, s);
@@ -1174,7 +1175,7 @@ int aero_leafwave_set_stiffness(aero_leafwave *lw, double s)
 
 int aero_leafwave_set_beta(aero_leafwave *lw, double beta)
 {
-    if (aero_set_within(&lw->beta, beta, 0.0, 2.0))
+    if (aero_set_within(&lw->beta, beta, 0.0, AERO_TREE_BETA_MAX))
         return -1;
     if (lw->has_motion)
         aero_tree_motion_set_beta(&lw->motion, beta);
@@ -1193,37 +1194,40 @@ int aero_leafwave_set_mic(aero_leafwave *lw, double x, double y, double z)
 
 int aero_leafwave_set_mic_k(aero_leafwave *lw, double k)
 {
-    return aero_set_within(&lw->mic_k, k, 0.0, 100.0);
+    return aero_set_within(&lw->mic_k, k, 0.0, AERO_LEAFWAVE_MIC_K_MAX);
 }
 
 int aero_leafwave_set_sway(aero_leafwave *lw, double rad)
 {
-    return aero_set_within(&lw->sway, rad, 0.0, 1.5);
+    return aero_set_within(&lw->sway, rad, 0.0, AERO_LEAFWAVE_SWAY_MAX);
 }
 
 int aero_leafwave_set_coupling(aero_leafwave *lw, double a)
 {
-    return aero_set_within(&lw->coupling, a, -10.0, 10.0);
+    return aero_set_within(&lw->coupling, a, -AERO_LEAFWAVE_COUPLING_MAX,
+                           AERO_LEAFWAVE_COUPLING_MAX);
 }
 
 int aero_leafwave_set_flutter(aero_leafwave *lw, double hz)
 {
-    return aero_set_within(&lw->flutter_hz, hz, 0.01, 30.0);
+    return aero_set_within(&lw->flutter_hz, hz, AERO_LEAFWAVE_FLUTTER_MIN,
+                           AERO_LEAFWAVE_FLUTTER_MAX);
 }
 
 int aero_leafwave_set_hit(aero_leafwave *lw, double pa)
 {
-    return aero_set_within(&lw->hit_pa, pa, 0.0, 100.0);
+    return aero_set_within(&lw->hit_pa, pa, 0.0, AERO_LEAFWAVE_PA_MAX);
 }
 
 int aero_leafwave_set_rub(aero_leafwave *lw, double pa)
 {
-    return aero_set_within(&lw->rub_pa, pa, 0.0, 100.0);
+    return aero_set_within(&lw->rub_pa, pa, 0.0, AERO_LEAFWAVE_PA_MAX);
 }
 
 int aero_leafwave_set_reach(aero_leafwave *lw, double factor)
 {
-    if (aero_set_within(&lw->reach, factor, 0.1, 10.0))
+    if (aero_set_within(&lw->reach, factor, AERO_LEAFWAVE_REACH_MIN,
+                        AERO_LEAFWAVE_REACH_MAX))
         return -1;
     return restart(lw, NULL, 0);
 }
@@ -1231,9 +1235,11 @@ int aero_leafwave_set_reach(aero_leafwave *lw, double factor)
 int aero_leafwave_set_tables(aero_leafwave *lw, double fm, int per_octave,
                              int octaves)
 {
-    if (!aero_is_finite(fm) || fm < 20.0 || fm > 10000.0 || per_octave < 1 ||
-        per_octave > 128 || octaves < 1 || octaves > 8 ||
-        per_octave * octaves > 512)
+    if (!aero_is_finite(fm) || fm < AERO_LEAFWAVE_FM_MIN ||
+        fm > AERO_LEAFWAVE_FM_MAX || per_octave < 1 ||
+        per_octave > AERO_LEAFWAVE_PER_OCTAVE_MAX || octaves < 1 ||
+        octaves > AERO_LEAFWAVE_OCTAVES_MAX ||
+        per_octave * octaves > AERO_LEAFWAVE_TABLES_MAX)
         return -1;
     double old_fm = lw->fm;
     int old_n = lw->tables_per_octave, old_o = lw->octaves;
@@ -1255,7 +1261,7 @@ int aero_leafwave_set_tables(aero_leafwave *lw, double fm, int per_octave,
 
 int aero_leafwave_set_voices(aero_leafwave *lw, int n)
 {
-    if (n < 1 || n > 65536)
+    if (n < 1 || n > AERO_LEAFWAVE_VOICES_MAX)
         return -1;
     if (replace_arrays((void **)&lw->voices, sizeof(aero_leaf_voice) * n,
                        (void **)&lw->free_voices, sizeof(int) * n))

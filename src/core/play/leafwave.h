@@ -58,6 +58,24 @@
 #include "tree.h"
 #include "tree_motion.h"
 
+/* ranges of the settings, stated once: the core checks them, the hosts
+   quote them (stiffness and beta: tree_motion.h; gain, ramp:
+   aero_ranges.h) */
+#define AERO_LEAFWAVE_MIC_K_MAX 100.0
+#define AERO_LEAFWAVE_SWAY_MAX 1.5         /* rad */
+#define AERO_LEAFWAVE_COUPLING_MAX 10.0    /* and its negative */
+#define AERO_LEAFWAVE_FLUTTER_MIN 0.01     /* Hz */
+#define AERO_LEAFWAVE_FLUTTER_MAX 30.0
+#define AERO_LEAFWAVE_PA_MAX 100.0         /* hit and rub, Pa */
+#define AERO_LEAFWAVE_REACH_MIN 0.1
+#define AERO_LEAFWAVE_REACH_MAX 10.0
+#define AERO_LEAFWAVE_VOICES_MAX 65536
+#define AERO_LEAFWAVE_FM_MIN 20.0          /* Hz, the wave tables' fm */
+#define AERO_LEAFWAVE_FM_MAX 10000.0
+#define AERO_LEAFWAVE_PER_OCTAVE_MAX 128   /* tables per octave */
+#define AERO_LEAFWAVE_OCTAVES_MAX 8
+#define AERO_LEAFWAVE_TABLES_MAX 512       /* per octave x octaves */
+
 #include <stddef.h>
 #include <stdint.h>
 

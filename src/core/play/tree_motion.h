@@ -13,6 +13,12 @@
 #define AERO_TREE_MOTION_H
 #include "tree.h"
 
+/* the stiffness scale [leafwave~] and [treebranch~] take */
+#define AERO_TREE_STIFFNESS_MIN 1e-3
+#define AERO_TREE_STIFFNESS_MAX 1e3
+/* the tree motion's exponent beta (Matsuyama et al. 2005) */
+#define AERO_TREE_BETA_MAX 2.0
+
 #define AERO_TREE_MOTION_RATE 200.0 /* steps per second */
 
 typedef struct aero_tree_motion_state aero_tree_motion_state;

@@ -249,7 +249,8 @@ int aero_treebranch_set_direction(aero_treebranch *tb, const double d[3])
 
 int aero_treebranch_set_alpha(aero_treebranch *tb, double alpha)
 {
-    if (aero_set_within(&tb->alpha, alpha, 0.5, 8.0))
+    if (aero_set_within(&tb->alpha, alpha, AERO_TREEBRANCH_ALPHA_MIN,
+                        AERO_TREEBRANCH_ALPHA_MAX))
         return -1;
     update_tail_shape(tb);
     return 0;
@@ -257,7 +258,8 @@ int aero_treebranch_set_alpha(aero_treebranch *tb, double alpha)
 
 int aero_treebranch_set_stiffness(aero_treebranch *tb, double s)
 {
-    if (aero_set_within(&tb->motion.stiffness, s, 1e-3, 1e3))
+    if (aero_set_within(&tb->motion.stiffness, s, AERO_TREE_STIFFNESS_MIN,
+                        AERO_TREE_STIFFNESS_MAX))
         return -1;
     if (tb->has_tree)
         aero_tree_motion_set_stiffness(&tb->motion, s);
@@ -266,7 +268,7 @@ int aero_treebranch_set_stiffness(aero_treebranch *tb, double s)
 
 int aero_treebranch_set_beta(aero_treebranch *tb, double beta)
 {
-    if (!aero_is_finite(beta) || beta < 0.0 || beta > 2.0)
+    if (!aero_is_finite(beta) || beta < 0.0 || beta > AERO_TREE_BETA_MAX)
         return -1;
     if (tb->has_tree)
         aero_tree_motion_set_beta(&tb->motion, beta);
@@ -299,7 +301,7 @@ int aero_treebranch_set_mic(aero_treebranch *tb, const double dir[3])
 
 int aero_treebranch_set_mic_k(aero_treebranch *tb, double k)
 {
-    return aero_set_within(&tb->mic_k, k, 0.0, 20.0);
+    return aero_set_within(&tb->mic_k, k, 0.0, AERO_TREEBRANCH_MIC_K_MAX);
 }
 
 static int valid_point(const double p[3])

@@ -40,6 +40,13 @@
 #include "tree.h"
 #include "tree_motion.h"
 
+/* ranges of the settings, stated once: the core checks them, the hosts
+   quote them (stiffness and beta: tree_motion.h; gain, ramp:
+   aero_ranges.h) */
+#define AERO_TREEBRANCH_ALPHA_MIN 0.5
+#define AERO_TREEBRANCH_ALPHA_MAX 8.0
+#define AERO_TREEBRANCH_MIC_K_MAX 20.0
+
 #include <stdint.h>
 
 typedef struct aero_treebranch_fft aero_treebranch_fft; /* FFTW, private */

@@ -312,8 +312,10 @@ fi
 # --fair-sched=yes (without it valgrind runs threads one after the other
 # and hides every race). Races inside Pd itself are suppressed by name
 # (tests/libpd/pd-races.supp); aero must add none. The negative control
-# builds [treebranch~]'s core with -DAERO_FFTW_UNSERIALISED (FFTW's planner
-# left unserialised): helgrind must report races in FFTW.
+# builds the cores that plan FFTs while Pd runs ([treebranch~]'s and
+# [leafwave~]'s) with -DAERO_FFTW_UNSERIALISED (FFTW's planner left
+# unserialised; one serialised planner call anywhere would serialise the
+# whole process): helgrind must report races in FFTW.
 section "four libpd instances in four threads (helgrind --fair-sched=yes)"
 T=$OUT/threads
 if host_build multi "$T" tests/libpd/threads.c; then
@@ -327,9 +329,14 @@ if host_build multi "$T" tests/libpd/threads.c; then
 else
     fail "threads host"
 fi
-$CC -std=c99 -D_POSIX_C_SOURCE=200809L -O3 -fPIC -Isrc/core/common -Isrc/core/solve -Isrc/core/play -DAERO_FFTW_UNSERIALISED \
-    -c src/core/play/treebranch.c -o "$OUT/treebranch-unserialised.o"
-host_build multi "$T-unserialised" tests/libpd/threads.c "$OUT/treebranch-unserialised.o" ||
+unserialised=
+for core in treebranch leafwave; do
+    $CC -std=c99 -D_POSIX_C_SOURCE=200809L -O3 -fPIC -Isrc/core/common -Isrc/core/solve -Isrc/core/play -DAERO_FFTW_UNSERIALISED \
+        -c src/core/play/$core.c -o "$OUT/$core-unserialised.o"
+    unserialised="$unserialised $OUT/$core-unserialised.o"
+done
+# shellcheck disable=SC2086
+host_build multi "$T-unserialised" tests/libpd/threads.c $unserialised ||
     fail "threads host, negative control"
 if ! command -v valgrind >/dev/null; then
     fail "valgrind is missing (make deps)"

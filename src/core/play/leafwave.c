@@ -6,6 +6,7 @@
 #include "aero_util.h"
 
 #include "aero_fftw.h"
+#include "aero_ramp.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -1386,13 +1387,8 @@ static void glide_ears(aero_leafwave *lw, int n)
 {
     if (!(lw->ramp_left > 0))
         return;
-    double step = n >= lw->ramp_left ? 1.0 : n / lw->ramp_left;
-    for (int e = 0; e < lw->n_ears; e++)
-        for (int k = 0; k < 3; k++)
-            lw->ear[e][k] += step * (lw->ear_target[e][k] - lw->ear[e][k]);
-    lw->ramp_left -= n;
-    if (lw->ramp_left < 0)
-        lw->ramp_left = 0;
+    aero_glide_values(&lw->ear[0][0], &lw->ear_target[0][0], 3 * lw->n_ears,
+                      aero_glide_fraction(&lw->ramp_left, n));
 }
 
 /* ear e reads the line with a moving stylus: delay r / c0 interpolated

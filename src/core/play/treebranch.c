@@ -1,6 +1,7 @@
 /* aero: branch sound of a tree in the wind (see treebranch.h). */
 #include "treebranch.h"
 #include "aero_air.h"
+#include "aero_ramp.h"
 #include "aero_util.h"
 #include "strouhal.h"
 
@@ -568,18 +569,11 @@ static void process_chunk(aero_treebranch *tb, float *out0, float *out1,
                           int n)
 {
     double delay_end[2], level_end[2];
-    int nears = out1 && tb->stereo ? 2 : 1, e, i, k;
+    int nears = out1 && tb->stereo ? 2 : 1, e, i;
     aero_tree_motion_advance(&tb->motion, n / tb->sample_rate);
     /* the ears glide to their targets over `ramp` */
-    if (tb->ramp_left > 0.0) {
-        double frac = n >= tb->ramp_left ? 1.0 : n / tb->ramp_left;
-        for (e = 0; e < 2; e++)
-            for (k = 0; k < 3; k++)
-                tb->ear[e][k] += frac * (tb->ear_target[e][k] - tb->ear[e][k]);
-        tb->ramp_left -= n;
-    } else {
-        memcpy(tb->ear, tb->ear_target, sizeof tb->ear);
-    }
+    aero_glide_values(&tb->ear[0][0], &tb->ear_target[0][0], 6,
+                      aero_glide_fraction(&tb->ramp_left, n));
     for (e = 0; e < nears; e++)
         ear_path(tb, tb->ear[e], &delay_end[e], &level_end[e]);
     if (tb->now == 0 && tb->written == 0)

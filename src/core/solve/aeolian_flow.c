@@ -225,6 +225,13 @@ int aero_aeolian_flow_simulate(const aero_aeolian_flow_params *p,
                 err, errlen) == 0) {
             statistics(&h, &st->flow, &st->st_peak);
             status = correction(p, st, err, errlen);
+            /* a 2D flow that sheds slower than the real body (frequency
+               scale > 1, e.g. the circle on a fine grid) is squeezed in
+               time: record on until it fills the texture */
+            if (status == 0 && out && st->span3d.frequency_scale > 1.0)
+                status = run(p, &s, p->settle + record_time(p, rate) *
+                                 st->span3d.frequency_scale,
+                             &h, hook, every, ctx, err, errlen);
             if (status == 0 && out)
                 status = resample(p, &h, &st->span3d, rate, out, stride, nout,
                                   err, errlen);

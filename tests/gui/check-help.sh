@@ -52,13 +52,24 @@ failed=0
 for patch in "$@"; do
     name=$(basename "$patch" .pd)
     case "$patch" in /*) path=$patch ;; *) path=$ROOT/$patch ;; esac
-    rm -f "$out_abs/$name.result" "$out_abs/$name".*png "$out_abs/$name.png"
-    # -noprefs: no user's settings; the plugin quits Pd once it is done
-    AERO_GUICHECK_OUT=$out_abs AERO_GUICHECK_NAME=$name \
-        timeout 120 xvfb-run -a -s "-screen 0 $GUI_SCREEN" \
-        "$PD" -noaudio -nomidi -noprefs -stderr \
-        -path "$ROOT/tests/gui" -path "$ROOT" -path "$ROOT/abstractions" \
-        -open "$path" >"$out_abs/$name.log" 2>&1
+    # Now and then (about 1 run in 4 for leafwave~-help on Pd 0.53 under
+    # Xvfb, not seen for the other patches) the plugin finds no mapped and
+    # loaded patch window within 30 s, while Pd runs on and exits cleanly:
+    # such a run is started again, up to 3 times, and says so. A patch
+    # that never opens still fails.
+    for attempt in 1 2 3; do
+        rm -f "$out_abs/$name.result" "$out_abs/$name".*png "$out_abs/$name.png"
+        # -noprefs: no user's settings; the plugin quits Pd once it is done
+        AERO_GUICHECK_OUT=$out_abs AERO_GUICHECK_NAME=$name \
+            timeout 120 xvfb-run -a -s "-screen 0 $GUI_SCREEN" \
+            "$PD" -noaudio -nomidi -noprefs -stderr \
+            -path "$ROOT/tests/gui" -path "$ROOT" -path "$ROOT/abstractions" \
+            -open "$path" >"$out_abs/$name.log" 2>&1
+        grep -q "^FAIL $name no patch window opened" "$out_abs/$name.result" \
+            2>/dev/null || break
+        [ "$attempt" -lt 3 ] &&
+            echo "note $name: no patch window was mapped (attempt $attempt), running it again"
+    done
     if [ -s "$out_abs/$name.result" ]; then
         sed "s|$ROOT/||" "$out_abs/$name.result"
         grep -q '^FAIL' "$out_abs/$name.result" && failed=$((failed + 1))

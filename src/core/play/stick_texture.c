@@ -9,6 +9,7 @@
 
 #include "aero_air.h"
 #include "aero_util.h"
+#include "strouhal.h"
 
 #define VELOCITY_TAU_S 0.008 /* smoothing of pose-derived velocities */
 #define MIN_SPEED 1e-6       /* below this the flow direction is unknown */
@@ -37,6 +38,44 @@ static double current_diameter(const aero_stick_texture *s)
     if (s->diameter > 0.0)
         return s->diameter;
     return s->tex_diameter > 0.0 ? s->tex_diameter : 0.01;
+}
+
+/* A circle texture corrected to a 3D cylinder (span3d.h) holds St and
+   sectional C_L' of its own Re. Away from it both follow the circle's
+   published laws, Roshko (1954) St(Re) and Norberg (2003) C_L'(Re), as
+   model mode does, so the two modes agree at every speed. */
+static void set_re_law(aero_stick_texture *s, const aero_texture *t,
+                       double v0, double d)
+{
+    char shape[32], span3d[32];
+    double re = aero_texture_getd(t, "re", 0.0);
+    s->re_law = aero_texture_get(t, "shape", shape, sizeof shape) &&
+                !strcmp(shape, "circle") &&
+                aero_texture_get(t, "span3d", span3d, sizeof span3d) &&
+                !strcmp(span3d, "circle-calibrated") &&
+                re > AERO_RE_ONSET && re < 1e7;
+    if (!s->re_law)
+        return;
+    s->tex_nu = v0 * d / re;
+    s->tex_strouhal = aero_strouhal(re);
+    s->tex_lift_rms = aero_lift_rms(re);
+    s->re_law = s->tex_strouhal > 0.0 && s->tex_lift_rms > 0.0;
+}
+
+/* St(Re) / St(Re of the texture): 1 unless the law applies */
+static double re_pitch(const aero_stick_texture *s, double v, double d)
+{
+    if (!s->re_law || !(v > MIN_SPEED))
+        return 1.0;
+    return aero_strouhal(v * d / s->tex_nu) / s->tex_strouhal;
+}
+
+/* C_L'(Re) / C_L'(Re of the texture) */
+static double re_level(const aero_stick_texture *s, double v, double d)
+{
+    if (!s->re_law || !(v > MIN_SPEED))
+        return 1.0;
+    return aero_lift_rms(v * d / s->tex_nu) / s->tex_lift_rms;
 }
 
 static double stick_length(const double *pose)
@@ -134,6 +173,7 @@ int aero_stick_texture_set_texture(aero_stick_texture *s, aero_texture *t,
         s->period = symmetry > 0 && t->directions > 1 ? 360.0 / symmetry
                                                        : 0.0;
         s->mirror = fabs(aero_texture_getd(t, "mirror", 0.0)) >= 1.0;
+        set_re_law(s, t, v0, d);
     }
     if (s->texture) {
         aero_texture_free(s->texture);
@@ -286,7 +326,8 @@ int aero_stick_texture_set_ears(aero_stick_texture *s, const aero_ears *e)
 
 double aero_stick_texture_tone_hz(const aero_stick_texture *s, double v)
 {
-    return s->st * v / current_diameter(s);
+    double d = current_diameter(s);
+    return s->st * re_pitch(s, v, d) * v / d;
 }
 
 int aero_stick_texture_source_count(const aero_stick_texture *s)
@@ -417,11 +458,14 @@ static int source_at(aero_stick_texture *s, const stick_frame *f, double u,
         clamped = 1;
     }
     double d = current_diameter(s);
-    double ratio = v / s->v0;
-    g->inc = ratio * (s->tex_diameter / d) * s->tex_rate / s->base.sample_rate;
+    double ratio = v / s->v0, pitch = re_pitch(s, v, d);
+    g->inc = ratio * pitch * (s->tex_diameter / d) * s->tex_rate /
+             s->base.sample_rate;
     if (v > MIN_SPEED) {
         g->angle = atan2(dot3(perp, f->yb), dot3(perp, f->xb)) * 180.0 / AERO_PI;
-        g->amp = pow(ratio, s->base.exponent) * f->seg_len * f->gain;
+        /* g = dF/dt: the force scales with C_L', its rate with St */
+        g->amp = pow(ratio, s->base.exponent) * pitch * re_level(s, v, d) *
+                 f->seg_len * f->gain;
     } else { /* no flow: silent, keep the direction */
         perp[0] = f->xb[0];
         perp[1] = f->xb[1];

@@ -57,6 +57,10 @@ typedef struct aero_stick_texture {
     /* the texture (owned) and what the player needs of it */
     aero_texture *texture;
     double v0, tex_diameter, tex_rate, st;
+    /* a circle texture corrected to a 3D cylinder: its St and C_L' follow
+       Re away from its own (stick_texture.c); tex_nu its viscosity */
+    int re_law;
+    double tex_nu, tex_strouhal, tex_lift_rms;
     double period;       /* symmetry period, deg (0: one direction) */
     int mirror;
 

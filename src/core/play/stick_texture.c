@@ -13,6 +13,16 @@
 
 #define VELOCITY_TAU_S 0.008 /* smoothing of pose-derived velocities */
 #define MIN_SPEED 1e-6       /* below this the flow direction is unknown */
+/* Sources further apart than the correlation length must add their powers,
+   as model mode's segments do. Offsets alone do not give that: every
+   source reads the same periodic texture at the same rate, so their phases
+   stay frozen and each line of the sum gets a random gain of its own. So
+   each source's phase wanders, a random walk whose Lorentzian line is
+   this wide relative to f (full width at half maximum): wide enough to lose the sources' mutual
+   phase in a fraction of a second (0.16 s at 200 Hz), narrower than the
+   turbulent wake's few percent (model mode), so the texture's own
+   spectrum still shapes the line. */
+#define PHASE_WANDER_WIDTH 0.01
 
 /* --- helpers ------------------------------------------------------------- */
 
@@ -86,6 +96,31 @@ static double stick_length(const double *pose)
 
 /* n from the pose's length and the correlation length 3 d (Dobashi et
    al. 2003) */
+/* a generator for one source's phase wander: the next state of the
+   player's generator would only replay its own stream one step later (the
+   sources' wanders equal and their phases frozen), so it is scrambled to
+   another place in the xorshift cycle (Murmur3's finaliser) */
+static uint32_t source_generator(aero_stick_texture *s)
+{
+    uint32_t h = aero_xorshift32(&s->base.rng);
+    h ^= h >> 16;
+    h *= 0x85ebca6bu;
+    h ^= h >> 13;
+    h *= 0xc2b2ae35u;
+    h ^= h >> 16;
+    return h ? h : 1;
+}
+
+/* a source from a random offset of the texture, with a generator of its
+   own for its phase wander */
+static void start_source(aero_stick_texture *s, aero_stick_source *src)
+{
+    memset(src, 0, sizeof(*src));
+    src->pos = 0.5 * (aero_uniform(&s->base.rng) + 1.0) *
+               (s->texture ? s->texture->frames : 1);
+    src->rng = source_generator(s);
+}
+
 static void update_source_count(aero_stick_texture *s)
 {
     int n = s->sources_wanted;
@@ -102,11 +137,8 @@ static void update_source_count(aero_stick_texture *s)
         n = 1;
     if (n > AERO_STICK_MAX_SOURCES)
         n = AERO_STICK_MAX_SOURCES;
-    for (int i = s->n_sources; i < n; i++) { /* new ones fade in */
-        memset(&s->src[i], 0, sizeof(s->src[i]));
-        s->src[i].pos = 0.5 * (aero_uniform(&s->base.rng) + 1.0) *
-                        (s->texture ? s->texture->frames : 1);
-    }
+    for (int i = s->n_sources; i < n; i++) /* new ones fade in */
+        start_source(s, &s->src[i]);
     s->n_sources = n;
 }
 
@@ -120,6 +152,7 @@ int aero_stick_texture_init(aero_stick_texture *s, double sample_rate,
                                                          : 44100.0,
         n_ears, seed, AERO_STICK_CHUNK, AERO_STICK_MAX_DELAY_S);
     s->length = 0.5;
+    s->phase_wander_width = PHASE_WANDER_WIDTH;
     default_pose(s);
     s->reference[0] = 1.0;
     update_source_count(s);
@@ -173,6 +206,9 @@ int aero_stick_texture_set_texture(aero_stick_texture *s, aero_texture *t,
         s->period = symmetry > 0 && t->directions > 1 ? 360.0 / symmetry
                                                        : 0.0;
         s->mirror = fabs(aero_texture_getd(t, "mirror", 0.0)) >= 1.0;
+        s->frames_per_cycle = s->st > 0.0 && v0 > 0.0 && d > 0.0
+                                  ? t->rate * d / (s->st * v0)
+                                  : 0.0;
         set_re_law(s, t, v0, d);
     }
     if (s->texture) {
@@ -181,11 +217,8 @@ int aero_stick_texture_set_texture(aero_stick_texture *s, aero_texture *t,
     }
     s->texture = t;
     /* sources restart from random offsets of the new texture */
-    for (int i = 0; i < AERO_STICK_MAX_SOURCES; i++) {
-        memset(&s->src[i], 0, sizeof(s->src[i]));
-        if (t)
-            s->src[i].pos = 0.5 * (aero_uniform(&s->base.rng) + 1.0) * t->frames;
-    }
+    for (int i = 0; i < AERO_STICK_MAX_SOURCES; i++)
+        start_source(s, &s->src[i]);
     update_source_count(s);
     return 0;
 }
@@ -252,9 +285,22 @@ void aero_stick_texture_set_seed(aero_stick_texture *s, uint32_t seed)
 {
     s->base.rng = seed ? seed : 1;
     for (int i = 0; i < AERO_STICK_MAX_SOURCES; i++)
-        if (s->texture)
-            s->src[i].pos =
-                0.5 * (aero_uniform(&s->base.rng) + 1.0) * s->texture->frames;
+        if (s->texture) { /* a new offset and generator, the rest kept */
+            aero_stick_source *src = &s->src[i];
+            src->pos = 0.5 * (aero_uniform(&s->base.rng) + 1.0) *
+                       s->texture->frames;
+            src->rng = source_generator(s);
+            src->wander = 0.0;
+            src->wander_left = 0;
+        }
+}
+
+int aero_stick_texture_set_phase_wander(aero_stick_texture *s, double width)
+{
+    if (!(width >= 0.0 && width <= 0.1))
+        return -1;
+    s->phase_wander_width = width;
+    return 0;
 }
 
 int aero_stick_texture_set_pose(aero_stick_texture *s, const double a[3],
@@ -563,6 +609,24 @@ static void pair_coefs(const source_geometry *g, int e, double w, double sign,
     c[3] = w * ay;
 }
 
+/* a source's phase rate for its next AERO_STICK_CHUNK samples, frames per
+   sample: phase diffusion of full width B = W f (Hz) steps by B K /
+   (2 pi sr) cycles^2 over K samples (as aeolian_model.c); with f = inc sr /
+   frames_per_cycle that is W inc K frames_per_cycle / (2 pi) frames^2. A
+   uniform number on [-1, 1) has variance 1/3. Each source draws from its
+   own generator on its own sample count, so any block size gives the same
+   sound. */
+static double phase_wander(const aero_stick_texture *s, aero_stick_source *src,
+                           double inc)
+{
+    if (!(s->phase_wander_width > 0.0) || !(s->frames_per_cycle > 0.0) ||
+        !(inc > 0.0))
+        return 0.0;
+    double variance = s->phase_wander_width * inc * AERO_STICK_CHUNK *
+                      s->frames_per_cycle / (2.0 * AERO_PI);
+    return sqrt(3.0 * variance) * aero_uniform(&src->rng) / AERO_STICK_CHUNK;
+}
+
 /* one source over a chunk of m samples: texture read, Curle projection,
  * added into each ear's ring at its arrival time */
 static void render_source(aero_stick_texture *s, aero_stick_source *src,
@@ -611,7 +675,12 @@ static void render_source(aero_stick_texture *s, aero_stick_source *src,
             tex[2][j] = r0[c1] + fr * (r1[c1] - r0[c1]);
             tex[3][j] = r0[c1 + 1] + fr * (r1[c1 + 1] - r0[c1 + 1]);
             inc += dinc;
-            pos += inc;
+            if (src->wander_left <= 0) {
+                src->wander = phase_wander(s, src, inc);
+                src->wander_left = AERO_STICK_CHUNK;
+            }
+            src->wander_left--;
+            pos += inc + src->wander > 0.0 ? inc + src->wander : 0.0;
             /* more than a whole texture per sample (a tiny stick in a fast
              * flow, a short texture) must still wrap into it: reading past
              * the end would overflow the texture */

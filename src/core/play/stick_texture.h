@@ -20,7 +20,9 @@
  *     sample into one delay ring per ear at the fractional arrival time, so
  *     Doppler (exact for any source motion) and interaural delay come for
  *     free and n sources cost one ring per ear, not one delay line each.
- * Each source starts at its own texture offset, so they add incoherently.
+ * Each source starts at its own texture offset and its phase wanders (a
+ * random walk, stick_texture.c), so their powers add, as model mode's
+ * segments do.
  *
  * Life cycle: init (allocates the rings), set_texture (takes ownership),
  * set_*, process (any block size), free. No globals. */
@@ -47,6 +49,9 @@ typedef struct {
     double fx[AERO_STICK_MAX_EARS], fy[AERO_STICK_MAX_EARS]; /* Curle, 1/m */
     double delay[AERO_STICK_MAX_EARS]; /* samples */
     double sign;         /* side of the mirror fold (-1: mirrored) */
+    uint32_t rng;        /* its phase wander's generator */
+    double wander;       /* phase rate now, frames per sample */
+    int wander_left;     /* samples until the next draw */
     int primed;
 } aero_stick_source;
 
@@ -61,6 +66,8 @@ typedef struct aero_stick_texture {
        Re away from its own (stick_texture.c); tex_nu its viscosity */
     int re_law;
     double tex_nu, tex_strouhal, tex_lift_rms;
+    double frames_per_cycle; /* texture frames per shedding period */
+    double phase_wander_width; /* relative line width of the wander */
     double period;       /* symmetry period, deg (0: one direction) */
     int mirror;
 
@@ -103,6 +110,10 @@ int aero_stick_texture_set_exponent(aero_stick_texture *s, double e);
 int aero_stick_texture_set_gain_db(aero_stick_texture *s, double db);
 int aero_stick_texture_set_ramp_ms(aero_stick_texture *s, double ms);
 void aero_stick_texture_set_seed(aero_stick_texture *s, uint32_t seed);
+/* full width at half maximum of each source's phase wander relative to f
+ * (default 0.01, stick_texture.c; 0 freezes the phases, as unit tests of
+ * exact pitch need); -1 outside 0..0.1, nothing changed */
+int aero_stick_texture_set_phase_wander(aero_stick_texture *s, double width);
 /* ends A and B; interval_s is the time since the previous pose: the motion
  * is interpolated over it (at least 1 ms). The first pose, a pose more than
  * 0.5 s after the previous one (a new gesture) and interval_s < 0 (a

@@ -20,12 +20,23 @@
  *   aero-analyze onsetdiff FILE time (ms) at which channel 1 first reaches
  *                               10 % of its own maximum, minus the same for
  *                               channel 0 (an interaural delay)
+ *   aero-analyze scaleratio A B  the factor s by which B's spectrum is A's
+ *                               stretched in frequency (B(f) ~ A(f / s)):
+ *                               the scan of s in 0.7..1.4 (steps of 0.05 %)
+ *                               that best matches the two log spectra over
+ *                               [fmin, fmax], each level removed (a Doppler
+ *                               shift of a broadband sound, which moves a
+ *                               centroid in a fixed band by less)
  *   aero-analyze specdist A B   rms difference of the two log spectra over
  *                               [fmin, fmax], each smoothed by --smooth, dB
  *   aero-analyze onset FILE     time of the first sample with |x| > 1e-3
  *                               of the file's peak, seconds (after --skip)
  * options: --ch K (channel, default 0)  --skip S (seconds ignored at the
  * start)  --dur S (seconds analysed after the skip; default all)
+ * --skip2 S (B's own skip, for two windows of one file; default --skip)
+ * --every T --count K (with --dur: K windows of --dur seconds, starting at
+ * the skip and every T seconds after it, e.g. the same phase of K turns of
+ * a whirl; spectra average over the windows, no segment spans two)
  * --fmin F --fmax F (peak search range)  --nfft N
  * --smooth HZ (moving average of the spectrum before the peak search)
  *   --expect V --tol T   pass if |value - V| <= T (relative for peak,
@@ -44,9 +55,9 @@
 
 typedef struct {
     int channel;
-    double skip, dur, fmin, fmax, smooth;
-    int nfft;
-    int has_expect, has_tol, has_min, has_max;
+    double skip, skip2, dur, fmin, fmax, smooth, every;
+    int nfft, count;
+    int has_expect, has_tol, has_min, has_max, has_skip2;
     double expect, tol, min, max;
 } options;
 
@@ -54,6 +65,7 @@ typedef struct {
     double *x;
     long n;
     double sr;
+    long gate; /* samples per window of --every (0: one stretch) */
 } signal_t;
 
 static int load(const char *path, const options *o, signal_t *s)
@@ -77,13 +89,36 @@ static int load(const char *path, const options *o, signal_t *s)
     long skip = (long)(o->skip * info.samplerate);
     if (skip > got)
         skip = got;
-    s->n = got - skip;
-    if (o->dur > 0.0 && (long)(o->dur * info.samplerate) < s->n)
-        s->n = (long)(o->dur * info.samplerate);
     s->sr = info.samplerate;
-    s->x = malloc(sizeof(double) * (s->n + 1));
-    for (long i = 0; i < s->n; i++)
-        s->x[i] = all[(i + skip) * info.channels + o->channel];
+    s->gate = 0;
+    if (o->every > 0.0 && o->count > 0 && o->dur > 0.0) {
+        /* K windows, each whole inside the file, laid end to end */
+        long len = (long)(o->dur * info.samplerate), k = 0;
+        s->x = malloc(sizeof(double) * ((size_t)len * o->count + 1));
+        for (; k < o->count; k++) {
+            long at = skip + (long)(k * o->every * info.samplerate);
+            if (at + len > got)
+                break;
+            for (long i = 0; i < len; i++)
+                s->x[k * len + i] = all[(at + i) * info.channels + o->channel];
+        }
+        s->n = k * len;
+        s->gate = len;
+        if (k < o->count) {
+            printf("FAIL %s: window %ld of %d ends after the file\n", path,
+                   k + 1, o->count);
+            free(all);
+            free(s->x);
+            return -1;
+        }
+    } else {
+        s->n = got - skip;
+        if (o->dur > 0.0 && (long)(o->dur * info.samplerate) < s->n)
+            s->n = (long)(o->dur * info.samplerate);
+        s->x = malloc(sizeof(double) * (s->n + 1));
+        for (long i = 0; i < s->n; i++)
+            s->x[i] = all[(i + skip) * info.channels + o->channel];
+    }
     free(all);
     if (s->n < 16) {
         printf("FAIL %s: only %ld frames after --skip\n", path, s->n);
@@ -106,7 +141,8 @@ static double level_db(const signal_t *s)
 static double *welch(const signal_t *s, int *nfft_io)
 {
     int nfft = *nfft_io;
-    while (nfft > s->n && nfft > 64)
+    long block = s->gate > 0 ? s->gate : s->n;
+    while (nfft > block && nfft > 64)
         nfft /= 2;
     *nfft_io = nfft;
     double *in = fftw_malloc(sizeof(double) * nfft);
@@ -117,14 +153,15 @@ static double *welch(const signal_t *s, int *nfft_io)
     for (int i = 0; i < nfft; i++)
         window[i] = 0.5 - 0.5 * cos(TWO_PI * i / nfft);
     int hop = nfft / 4, segments = 0;
-    for (long start = 0; start + nfft <= s->n; start += hop) {
-        for (int i = 0; i < nfft; i++)
-            in[i] = s->x[start + i] * window[i];
-        fftw_execute(plan);
-        for (int k = 0; k <= nfft / 2; k++)
-            psd[k] += out[k][0] * out[k][0] + out[k][1] * out[k][1];
-        segments++;
-    }
+    for (long from = 0; from + block <= s->n; from += block)
+        for (long start = from; start + nfft <= from + block; start += hop) {
+            for (int i = 0; i < nfft; i++)
+                in[i] = s->x[start + i] * window[i];
+            fftw_execute(plan);
+            for (int k = 0; k <= nfft / 2; k++)
+                psd[k] += out[k][0] * out[k][0] + out[k][1] * out[k][1];
+            segments++;
+        }
     for (int k = 0; k <= nfft / 2 && segments; k++)
         psd[k] /= segments;
     fftw_destroy_plan(plan);
@@ -307,6 +344,58 @@ static double onset_s(const signal_t *s, double frac)
     return 0;
 }
 
+/* log power of a Welch spectrum at frequency f (linear between bins) */
+static double log_power_at(const double *psd, int nfft, double df, double f)
+{
+    double k = f / df;
+    int i = (int)k;
+    if (i < 0 || i + 1 > nfft / 2)
+        return log(1e-300);
+    double p = psd[i] + (k - i) * (psd[i + 1] - psd[i]);
+    return log(p > 1e-300 ? p : 1e-300);
+}
+
+/* B's spectrum as A's stretched by s: the s in 0.7..1.4 whose log spectra
+ * over [fmin, fmax] (B's band; 64 points per octave), each with its mean
+ * removed, differ least; -1 when the spectra cannot be compared */
+static double scale_ratio(const signal_t *a, const signal_t *b,
+                          const options *o)
+{
+    int na = o->nfft, nb = o->nfft;
+    double *pa = welch(a, &na), *pb = welch(b, &nb);
+    double best = -1.0, best_err = 1e300;
+    if (na == nb && a->sr == b->sr && o->fmin > 0 && o->fmax > o->fmin) {
+        double df = a->sr / na;
+        int n = (int)(64.0 * log2(o->fmax / o->fmin)) + 1;
+        double *lb = malloc(sizeof(double) * n), *la = malloc(sizeof(double) * n);
+        double mb = 0;
+        for (int j = 0; j < n; j++) {
+            double f = o->fmin * pow(2.0, j / 64.0);
+            lb[j] = log_power_at(pb, nb, df, f);
+            mb += lb[j] / n;
+        }
+        for (double sc = 0.7; sc <= 1.4; sc *= 1.0005) {
+            double ma = 0, err = 0;
+            for (int j = 0; j < n; j++) {
+                la[j] = log_power_at(pa, na, df,
+                                     o->fmin * pow(2.0, j / 64.0) / sc);
+                ma += la[j] / n;
+            }
+            for (int j = 0; j < n; j++) {
+                double d = (lb[j] - mb) - (la[j] - ma);
+                err += d * d;
+            }
+            if (err < best_err)
+                best_err = err, best = sc;
+        }
+        free(lb);
+        free(la);
+    }
+    free(pa);
+    free(pb);
+    return best;
+}
+
 /* rms distance of two smoothed log power spectra over [fmin, fmax], dB */
 static double spectral_distance(const signal_t *a, const signal_t *b,
                                 const options *o)
@@ -371,13 +460,13 @@ static int verdict(const char *what, double value, const char *unit,
 
 static void usage(void)
 {
-    fprintf(stderr, "usage: aero-analyze peak|peakratio|width|level|leveldiff|band|finite|"
+    fprintf(stderr, "usage: aero-analyze peak|peakratio|scaleratio|width|level|leveldiff|band|finite|"
                     "centroid|centroidratio|clicks|onset FILE [FILE2] [F1 F2] [options]\n");
 }
 
 int main(int argc, char **argv)
 {
-    options o = {0, 0.0, 0.0, 20.0, 1e9, 0.0, 16384, 0, 0, 0, 0, 0, 0, 0, 0};
+    options o = {.fmin = 20.0, .fmax = 1e9, .nfft = 16384};
     const char *pos[6];
     int npos = 0;
     if (argc < 3) {
@@ -392,6 +481,12 @@ int main(int argc, char **argv)
             o.channel = atoi(argv[++i]);
         else if (!strcmp(a, "--skip") && more)
             o.skip = atof(argv[++i]);
+        else if (!strcmp(a, "--skip2") && more)
+            o.has_skip2 = 1, o.skip2 = atof(argv[++i]);
+        else if (!strcmp(a, "--every") && more)
+            o.every = atof(argv[++i]);
+        else if (!strcmp(a, "--count") && more)
+            o.count = atoi(argv[++i]);
         else if (!strcmp(a, "--dur") && more)
             o.dur = atof(argv[++i]);
         else if (!strcmp(a, "--fmin") && more)
@@ -433,6 +528,16 @@ int main(int argc, char **argv)
             return 2;
         snprintf(what, sizeof(what), "peak of %s over %s", pos[1], pos[0]);
         rc = verdict(what, peak_hz(&s2, &o) / peak_hz(&s, &o), "", &o, 1);
+        free(s2.x);
+    } else if (!strcmp(cmd, "scaleratio") && npos >= 2) {
+        options o2 = o;
+        if (o.has_skip2)
+            o2.skip = o.skip2;
+        if (load(pos[1], &o2, &s2))
+            return 2;
+        snprintf(what, sizeof(what), "spectrum of %s%s over %s", pos[1],
+                 o.has_skip2 ? " (second window)" : "", pos[0]);
+        rc = verdict(what, scale_ratio(&s, &s2, &o), "", &o, 1);
         free(s2.x);
     } else if (!strcmp(cmd, "width")) {
         snprintf(what, sizeof(what), "relative peak width of %s", pos[0]);

@@ -483,8 +483,30 @@ typedef struct {
     double seg_len, gain;
 } stick_frame;
 
+/* the Re law's factors for a source at speed v, computed again only when v
+   moves by more than 0.1 % (St and C_L' then move by about as little), as
+   model mode caches its laws: a log and a power per source and chunk cost
+   a fifth of the player */
+static void re_factors(const aero_stick_texture *s, aero_stick_source *src,
+                       double v, double d, double *pitch, double *level)
+{
+    if (!s->re_law || !(v > MIN_SPEED)) {
+        *pitch = *level = 1.0;
+        return;
+    }
+    if (!(src->law_speed > 0.0) || d != src->law_diameter ||
+        fabs(v - src->law_speed) > 1e-3 * src->law_speed) {
+        src->law_speed = v;
+        src->law_diameter = d;
+        src->law_pitch = re_pitch(s, v, d);
+        src->law_level = re_level(s, v, d);
+    }
+    *pitch = src->law_pitch;
+    *level = src->law_level;
+}
+
 static int source_at(aero_stick_texture *s, const stick_frame *f, double u,
-                     source_geometry *g)
+                     aero_stick_source *src, source_geometry *g)
 {
     int clamped = 0;
     double pos[3], rel[3];
@@ -504,13 +526,14 @@ static int source_at(aero_stick_texture *s, const stick_frame *f, double u,
         clamped = 1;
     }
     double d = current_diameter(s);
-    double ratio = v / s->v0, pitch = re_pitch(s, v, d);
+    double ratio = v / s->v0, pitch, level;
+    re_factors(s, src, v, d, &pitch, &level);
     g->inc = ratio * pitch * (s->tex_diameter / d) * s->tex_rate /
              s->base.sample_rate;
     if (v > MIN_SPEED) {
         g->angle = atan2(dot3(perp, f->yb), dot3(perp, f->xb)) * 180.0 / AERO_PI;
         /* g = dF/dt: the force scales with C_L', its rate with St */
-        g->amp = pow(ratio, s->base.exponent) * pitch * re_level(s, v, d) *
+        g->amp = pow(ratio, s->base.exponent) * pitch * level *
                  f->seg_len * f->gain;
     } else { /* no flow: silent, keep the direction */
         perp[0] = f->xb[0];
@@ -664,6 +687,8 @@ static void render_source(aero_stick_texture *s, aero_stick_source *src,
     {
         double pos = src->pos, inc = then.inc;
         const double dinc = (g->inc - then.inc) * inv_m;
+        double wander = src->wander;
+        int left = src->wander_left;
         const int c0 = 3 * p.k0, c1 = 3 * p.k1;
         for (int j = 0; j < m; j++) {
             long i0 = (long)pos;
@@ -675,12 +700,12 @@ static void render_source(aero_stick_texture *s, aero_stick_source *src,
             tex[2][j] = r0[c1] + fr * (r1[c1] - r0[c1]);
             tex[3][j] = r0[c1 + 1] + fr * (r1[c1 + 1] - r0[c1 + 1]);
             inc += dinc;
-            if (src->wander_left <= 0) {
-                src->wander = phase_wander(s, src, inc);
-                src->wander_left = AERO_STICK_CHUNK;
+            if (left <= 0) {
+                wander = phase_wander(s, src, inc);
+                left = AERO_STICK_CHUNK;
             }
-            src->wander_left--;
-            pos += inc + src->wander > 0.0 ? inc + src->wander : 0.0;
+            left--;
+            pos += inc + wander > 0.0 ? inc + wander : 0.0;
             /* more than a whole texture per sample (a tiny stick in a fast
              * flow, a short texture) must still wrap into it: reading past
              * the end would overflow the texture */
@@ -693,6 +718,8 @@ static void render_source(aero_stick_texture *s, aero_stick_source *src,
         if (!(pos >= 0.0 && pos < frames))
             pos = 0.0;
         src->pos = pos;
+        src->wander = wander;
+        src->wander_left = left;
     }
 
     for (int e = 0; e < s->base.n_ears; e++) {
@@ -751,7 +778,7 @@ int aero_stick_texture_process(aero_stick_texture *s, const float *speed,
             for (int i = 0; i < s->n_sources; i++) {
                 source_geometry g;
                 double u = (i + 0.5) / s->n_sources;
-                s->base.clamped |= source_at(s, &f, u, &g);
+                s->base.clamped |= source_at(s, &f, u, &s->src[i], &g);
                 render_source(s, &s->src[i], &g, m);
             }
         }

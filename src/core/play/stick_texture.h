@@ -52,6 +52,7 @@ typedef struct {
     uint32_t rng;        /* its phase wander's generator */
     double wander;       /* phase rate now, frames per sample */
     int wander_left;     /* samples until the next draw */
+    double law_speed, law_diameter, law_pitch, law_level; /* Re law cache */
     int primed;
 } aero_stick_source;
 

@@ -368,17 +368,17 @@ static double scale_ratio(const signal_t *a, const signal_t *b,
         double df = a->sr / na;
         int n = (int)(64.0 * log2(o->fmax / o->fmin)) + 1;
         double *lb = malloc(sizeof(double) * n), *la = malloc(sizeof(double) * n);
+        double *f = malloc(sizeof(double) * n);
         double mb = 0;
         for (int j = 0; j < n; j++) {
-            double f = o->fmin * pow(2.0, j / 64.0);
-            lb[j] = log_power_at(pb, nb, df, f);
+            f[j] = o->fmin * pow(2.0, j / 64.0);
+            lb[j] = log_power_at(pb, nb, df, f[j]);
             mb += lb[j] / n;
         }
         for (double sc = 0.7; sc <= 1.4; sc *= 1.0005) {
             double ma = 0, err = 0;
             for (int j = 0; j < n; j++) {
-                la[j] = log_power_at(pa, na, df,
-                                     o->fmin * pow(2.0, j / 64.0) / sc);
+                la[j] = log_power_at(pa, na, df, f[j] / sc);
                 ma += la[j] / n;
             }
             for (int j = 0; j < n; j++) {
@@ -388,6 +388,7 @@ static double scale_ratio(const signal_t *a, const signal_t *b,
             if (err < best_err)
                 best_err = err, best = sc;
         }
+        free(f);
         free(lb);
         free(la);
     }

@@ -35,8 +35,9 @@ judge $ANALYZE peak "$OUT/bd-u10.wav" \
 #    recording) and turns anticlockwise: fastest towards the listener (-y)
 #    at phase 1/2 of a turn, away at phase 0; windows of 1/8 turn centred
 #    there in the second turn, heard 40 m / c0 later
-whirl_window() { # PHASE (turns): the window's start in the recording, s
-    awk -v p="$1" 'BEGIN { T = 1 / 0.6; print (p + 1 - 1/16) * T - 0.2 + 40 / 343 }'
+whirl_window() { # PHASE [TURN_S]: start of the 1/8-turn window centred on
+    # that phase of the second turn, in the recording, s (turn 1/0.6 s)
+    awk -v p="$1" -v T="${2:-1.6666667}" 'BEGIN { print (p + 1 - 1/16) * T - 0.2 + 40 / 343 }'
 }
 whirl_peak() { # FILE PHASE: the peak frequency in that window, Hz
     $ANALYZE peak "$1" --skip "$(whirl_window "$2")" --dur 0.2083 \
@@ -100,14 +101,11 @@ judge $ANALYZE peakratio "$OUT/bd-ball-wind.wav" "$OUT/bd-ball-above.wav" \
     --expect 1 --tol 0.05 --skip 1 --fmin 10 --fmax 400 --nfft 32768 --smooth 11
 judge $ANALYZE peak "$OUT/bd-ball-above.wav" --expect "$f_ball" --tol 0.25 \
     --skip 1 --fmin 10 --fmax 400 --nfft 32768 --smooth 11
-ball_window() { # PHASE (turns): start of the window in turn 2, s
-    awk -v p="$1" 'BEGIN { T = 0.4; print (1 + p) * T - 0.2 + 40 / 343 - T / 16 }'
-}
 ball_doppler=$(awk -v v="$v_ball" 'BEGIN { k = sin(3.14159265 / 8) / (3.14159265 / 8)
     printf "%.5f", (343 + v * k) / (343 - v * k) }')
 ball_scale() { # FILE: spectrum coming at the listener over going away
-    $ANALYZE scaleratio "$1" "$1" --skip "$(ball_window 1)" \
-        --skip2 "$(ball_window 0.5)" --dur 0.05 --every 0.4 --count 20 \
+    $ANALYZE scaleratio "$1" "$1" --skip "$(whirl_window 1 0.4)" \
+        --skip2 "$(whirl_window 0.5 0.4)" --dur 0.05 --every 0.4 --count 20 \
         --nfft 2048 --fmin 100 --fmax 3000 --expect "$ball_doppler" --tol 0.02
 }
 judge ball_scale "$OUT/bd-ball-plane.wav"

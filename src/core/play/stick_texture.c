@@ -18,8 +18,8 @@
    source reads the same periodic texture at the same rate, so their phases
    stay frozen and each line of the sum gets a random gain of its own. So
    each source's phase wanders, a random walk whose Lorentzian line is
-   this wide relative to f (full width at half maximum): wide enough to lose the sources' mutual
-   phase in a fraction of a second (0.16 s at 200 Hz), narrower than the
+   this wide relative to f (full width at half maximum): wide enough to
+   lose the sources' mutual phase in a fraction of a second (0.16 s at 200 Hz), narrower than the
    turbulent wake's few percent (model mode), so the texture's own
    spectrum still shapes the line. */
 #define PHASE_WANDER_WIDTH 0.01
@@ -94,8 +94,6 @@ static double stick_length(const double *pose)
     return sqrt(dot3(d, d));
 }
 
-/* n from the pose's length and the correlation length 3 d (Dobashi et
-   al. 2003) */
 /* a generator for one source's phase wander: the next state of the
    player's generator would only replay its own stream one step later (the
    sources' wanders equal and their phases frozen), so it is scrambled to
@@ -111,16 +109,26 @@ static uint32_t source_generator(aero_stick_texture *s)
     return h ? h : 1;
 }
 
-/* a source from a random offset of the texture, with a generator of its
-   own for its phase wander */
-static void start_source(aero_stick_texture *s, aero_stick_source *src)
+/* a random offset of the texture and a generator of its own for the
+   phase wander, which starts again */
+static void seed_source(aero_stick_texture *s, aero_stick_source *src)
 {
-    memset(src, 0, sizeof(*src));
     src->pos = 0.5 * (aero_uniform(&s->base.rng) + 1.0) *
                (s->texture ? s->texture->frames : 1);
     src->rng = source_generator(s);
+    src->wander = 0.0;
+    src->wander_left = 0;
 }
 
+/* a new source: nothing carried over */
+static void start_source(aero_stick_texture *s, aero_stick_source *src)
+{
+    memset(src, 0, sizeof(*src));
+    seed_source(s, src);
+}
+
+/* n from the pose's length and the correlation length 3 d (Dobashi et
+   al. 2003) */
 static void update_source_count(aero_stick_texture *s)
 {
     int n = s->sources_wanted;
@@ -285,14 +293,8 @@ void aero_stick_texture_set_seed(aero_stick_texture *s, uint32_t seed)
 {
     s->base.rng = seed ? seed : 1;
     for (int i = 0; i < AERO_STICK_MAX_SOURCES; i++)
-        if (s->texture) { /* a new offset and generator, the rest kept */
-            aero_stick_source *src = &s->src[i];
-            src->pos = 0.5 * (aero_uniform(&s->base.rng) + 1.0) *
-                       s->texture->frames;
-            src->rng = source_generator(s);
-            src->wander = 0.0;
-            src->wander_left = 0;
-        }
+        if (s->texture) /* a new offset and generator, the rest kept */
+            seed_source(s, &s->src[i]);
 }
 
 int aero_stick_texture_set_phase_wander(aero_stick_texture *s, double width)

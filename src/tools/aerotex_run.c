@@ -18,6 +18,8 @@ typedef struct {
     const char *shape_name, *poly_file;
     double d, aspect, v0, re, nu, grid, settle, cfl;
     double length, depth;
+    double theta;         /* cavity: the inflow boundary layer's momentum
+                             thickness, m (0: none) */
     double thin;          /* the section's thinnest frontal width, m */
     int directions, symmetry, mirror; /* symmetry, mirror: -1 by shape */
     int span3d;           /* 1: the circle-calibrated 2D-to-3D correction */
@@ -111,6 +113,13 @@ static const aerotex_option cavity_options[] = {
      "the cavity's length along the flow", "", NULL},
     {"--depth", AEROTEX_NUMBER, "m", 0.0, 1e-5, 10.0, AT(depth),
      "its depth", "", NULL},
+    /* the shear layer over the cavity starts as the boundary layer the
+       wall brings: its thickness selects the mode (Gharib & Roshko 1987;
+       Rowley et al. 2002), textures/README.md */
+    {"--theta", AEROTEX_NUMBER, "m", 0.0, 0.0, 1.0, AT(theta),
+     "momentum thickness of the laminar boundary layer\nthe wall brings "
+     "to the inflow edge, 0.3 length\nupstream of the cavity (at most 0.1 "
+     "length)", "0: none, it grows from the inflow edge", NULL},
     /* a cavity's shear layer starts as the wall's boundary layer, a cell
        or two thick: below ~48 cells per length the grid damps it and the
        flow stays steady (no Rossiter tone); its oscillation takes ~50-80
@@ -146,6 +155,12 @@ static int make_shape(aeolian_job *j, aero_shape2d *shape, char *desc,
         if (j->depth > 4.0 * j->length || j->length > 20.0 * j->depth) {
             aerotex_error("cavity %g m x %g m: keep 1/20 <= depth/length <= 4",
                           j->length, j->depth);
+            return 2;
+        }
+        if (j->theta > AERO_FLOW2D_THETA_MAX * j->length) {
+            aerotex_error("cavity: --theta %g m is thicker than %g of the "
+                          "length (%g m)", j->theta, AERO_FLOW2D_THETA_MAX,
+                          AERO_FLOW2D_THETA_MAX * j->length);
             return 2;
         }
         j->d = j->length;
@@ -195,6 +210,7 @@ static aero_aeolian_flow_params flow_params(const aeolian_job *j,
     p.cavity = j->cavity;
     p.size = j->d;
     p.depth = j->depth;
+    p.theta = j->cavity ? j->theta : 0.0;
     p.speed = j->v0;
     p.re = j->re;
     p.grid = j->grid;
@@ -397,6 +413,7 @@ static void describe(const aeolian_job *j, const direction *r,
     if (j->cavity) {
         aero_texture_setd(tex, "length", j->length);
         aero_texture_setd(tex, "depth", j->depth);
+        aero_texture_setd(tex, "theta", j->theta);
     } else {
         aero_texture_setd(tex, "diameter", j->d);
     }
@@ -467,6 +484,10 @@ static void report(const aeolian_job *j, const direction *r, const char *desc,
                c->st_2d, c->cl_rms_2d, c->st_ref, c->cl_rms_ref,
                c->frequency_scale, c->force_scale);
     printf("  %.1f cells across the smallest dimension\n", cells(j));
+    if (j->cavity && j->theta > 0.0)
+        printf("  inflow boundary layer: momentum thickness %g m (L/theta "
+               "%.1f), %.1f cells thick\n", j->theta, j->length / j->theta,
+               j->theta * 315.0 / 37.0 * j->grid / j->length);
     for (int k = 0; k < j->directions; k++)
         printf("  %6.2f deg: St %.4f (f = %.1f Hz; 2D %.4f, zero crossings "
                "%.4f)  Cd(2D) %.3f  Cl rms %.3f (2D %.3f)\n", r[k].alpha,

@@ -67,6 +67,10 @@ int main(void)
     bad("aeolian --span3d sphere -o x.wav", "--span3d takes");
     bad("cavity --length 0.02 -o x.wav", "--depth");
     bad("cavity --length 0.02 --depth 1 -o x.wav", "depth/length");
+    bad("cavity --length 0.02 --depth 0.01 --theta 0.003 -o x.wav",
+        "thicker than 0.1 of the length");
+    bad("cavity --length 0.02 --depth 0.01 --theta -1 -o x.wav",
+        "out of range");
     bad("info /nonexistent.wav", "can't open");
     /* every command's options come from its table: the usage lists them,
        an error names the command and the option */

@@ -15,7 +15,13 @@
  * start-up (80 L/U) is discarded and 60 L/U (~60 periods) are analysed:
  * the floor's pressure force must oscillate (it was ~1e-4 when the flow
  * settled into a steady recirculation) with a spectral peak within 15 % of
- * a Rossiter mode. ~10 s on one core. */
+ * a Rossiter mode. ~10 s on one core.
+ *
+ * First, without running the flow: the laminar boundary layer a cavity's
+ * wall can bring to the inflow (aero_flow2d_params.inlet_theta) is
+ * Pohlhausen's profile with the momentum thickness asked for (integral of
+ * u (1 - u) dy over the inflow column; Schlichting & Gersten 2000), and
+ * an out-of-range thickness is refused. */
 #include "unit.h"
 #include "aero_air.h"
 #include "aeolian_flow.h"
@@ -24,6 +30,7 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define SETTLE 80.0
 #define RECORD 60.0
@@ -47,6 +54,69 @@ static double power_at(const double *x, int n, double st)
     return c * c + s * s;
 }
 
+/* the inflow column of a cavity L = 1, D = 0.5 at `grid` cells per L with
+   an inflow boundary layer of momentum thickness theta: its measured
+   momentum thickness, or -1 if the set-up failed (err says why) */
+static double inflow_theta(double grid, double theta, float *umin,
+                           float *umax, char *err, size_t errlen)
+{
+    aero_aeolian_flow_params flow = {0};
+    aero_flow2d_params p;
+    aero_flow2d s;
+    aero_shape2d sh;
+    double th = 0.0;
+    aero_shape2d_cavity(&sh, 1.0, 0.5);
+    flow.shape = &sh;
+    flow.cavity = 1;
+    flow.size = 1.0;
+    flow.depth = 0.5;
+    flow.re = 13536.0;
+    flow.grid = grid;
+    flow.cfl = 0.5;
+    flow.theta = theta;
+    if (aero_aeolian_flow_domain(&flow, &p, err, errlen) ||
+        aero_flow2d_init(&s, &p, err, errlen))
+        return -1.0;
+    if (aero_flow2d_set_body(&s, &sh, 0.0, err, errlen)) {
+        aero_flow2d_free(&s);
+        return -1.0;
+    }
+    *umin = 1.0f;
+    *umax = 0.0f;
+    for (int j = 0; j < s.ny; j++) {
+        const double y = p.ymin + (j + 0.5) * s.h;
+        if (y <= 0.0)
+            continue; /* the wall */
+        th += s.uin[j] * (1.0 - s.uin[j]) * s.h;
+        if (s.uin[j] < *umin) *umin = s.uin[j];
+        if (s.uin[j] > *umax) *umax = s.uin[j];
+    }
+    aero_flow2d_free(&s);
+    return th;
+}
+
+static void check_inflow_layer(void)
+{
+    char err[256] = "";
+    float umin, umax;
+    const double want[] = {0.01, 1.0 / 60.0, 0.05};
+    for (int k = 0; k < 3; k++) {
+        double th = inflow_theta(96.0, want[k], &umin, &umax, err, sizeof err);
+        UNIT_NEAR_REL(th, want[k], 0.03, "inflow boundary layer's momentum "
+                      "thickness at 96 cells per L (L = 1)");
+    }
+    inflow_theta(96.0, 0.0, &umin, &umax, err, sizeof err);
+    UNIT_CHECK(umin == 1.0f && umax == 1.0f, "no inflow layer: u/U over the "
+               "wall %.3f..%.3f (uniform)", umin, umax);
+    UNIT_CHECK(inflow_theta(96.0, 0.2, &umin, &umax, err, sizeof err) < 0.0 &&
+                   strstr(err, "out of range"),
+               "theta 0.2 L refused: %s", err);
+    err[0] = '\0';
+    UNIT_CHECK(inflow_theta(96.0, NAN, &umin, &umax, err, sizeof err) < 0.0 &&
+                   strstr(err, "out of range"),
+               "theta NaN refused: %s", err);
+}
+
 int main(void)
 {
     const double len = 0.02, depth = 0.01, u0 = 10.0;
@@ -63,6 +133,7 @@ int main(void)
     int diverged = 0;
 
     printf("test_cavity_flow: cavity L/D = 2, Re_L %.0f, M %.3f\n", re, mach);
+    check_inflow_layer();
     aero_shape2d_cavity(&sh, 1.0, depth / len);
     /* the domain `aerotex cavity` uses (aeolian_flow.h), the solver's
        default step factor */

@@ -34,6 +34,7 @@ int aero_aeolian_flow_domain(const aero_aeolian_flow_params *p,
         fp->ymax = 1.5;
         fp->spin = 0.15;
         fp->spin_time = 2.0;
+        fp->inlet_theta = p->theta / p->size;
         return 0;
     }
     ext = 2.0 * aero_shape2d_radius(p->shape) / p->size;

@@ -21,6 +21,9 @@ typedef struct {
     int cavity;          /* the shape is a cavity in a wall */
     double size;         /* reference size d, m (a cavity: its length) */
     double depth;        /* a cavity's depth, m */
+    double theta;        /* a cavity: momentum thickness of the wall's
+                            laminar boundary layer at the inflow, m (0:
+                            none, it grows from the inflow edge) */
     double speed;        /* v0, m/s */
     double re;           /* Reynolds number v0 d / nu */
     double grid;         /* cells per d */

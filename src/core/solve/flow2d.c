@@ -26,6 +26,7 @@ void aero_flow2d_defaults(aero_flow2d_params *p, double re)
     p->cfl = 0.6;
     p->spin = 0.25;
     p->spin_time = 3.0;
+    p->inlet_theta = 0.0;
 }
 
 static float *zalloc(size_t n)
@@ -66,6 +67,12 @@ static int check_params(const aero_flow2d_params *p, char *err,
     }
     if (!(p->cfl > 0.0 && p->cfl <= 1.0)) {
         snprintf(err, errlen, "CFL number %g out of range (0, 1]", p->cfl);
+        return -1;
+    }
+    if (!(p->inlet_theta >= 0.0 && p->inlet_theta <= AERO_FLOW2D_THETA_MAX)) {
+        snprintf(err, errlen, "inflow boundary layer's momentum thickness "
+                 "%g out of range 0..%g (in units of d)", p->inlet_theta,
+                 AERO_FLOW2D_THETA_MAX);
         return -1;
     }
     return 0;
@@ -325,18 +332,37 @@ static int scan_forced_nodes(aero_flow2d *s, const aero_shape2d *shape,
     return n;
 }
 
-/* cell-centre solid fraction (pictures) and inflow profile */
+/* u / U of a laminar boundary layer at height y over its wall, momentum
+   thickness theta: Pohlhausen's quartic profile 2 e - 2 e^3 + e^4, e =
+   y / delta, whose momentum thickness is 37/315 of its thickness delta
+   (Schlichting & Gersten 2000) */
+static double laminar_layer(double y, double theta)
+{
+    const double delta = theta * 315.0 / 37.0, e = y / delta;
+    if (!(theta > 0.0) || e >= 1.0)
+        return 1.0;
+    if (e <= 0.0)
+        return 0.0;
+    return e * (2.0 - e * e * (2.0 - e));
+}
+
+/* cell-centre solid fraction (pictures) and inflow profile: uniform, but
+   over a cavity's wall (y < 0 solid) the boundary layer it arrives with,
+   which sets the shear layer over the cavity (Gharib & Roshko 1987;
+   Rowley et al. 2002) */
 static void rasterise_cells(aero_flow2d *s, const aero_shape2d *shape,
                             double alpha)
 {
     const double h = s->h, d = shape->size;
+    const int wall = shape->kind == AERO_SHAPE_CAVITY;
     for (int j = 0; j < s->ny; j++) {
+        const double y = s->p.ymin + (j + 0.5) * h;
         for (int i = 0; i < s->nx; i++)
             s->solid[j * s->nx + i] = solid_fraction(
-                shape, d, alpha, s->p.xmin + (i + 0.5) * h,
-                s->p.ymin + (j + 0.5) * h, h);
-        s->uin[j] = 1.0f - solid_fraction(shape, d, alpha, s->p.xmin,
-                                          s->p.ymin + (j + 0.5) * h, h);
+                shape, d, alpha, s->p.xmin + (i + 0.5) * h, y, h);
+        s->uin[j] = 1.0f - solid_fraction(shape, d, alpha, s->p.xmin, y, h);
+        if (wall && s->p.inlet_theta > 0.0)
+            s->uin[j] *= (float)laminar_layer(y, s->p.inlet_theta);
     }
 }
 

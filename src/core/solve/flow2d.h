@@ -26,7 +26,16 @@ typedef struct {
     double cfl;      /* time step = cfl * dx / max(|u| + |v|, 2 U) */
     double spin;     /* seeding: body surface speed / U of a brief spin */
     double spin_time;/* duration of that spin, in d/U */
+    double inlet_theta; /* a cavity's wall: momentum thickness of its
+                           laminar boundary layer at the inflow, in d
+                           (0: uniform inflow, the layer grows from the
+                           inflow edge) */
 } aero_flow2d_params;
+
+/* the thickest inflow boundary layer, in d: its full thickness (315/37
+   theta) stays inside a cavity's domain, which reaches 1.5 d above the
+   wall (aeolian_flow.c) */
+#define AERO_FLOW2D_THETA_MAX 0.1
 
 typedef struct {
     aero_flow2d_params p;

@@ -500,7 +500,13 @@ static void report(const aeolian_job *j, const direction *r, const char *desc,
     else if (s0->st == 0.0 && !j->cavity)
         printf("  the lift is too short or too irregular for a Strouhal "
                "number (st=0 in the metadata)\n");
-    if (s0->st == 0.0 && j->cavity)
+    if (s0->st == 0.0 && j->cavity && j->theta > 0.0)
+        printf("  no self-sustained oscillation of the cavity flow: the "
+               "texture holds only its weak broadband wall-pressure force "
+               "(the shear layer from an inflow layer at L/theta %.0f does "
+               "not oscillate at --grid %g: a thinner --theta, or a finer "
+               "grid near L/theta 60)\n", j->length / j->theta, j->grid);
+    else if (s0->st == 0.0 && j->cavity)
         printf("  no self-sustained oscillation of the cavity flow: the "
                "texture holds only its weak broadband wall-pressure force (a "
                "--grid under 48 damps the shear layer)\n");

@@ -103,6 +103,23 @@ int main(void)
                    "2D-to-3D method (none at Re 80: a 2D wake), command");
         remove("build/tests/aerotex_tiny.wav");
     }
+    {
+        /* a cavity with an inflow boundary layer: its thickness in the
+           metadata and the report; too short a run to oscillate, and the
+           report says what to change (the layer, not only the grid) */
+        int r = run("cavity --length 0.02 --depth 0.01 --theta 0.001 "
+                    "--grid 48 --duration 0.01 --settle 2 -q "
+                    "-o build/tests/aerotex_cavity.wav");
+        UNIT_CHECK(r == 0 && said("L/theta 20.0") &&
+                       said("no self-sustained oscillation") &&
+                       said("inflow layer at L/theta 20"),
+                   "cavity --theta: the layer reported, and the silent "
+                   "flow explained by it (exit %d)", r);
+        r = run("info build/tests/aerotex_cavity.wav");
+        UNIT_CHECK(r == 0 && said("kind=cavity") && said("theta=0.001"),
+                   "info prints the cavity's theta");
+        remove("build/tests/aerotex_cavity.wav");
+    }
     remove(OUT);
     return unit_summary();
 }

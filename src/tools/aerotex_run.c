@@ -487,7 +487,7 @@ static void report(const aeolian_job *j, const direction *r, const char *desc,
     if (j->cavity && j->theta > 0.0)
         printf("  inflow boundary layer: momentum thickness %g m (L/theta "
                "%.1f), %.1f cells thick\n", j->theta, j->length / j->theta,
-               j->theta * 315.0 / 37.0 * j->grid / j->length);
+               j->theta * AERO_FLOW2D_DELTA_PER_THETA * j->grid / j->length);
     for (int k = 0; k < j->directions; k++)
         printf("  %6.2f deg: St %.4f (f = %.1f Hz; 2D %.4f, zero crossings "
                "%.4f)  Cd(2D) %.3f  Cl rms %.3f (2D %.3f)\n", r[k].alpha,
@@ -500,16 +500,17 @@ static void report(const aeolian_job *j, const direction *r, const char *desc,
     else if (s0->st == 0.0 && !j->cavity)
         printf("  the lift is too short or too irregular for a Strouhal "
                "number (st=0 in the metadata)\n");
-    if (s0->st == 0.0 && j->cavity && j->theta > 0.0)
+    if (s0->st == 0.0 && j->cavity) {
         printf("  no self-sustained oscillation of the cavity flow: the "
-               "texture holds only its weak broadband wall-pressure force "
-               "(the shear layer from an inflow layer at L/theta %.0f does "
-               "not oscillate at --grid %g: a thinner --theta, or a finer "
-               "grid near L/theta 60)\n", j->length / j->theta, j->grid);
-    else if (s0->st == 0.0 && j->cavity)
-        printf("  no self-sustained oscillation of the cavity flow: the "
-               "texture holds only its weak broadband wall-pressure force (a "
-               "--grid under 48 damps the shear layer)\n");
+               "texture holds only its weak broadband wall-pressure force ");
+        if (j->theta > 0.0)
+            printf("(the shear layer from an inflow layer at L/theta %.0f "
+                   "does not oscillate at --grid %g: a thinner --theta, or a "
+                   "finer grid near L/theta 60)\n", j->length / j->theta,
+                   j->grid);
+        else
+            printf("(a --grid under 48 damps the shear layer)\n");
+    }
     printf("  %.1f s\n", aerotex_now() - j->job.t_start);
 }
 

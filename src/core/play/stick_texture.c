@@ -19,9 +19,9 @@
    stay frozen and each line of the sum gets a random gain of its own. So
    each source's phase wanders, a random walk whose Lorentzian line is
    this wide relative to f (full width at half maximum): wide enough to
-   lose the sources' mutual phase in a fraction of a second (0.16 s at 200 Hz), narrower than the
-   turbulent wake's few percent (model mode), so the texture's own
-   spectrum still shapes the line. */
+   lose the sources' mutual phase in a fraction of a second (0.16 s at
+   200 Hz), narrower than the turbulent wake's few percent (model mode),
+   so the texture's own spectrum still shapes the line. */
 #define PHASE_WANDER_WIDTH 0.01
 
 /* --- helpers ------------------------------------------------------------- */

@@ -334,11 +334,10 @@ static int scan_forced_nodes(aero_flow2d *s, const aero_shape2d *shape,
 
 /* u / U of a laminar boundary layer at height y over its wall, momentum
    thickness theta: Pohlhausen's quartic profile 2 e - 2 e^3 + e^4, e =
-   y / delta, whose momentum thickness is 37/315 of its thickness delta
-   (Schlichting & Gersten 2000) */
+   y / delta, delta its full thickness (Schlichting & Gersten 2000) */
 static double laminar_layer(double y, double theta)
 {
-    const double delta = theta * 315.0 / 37.0, e = y / delta;
+    const double delta = theta * AERO_FLOW2D_DELTA_PER_THETA, e = y / delta;
     if (!(theta > 0.0) || e >= 1.0)
         return 1.0;
     if (e <= 0.0)

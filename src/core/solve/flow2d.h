@@ -32,9 +32,13 @@ typedef struct {
                            inflow edge) */
 } aero_flow2d_params;
 
-/* the thickest inflow boundary layer, in d: its full thickness (315/37
-   theta) stays inside a cavity's domain, which reaches 1.5 d above the
-   wall (aeolian_flow.c) */
+/* the full thickness of the laminar inflow layer over its momentum
+   thickness: Pohlhausen's quartic profile (Schlichting & Gersten 2000) */
+#define AERO_FLOW2D_DELTA_PER_THETA (315.0 / 37.0)
+
+/* the thickest inflow boundary layer, in d: its full thickness stays
+   inside a cavity's domain, which reaches 1.5 d above the wall
+   (aeolian_flow.c) */
 #define AERO_FLOW2D_THETA_MAX 0.1
 
 typedef struct {

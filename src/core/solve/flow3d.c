@@ -51,7 +51,8 @@ static int check_params(const aero_flow3d_params *p, char *err, size_t errlen)
         !(p->u_ref >= 0.0) || !(p->sponge >= 0.0 && p->sponge < 1.0) ||
         !(p->confinement_length >= 0.0) ||
         (p->advection != AERO_F3_SEMI_LAGRANGIAN &&
-         p->advection != AERO_F3_MACCORMACK)) {
+         p->advection != AERO_F3_MACCORMACK &&
+         p->advection != AERO_F3_MACCORMACK_UNLIMITED)) {
         snprintf(err, errlen, "bad cell size, viscosity or confinement");
         return -1;
     }
@@ -64,7 +65,8 @@ static int float_fields(aero_flow3d *s, float ***field, size_t *len)
 {
     const size_t cells = s->plane * s->nz;
     const size_t uvn = s->plane * (s->nz + 2), wn = s->plane * (s->nz + 1);
-    const size_t mc = s->p.advection == AERO_F3_MACCORMACK ? 3 * uvn : 0;
+    const size_t mc = s->p.advection != AERO_F3_SEMI_LAGRANGIAN ? 3 * uvn : 0;
+    const size_t bounds = s->p.advection == AERO_F3_MACCORMACK ? mc : 0;
     float **f[] = {&s->u,  &s->v,  &s->w,    &s->u1,   &s->v1, &s->w1,
                    &s->cx, &s->cy, &s->cz,   &s->ox,   &s->oy, &s->oz,
                    &s->omag, &s->in_u, &s->in_v, &s->in_w, &s->tri_m,
@@ -72,7 +74,8 @@ static int float_fields(aero_flow3d *s, float ***field, size_t *len)
     const size_t n[] = {uvn,   uvn,   wn,    uvn,   uvn,      wn,
                         cells, cells, cells, cells, cells,    cells,
                         cells, s->plane, s->plane, s->plane,
-                        (size_t)(s->nx / 2 + 1) * s->ny * s->nz, mc, mc, mc};
+                        (size_t)(s->nx / 2 + 1) * s->ny * s->nz, mc, bounds,
+                        bounds};
     const int count = (int)(sizeof f / sizeof f[0]);
     for (int q = 0; q < count; q++) {
         field[q] = f[q];
@@ -387,21 +390,22 @@ static void swap_advected(aero_flow3d *s)
 static void advect(aero_flow3d *s, double dt)
 {
     advect_io io = {s->u, s->v, s->w, s->u1, s->v1, s->w1, NULL, NULL};
-    if (s->p.advection != AERO_F3_MACCORMACK) {
+    if (s->p.advection == AERO_F3_SEMI_LAGRANGIAN) {
         advect_pass(s, &io, dt);
         swap_advected(s); /* boundary layers are set again later */
         return;
     }
     /* MacCormack (Selle et al. 2008, J. Sci. Comput. 35): a forward pass,
        a backward pass of its result, half the round trip's error added
-       back, clamped to the values the forward pass interpolated between
-       (no new extrema; second order in smooth flow) */
+       back; limited, clamped to the values the forward pass interpolated
+       between (no new extrema; second order in smooth flow) */
     {
         const size_t uvn = s->plane * (size_t)(s->nz + 2);
         const size_t wn = s->plane * (size_t)(s->nz + 1);
         float *bu = s->mc, *bv = s->mc + uvn, *bw = s->mc + 2 * uvn;
+        const int limited = s->p.advection == AERO_F3_MACCORMACK;
         advect_io back;
-        io.lo = s->mc_lo;
+        io.lo = s->mc_lo; /* NULL when unlimited: no bounds to keep */
         io.hi = s->mc_hi;
         advect_pass(s, &io, dt);
         set_ghosts(s, s->u1, s->v1, s->w1);
@@ -418,12 +422,19 @@ static void advect(aero_flow3d *s, double dt)
             float *dst = f == 0 ? s->u1 : f == 1 ? s->v1 : s->w1;
             const float *old = f == 0 ? s->u : f == 1 ? s->v : s->w;
             const float *rt = f == 0 ? bu : f == 1 ? bv : bw;
-            const float *lo = s->mc_lo + f * uvn, *hi = s->mc_hi + f * uvn;
             /* layers 0..nz-1 of u, v and 1..nz of w: the same range */
-            F3_SLABS
-            for (size_t a = s->plane; a < wn; a++) {
-                float x = dst[a] + 0.5f * (old[a] - rt[a]);
-                dst[a] = x < lo[a] ? lo[a] : x > hi[a] ? hi[a] : x;
+            if (limited) {
+                const float *lo = s->mc_lo + f * uvn,
+                            *hi = s->mc_hi + f * uvn;
+                F3_SLABS
+                for (size_t a = s->plane; a < wn; a++) {
+                    float x = dst[a] + 0.5f * (old[a] - rt[a]);
+                    dst[a] = x < lo[a] ? lo[a] : x > hi[a] ? hi[a] : x;
+                }
+            } else {
+                F3_SLABS
+                for (size_t a = s->plane; a < wn; a++)
+                    dst[a] += 0.5f * (old[a] - rt[a]);
             }
         }
         swap_advected(s);

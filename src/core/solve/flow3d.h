@@ -9,7 +9,10 @@
  *   1. semi-Lagrangian advection of the face velocities (stable at any
  *      step; its numerical diffusion is what step 2 compensates), or
  *      (`advection` AERO_F3_MACCORMACK) its limited MacCormack form
- *      (Selle et al. 2008), second order, for wakes that must shed,
+ *      (Selle et al. 2008), second order, for wakes that must shed, or
+ *      (AERO_F3_MACCORMACK_UNLIMITED) the same without the limiter's
+ *      clamp, which cuts every new extremum of the velocity and so damps
+ *      the vortices of a coarse wake as a first-order scheme would,
  *   2. vorticity confinement, a = eps (h / L) U_ref (N x omega),
  *      N = grad|omega| / |grad|omega|| (FSJ01 eq. 11-12: eps h, with a
  *      velocity scale U_ref and a length L, `confinement_length`, so that
@@ -50,7 +53,11 @@
 
 #include <stddef.h>
 
-enum { AERO_F3_SEMI_LAGRANGIAN = 0, AERO_F3_MACCORMACK = 1 };
+enum {
+    AERO_F3_SEMI_LAGRANGIAN = 0,
+    AERO_F3_MACCORMACK = 1,
+    AERO_F3_MACCORMACK_UNLIMITED = 2
+};
 
 typedef struct {
     int nx, ny, nz;       /* cells (nx, ny even, >= 4; nz >= 3) */
@@ -61,8 +68,9 @@ typedef struct {
     double sponge;        /* fraction of the height under the open top
                              where the velocity is relaxed towards
                              (0, 0, u_ref) (0: none) */
-    int advection;        /* AERO_F3_SEMI_LAGRANGIAN (0) or
-                             AERO_F3_MACCORMACK */
+    int advection;        /* AERO_F3_SEMI_LAGRANGIAN (0),
+                             AERO_F3_MACCORMACK or
+                             AERO_F3_MACCORMACK_UNLIMITED */
     double confinement_length; /* L > 0: a = eps (h / L) U_ref (N x omega),
                              FSJ01's eps h made an acceleration by U_ref / L:
                              grid-scale eddies (omega ~ U / h) get the same

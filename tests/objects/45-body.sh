@@ -175,7 +175,8 @@ for bad in "--mesh $OUT/open.obj:not closed" "--mesh /nonexistent.obj:can't open
     "--shape cube:takes sphere, capsule or club" \
     "--shape sphere --radius -1:out of range" \
     "--shape sphere --directions 3:--directions 1" \
-    "--shape club --handle 0.05 --tip 0.03:handle <= tip"; do
+    "--shape club --handle 0.05 --tip 0.03:handle <= tip" \
+    "--shape sphere --limiter maybe:takes off or on"; do
     args=${bad%%:*} want=${bad#*:}
     # shellcheck disable=SC2086
     msg=$(build/aerotex object $args -q -o "$OUT/bad-object.wav" 2>&1)
@@ -191,7 +192,8 @@ if build/aerotex object --shape sphere --radius 0.05 --grid 6 --duration 0.05 \
     --settle 5 --png "$OUT/object-png" -q -o "$OUT/tiny-sphere.wav" \
     >"$OUT/tiny-sphere.txt" 2>&1 &&
     [ "$(ls "$OUT/object-png" | wc -l)" -ge 3 ] &&
-    build/aerotex info "$OUT/tiny-sphere.wav" | grep -q "^kind=object"; then
+    build/aerotex info "$OUT/tiny-sphere.wav" | grep -q "^kind=object" &&
+    build/aerotex info "$OUT/tiny-sphere.wav" | grep -q "^solver=.*limited MacCormack"; then
     pass "aerotex object: a tiny sphere texture and $(ls "$OUT/object-png" | wc -l) vorticity slices"
 else
     fail "aerotex object: the tiny sphere"; cat "$OUT/tiny-sphere.txt"

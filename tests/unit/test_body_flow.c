@@ -1,6 +1,8 @@
 /* Unit tests of src/core/common/body_shape and src/core/solve/body_flow:
  * closed 3D bodies (analytic shapes and meshes, with the errors a bad mesh
- * must give), and the 3D flow past a sphere against published values. */
+ * must give), and the 3D flow past a sphere: its volume and frontal area,
+ * a divergence-free flow, a wake that sheds (its published drag and
+ * Strouhal number are not reached: see sphere_flow). */
 #include <stdlib.h>
 #include <string.h>
 
@@ -130,15 +132,15 @@ static void sphere_flow(void)
     aero_body_flow_stats st;
     char err[256];
     const double rate = 4000.0;
-    const int nout = 1600; /* 0.4 s: 4.8 periods of the measured 11.9 Hz */
+    const int nout = 1600; /* 0.4 s: 5.2 periods of the measured 13 Hz */
     float *out = calloc(3 * (size_t)nout, sizeof(float));
     double d = 0.1, rms_lat = 0.0, rms_drag = 0.0;
     int ok;
     aero_body_sphere(&b, 0.05, err, sizeof err);
     aero_body_flow_defaults(&p, &b);
     p.cell = d / 8.0;
-    /* eps h / d = 0.15 at 8 cells per d: the confinement these windows
-       were measured with (body_flow.h's default 1.5 gives St 0.096 here) */
+    /* eps h / d = 0.15 at 8 cells per d, the confinement the first sphere
+       texture had (body_flow.h's default 1.5 sheds more weakly here) */
     p.confinement = 1.2;
     p.settle = 20.0 * d / p.speed;
     ok = aero_body_flow_simulate(&p, rate, out, 3, nout, &st, NULL, 0, NULL,
@@ -155,25 +157,17 @@ static void sphere_flow(void)
                   "frontal area pi r^2");
     UNIT_CHECK(st.max_div < 1e-3 * p.speed, "divergence-free after the "
                "projection: max |div u| h = %g m/s", st.max_div);
-    /* The grid's numerical viscosity, not air's, sets the effective
-       Reynolds number of a coarse 3D solver: the published values to
-       match are those of a sphere shedding just past its onset (Re ~ 270)
-       up to the subcritical regime: drag coefficient 0.66 at Re 300
-       (Johnson & Patel 1999, J. Fluid Mech. 378), ~0.4-0.5 over 1e4..2e5
-       (Achenbach 1972, J. Fluid Mech. 54); Strouhal number 0.137 at Re
-       300 (Johnson & Patel), 0.215 at Re 3700 (Rodriguez et al. 2011, J.
-       Fluid Mech. 679), ~0.2 for 6e3..3e5 (Achenbach 1974, J. Fluid
-       Mech. 62). A steady wake (no shedding, St ~ 0) or a 2D-like one
-       (St ~ 0.25) fails. */
-    UNIT_CHECK(st.cd > 0.4 && st.cd < 0.85, "sphere drag coefficient %.3f "
-               "within the published 0.45 (subcritical) .. 0.66 (Re 300), "
-               "-10%% .. +30%%", st.cd);
-    /* (this coarse grid, 8 cells per d, measures St 0.119; the shipped
-       texture's 10 cells per d 0.116: both ~13 % below 0.137) */
-    UNIT_CHECK(st.st > 0.137 * 0.8 && st.st < 0.215 * 1.1,
-               "sphere Strouhal number %.3f (f %.1f Hz) within the "
-               "published 0.137 (Re 300) .. 0.215 (Re 3700), -20%% .. +10%%",
-               st.st, st.f_peak);
+    /* Not asserted here: the published sphere (drag coefficient 0.4-0.55
+       and Strouhal number 0.17-0.22 in the subcritical range of the
+       texture's Re 6.8e4; Achenbach 1972, J. Fluid Mech. 54, and 1974, J.
+       Fluid Mech. 62). On this coarse grid the numerical viscosity makes
+       the flow a sphere's near its shedding onset (Cd 0.76, St 0.13 here;
+       Johnson & Patel 1999, J. Fluid Mech. 378: Cd 0.66, St 0.137 at Re
+       300), and no grid a texture can afford reaches the subcritical
+       values (textures/README.md), so the windows that were widened
+       around this run's figures are gone. What is checked: it sheds. */
+    printf("  Cd %.3f, St %.3f (f %.1f Hz), Cl rms %.3f\n", st.cd, st.st,
+           st.f_peak, st.cl_rms);
     UNIT_CHECK(st.cl_rms > 0.01, "the wake sheds: rms lateral force "
                "coefficient %.3f", st.cl_rms);
     /* g = dF/dt: at 90 deg the flow arrives along sample x, so x is the

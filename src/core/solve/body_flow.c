@@ -33,6 +33,7 @@ void aero_body_flow_defaults(aero_body_flow_params *p,
     /* eps h / d (FSJ01): 1.5 is the former fixed 0.15 at 10 cells per d,
        the grid the sphere texture was first made on */
     p->confinement = 1.5;
+    p->limiter = 1;
     p->seed = 1;
 }
 
@@ -229,6 +230,7 @@ static int check_params(const aero_body_flow_params *p, double rate,
         !(p->upstream >= 0.0) || !(p->downstream >= 0.0) ||
         !(p->nu >= 0.0) ||
         !(p->confinement >= 0.0 && p->confinement <= 50.0) ||
+        (p->limiter != 0 && p->limiter != 1) ||
         !(p->cfl > 0.0 && p->cfl <= 2.0) ||
         !(p->settle >= 0.0 && p->settle < 1e3) ||
         !(p->noise >= 0.0 && p->noise <= 1.0) ||
@@ -249,36 +251,43 @@ static int check_params(const aero_body_flow_params *p, double rate,
 }
 
 /* the shedding peak of the lateral sound source: the spectrum of dF/dt
-   (power times f^2, what radiates; Hann window, a DFT scan) over 0.05..1
-   v0/d. Below 0.05 a sphere's wake also wanders slowly (Constantinescu
-   and Squires 2004, Phys. Fluids 16, a mode far below the shedding), which
-   dominates the force itself but hardly radiates. Hz */
+   (power times f^2, what radiates) over 0.05..1 v0/d, averaged over three
+   Hann-windowed halves of the record overlapping by half (Welch 1967): a
+   broad band's single periodogram peaks anywhere on it, from run to run
+   and grid to grid. Below 0.05 a sphere's wake also wanders slowly
+   (Constantinescu and Squires 2004, Phys. Fluids 16, a mode far below the
+   shedding), which dominates the force itself but hardly radiates. Hz */
 static double lateral_peak(const double *fx, const double *fy, long n,
                            double dt, double d, double v0)
 {
-    double best = 0.0, fbest = 0.0, T = n * dt;
-    double mx = 0.0, my = 0.0;
-    if (n < 16)
+    const long len = n / 2, hop = len / 2;
+    const double T = len * dt;
+    double best = 0.0, fbest = 0.0;
+    if (len < 16)
         return 0.0;
-    for (long m = 0; m < n; m++) {
-        mx += fx[m];
-        my += fy[m];
-    }
-    mx /= n;
-    my /= n;
     for (double f = 0.05 * v0 / d; f <= 1.0 * v0 / d; f += 0.25 / T) {
-        double ar = 0, ai = 0, br = 0, bi = 0;
-        double w = 2.0 * AERO_PI * f * dt;
-        for (long m = 0; m < n; m++) {
-            double hann = 0.5 - 0.5 * cos(2.0 * AERO_PI * m / (n - 1));
-            double c = cos(w * m), s = sin(w * m);
-            ar += hann * (fx[m] - mx) * c;
-            ai -= hann * (fx[m] - mx) * s;
-            br += hann * (fy[m] - my) * c;
-            bi -= hann * (fy[m] - my) * s;
+        const double w = 2.0 * AERO_PI * f * dt;
+        double power = 0.0;
+        for (long s0 = 0; s0 + len <= n; s0 += hop) {
+            double ar = 0, ai = 0, br = 0, bi = 0, mx = 0.0, my = 0.0;
+            for (long m = 0; m < len; m++) {
+                mx += fx[s0 + m];
+                my += fy[s0 + m];
+            }
+            mx /= len;
+            my /= len;
+            for (long m = 0; m < len; m++) {
+                double hann = 0.5 - 0.5 * cos(2.0 * AERO_PI * m / (len - 1));
+                double c = cos(w * m), s = sin(w * m);
+                ar += hann * (fx[s0 + m] - mx) * c;
+                ai -= hann * (fx[s0 + m] - mx) * s;
+                br += hann * (fy[s0 + m] - my) * c;
+                bi -= hann * (fy[s0 + m] - my) * s;
+            }
+            power += ar * ar + ai * ai + br * br + bi * bi;
         }
-        if ((ar * ar + ai * ai + br * br + bi * bi) * f * f > best) {
-            best = (ar * ar + ai * ai + br * br + bi * bi) * f * f;
+        if (power * f * f > best) {
+            best = power * f * f;
             fbest = f;
         }
     }
@@ -353,7 +362,8 @@ static int open_run(body_run *b, const aero_body_flow_params *p, double rate,
        length: the forcing of grid-scale eddies is the same at any grid,
        and a resolved wake's vanishes as the grid is refined */
     fp.confinement_length = b->d;
-    fp.advection = AERO_F3_MACCORMACK;
+    fp.advection = p->limiter ? AERO_F3_MACCORMACK
+                              : AERO_F3_MACCORMACK_UNLIMITED;
     fp.threads = p->threads;
     fp.sponge = p->downstream > 0.0
                     ? fmin(0.5, p->sponge * p->downstream /

@@ -19,10 +19,14 @@
  * small seeded lateral noise stays on, so the wake is not locked to one
  * plane. Advection is MacCormack's, with a little vorticity confinement
  * away from the body (flow3d.h): on 8-12 cells per d the first-order step
- * alone left a sphere's wake steady (a sphere sheds only above Re ~ 270),
- * MacCormack alone barely shedding; the numerical viscosity still sets
- * the effective Reynolds number (a few hundred: Cd ~ 0.67, St ~ 0.12 for
- * the sphere, as published near Re 300). No globals. */
+ * alone left a sphere's wake steady (a sphere sheds only above Re ~ 270).
+ * Selle et al.'s (2008) limiter (`limiter`, on by default) cuts every new
+ * extremum: it damps a coarse wake's vortices (a sphere sheds faster
+ * without it), but without it the club, whose handle is 3.3 cells
+ * across, lost its broadside tone between its tip's and handle's. The
+ * numerical viscosity still sets the effective Reynolds number: a sphere
+ * on 10-16 cells per d has the drag and Strouhal number published for Re
+ * ~ 300-500 (textures/README.md). No globals. */
 #ifndef AERO_BODY_FLOW_H
 #define AERO_BODY_FLOW_H
 
@@ -49,6 +53,9 @@ typedef struct {
     double confinement;  /* vorticity confinement eps: a = eps (h / d) v0
                             (N x omega), d the body's reference size
                             (flow3d.h, confinement_length = d) */
+    int limiter;         /* 1: the MacCormack step limited (Selle et al.
+                            2008; AERO_F3_MACCORMACK, the default), 0:
+                            unlimited (AERO_F3_MACCORMACK_UNLIMITED) */
     double cfl;          /* step = cfl h / v0 */
     double settle;       /* start-up discarded, s */
     double noise;        /* rms lateral inflow noise / v0 */
@@ -77,8 +84,8 @@ typedef struct {
 
 /* defaults: angle 90, v0 10 m/s, 12 cells per reference size, sides 2.5 d,
    upstream 3 d, downstream 8 d (its last 0.2 absorbing), 1 region, air,
-   confinement 1.5 (eps h / d), cfl 0.7, settle 25 d/v0, noise 0.01,
-   seed 1 (body must be set) */
+   confinement 1.5 (eps h / d), limiter on, cfl 0.7, settle 25 d/v0,
+   noise 0.01, seed 1 (body must be set) */
 void aero_body_flow_defaults(aero_body_flow_params *p,
                              const aero_body_shape *body);
 

@@ -41,8 +41,10 @@ judge_fails() { # exit 1 is a measured failure; 2 (unreadable file) is not
         fail "negative control (exit $status): $line"
     fi
 }
-log_clean() { # LOG: no creation failure, no error in Pd's log
-    if grep -q -i -e "couldn't create" -e "error" "$1"; then
+log_clean() { # LOG: no creation failure, no error in Pd's log (Pd reports
+    # a bad connection or a message nothing takes without the word error)
+    if grep -q -i -e "couldn't create" -e "error" -e "connection failed" \
+        -e "no method for" -e "inlet: expected" -e "bad arguments" "$1"; then
         fail "$2"; sed 's/^/        /' "$1" | head -20
     else
         pass "$2"

@@ -14,8 +14,11 @@
  * default; coarser grids damp the thin shear layer and stay steady). The
  * start-up (80 L/U) is discarded and 60 L/U (~60 periods) are analysed:
  * the floor's pressure force must oscillate (it was ~1e-4 when the flow
- * settled into a steady recirculation) with a spectral peak within 15 % of
- * a Rossiter mode. ~10 s on one core.
+ * settled into a steady recirculation) as a tone. Its frequency against
+ * mode 2 is printed, not asserted: it lies 7-12 % above it here and moves
+ * with the grid (textures/README.md, "Open"), and the window of 15 %
+ * around the nearest of four modes that admitted it is gone (issue 19).
+ * ~10 s on one core.
  *
  * First, without running the flow: the laminar boundary layer a cavity's
  * wall can bring to the inflow (aero_flow2d_params.inlet_theta) is
@@ -191,22 +194,13 @@ int main(void)
     UNIT_CHECK(near > 0.3 * total, "tonal: %.0f%% of the power within "
                "+-10%% of the peak St_L %.3f (> 30%%)", 100.0 * near / total,
                st);
-    {
-        int m = 1;
-        double d = fabs(st - rossiter_st(1, mach));
-        for (int k = 2; k <= 4; k++)
-            if (fabs(st - rossiter_st(k, mach)) < d) {
-                d = fabs(st - rossiter_st(k, mach));
-                m = k;
-            }
-        printf("  peak St_L %.3f = %.0f Hz; Rossiter m=1..3: %.3f %.3f %.3f "
-               "(%.0f, %.0f, %.0f Hz)\n", st, st * u0 / len,
-               rossiter_st(1, mach), rossiter_st(2, mach),
-               rossiter_st(3, mach), rossiter_st(1, mach) * u0 / len,
-               rossiter_st(2, mach) * u0 / len, rossiter_st(3, mach) * u0 / len);
-        UNIT_NEAR_REL(st, rossiter_st(m, mach), 0.15,
-                      "dominant St_L vs the nearest Rossiter mode");
-    }
+    printf("  peak St_L %.3f = %.0f Hz, %+.1f %% from Rossiter's mode 2 "
+           "(not asserted: open); m=1..3: %.3f %.3f %.3f (%.0f, %.0f, %.0f "
+           "Hz)\n", st, st * u0 / len,
+           100.0 * (st / rossiter_st(2, mach) - 1.0), rossiter_st(1, mach),
+           rossiter_st(2, mach), rossiter_st(3, mach),
+           rossiter_st(1, mach) * u0 / len, rossiter_st(2, mach) * u0 / len,
+           rossiter_st(3, mach) * u0 / len);
     free(cl);
     return unit_summary();
 }

@@ -12,7 +12,7 @@
  *      (Selle et al. 2008), second order, for wakes that must shed, or
  *      (AERO_F3_MACCORMACK_UNLIMITED) the same without the limiter's
  *      clamp, which cuts every new extremum of the velocity and so damps
- *      the vortices of a coarse wake as a first-order scheme would,
+ *      a coarse wake's vortices (tests/unit/test_flow3d.c),
  *   2. vorticity confinement, a = eps (h / L) U_ref (N x omega),
  *      N = grad|omega| / |grad|omega|| (FSJ01 eq. 11-12: eps h, with a
  *      velocity scale U_ref and a length L, `confinement_length`, so that

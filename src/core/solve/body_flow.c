@@ -262,20 +262,24 @@ static double lateral_peak(const double *fx, const double *fy, long n,
 {
     const long len = n / 2, hop = len / 2;
     const double T = len * dt;
-    double best = 0.0, fbest = 0.0;
+    double best = 0.0, fbest = 0.0, mean[2][3] = {{0.0}};
     if (len < 16)
         return 0.0;
+    /* len = n / 2 and hop = len / 2 fit three segments, never more */
+    for (long s0 = 0, q = 0; s0 + len <= n && q < 3; s0 += hop, q++) {
+        for (long m = 0; m < len; m++) {
+            mean[0][q] += fx[s0 + m];
+            mean[1][q] += fy[s0 + m];
+        }
+        mean[0][q] /= len;
+        mean[1][q] /= len;
+    }
     for (double f = 0.05 * v0 / d; f <= 1.0 * v0 / d; f += 0.25 / T) {
         const double w = 2.0 * AERO_PI * f * dt;
         double power = 0.0;
-        for (long s0 = 0; s0 + len <= n; s0 += hop) {
-            double ar = 0, ai = 0, br = 0, bi = 0, mx = 0.0, my = 0.0;
-            for (long m = 0; m < len; m++) {
-                mx += fx[s0 + m];
-                my += fy[s0 + m];
-            }
-            mx /= len;
-            my /= len;
+        for (long s0 = 0, q = 0; s0 + len <= n && q < 3; s0 += hop, q++) {
+            const double mx = mean[0][q], my = mean[1][q];
+            double ar = 0, ai = 0, br = 0, bi = 0;
             for (long m = 0; m < len; m++) {
                 double hann = 0.5 - 0.5 * cos(2.0 * AERO_PI * m / (len - 1));
                 double c = cos(w * m), s = sin(w * m);

@@ -309,13 +309,11 @@ static void describe(const object_plan *o, const direction_task *ctx,
     aero_texture_setd(tex, "cell", o->base.cell);
     aero_texture_setd(tex, "settle", o->base.settle);
     aero_texture_setd(tex, "dt", st0->dt);
-    aero_texture_set(tex, "solver", j->limiter
-                     ? "3D incompressible, MAC grid, limited MacCormack "
-                       "advection, FFTW + tridiagonal projection, immersed "
-                       "body by direct forcing (force = removed momentum)"
-                     : "3D incompressible, MAC grid, MacCormack "
-                     "advection, FFTW + tridiagonal projection, immersed "
-                     "body by direct forcing (force = removed momentum)");
+    snprintf(buf, sizeof buf, "3D incompressible, MAC grid, %sMacCormack "
+             "advection, FFTW + tridiagonal projection, immersed body by "
+             "direct forcing (force = removed momentum)",
+             j->limiter ? "limited " : "");
+    aero_texture_set(tex, "solver", buf);
 }
 
 /* the looped texture, saved and reported: the exit status */

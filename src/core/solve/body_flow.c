@@ -262,34 +262,40 @@ static double lateral_peak(const double *fx, const double *fy, long n,
 {
     const long len = n / 2, hop = len / 2;
     const double T = len * dt;
-    double best = 0.0, fbest = 0.0, mean[2][3] = {{0.0}};
+    double best = 0.0, fbest = 0.0, mx[3] = {0.0}, my[3] = {0.0};
+    long start[3];
+    int nseg = 0;
     if (len < 16)
         return 0.0;
     /* len = n / 2 and hop = len / 2 fit three segments, never more */
-    for (long s0 = 0, q = 0; s0 + len <= n && q < 3; s0 += hop, q++) {
+    for (long s0 = 0; s0 + len <= n && nseg < 3; s0 += hop)
+        start[nseg++] = s0;
+    for (int q = 0; q < nseg; q++) {
         for (long m = 0; m < len; m++) {
-            mean[0][q] += fx[s0 + m];
-            mean[1][q] += fy[s0 + m];
+            mx[q] += fx[start[q] + m];
+            my[q] += fy[start[q] + m];
         }
-        mean[0][q] /= len;
-        mean[1][q] /= len;
+        mx[q] /= len;
+        my[q] /= len;
     }
     for (double f = 0.05 * v0 / d; f <= 1.0 * v0 / d; f += 0.25 / T) {
         const double w = 2.0 * AERO_PI * f * dt;
+        double ar[3] = {0.0}, ai[3] = {0.0}, br[3] = {0.0}, bi[3] = {0.0};
         double power = 0.0;
-        for (long s0 = 0, q = 0; s0 + len <= n && q < 3; s0 += hop, q++) {
-            const double mx = mean[0][q], my = mean[1][q];
-            double ar = 0, ai = 0, br = 0, bi = 0;
-            for (long m = 0; m < len; m++) {
-                double hann = 0.5 - 0.5 * cos(2.0 * AERO_PI * m / (len - 1));
-                double c = cos(w * m), s = sin(w * m);
-                ar += hann * (fx[s0 + m] - mx) * c;
-                ai -= hann * (fx[s0 + m] - mx) * s;
-                br += hann * (fy[s0 + m] - my) * c;
-                bi -= hann * (fy[s0 + m] - my) * s;
+        /* the window and the phase are the same in every segment */
+        for (long m = 0; m < len; m++) {
+            double hann = 0.5 - 0.5 * cos(2.0 * AERO_PI * m / (len - 1));
+            double c = cos(w * m), s = sin(w * m);
+            for (int q = 0; q < nseg; q++) {
+                ar[q] += hann * (fx[start[q] + m] - mx[q]) * c;
+                ai[q] -= hann * (fx[start[q] + m] - mx[q]) * s;
+                br[q] += hann * (fy[start[q] + m] - my[q]) * c;
+                bi[q] -= hann * (fy[start[q] + m] - my[q]) * s;
             }
-            power += ar * ar + ai * ai + br * br + bi * bi;
         }
+        for (int q = 0; q < nseg; q++)
+            power += ar[q] * ar[q] + ai[q] * ai[q] + br[q] * br[q] +
+                     bi[q] * bi[q];
         if (power * f * f > best) {
             best = power * f * f;
             fbest = f;

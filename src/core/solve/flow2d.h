@@ -47,6 +47,8 @@ typedef struct {
     int sx;              /* row stride of the velocity arrays (with ghosts) */
     float h, dt, nu;     /* cell size, step of the last step (d, d/U), 1/Re */
     float dt_prev, dt_max; /* the step before it; the stability cap */
+    float dt_goal, dt_rate; /* the step the CFL number asks for; the step's
+                               change per step as it follows that goal */
     float *u, *v;        /* face velocities (ghost layers of 2) */
     float *hu, *hv;      /* explicit right-hand sides, this step */
     float *hu0, *hv0;    /* ... previous step (Adams-Bashforth) */

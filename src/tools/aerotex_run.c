@@ -16,7 +16,7 @@ typedef struct {
     aerotex_job job;
     int cavity;
     const char *shape_name, *poly_file;
-    double d, aspect, v0, re, nu, grid, settle, cfl;
+    double d, aspect, v0, re, nu, grid, settle, cfl, stretch;
     double length, depth;
     double theta;         /* cavity: the inflow boundary layer's momentum
                              thickness, m (0: none) */
@@ -31,7 +31,8 @@ typedef struct {
     aerotex_task task;
     double alpha;         /* flow angle in the body frame, deg */
     aero_aeolian_flow_stats st;
-    float *w;             /* --png: vorticity */
+    float *w;             /* --png: vorticity, then (a stretched grid) its
+                             rows at their true heights, and the body's */
     float wmax;           /* --png: |vorticity| at full colour, v0/d */
 } direction;
 
@@ -106,6 +107,9 @@ static const aerotex_option aeolian_options[] = {
      "2D section to 3D body above Re 190: frequencies and\nforce scaled by "
      "the 2D circle's error at this Re and\ngrid against Roshko's St and "
      "Norberg's C_L'\n(textures/README.md)", NULL, NULL},
+    {"--stretch", AEROTEX_NUMBER, "r", 1.1, 1.0, 1.2, AT(stretch),
+     "rows beyond 2 d of the body grow by r each\n(1: a uniform grid)",
+     NULL, NULL},
     FLOW_OPTIONS(16.0, -1.0, "30, 100 below Re 300")};
 
 static const aerotex_option cavity_options[] = {
@@ -215,6 +219,7 @@ static aero_aeolian_flow_params flow_params(const aeolian_job *j,
     p.re = j->re;
     p.grid = j->grid;
     p.cfl = j->cfl;
+    p.stretch = j->cavity ? 1.0 : j->stretch;
     p.settle = j->settle;
     p.duration = j->job.duration;
     p.angle = alpha;
@@ -273,6 +278,22 @@ static void sample_directions(const aeolian_job *j, direction *r)
     }
 }
 
+/* the picture rows of h from the domain's bottom up: how many, and with
+   out != NULL, each the flow row it falls in (a stretched grid's tall
+   rows show at their true height) */
+static int picture_rows(const aero_flow2d *s, const float *in, float *out)
+{
+    const int n = (int)lround((s->yf[s->ny] - s->yf[0]) / s->h);
+    for (int k = 0, j = 0; out && k < n; k++) {
+        double y = s->yf[0] + (k + 0.5) * s->h;
+        while (j < s->ny - 1 && s->yf[j + 1] <= y)
+            j++;
+        memcpy(out + (size_t)k * s->nx, in + (size_t)j * s->nx,
+               sizeof(float) * (size_t)s->nx);
+    }
+    return n;
+}
+
 /* progress, and the vorticity snapshots of --png */
 static void hook(void *ctx, const aero_flow2d *s, long step)
 {
@@ -283,16 +304,27 @@ static void hook(void *ctx, const aero_flow2d *s, long step)
         aerotex_task_progress(&r->task, step);
     if (!aerotex_task_snapshot_due(&r->task, step))
         return;
+    const int rows = s->stretched ? picture_rows(s, NULL, NULL) : s->ny;
+    const size_t cells = (size_t)s->nx * s->ny, pixels = (size_t)s->nx * rows;
+    float *w, *solid;
     if (!r->w)
-        r->w = malloc(sizeof(float) * (size_t)s->nx * s->ny);
+        r->w = malloc(sizeof(float) * (cells + (s->stretched ? 2 * pixels : 0)));
     if (!r->w) {
         snprintf(r->task.err, sizeof r->task.err, "out of memory");
         return;
     }
     aero_flow2d_vorticity(s, r->w);
+    w = r->w;
+    solid = s->solid;
+    if (s->stretched) {
+        w = r->w + cells;
+        solid = w + pixels;
+        picture_rows(s, r->w, w);
+        picture_rows(s, s->solid, solid);
+    }
     snprintf(path, sizeof path, "%s/dir%02d_%04ld.png", job->png_dir,
              r->task.index, r->task.snap - 1);
-    if (aerotex_png_vorticity(path, r->w, s->solid, s->nx, s->ny, r->wmax))
+    if (aerotex_png_vorticity(path, w, solid, s->nx, rows, r->wmax))
         snprintf(r->task.err, sizeof r->task.err, "can't write %.200s", path);
 }
 
@@ -461,6 +493,8 @@ static void describe(const aeolian_job *j, const direction *r,
     }
     aero_texture_setd(tex, "cells", cells(j));
     aero_texture_setd(tex, "grid", j->grid);
+    /* rows of 1/grid over the body and 2 d around it, then growing */
+    aero_texture_setd(tex, "stretch", j->cavity ? 1.0 : j->stretch);
     aero_texture_setd(tex, "settle", j->settle * tunit);
     aero_texture_setd(tex, "dt", r[0].st.dt * tunit);
     aero_texture_set(tex, "solver", "2D incompressible projection, MAC grid, "

@@ -28,6 +28,8 @@ typedef struct {
     double re;           /* Reynolds number v0 d / nu */
     double grid;         /* cells per d */
     double cfl;          /* flow2d.h's step factor */
+    double stretch;      /* rows' growth beyond a uniform band around a
+                            body (flow2d.h); 1 or less: a uniform grid */
     double settle;       /* start-up discarded, d/v0 */
     double duration;     /* the texture's length, s: the recording covers
                             it with the loop search, cross-fade and the

@@ -27,6 +27,8 @@ void aero_flow2d_defaults(aero_flow2d_params *p, double re)
     p->spin = 0.25;
     p->spin_time = 3.0;
     p->inlet_theta = 0.0;
+    p->ycore = 0.0;
+    p->stretch = 1.0;
 }
 
 static float *zalloc(size_t n)
@@ -69,6 +71,18 @@ static int check_params(const aero_flow2d_params *p, char *err,
         snprintf(err, errlen, "CFL number %g out of range (0, 1]", p->cfl);
         return -1;
     }
+    if (!(p->ycore >= 0.0 && p->ycore < 1e3) ||
+        !(p->stretch >= 1.0 && p->stretch <= 1.2)) {
+        snprintf(err, errlen, "stretched rows: band %g or growth %g out of "
+                 "range (0..1e3 d, 1..1.2)", p->ycore, p->stretch);
+        return -1;
+    }
+    if (p->ycore > 0.0 && p->stretch > 1.0 &&
+        !(p->ycore < p->ymax && -p->ycore > p->ymin)) {
+        snprintf(err, errlen, "the uniform band |y| < %g does not fit the "
+                 "flow domain", p->ycore);
+        return -1;
+    }
     if (!(p->inlet_theta >= 0.0 && p->inlet_theta <= AERO_FLOW2D_THETA_MAX)) {
         snprintf(err, errlen, "inflow boundary layer's momentum thickness "
                  "%g out of range 0..%g (in units of d)", p->inlet_theta,
@@ -78,6 +92,48 @@ static int check_params(const aero_flow2d_params *p, char *err,
     return 0;
 }
 
+/* the row faces of a stretched grid, from ymin up (yf may be NULL: count
+   only): rows of h across the band |y| < ycore, its edges on multiples of
+   h as on the uniform grid, then each row stretch times the one before it
+   (at most AERO_FLOW2D_STRETCH_MAX h) until past ymin and ymax. A smooth
+   stretching keeps the scheme's order (index space is uniform). */
+static int place_rows(const aero_flow2d_params *p, double *yf)
+{
+    const double h = 1.0 / p->grid, top = AERO_FLOW2D_STRETCH_MAX * h;
+    const int k = (int)ceil(p->ycore * p->grid - 1e-9);
+    int below = 0, above = 0, n = 0;
+    double y, dy;
+    for (y = -k * h, dy = h; y > p->ymin + 1e-9 * h; below++) {
+        dy = dy * p->stretch < top ? dy * p->stretch : top;
+        y -= dy;
+    }
+    for (y = k * h, dy = h; y < p->ymax - 1e-9 * h; above++) {
+        dy = dy * p->stretch < top ? dy * p->stretch : top;
+        y += dy;
+    }
+    if (yf) {
+        double lo = -k * h;
+        /* faces below the band, outermost first */
+        for (int j = 0; j < below; j++) {
+            double yy = lo;
+            dy = h;
+            for (int m = 0; m < below - j; m++) {
+                dy = dy * p->stretch < top ? dy * p->stretch : top;
+                yy -= dy;
+            }
+            yf[n++] = yy;
+        }
+        for (int j = 0; j <= 2 * k; j++)
+            yf[n++] = (j - k) * h;
+        for (y = k * h, dy = h; n < below + 2 * k + above + 1;) {
+            dy = dy * p->stretch < top ? dy * p->stretch : top;
+            y += dy;
+            yf[n++] = y;
+        }
+    }
+    return below + 2 * k + above;
+}
+
 /* cell size, cell counts (FFT-friendly), viscosity and the first step */
 static int size_grid(aero_flow2d *s, char *err, size_t errlen)
 {
@@ -85,7 +141,9 @@ static int size_grid(aero_flow2d *s, char *err, size_t errlen)
     double lx = p->xmax - p->xmin, ly = p->ymax - p->ymin;
     s->h = (float)(1.0 / p->grid);
     s->nx = good_size((int)ceil(lx * p->grid));
-    s->ny = good_size((int)ceil(ly * p->grid));
+    s->stretched = p->ycore > 0.0 && p->stretch > 1.0;
+    s->ny = s->stretched ? place_rows(p, NULL)
+                         : good_size((int)ceil(ly * p->grid));
     if ((double)s->nx * s->ny > 5e7) {
         snprintf(err, errlen, "grid of %d x %d cells is too large", s->nx, s->ny);
         return -1;
@@ -121,7 +179,25 @@ static int alloc_fields(aero_flow2d *s, char *err, size_t errlen)
     s->solid = zalloc((size_t)s->nx * s->ny);
     s->sponge = zalloc((size_t)s->nx + 1);
     s->work = zalloc(3 * ((size_t)s->nx + 8));
-    if (!s->sponge || !s->work ||
+    s->yf = calloc((size_t)s->ny + 1, sizeof(double));
+    s->yc = calloc((size_t)s->ny, sizeof(double));
+    if (s->stretched) {
+        s->wy = zalloc((size_t)s->ny);
+        s->ey = zalloc((size_t)s->ny + 1);
+        s->iy_u = zalloc((size_t)s->ny);
+        s->an_u = zalloc((size_t)s->ny);
+        s->as_u = zalloc((size_t)s->ny);
+        s->iy_v = zalloc((size_t)s->ny + 1);
+        s->an_v = zalloc((size_t)s->ny + 1);
+        s->as_v = zalloc((size_t)s->ny + 1);
+        if (!s->wy || !s->ey || !s->iy_u || !s->an_u || !s->as_u ||
+            !s->iy_v || !s->an_v || !s->as_v) {
+            aero_flow2d_free(s);
+            snprintf(err, errlen, "out of memory");
+            return -1;
+        }
+    }
+    if (!s->sponge || !s->work || !s->yf || !s->yc ||
         !s->u || !s->v || !s->hu || !s->hv || !s->hu0 || !s->hv0 || !s->uin ||
         !s->phi || !s->dphi || !s->ieig || !s->solid) {
         aero_flow2d_free(s);
@@ -141,6 +217,49 @@ static void fill_sponge(aero_flow2d *s)
         double x = p->xmin + i * (double)s->h, q = (x - (p->xmax - len)) / len;
         double sig = q > 0.0 ? 2.0 * q * q : 0.0;
         s->sponge[i] = (float)sig;
+    }
+}
+
+/* row positions, and for a stretched grid the metric of each row: the
+   y terms of a row are those of the uniform scheme in index space, with
+   its flux differences over the row's height and the Laplacian's second
+   difference over the distances between centres (a smooth mapping y(j)),
+   so the uniform band is solved exactly as on the uniform grid */
+static void fill_rows(aero_flow2d *s)
+{
+    const int ny = s->ny;
+    const double h = s->h;
+    if (s->stretched)
+        place_rows(&s->p, s->yf);
+    else
+        for (int j = 0; j <= ny; j++)
+            s->yf[j] = s->p.ymin + j * h;
+    for (int j = 0; j < ny; j++)
+        s->yc[j] = 0.5 * (s->yf[j] + s->yf[j + 1]);
+    if (!s->stretched)
+        return;
+    for (int j = 0; j < ny; j++)
+        s->wy[j] = (float)((s->yf[j + 1] - s->yf[j]) / h);
+    for (int j = 0; j <= ny; j++) {
+        /* centre distance at face j; at a wall, to the mirrored centre */
+        double dc = (j == 0) ? s->yf[1] - s->yf[0]
+                  : (j == ny) ? s->yf[ny] - s->yf[ny - 1]
+                  : s->yc[j] - s->yc[j - 1];
+        s->ey[j] = (j == 0 || j == ny) ? 0.0f : (float)(h / dc);
+        s->iy_v[j] = (float)(1.0 / dc);
+    }
+    for (int j = 0; j < ny; j++) {
+        double dy = s->yf[j + 1] - s->yf[j];
+        double dn = j + 1 < ny ? s->yc[j + 1] - s->yc[j] : dy;
+        double ds = j > 0 ? s->yc[j] - s->yc[j - 1] : dy;
+        s->iy_u[j] = (float)(1.0 / dy);
+        s->an_u[j] = (float)(1.0 / (dy * dn));
+        s->as_u[j] = (float)(1.0 / (dy * ds));
+    }
+    for (int j = 1; j < ny; j++) {
+        double dc = s->yc[j] - s->yc[j - 1];
+        s->an_v[j] = (float)(1.0 / (dc * (s->yf[j + 1] - s->yf[j])));
+        s->as_v[j] = (float)(1.0 / (dc * (s->yf[j] - s->yf[j - 1])));
     }
 }
 
@@ -197,6 +316,27 @@ static int plan_transforms(aero_flow2d *s, char *err, size_t errlen)
    is singular: its first value is pinned to 0. */
 static void factor_poisson_y(aero_flow2d *s)
 {
+    if (s->stretched) {
+        /* row j times h dy_j: ey_j p_(j-1) - (ey_j + ey_(j+1) + wy_j mu_k)
+           p_j + ey_(j+1) p_(j+1) = h^2 wy_j R_j, mu_k = 2 - 2 cos(pi k /
+           nx); m_j = 1 / (diagonal - ey_j c_(j-1)), c_j = ey_(j+1) m_j */
+        for (int k = 0; k < s->nx; k++) {
+            double mu = 2.0 - 2.0 * cos(AERO_PI * k / s->nx), c = 0.0;
+            for (int j = 0; j < s->ny; j++) {
+                double bj = -(s->ey[j] + s->ey[j + 1] + s->wy[j] * mu), m;
+                float *mm = s->ieig + (size_t)j * s->nx + k;
+                if (k == 0 && j == 0) {
+                    *mm = 0.0f;
+                    c = 0.0;
+                    continue;
+                }
+                m = 1.0 / (bj - s->ey[j] * c);
+                c = s->ey[j + 1] * m;
+                *mm = (float)m;
+            }
+        }
+        return;
+    }
     for (int k = 0; k < s->nx; k++) {
         double b = 2.0 * cos(AERO_PI * k / s->nx) - 4.0, c = 0.0;
         for (int j = 0; j < s->ny; j++) {
@@ -222,6 +362,7 @@ int aero_flow2d_init(aero_flow2d *s, const aero_flow2d_params *p, char *err,
         alloc_fields(s, err, errlen))
         return -1;
     fill_sponge(s);
+    fill_rows(s);
     if (plan_transforms(s, err, errlen)) return -1;
     factor_poisson_y(s);
     return 0;
@@ -250,6 +391,16 @@ void aero_flow2d_free(aero_flow2d *s)
     fftwf_free(s->solid);
     fftwf_free(s->sponge);
     fftwf_free(s->work);
+    free(s->yf);
+    free(s->yc);
+    fftwf_free(s->wy);
+    fftwf_free(s->ey);
+    fftwf_free(s->iy_u);
+    fftwf_free(s->an_u);
+    fftwf_free(s->as_u);
+    fftwf_free(s->iy_v);
+    fftwf_free(s->an_v);
+    fftwf_free(s->as_v);
     free(s->ib_idx);
     free(s->ib_chi);
     free(s->ib_x);
@@ -316,7 +467,7 @@ static int scan_forced_nodes(aero_flow2d *s, const aero_shape2d *shape,
         for (int j = 0; j < nj; j++)
             for (int i = 0; i < ni; i++) {
                 double x = s->p.xmin + (i + (c ? 0.5 : 0.0)) * h;
-                double y = s->p.ymin + (j + (c ? 0.0 : 0.5)) * h;
+                double y = c ? s->yf[j] : s->yc[j];
                 float chi = solid_fraction(shape, d, alpha, x, y, h);
                 if (chi <= 0.0f) continue;
                 if (fill) {
@@ -355,7 +506,7 @@ static void rasterise_cells(aero_flow2d *s, const aero_shape2d *shape,
     const double h = s->h, d = shape->size;
     const int wall = shape->kind == AERO_SHAPE_CAVITY;
     for (int j = 0; j < s->ny; j++) {
-        const double y = s->p.ymin + (j + 0.5) * h;
+        const double y = s->yc[j];
         for (int i = 0; i < s->nx; i++)
             s->solid[j * s->nx + i] = solid_fraction(
                 shape, d, alpha, s->p.xmin + (i + 0.5) * h, y, h);
@@ -388,6 +539,11 @@ static int locate_cavity(aero_flow2d *s, const aero_shape2d *shape,
     const double h = s->h, d = shape->size;
     s->cav_i0 = (int)lround((0.0 - s->p.xmin) / h);
     s->cav_i1 = (int)lround((shape->a / d - s->p.xmin) / h);
+    if (s->stretched) {
+        /* its wall pressure force sums rows of h (force_cavity_walls) */
+        snprintf(err, errlen, "a cavity needs a uniform grid");
+        return -1;
+    }
     s->cav_jd = (int)lround((-shape->b / d - s->p.ymin) / h);
     s->cav_j0 = (int)lround((0.0 - s->p.ymin) / h);
     if (s->cav_i0 < 1 || s->cav_i1 > s->nx - 1 || s->cav_jd < 1 ||
@@ -433,6 +589,19 @@ int aero_flow2d_set_body(aero_flow2d *s, const aero_shape2d *shape,
         snprintf(err, errlen,
                  "the body is smaller than the grid: use a finer --grid");
         return -1;
+    }
+    if (s->stretched) {
+        /* the forcing and the force sum cells of h^2 (force_body), and the
+           flow next to the body wants the fine rows: two rows of margin */
+        const double band = ceil(s->p.ycore * s->p.grid - 1e-9) * s->h -
+                            2.0 * s->h;
+        for (int n = 0; n < s->nib; n++)
+            if (fabs(s->ib_y[n]) > band) {
+                snprintf(err, errlen, "the body reaches the stretched rows: "
+                         "the uniform band |y| < %g d is too narrow",
+                         s->p.ycore);
+                return -1;
+            }
     }
     rasterise_cells(s, shape, alpha);
     if (body_touches_edges(s, shape)) {
@@ -548,10 +717,12 @@ typedef void flux_row(const aero_flow2d *s, int j, float *restrict f);
 /* H = -d(uq)/dx - d(vq)/dy + nu lap q at the interior nodes i >= i0 of
    the rows j >= j0 of one velocity component q (u: rows from 0, nodes
    from 1; v: rows from 1, nodes from 0), each row's y fluxes through its
-   bottom faces being those of the row below */
+   bottom faces being those of the row below. On a stretched grid, iy, an
+   and as are the rows' y metrics (fill_rows), else NULL. */
 AERO_FLOW2D_CLONES
 static void momentum(aero_flow2d *s, const float *q, float *hq,
-                     flux_row *flux_x, flux_row *flux_y, int j0, int i0)
+                     flux_row *flux_x, flux_row *flux_y, int j0, int i0,
+                     const float *iy, const float *an, const float *as)
 {
     const int nx = s->nx, ny = s->ny, sx = s->sx;
     const float ih = 1.0f / s->h, nu_h2 = s->nu / (s->h * s->h);
@@ -564,9 +735,19 @@ static void momentum(aero_flow2d *s, const float *q, float *hq,
         float *t;
         flux_x(s, j, fx);
         flux_y(s, j, fn);
-        for (int i = i0; i < nx; i++) {
-            float lap = c[i + 1] + c[i - 1] + c[i + sx] + c[i - sx] - 4.0f * c[i];
-            h[i] = -(fx[i] - fx[i - 1] + fn[i] - fs[i]) * ih + nu_h2 * lap;
+        if (iy) {
+            const float ky = iy[j], nn = s->nu * an[j], ns = s->nu * as[j];
+            for (int i = i0; i < nx; i++) {
+                float lapx = c[i + 1] + c[i - 1] - 2.0f * c[i];
+                h[i] = -(fx[i] - fx[i - 1]) * ih - (fn[i] - fs[i]) * ky +
+                       nu_h2 * lapx + nn * (c[i + sx] - c[i]) -
+                       ns * (c[i] - c[i - sx]);
+            }
+        } else {
+            for (int i = i0; i < nx; i++) {
+                float lap = c[i + 1] + c[i - 1] + c[i + sx] + c[i - sx] - 4.0f * c[i];
+                h[i] = -(fx[i] - fx[i - 1] + fn[i] - fs[i]) * ih + nu_h2 * lap;
+            }
         }
         t = fs; fs = fn; fn = t;
     }
@@ -594,8 +775,9 @@ static void advance_explicit(aero_flow2d *s)
         float *v = s->v + AT(0, j), *hv = s->hv + AT(0, j),
               *h0 = s->hv0 + AT(0, j);
         const float *p = s->phi + j * nx, *pm = s->phi + (j - 1) * nx;
+        const float dt_dy = s->stretched ? s->dt * s->iy_v[j] : dt_h;
         for (int i = 0; i < nx; i++)
-            v[i] += a * hv[i] + b * h0[i] - dt_h * (p[i] - pm[i]);
+            v[i] += a * hv[i] + b * h0[i] - dt_dy * (p[i] - pm[i]);
     }
     {
         float *t = s->hu0; s->hu0 = s->hu; s->hu = t;
@@ -610,13 +792,16 @@ static void convective_outflow(aero_flow2d *s)
     const int nx = s->nx, ny = s->ny;
     const float c = s->dt / s->h;
     double qin = 0.0, qout = 0.0, corr;
+    double height = 0.0;
     for (int j = 0; j < ny; j++) {
         float *u = s->u + AT(nx, j);
+        const double w = s->stretched ? s->wy[j] : 1.0;
         u[0] -= c * (u[0] - u[-1]);
-        qin += s->uin[j];
-        qout += u[0];
+        qin += w * s->uin[j];
+        qout += w * u[0];
+        height += w;
     }
-    corr = (qin - qout) / ny;
+    corr = (qin - qout) / height;
     for (int j = 0; j < ny; j++)
         s->u[AT(nx, j)] += (float)corr;
 }
@@ -673,6 +858,26 @@ static void solve_tridiagonal(aero_flow2d *s)
     const float sc = s->h * s->h / (2.0f * nx);
     float *x = s->dphi;
     const float *m = s->ieig;
+    if (s->stretched) {
+        const float *wy = s->wy, *ey = s->ey;
+        for (int i = 0; i < nx; i++)
+            x[i] = sc * wy[0] * x[i] * m[i];
+        for (int j = 1; j < ny; j++) {
+            float *r = x + (size_t)j * nx;
+            const float *p = r - nx, *mj = m + (size_t)j * nx;
+            const float w = sc * wy[j], e = ey[j];
+            for (int i = 0; i < nx; i++)
+                r[i] = (w * r[i] - e * p[i]) * mj[i];
+        }
+        for (int j = ny - 2; j >= 0; j--) {
+            float *r = x + (size_t)j * nx;
+            const float *q = r + nx, *mj = m + (size_t)j * nx;
+            const float e = ey[j + 1];
+            for (int i = 0; i < nx; i++)
+                r[i] -= e * mj[i] * q[i];
+        }
+        return;
+    }
     for (int i = 0; i < nx; i++)
         x[i] = sc * x[i] * m[i];
     for (int j = 1; j < ny; j++) {
@@ -790,8 +995,15 @@ static void project(aero_flow2d *s)
     for (int j = 0; j < ny; j++) {
         const float *u = s->u + AT(0, j), *v = s->v + AT(0, j);
         const int sx = s->sx;
-        for (int i = 0; i < nx; i++)
-            phi[j * nx + i] = (u[i + 1] - u[i] + v[i + sx] - v[i]) * idt_h;
+        if (s->stretched) {
+            const float ax = 1.0f / (s->dt * s->h),
+                        ay = s->iy_u[j] / s->dt;
+            for (int i = 0; i < nx; i++)
+                phi[j * nx + i] = (u[i + 1] - u[i]) * ax + (v[i + sx] - v[i]) * ay;
+        } else {
+            for (int i = 0; i < nx; i++)
+                phi[j * nx + i] = (u[i + 1] - u[i] + v[i + sx] - v[i]) * idt_h;
+        }
     }
     cosine_forward(s);
     solve_tridiagonal(s);
@@ -805,8 +1017,9 @@ static void project(aero_flow2d *s)
     for (int j = 1; j < ny; j++) {
         float *v = s->v + AT(0, j);
         const float *p = phi + j * nx, *pm = phi + (j - 1) * nx;
+        const float dt_dy = s->stretched ? s->dt * s->iy_v[j] : dt_h;
         for (int i = 0; i < nx; i++)
-            v[i] -= dt_h * (p[i] - pm[i]);
+            v[i] -= dt_dy * (p[i] - pm[i]);
     }
     for (int k = 0; k < nx * ny; k++)
         s->phi[k] += phi[k];
@@ -879,8 +1092,10 @@ int aero_flow2d_step(aero_flow2d *s)
         return -1;
     choose_step(s);
     fill_ghosts(s);
-    momentum(s, s->u, s->hu, flux_u_x, flux_u_y, 0, 1);
-    momentum(s, s->v, s->hv, flux_v_x, flux_v_y, 1, 0);
+    momentum(s, s->u, s->hu, flux_u_x, flux_u_y, 0, 1, s->iy_u, s->an_u,
+             s->as_u);
+    momentum(s, s->v, s->hv, flux_v_x, flux_v_y, 1, 0, s->iy_v, s->an_v,
+             s->as_v);
     convective_outflow(s);
     advance_explicit(s);
     damp_outflow(s);
@@ -918,6 +1133,11 @@ void aero_flow2d_vorticity(const aero_flow2d *s, float *out)
             /* w = dv/dx - du/dy at the cell centre */
             float dvdx = (v[i + 1] + v[i + 1 + sx]) - (v[i - 1] + v[i - 1 + sx]);
             float dudy = (u[i + sx] + u[i + 1 + sx]) - (u[i - sx] + u[i + 1 - sx]);
+            if (s->stretched) /* centres j - 1 and j + 1 are this far apart */
+                dudy *= (float)(2.0 * s->h / (s->yc[j < s->ny - 1 ? j + 1 : j] -
+                                              s->yc[j > 0 ? j - 1 : j] +
+                                              (j == 0 || j == s->ny - 1 ?
+                                               s->yf[j + 1] - s->yf[j] : 0.0)));
             out[j * s->nx + i] = k * (dvdx - dudy);
         }
     }

@@ -1,15 +1,19 @@
 /* aero: incompressible 2D flow past a body, for sound textures.
  *
- * Projection method on a uniform staggered (MAC) grid, solved in units of
- * the reference length d, the free-stream speed U and the time d/U, so the
- * only flow parameter is Re = U d / nu:
+ * Projection method on a staggered (MAC) grid, solved in units of the
+ * reference length d, the free-stream speed U and the time d/U, so the
+ * only flow parameter is Re = U d / nu. The cells are square, h = d /
+ * grid; optionally only in a band |y| < ycore around the body, beyond which
+ * the rows grow smoothly (stretch), a mapped grid whose index space is
+ * uniform, so the scheme below keeps its form row by row:
  *  - advection in flux form, third-order upwind-biased interpolation;
  *    diffusion by the 5-point Laplacian; both stepped by Adams-Bashforth 2
  *  - the body as an immersed boundary: direct forcing with the solid
  *    fraction of each velocity node (a smoothed, rotatable rasterisation of
  *    a signed distance); the force on the body is the sum of that forcing
  *  - pressure Poisson equation with Neumann walls solved exactly by a
- *    cosine transform along x (FFTW) and a tridiagonal solve along y
+ *    cosine transform along x (FFTW) and a tridiagonal solve along y (any
+ *    row heights)
  *  - uniform inflow, free-slip sides, a sponge layer before a convective
  *    outflow corrected to conserve mass.
  * Life cycle: aero_flow2d_defaults, _init, _set_body, _step ..., _free. */
@@ -30,7 +34,14 @@ typedef struct {
                            laminar boundary layer at the inflow, in d
                            (0: uniform inflow, the layer grows from the
                            inflow edge) */
+    double ycore;    /* half-height of the band |y| < ycore (in d) that
+                        keeps the uniform cell size; 0: uniform everywhere */
+    double stretch;  /* beyond it, each row is this much taller than the
+                        one before, up to AERO_FLOW2D_STRETCH_MAX cells */
 } aero_flow2d_params;
+
+/* the tallest stretched row, in cells of the uniform band */
+#define AERO_FLOW2D_STRETCH_MAX 8.0
 
 /* the full thickness of the laminar inflow layer over its momentum
    thickness: Pohlhausen's quartic profile (Schlichting & Gersten 2000) */
@@ -59,6 +70,16 @@ typedef struct {
     float *solid;        /* solid fraction at cell centres, nx * ny */
     float *sponge;       /* outflow sponge: rate per column (U/d), nx + 1 */
     float *work;         /* three rows of face fluxes */
+    /* rows (y): cell j spans yf[j]..yf[j + 1], its centre yc[j]; stretched
+       rows scale the y terms row by row (none when uniform) */
+    int stretched;
+    double *yf, *yc;     /* ny + 1 faces, ny centres (d) */
+    float *wy;           /* cell height / h, ny */
+    float *ey;           /* h / distance between centres j - 1 and j, at
+                            face j (0 at the walls), ny + 1 */
+    float *iy_u, *an_u, *as_u; /* u rows: 1/height, Laplacian's weights
+                                  to the row above and below, ny */
+    float *iy_v, *an_v, *as_v; /* v rows (faces): the same, ny + 1 */
     void *plan_fwd, *plan_inv; /* fftwf_plan */
     /* the cosine transforms through a real FFT (even nx, flow2d.c):
        rows reordered, their spectra, the quarter-wave twiddles */

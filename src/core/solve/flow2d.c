@@ -101,7 +101,7 @@ static int place_rows(const aero_flow2d_params *p, double *yf)
 {
     const double h = 1.0 / p->grid, top = AERO_FLOW2D_STRETCH_MAX * h;
     const int k = (int)ceil(p->ycore * p->grid - 1e-9);
-    int below = 0, above = 0, n = 0;
+    int below = 0, above = 0;
     double y, dy;
     for (y = -k * h, dy = h; y > p->ymin + 1e-9 * h; below++) {
         dy = dy * p->stretch < top ? dy * p->stretch : top;
@@ -112,23 +112,21 @@ static int place_rows(const aero_flow2d_params *p, double *yf)
         y += dy;
     }
     if (yf) {
-        double lo = -k * h;
-        /* faces below the band, outermost first */
-        for (int j = 0; j < below; j++) {
-            double yy = lo;
-            dy = h;
-            for (int m = 0; m < below - j; m++) {
-                dy = dy * p->stretch < top ? dy * p->stretch : top;
-                yy -= dy;
-            }
-            yf[n++] = yy;
+        for (int j = 0; j <= 2 * k; j++) /* the band */
+            yf[below + j] = (j - k) * h;
+        y = -k * h;
+        dy = h;
+        for (int m = 1; m <= below; m++) { /* down from the band */
+            dy = dy * p->stretch < top ? dy * p->stretch : top;
+            y -= dy;
+            yf[below - m] = y;
         }
-        for (int j = 0; j <= 2 * k; j++)
-            yf[n++] = (j - k) * h;
-        for (y = k * h, dy = h; n < below + 2 * k + above + 1;) {
+        y = k * h;
+        dy = h;
+        for (int m = 1; m <= above; m++) { /* up from it */
             dy = dy * p->stretch < top ? dy * p->stretch : top;
             y += dy;
-            yf[n++] = y;
+            yf[below + 2 * k + m] = y;
         }
     }
     return below + 2 * k + above;
@@ -1126,19 +1124,23 @@ double aero_flow2d_cl(const aero_flow2d *s)
 void aero_flow2d_vorticity(const aero_flow2d *s, float *out)
 {
     const float k = 0.25f / s->h;
-    const int sx = s->sx;
-    for (int j = 0; j < s->ny; j++) {
+    const int sx = s->sx, ny = s->ny;
+    for (int j = 0; j < ny; j++) {
         const float *u = s->u + AT(0, j), *v = s->v + AT(0, j);
+        float ky = 1.0f;
+        if (s->stretched) {
+            /* du/dy spans the centres of rows j - 1 and j + 1 (at a wall,
+               the ghost row mirrored about it) */
+            double lo = j > 0 ? s->yc[j - 1] : 2.0 * s->yf[0] - s->yc[0];
+            double hi = j < ny - 1 ? s->yc[j + 1]
+                                   : 2.0 * s->yf[ny] - s->yc[ny - 1];
+            ky = (float)(2.0 * s->h / (hi - lo));
+        }
         for (int i = 0; i < s->nx; i++) {
             /* w = dv/dx - du/dy at the cell centre */
             float dvdx = (v[i + 1] + v[i + 1 + sx]) - (v[i - 1] + v[i - 1 + sx]);
             float dudy = (u[i + sx] + u[i + 1 + sx]) - (u[i - sx] + u[i + 1 - sx]);
-            if (s->stretched) /* centres j - 1 and j + 1 are this far apart */
-                dudy *= (float)(2.0 * s->h / (s->yc[j < s->ny - 1 ? j + 1 : j] -
-                                              s->yc[j > 0 ? j - 1 : j] +
-                                              (j == 0 || j == s->ny - 1 ?
-                                               s->yf[j + 1] - s->yf[j] : 0.0)));
-            out[j * s->nx + i] = k * (dvdx - dudy);
+            out[j * s->nx + i] = k * (dvdx - ky * dudy);
         }
     }
 }

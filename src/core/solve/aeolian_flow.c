@@ -48,7 +48,7 @@ int aero_aeolian_flow_domain(const aero_aeolian_flow_params *p,
         /* the rows stay h tall over the body and its near wake, 2 d
            beyond it in every direction, and grow outside: from a 1.5 d to
            a 2.5 d band and from 5 % to 10 % growth, the 24-cell circle's
-           St, rms lift and mean drag stay within 0.5 % of the uniform
+           St, rms lift and mean drag stay within 0.7 % of the uniform
            grid's (textures/README.md) */
         fp->stretch = p->stretch;
         fp->ycore = aero_shape2d_radius(p->shape) / p->size + 2.0;

@@ -140,6 +140,7 @@ static void cavity_init(void *job)
 {
     aeolian_job *j = job;
     j->cavity = 1;
+    j->stretch = 1.0; /* its wall force sums rows of h: a uniform grid */
     j->directions = 1;
     j->symmetry = 1;
     j->mirror = 0;
@@ -219,7 +220,7 @@ static aero_aeolian_flow_params flow_params(const aeolian_job *j,
     p.re = j->re;
     p.grid = j->grid;
     p.cfl = j->cfl;
-    p.stretch = j->cavity ? 1.0 : j->stretch;
+    p.stretch = j->stretch;
     p.settle = j->settle;
     p.duration = j->job.duration;
     p.angle = alpha;
@@ -494,7 +495,7 @@ static void describe(const aeolian_job *j, const direction *r,
     aero_texture_setd(tex, "cells", cells(j));
     aero_texture_setd(tex, "grid", j->grid);
     /* rows of 1/grid over the body and 2 d around it, then growing */
-    aero_texture_setd(tex, "stretch", j->cavity ? 1.0 : j->stretch);
+    aero_texture_setd(tex, "stretch", j->stretch);
     aero_texture_setd(tex, "settle", j->settle * tunit);
     aero_texture_setd(tex, "dt", r[0].st.dt * tunit);
     aero_texture_set(tex, "solver", "2D incompressible projection, MAC grid, "

@@ -97,37 +97,33 @@ static int check_params(const aero_flow2d_params *p, char *err,
    h as on the uniform grid, then each row stretch times the one before it
    (at most AERO_FLOW2D_STRETCH_MAX h) until past ymin and ymax. A smooth
    stretching keeps the scheme's order (index space is uniform). */
+static double next_row(const aero_flow2d_params *p, double dy)
+{
+    const double top = AERO_FLOW2D_STRETCH_MAX * (1.0 / p->grid);
+    return dy * p->stretch < top ? dy * p->stretch : top;
+}
+
 static int place_rows(const aero_flow2d_params *p, double *yf)
 {
-    const double h = 1.0 / p->grid, top = AERO_FLOW2D_STRETCH_MAX * h;
+    const double h = 1.0 / p->grid;
     const int k = (int)ceil(p->ycore * p->grid - 1e-9);
     int below = 0, above = 0;
     double y, dy;
-    for (y = -k * h, dy = h; y > p->ymin + 1e-9 * h; below++) {
-        dy = dy * p->stretch < top ? dy * p->stretch : top;
-        y -= dy;
-    }
-    for (y = k * h, dy = h; y < p->ymax - 1e-9 * h; above++) {
-        dy = dy * p->stretch < top ? dy * p->stretch : top;
-        y += dy;
-    }
+    for (y = -k * h, dy = h; y > p->ymin + 1e-9 * h; below++)
+        y -= (dy = next_row(p, dy));
+    for (y = k * h, dy = h; y < p->ymax - 1e-9 * h; above++)
+        y += (dy = next_row(p, dy));
     if (yf) {
         for (int j = 0; j <= 2 * k; j++) /* the band */
             yf[below + j] = (j - k) * h;
         y = -k * h;
         dy = h;
-        for (int m = 1; m <= below; m++) { /* down from the band */
-            dy = dy * p->stretch < top ? dy * p->stretch : top;
-            y -= dy;
-            yf[below - m] = y;
-        }
+        for (int m = 1; m <= below; m++) /* down from the band */
+            yf[below - m] = (y -= (dy = next_row(p, dy)));
         y = k * h;
         dy = h;
-        for (int m = 1; m <= above; m++) { /* up from it */
-            dy = dy * p->stretch < top ? dy * p->stretch : top;
-            y += dy;
-            yf[below + 2 * k + m] = y;
-        }
+        for (int m = 1; m <= above; m++) /* up from it */
+            yf[below + 2 * k + m] = (y += (dy = next_row(p, dy)));
     }
     return below + 2 * k + above;
 }

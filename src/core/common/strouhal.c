@@ -57,6 +57,12 @@ double aero_wake_turbulence(double re)
     return 1.0 / (1.0 + q * q);
 }
 
+double aero_shedding_line_width(double re)
+{
+    const double laminar = 0.004, turbulent = 0.06;
+    return laminar + (turbulent - laminar) * aero_wake_turbulence(re);
+}
+
 static double lift_rms_laminar(double re)
 {
     double e = (re - AERO_RE_ONSET) / AERO_RE_ONSET;

@@ -44,4 +44,9 @@ double aero_lift_rms(double re);
  * (Re ~ 190..1000). Drives the width of the shedding peak. */
 double aero_wake_turbulence(double re);
 
+/* Full width at half maximum of the shedding line over its frequency:
+ * nearly a pure tone in the laminar wake (0.4 %), a few percent (6 %) once
+ * turbulent, following aero_wake_turbulence. */
+double aero_shedding_line_width(double re);
+
 #endif

@@ -16,10 +16,6 @@
 /* Spanwise correlation length, in diameters (Dobashi et al. 2003, point-source
  * spacing of Dobashi et al. 2003). */
 #define CORRELATION_DIAMETERS 3.0
-/* Width of the shedding peak, relative to f (full width at half maximum):
- * nearly a pure tone in the laminar wake, a few percent once turbulent. */
-#define PEAK_WIDTH_LAMINAR 0.004
-#define PEAK_WIDTH_TURBULENT 0.06
 /* Depth of the random envelope of a turbulent wake (rms, relative). */
 #define ENVELOPE_DEPTH 0.35
 /* Variance of a uniform random number on [-1, 1). */
@@ -215,9 +211,7 @@ static void update_chunk_laws(aero_aeolian_model *m, double speed, int n)
      * B = D / (2 pi) Hz: over n samples the phase wanders by a step of
      * variance B n / (2 pi sr) cycles^2 (uniform on [-1, 1) has var 1/3). */
     double sr = m->sample_rate;
-    double width = (PEAK_WIDTH_LAMINAR +
-                    (PEAK_WIDTH_TURBULENT - PEAK_WIDTH_LAMINAR) * turbulence) *
-                   m->st * speed / d;
+    double width = aero_shedding_line_width(re) * m->st * speed / d;
     m->phase_jitter = sqrt(3.0 * width * n / (2.0 * AERO_PI * sr));
     /* envelope: noise through two one-pole low-passes (bandwidth ~ the
      * line's), so its path is smooth between chunks; scaled by its standard

@@ -5,6 +5,7 @@
 #include "aerotex.h"
 #include "aero_air.h"
 #include "body_flow.h"
+#include "strip_body.h"
 #include "texture.h"
 
 #include <math.h>
@@ -16,6 +17,7 @@
 #define PNG_ZOOM 3
 
 enum { SHAPE_NONE = -1, SHAPE_SPHERE, SHAPE_CAPSULE, SHAPE_CLUB };
+enum { METHOD_FLOW3D, METHOD_STRIP };
 
 typedef struct {
     aerotex_job job;
@@ -25,6 +27,8 @@ typedef struct {
     int sources, directions, mirror;   /* 0, 0, -1: by the body */
     double speed, grid, settle, cfl, confinement;
     int limiter;
+    int method;           /* METHOD_* */
+    const char *section;  /* METHOD_STRIP: the section's texture */
     uint32_t seed;
 } object_job;
 
@@ -110,8 +114,15 @@ static const aerotex_option object_options[] = {
      "clamp the MacCormack step to its neighbours:\noff damps a wake's "
      "vortices less (the sphere\ntexture), on suits bodies a few cells "
      "thick", NULL, NULL},
-    {"--seed", AEROTEX_SEED, "n", 1.0, 0, 0, AT(seed), "start-up noise seed",
+    {"--method", AEROTEX_CHOICE, "3d|strip", METHOD_FLOW3D, 0, 0, AT(method),
+     "3d: a 3D flow past the body; strip: each region\nsheds as the section "
+     "texture of its local\ndiameter (a slender body: club, capsule)", NULL,
+     NULL},
+    {"--section", AEROTEX_TEXT, "FILE", NAN, 0, 0, AT(section),
+     "--method strip: a circle's aeolian texture\n(textures/cylinder.wav)",
      NULL, NULL},
+    {"--seed", AEROTEX_SEED, "n", 1.0, 0, 0, AT(seed),
+     "start-up noise seed (strip: the regions' places)", NULL, NULL},
     AEROTEX_JOB_OPTIONS("directions",
                         "|vorticity| slices DIR/dirKK_STEP.png")};
 
@@ -147,7 +158,32 @@ typedef struct {
     char desc[256];
     double d, angles[MAX_DIRECTIONS];
     int nd, nr, ch, sphere;
+    aero_texture section;       /* METHOD_STRIP */
+    aero_strip_layout layout;   /* METHOD_STRIP */
 } object_plan;
+
+/* --method strip: the section texture and the regions' diameters: 0, or 2
+   with a message */
+static int plan_strip(object_job *j, object_plan *o)
+{
+    char err[512];
+    if (!j->section) {
+        aerotex_error("object: --method strip needs --section FILE (a "
+                      "circle's aeolian texture)");
+        return 2;
+    }
+    if (aero_texture_load(j->section, &o->section, err, sizeof err)) {
+        aerotex_error("%s: %s", j->section, err);
+        return 2;
+    }
+    if (aero_strip_check_section(&o->section, err, sizeof err) ||
+        aero_strip_layout_measure(&o->body, o->nr, &o->layout, err,
+                                  sizeof err)) {
+        aerotex_error("object: %s", err);
+        return 2;
+    }
+    return 0;
+}
 
 /* the body, its directions and regions, the flow: 0, or 2 with a message */
 static int plan_object(object_job *j, object_plan *o)
@@ -185,6 +221,30 @@ static int plan_object(object_job *j, object_plan *o)
     o->base.limiter = j->limiter;
     o->base.settle = j->settle * o->d / j->speed;
     aero_body_describe(&o->body, o->desc, sizeof o->desc);
+    return j->method == METHOD_STRIP ? plan_strip(j, o) : 0;
+}
+
+/* --method strip: every direction from the section (strip_body.h) */
+static int run_strip(object_plan *o, direction_task *ctx)
+{
+    object_job *j = o->j;
+    const double cd = aero_texture_getd(&o->section, "cd", 0.0);
+    for (int k = 0; k < o->nd; k++) {
+        aero_body_flow_stats *st = &ctx[k].st;
+        aero_strip_stats ss;
+        const double sn = sin(o->angles[k] * AERO_PI / 180.0);
+        aero_strip_render(&o->section, &o->layout, o->angles[k], j->speed,
+                          j->job.rate, j->seed + 7919u * (unsigned)k,
+                          j->job.raw + 3 * (size_t)k * o->nr, o->ch,
+                          j->job.loop.avail, &ss);
+        for (int l = 0; l < o->nr; l++)
+            st->centre[3 * l + 2] = o->layout.z[l];
+        st->f_peak = ss.f_peak;
+        st->st = ss.f_peak * o->d / j->speed;
+        st->cl_rms = ss.cl_rms;
+        /* the section's mean drag on the cross-flow (none along the axis) */
+        st->cd = sn * sn > 1e-12 ? cd * sn * sn : 0.0;
+    }
     return 0;
 }
 
@@ -194,6 +254,8 @@ static int run_directions(void *plan, void *tasks)
     object_plan *o = plan;
     direction_task *ctx = tasks;
     object_job *j = o->j;
+    if (j->method == METHOD_STRIP)
+        return run_strip(o, ctx);
     const int nd = o->nd, avail = j->job.loop.avail;
     /* the directions in parallel; threads left over (fewer directions
        than threads: a sphere) go inside each simulation */
@@ -305,6 +367,24 @@ static void describe(const object_plan *o, const direction_task *ctx,
     join_stat(buf, sizeof buf, ctx, o->nd,
               offsetof(aero_body_flow_stats, cl_rms));
     aero_texture_set(tex, "cl_rms_list", buf);
+    if (j->method == METHOD_STRIP) {
+        aero_texture_set(tex, "method", "strip");
+        aero_texture_set(tex, "section", j->section);
+        aero_texture_setd(tex, "grid",
+                          aero_texture_getd(&o->section, "grid", 0.0));
+        buf[0] = 0;
+        used = 0;
+        for (int l = 0; l < o->nr && used < sizeof buf; l++)
+            used += (size_t)snprintf(buf + used, sizeof buf - used, "%s%.4g",
+                                     l ? "," : "", o->layout.diameter[l]);
+        aero_texture_set(tex, "diameters", buf);
+        aero_texture_set(tex, "solver", "strip theory (strip_body.h): each "
+                         "region plays the section texture's 2D flow at "
+                         "its local diameter's St and C_L' (Roshko 1954, "
+                         "Norberg 2003) and the cross-flow speed");
+        return;
+    }
+    aero_texture_set(tex, "method", "3d");
     aero_texture_setd(tex, "grid", j->grid);
     aero_texture_setd(tex, "cell", o->base.cell);
     aero_texture_setd(tex, "settle", o->base.settle);
@@ -336,7 +416,11 @@ static int write_texture(void *plan, void *tasks)
                "frames (%.3f s at %g Hz)\n", j->job.out, o->desc, o->d, nd,
                nd > 1 ? "s" : "", o->nr, o->nr > 1 ? "s" : "", len,
                len / j->job.rate, j->job.rate);
-        for (int k = 0; k < nd; k++) {
+        for (int k = 0; k < nd && j->method == METHOD_STRIP; k++)
+            printf("  %5.1f deg: strip theory, St %.3f (f %.1f Hz), Cl rms "
+                   "%.3f\n", o->angles[k], ctx[k].st.st, ctx[k].st.f_peak,
+                   ctx[k].st.cl_rms);
+        for (int k = 0; k < nd && j->method == METHOD_FLOW3D; k++) {
             const aero_body_flow_stats *s = &ctx[k].st;
             printf("  %5.1f deg: grid %d x %d x %d, %ld steps of %.3g ms, "
                    "St %.3f (f %.1f Hz), Cd %.2f, Cl rms %.3f, max |div u| h "
@@ -364,6 +448,8 @@ static int object_run(int argc, char **argv)
                                  sizeof(direction_task), &o, run_directions,
                                  write_texture);
     aero_body_free(&o.body);
+    if (o.section.data)
+        aero_texture_free(&o.section);
     return status;
 }
 

@@ -16,8 +16,10 @@ SECONDS_RENDERED=${BENCH_SECONDS:-10}
 N=${BENCH_BODIES:-200}
 RATE=48000
 
-texture_cmd() { # the command textures/README.md records for FILE
-    sed -n "s|^\$T object \(.*\) -o textures/$1.wav.*|\1|p" textures/make.sh
+texture_cmd() { # the command textures/make.sh records for FILE (its
+    # continued lines joined)
+    sed -e ':a' -e '/\\$/N; s/\\\n *//; ta' textures/make.sh |
+        sed -n "s|^\$T object \(.*\) -o textures/$1.wav.*|\1|p"
 }
 if [ "${BENCH_OBJECT_TEXTURE:-1}" != 0 ]; then
     for t in sphere club; do

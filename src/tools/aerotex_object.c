@@ -206,6 +206,11 @@ static int plan_object(object_job *j, object_plan *o)
     }
     o->nd = j->directions ? j->directions : o->sphere ? 1 : 5;
     o->nr = j->sources ? j->sources : o->body.kind == AERO_BODY_CLUB ? 10 : 1;
+    if ((long)o->nd * o->nr > AERO_TEXTURE_MAX_SOURCES) {
+        aerotex_error("object: %d directions x %d regions: at most %d "
+                      "together", o->nd, o->nr, AERO_TEXTURE_MAX_SOURCES);
+        return 2;
+    }
     o->ch = 3 * o->nd * o->nr;
     for (int k = 0; k < o->nd; k++)
         o->angles[k] = o->nd == 1 ? 90.0

@@ -20,7 +20,8 @@ int aero_texture_init_regions(aero_texture *t, int frames, int directions,
 {
     memset(t, 0, sizeof *t);
     if (frames < 1 || directions < 1 || regions < 1 ||
-        (long)directions * regions > 4096 || !(rate > 0.0))
+        (long)directions * regions > AERO_TEXTURE_MAX_SOURCES ||
+        !(rate > 0.0))
         return -1;
     t->frames = frames;
     t->directions = directions;
@@ -402,7 +403,8 @@ static int read_layout(aero_texture *t, int channels, const char *path,
     double dirs_value = aero_texture_getd(t, "directions", 0.0);
     double regions_value = aero_texture_getd(t, "regions", 1.0);
     int dirs = dirs_value >= 1.0 && dirs_value <= 1e6 ? (int)dirs_value : 0;
-    int regions = regions_value >= 1.0 && regions_value <= 4096.0 &&
+    int regions = regions_value >= 1.0 &&
+                          regions_value <= AERO_TEXTURE_MAX_SOURCES &&
                           regions_value == floor(regions_value)
                       ? (int)regions_value : 0;
     if (dirs < 1 || regions < 1 ||

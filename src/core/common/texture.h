@@ -32,8 +32,12 @@ typedef struct {
 
 /* an empty texture of frames x (3 * directions) zeros; 0 or -1 */
 int aero_texture_init(aero_texture *t, int frames, int directions, double rate);
+/* the most point sources (directions x regions) of an object texture */
+#define AERO_TEXTURE_MAX_SOURCES 4096
+
 /* an empty object texture (kind=object, 3D bodies): frames x (3 *
-   directions * regions) zeros; 0 or -1 */
+   directions * regions) zeros, directions x regions at most
+   AERO_TEXTURE_MAX_SOURCES; 0 or -1 */
 int aero_texture_init_regions(aero_texture *t, int frames, int directions,
                               int regions, double rate);
 /* an empty vortex texture: frames x nspeeds zeros, speeds copied (they

@@ -227,9 +227,9 @@ for what in "can't find texture 'nosuch'" "not an object texture" "unknown argum
 done
 judge $ANALYZE finite "$OUT/bd-bad.wav" --max 10
 
-# 5. aerotex object on the command line: bad bodies are refused with a
-#    message naming the problem (exit 2), a tiny sphere texture is made
-#    with vorticity slices, and [body~] plays it
+# 5. aerotex object on the command line: bad bodies and sections are
+#    refused with a message naming the problem (exit 2), a tiny sphere
+#    texture is made with vorticity slices, and [body~] plays it
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\nf 1 3 4\nf 1 2 3\n' \
     >"$OUT/open.obj"
 for bad in "--mesh $OUT/open.obj:not closed" "--mesh /nonexistent.obj:can't open" \
@@ -237,7 +237,11 @@ for bad in "--mesh $OUT/open.obj:not closed" "--mesh /nonexistent.obj:can't open
     "--shape sphere --radius -1:out of range" \
     "--shape sphere --directions 3:--directions 1" \
     "--shape club --handle 0.05 --tip 0.03:handle <= tip" \
-    "--shape sphere --limiter maybe:takes off or on"; do
+    "--shape sphere --limiter maybe:takes off or on" \
+    "--shape club --sources 64 --directions 91:at most 4096" \
+    "--shape sphere --method strip --section textures/cylinder.wav:not slender" \
+    "--shape club --method strip:needs --section" \
+    "--shape club --method strip --section textures/square.wav:a circle's aeolian texture"; do
     args=${bad%%:*} want=${bad#*:}
     # shellcheck disable=SC2086
     msg=$(build/aerotex object $args -q -o "$OUT/bad-object.wav" 2>&1)

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "aero_air.h"
+#include "strouhal.h"
 
 #define VELOCITY_TAU_S 0.008 /* smoothing of pose-derived velocities */
 #define MIN_SPEED 1e-6       /* below this the flow direction is unknown */
@@ -71,6 +72,36 @@ void aero_body_texture_free(aero_body_texture *s)
         free(s->texture);
         s->texture = NULL;
     }
+}
+
+/* "a,b,c,..." into out, n values in (0, 100): 0 or -1 */
+static int parse_sizes(const char *p, int n, double *out)
+{
+    for (int l = 0; l < n; l++) {
+        char *end;
+        double v = strtod(p, &end);
+        if (end == p || !(v > 0.0 && v < 100.0))
+            return -1;
+        out[l] = v;
+        p = end;
+        if (l < n - 1 ? *p != ',' : (*p != 0 && *p != '\n'))
+            return -1;
+        p++;
+    }
+    return 0;
+}
+
+/* a strip-theory texture's regions follow Roshko's St(Re) and Norberg's
+   C_L'(Re) away from the texture's Re: 1 if t is one (method=strip with
+   its regions' diameters and nu), the diameters into s */
+static int strip_re_law(aero_body_texture *s, const aero_texture *t)
+{
+    char method[16], list[8192];
+    double nu = aero_texture_getd(t, "nu", 0.0);
+    return aero_texture_get(t, "method", method, sizeof method) &&
+           !strcmp(method, "strip") && nu > 0.0 && nu < 1.0 &&
+           aero_texture_get(t, "diameters", list, sizeof list) &&
+           parse_sizes(list, t->regions, s->region_d) == 0;
 }
 
 /* "x,y,z;x,y,z;..." into centre, n triples: 0 or -1 */
@@ -143,6 +174,8 @@ int aero_body_texture_set_texture(aero_body_texture *s, aero_texture *t,
         s->sphere = sphere;
         s->mirror = fabs(aero_texture_getd(t, "mirror", 0.0)) >= 1.0;
         memcpy(s->centre, centre, sizeof(double) * 3 * t->regions);
+        s->re_law = !sphere && strip_re_law(s, t);
+        s->tex_nu = aero_texture_getd(t, "nu", AERO_NU);
     }
     if (s->texture) {
         aero_texture_free(s->texture);
@@ -373,6 +406,17 @@ static int geometry(aero_body_texture *s, int l, const double *wind,
     g->inc = v / s->v0 / s->scale * s->tex_rate / s->base.sample_rate;
     g->amp = v > MIN_SPEED ? pow(v / s->v0, s->base.exponent) * s->scale * gain
                            : 0.0;
+    if (s->re_law && v > MIN_SPEED) {
+        /* Re on the cross-flow speed, at play and as the texture holds it */
+        double across = sin(g->theta * AERO_PI / 180.0) / s->tex_nu;
+        double re0 = s->v0 * s->region_d[l] * across,
+               re = v * s->scale * s->region_d[l] * across;
+        if (re0 > AERO_RE_ONSET) {
+            double pitch = aero_strouhal(re) / aero_strouhal(re0);
+            g->inc *= pitch;
+            g->amp *= pitch * aero_lift_rms(re) / aero_lift_rms(re0);
+        }
+    }
     for (int e = 0; e < s->base.n_ears; e++) {
         double r[3] = {ears[e][0] - pos[0], ears[e][1] - pos[1],
                        ears[e][2] - pos[2]};

@@ -23,7 +23,12 @@
  *   - the texture coordinate advancing by (v/v0)/scale per unit of time
  *     (frequency St v / d, d = scale d_tex), the amplitude
  *     (v/v0)^exponent times scale (dF/dt ~ rho U^3 d for a whole 3D body:
- *     pressure, not the paper's intensity law);
+ *     pressure, not the paper's intensity law); a texture made by strip
+ *     theory (method=strip, with the regions' diameters) also follows the
+ *     circle's laws away from the Re it was made at, as [aeolian~]'s
+ *     texture mode does: each region's rate times St(Re)/St(Re_tex) and
+ *     its amplitude times that and C_L'(Re)/C_L'(Re_tex) (Roshko 1954,
+ *     Norberg 2003), Re on the cross-flow speed v sin(theta);
  *   - Curle's far field p = (x - y).g / (4 pi c0 |x - y|^2), g =
  *     SUM_c g_c e_c, heard |x - y|/c0 later per ear through one delay ring
  *     per ear (exact Doppler of moving sources, interaural delay).
@@ -74,6 +79,10 @@ typedef struct aero_body_texture {
     double v0, tex_size, tex_rate;
     int regions, sphere, mirror;
     double centre[3 * AERO_BODY_MAX_SOURCES]; /* body frame, m */
+    /* a slender body made by strip theory (method=strip, strip_body.h):
+       each region's diameter, and the air's viscosity it was made for */
+    int re_law;
+    double region_d[AERO_BODY_MAX_SOURCES], tex_nu;
 
     double scale;
 

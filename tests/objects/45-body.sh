@@ -152,7 +152,7 @@ judge $ANALYZE peak "$OUT/bd-stick.wav" --expect "$(tone_hz 10 "$tip")" \
 # smoothstep swell from a quarter of the length to the tip's cap), each
 # with Roshko's St and Norberg's (2003) C_L' at its Re and its own
 # incoherent segments ~3 d long; within 6 dB, the tolerance issue 17 sets
-# (the 3D texture the strip texture replaced was 44 dB below). Model
+# (the 3D texture the strip texture replaced was 34 dB below). Model
 # mode's stick stands at the origin along z, the flow along x, the lift
 # along y; the club stands along z here too (no turn), the listener 2 m
 # out along y, where the segments' offsets of 0.1-0.3 m along z change the

@@ -12,6 +12,11 @@
 /* Re = rho U d / mu for air (aero_air.h). */
 double aero_reynolds(double speed, double diameter);
 
+/* The spanwise correlation length of a cylinder's shedding, in diameters:
+ * the spacing of incoherent point sources along a stick (Dobashi et al.
+ * 2003; ~3-5 d measured, Norberg 2003). */
+#define AERO_CORRELATION_DIAMETERS 3.0
+
 /* Strouhal number St(Re) of a circular cylinder:
  *   Williamson (1996) laminar fit  St = -3.3265/Re + 0.1816 + 1.6e-4 Re
  *     (valid 49 < Re < 178),

@@ -465,8 +465,7 @@ fail:
     return -1;
 }
 
-/* Blackman-windowed sinc low-pass of cut-off fc, half-width w (s) */
-static double lowpass_kernel(double t, double fc, double w)
+double aero_texture_lowpass_kernel(double t, double fc, double w)
 {
     double x = 2.0 * fc * t, s, q;
     if (fabs(t) >= w)
@@ -500,7 +499,8 @@ void aero_texture_resample_derivative_fc(const double *t, const double *f,
            weighted by its interval: the interval cancels */
         for (int m = lo; m < n - 1 && t[m] <= tk + w; m++)
             acc += (f[m + 1] - f[m]) *
-                   lowpass_kernel(tk - 0.5 * (t[m] + t[m + 1]), fc, w);
+                   aero_texture_lowpass_kernel(tk - 0.5 * (t[m] + t[m + 1]),
+                                               fc, w);
         out[(size_t)k * stride] = (float)(acc * scale);
     }
 }

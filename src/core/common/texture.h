@@ -64,6 +64,11 @@ double aero_texture_getd(const aero_texture *t, const char *key, double def);
 /* component c (0 x, 1 y, 2 z) of direction k at frame n (wrapped) */
 float aero_texture_sample(const aero_texture *t, long n, int k, int c);
 
+/* Blackman-windowed sinc low-pass of cut-off fc at t, 0 beyond the
+   half-width w (t and w in one unit, fc in cycles per that unit; its sum
+   over a window is ~1) */
+double aero_texture_lowpass_kernel(double t, double fc, double w);
+
 /* g = dF/dt from a force F sampled at the times t (s, increasing; the
    solver's steps), low-passed (Blackman-windowed sinc, cut-off 0.45 rate)
    and resampled at `rate` for nout samples from time t0; scale multiplies

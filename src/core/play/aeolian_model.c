@@ -13,9 +13,6 @@
 /* The fluctuating drag is about an order of magnitude weaker than the
  * lift. */
 #define DRAG_TO_LIFT 0.1
-/* Spanwise correlation length, in diameters (Dobashi et al. 2003, point-source
- * spacing of Dobashi et al. 2003). */
-#define CORRELATION_DIAMETERS 3.0
 /* Depth of the random envelope of a turbulent wake (rms, relative). */
 #define ENVELOPE_DEPTH 0.35
 /* Variance of a uniform random number on [-1, 1). */
@@ -145,7 +142,7 @@ static void advance_ramps(aero_aeolian_model *m, int n)
 static void update_geometry(aero_aeolian_model *m)
 {
     double d = m->ctl[AERO_CTL_DIAMETER], l = m->ctl[AERO_CTL_LENGTH];
-    double segment = fmin(CORRELATION_DIAMETERS * d, l);
+    double segment = fmin(AERO_CORRELATION_DIAMETERS * d, l);
     double n_segments = l / segment;
     int points = (int)ceil(n_segments);
     if (points > AERO_AEOLIAN_MAX_POINTS)
@@ -197,7 +194,7 @@ static void update_chunk_laws(aero_aeolian_model *m, double speed, int n)
      * dF/dt = 2 pi f F', F' = 1/2 rho U^2 d L_seg C', f = St U / d. sqrt(2)
      * turns rms into the sine's amplitude; the envelope's power is divided
      * out. */
-    double segment = fmin(CORRELATION_DIAMETERS * d, l);
+    double segment = fmin(AERO_CORRELATION_DIAMETERS * d, l);
     double source = AERO_RHO * m->st * segment / (4.0 * AERO_C0) *
                     sqrt(2.0) / sqrt(1.0 + depth * depth) * m->ctl[AERO_CTL_GAIN];
     for (int e = 0; e < m->n_ears; e++) {

@@ -93,11 +93,12 @@ static int parse_sizes(const char *p, int n, double *out)
 
 /* a strip-theory texture's regions follow Roshko's St(Re) and Norberg's
    C_L'(Re) away from the texture's Re: 1 if t is one (method=strip with
-   its regions' diameters and nu), the diameters into s */
+   its regions' diameters and nu), the diameters and nu into s */
 static int strip_re_law(aero_body_texture *s, const aero_texture *t)
 {
     char method[16], list[8192];
     double nu = aero_texture_getd(t, "nu", 0.0);
+    s->tex_nu = nu;
     return aero_texture_get(t, "method", method, sizeof method) &&
            !strcmp(method, "strip") && nu > 0.0 && nu < 1.0 &&
            aero_texture_get(t, "diameters", list, sizeof list) &&
@@ -175,7 +176,6 @@ int aero_body_texture_set_texture(aero_body_texture *s, aero_texture *t,
         s->mirror = fabs(aero_texture_getd(t, "mirror", 0.0)) >= 1.0;
         memcpy(s->centre, centre, sizeof(double) * 3 * t->regions);
         s->re_law = !sphere && strip_re_law(s, t);
-        s->tex_nu = aero_texture_getd(t, "nu", AERO_NU);
     }
     if (s->texture) {
         aero_texture_free(s->texture);

@@ -136,7 +136,8 @@ static void update_source_count(aero_stick_texture *s)
         double len = stick_length(s->pose_to);
         /* clamp before the cast: a 1e5 m pose of a 1e-5 m stick asks for
            3e9 sources, beyond int */
-        double want = floor(len / (3.0 * current_diameter(s)) + 0.5);
+        double want = floor(len / (AERO_CORRELATION_DIAMETERS *
+                                       current_diameter(s)) + 0.5);
         n = !(want >= 1.0) ? 1
             : want > AERO_STICK_MAX_SOURCES ? AERO_STICK_MAX_SOURCES
                                             : (int)want;

@@ -14,9 +14,6 @@
    (Norberg 2003), held at this one value for every branch (aeolian_model.c
    follows C_L'(Re), aero_lift_rms) */
 #define LIFT_RMS 0.45
-/* spanwise correlation length of the shedding, in diameters (the 3 d of
-   Dobashi et al. 2003) */
-#define CORRELATION_DIAMETERS 3.0
 /* power of the high-frequency tail relative to the tone, as the spectral
    density at the tone's frequency times f_0: with alpha 2 the whole tail
    holds TAIL_LEVEL / (alpha - 1) = 1/4 of the tone's power (-6 dB). The
@@ -400,7 +397,7 @@ static void end_source(double u, double d, double len, double *f,
     st = aero_strouhal(re);
     strength = aero_shedding_strength(re);
     *f = st * u / d;
-    lc = CORRELATION_DIAMETERS * d < len ? CORRELATION_DIAMETERS * d : len;
+    lc = fmin(AERO_CORRELATION_DIAMETERS * d, len);
     a = AERO_RHO * u * u * u * st * LIFT_RMS * strength / (4.0 * AERO_C0);
     *density = a * a * lc / 3.0;
 }

@@ -11,9 +11,6 @@
 #define STATIONS 32     /* local radii measured per region */
 #define AZIMUTHS 4      /* radii per station */
 #define BISECTIONS 40
-/* the correlation length over d that one of [aeolian~]'s texture sources
-   stands for (stick_texture.c) */
-#define CORRELATION_D 3.0
 /* no shedding below this cross-flow speed over v0 (flow along the axis) */
 #define MIN_NORMAL 1e-3
 
@@ -111,17 +108,6 @@ int aero_strip_check_section(const aero_texture *section, char *err,
     return 0;
 }
 
-/* Blackman-windowed sinc, cut-off fc (cycles per sample), at x samples */
-static double low_pass(double x, double fc, double half)
-{
-    double w, s;
-    if (fabs(x) >= half)
-        return 0.0;
-    w = 0.42 + 0.5 * cos(AERO_PI * x / half) + 0.08 * cos(2.0 * AERO_PI * x / half);
-    s = fabs(x) < 1e-9 ? 1.0 : sin(2.0 * AERO_PI * fc * x) / (2.0 * AERO_PI * fc * x);
-    return 2.0 * fc * s * w;
-}
-
 /* the section's x and y at position pos (its samples, wrapped), low-passed
    below fc */
 static void section_at(const aero_texture *t, double pos, double fc,
@@ -131,7 +117,7 @@ static void section_at(const aero_texture *t, double pos, double fc,
     double sum = 0.0;
     xy[0] = xy[1] = 0.0;
     for (long n = n0; n <= n1; n++) {
-        double h = low_pass((double)n - pos, fc, half);
+        double h = aero_texture_lowpass_kernel((double)n - pos, fc, half);
         long m = n % t->frames;
         if (m < 0)
             m += t->frames;
@@ -163,7 +149,7 @@ void aero_strip_render(const aero_texture *section,
         length += layout->span[l];
     for (int l = 0; l < layout->regions; l++) {
         const double d = layout->diameter[l], span = layout->span[l],
-                     lc = fmin(CORRELATION_D * d, length);
+                     lc = fmin(AERO_CORRELATION_DIAMETERS * d, length);
         const double re = un * d / AERO_NU, st = aero_strouhal(re),
                      cl = aero_lift_rms(re), f = st * un / d;
         /* section samples per output sample, and the start in its loop */

@@ -34,3 +34,22 @@ sw=$(elapsed "$t0" "$t1")
 echo "sword set, 19 directions (5 deg over 0-90 deg), $(nproc) cores:" \
      "${sw} s (target <= 600 s; paper: hours)"
 head -n 1 "$OUT/sword.txt" | sed 's/^/    /'
+
+# --span3d urans (k-omega) against the laminar 2D flow on the same square
+# prism, one direction, one core each, one after the other: the cost of
+# the turbulence model, as a ratio measured in this run
+square() {
+    OMP_NUM_THREADS=1 $T aeolian --shape square --diameter 0.01 --speed 10 \
+        --grid 24 --duration 0.05 --threads 1 --span3d "$1" -q \
+        -o "$OUT/square-$1.wav" >"$OUT/square-$1.txt"
+}
+t0=$(stamp)
+square none
+t1=$(stamp)
+square urans
+t2=$(stamp)
+lam=$(elapsed "$t0" "$t1")
+ur=$(elapsed "$t1" "$t2")
+echo "square prism, 24 cells, 0.05 s, 1 core: laminar ${lam} s," \
+     "--span3d urans ${ur} s, ratio $(echo "$lam $ur" | awk '{ printf "%.2f", $2 / $1 }')"
+grep "deg:" "$OUT/square-none.txt" "$OUT/square-urans.txt" | sed 's/^/    /'

@@ -22,9 +22,23 @@ typedef struct {
                              thickness, m (0: none) */
     double thin;          /* the section's thinnest frontal width, m */
     int directions, symmetry, mirror; /* symmetry, mirror: -1 by shape */
-    int span3d;           /* 1: the circle-calibrated 2D-to-3D correction */
+    int span3d;           /* SPAN3D_NONE, _CIRCLE (the circle-calibrated
+                             2D-to-3D correction) or _URANS (k-omega) */
     aero_span3d correction; /* what the texture carries (span3d.h) */
 } aeolian_job;
+
+enum { SPAN3D_NONE, SPAN3D_CIRCLE, SPAN3D_URANS };
+
+/* --span3d urans: Wilcox's (2006) k-omega with Kato and Launder's (1993)
+   production, in flow2d.h's default free stream */
+#define URANS_MODEL AERO_FLOW2D_KOMEGA_KL
+#define URANS_DESCRIPTION "k-omega (Wilcox 2006), Kato-Launder production"
+
+static int urans(const aeolian_job *j)
+{
+    return j->span3d == SPAN3D_URANS && !j->cavity &&
+           j->re > AERO_SPAN3D_RE_2D;
+}
 
 /* one sampled direction: the first member is its task */
 typedef struct {
@@ -103,10 +117,12 @@ static const aerotex_option aeolian_options[] = {
      "yes for square and ellipse", NULL},
     {"--no-mirror", AEROTEX_SWITCH, NULL, NAN, 0, 0, AT(mirror),
      "it is not", NULL, NULL},
-    {"--span3d", AEROTEX_CHOICE, "none|circle", 1.0, 0, 0, AT(span3d),
-     "2D section to 3D body above Re 190: frequencies and\nforce scaled by "
-     "the 2D circle's error at this Re and\ngrid against Roshko's St and "
-     "Norberg's C_L'\n(textures/README.md)", NULL, NULL},
+    {"--span3d", AEROTEX_CHOICE, "none|circle|urans", 1.0, 0, 0, AT(span3d),
+     "2D section to 3D body above Re 190: circle: frequencies\nand force "
+     "scaled by the 2D circle's error at this Re\nand grid against Roshko's "
+     "St and Norberg's C_L';\nurans: the turbulence as an eddy viscosity "
+     "(Wilcox's\nk-omega, Kato and Launder's production)\n"
+     "(textures/README.md)", NULL, NULL},
     {"--stretch", AEROTEX_NUMBER, "r", 1.1, 1.0, 1.2, AT(stretch),
      "rows beyond 2 d of the body grow by r each\n(1: a uniform grid)",
      NULL, NULL},
@@ -226,6 +242,7 @@ static aero_aeolian_flow_params flow_params(const aeolian_job *j,
     p.angle = alpha;
     p.span3d = &j->correction;
     p.span3d_self = 0;
+    p.turbulence = urans(j) ? URANS_MODEL : AERO_FLOW2D_LAMINAR;
     return p;
 }
 
@@ -340,7 +357,7 @@ static int run_directions(aeolian_job *j, const aero_shape2d *shape,
     int status = 0;
     /* the 2D-to-3D correction: a circle calibrates it on itself, any other
        shape on a circle run first at the same Re and grid (span3d.h) */
-    const int corrected = j->span3d && !j->cavity &&
+    const int corrected = j->span3d == SPAN3D_CIRCLE && !j->cavity &&
                           j->re > AERO_SPAN3D_RE_2D;
     const int self = corrected && !strcmp(desc, "circle");
     const int calibrate = corrected && !self;
@@ -485,7 +502,16 @@ static void describe(const aeolian_job *j, const direction *r,
         join_stat(buf, sizeof buf, r, nd, 3, c);
         aero_texture_set(tex, "cl_rms_list", buf);
     }
-    aero_texture_set(tex, "span3d", c->applied ? "circle-calibrated" : "none");
+    aero_texture_set(tex, "span3d", c->applied ? "circle-calibrated"
+                                    : urans(j) ? "urans" : "none");
+    if (urans(j)) {
+        aero_flow2d_params fp;
+        aero_flow2d_defaults(&fp, j->re);
+        aero_texture_set(tex, "turbulence", URANS_DESCRIPTION);
+        aero_texture_setd(tex, "turbulence_intensity",
+                          fp.turbulence_intensity);
+        aero_texture_setd(tex, "turbulence_ratio", fp.turbulence_ratio);
+    }
     aero_texture_setd(tex, "span3d_frequency_scale", c->frequency_scale);
     aero_texture_setd(tex, "span3d_force_scale", c->force_scale);
     if (c->applied) {
@@ -512,6 +538,13 @@ static void report(const aeolian_job *j, const direction *r, const char *desc,
            j->job.out, desc, j->re, j->directions,
            j->directions > 1 ? "s" : "", frames, frames / j->job.rate,
            j->job.rate);
+    if (urans(j)) {
+        aero_flow2d_params fp;
+        aero_flow2d_defaults(&fp, j->re);
+        printf("  2D-to-3D (urans): %s, free stream Tu %g %%, nu_t/nu %g\n",
+               URANS_DESCRIPTION, 100.0 * fp.turbulence_intensity,
+               fp.turbulence_ratio);
+    }
     if (c->applied)
         printf("  2D-to-3D (circle-calibrated): the 2D circle at Re %.4g "
                "sheds at St %.4f with Cl rms %.3f; Roshko St %.4f, Norberg "

@@ -37,6 +37,7 @@ int aero_aeolian_flow_domain(const aero_aeolian_flow_params *p,
         fp->inlet_theta = p->theta / p->size;
         return 0;
     }
+    fp->turbulence = p->turbulence;
     ext = 2.0 * aero_shape2d_radius(p->shape) / p->size;
     if (ext > 1.5) { /* tall polygons: room around them */
         fp->xmin *= ext;

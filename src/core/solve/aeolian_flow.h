@@ -40,6 +40,8 @@ typedef struct {
        re, otherwise *span3d is applied as it is */
     const aero_span3d *span3d;
     int span3d_self;
+    int turbulence;      /* flow2d.h's model of the 2D flow (not for a
+                            cavity): AERO_FLOW2D_LAMINAR or k-omega */
 } aero_aeolian_flow_params;
 
 /* the shape's thinnest frontal width over all directions, m */

@@ -4,6 +4,7 @@
  * (0 <= i <= nx), v[i][j] on its bottom face (0 <= j <= ny). Velocity
  * arrays carry two ghost layers on every side, indexed by AT(i, j). */
 #include "flow2d.h"
+#include "turbulence2d.h"
 #include "aero_air.h"
 
 #include "aero_fftw.h"
@@ -29,6 +30,9 @@ void aero_flow2d_defaults(aero_flow2d_params *p, double re)
     p->inlet_theta = 0.0;
     p->ycore = 0.0;
     p->stretch = 1.0;
+    p->turbulence = AERO_FLOW2D_LAMINAR;
+    p->turbulence_intensity = 0.01;
+    p->turbulence_ratio = 1.0;
 }
 
 static float *zalloc(size_t n)
@@ -87,6 +91,18 @@ static int check_params(const aero_flow2d_params *p, char *err,
         snprintf(err, errlen, "inflow boundary layer's momentum thickness "
                  "%g out of range 0..%g (in units of d)", p->inlet_theta,
                  AERO_FLOW2D_THETA_MAX);
+        return -1;
+    }
+    if (p->turbulence < AERO_FLOW2D_LAMINAR ||
+        p->turbulence > AERO_FLOW2D_KOMEGA_KL ||
+        (p->turbulence != AERO_FLOW2D_LAMINAR &&
+         (!(p->turbulence_intensity >= 1e-4 &&
+            p->turbulence_intensity <= 0.2) ||
+          !(p->turbulence_ratio >= 0.01 && p->turbulence_ratio <= 1e3)))) {
+        snprintf(err, errlen, "turbulence model %d with Tu %g and nu_t/nu "
+                 "%g out of range (0..2, 1e-4..0.2, 0.01..1e3)",
+                 p->turbulence, p->turbulence_intensity,
+                 p->turbulence_ratio);
         return -1;
     }
     return 0;
@@ -190,6 +206,12 @@ static int alloc_fields(aero_flow2d *s, char *err, size_t errlen)
             snprintf(err, errlen, "out of memory");
             return -1;
         }
+    }
+    if (s->p.turbulence != AERO_FLOW2D_LAMINAR &&
+        aero_turbulence2d_alloc(s)) {
+        aero_flow2d_free(s);
+        snprintf(err, errlen, "out of memory for the turbulence fields");
+        return -1;
     }
     if (!s->sponge || !s->work || !s->yf || !s->yc ||
         !s->u || !s->v || !s->hu || !s->hv || !s->hu0 || !s->hv0 || !s->uin ||
@@ -400,6 +422,7 @@ void aero_flow2d_free(aero_flow2d *s)
     free(s->ib_x);
     free(s->ib_y);
     free(s->ib_count);
+    aero_turbulence2d_free(s);
     memset(s, 0, sizeof *s);
 }
 
@@ -564,6 +587,8 @@ static void start_uniform_stream(aero_flow2d *s)
     s->steps = 0;
     s->fx = s->fy = 0.0;
     s->diverged = 0;
+    if (s->turb_k)
+        aero_turbulence2d_reset(s);
 }
 
 int aero_flow2d_set_body(aero_flow2d *s, const aero_shape2d *shape,
@@ -1078,6 +1103,12 @@ static void choose_step(aero_flow2d *s)
     }
     if (s->dt > s->dt_max)
         s->dt = s->dt_max;
+    /* explicit eddy viscosity: 8 (nu + nu_t) dt / h^2 <= 0.8 */
+    if (s->turb_k && s->nut_max > 0.0f) {
+        float cap = 0.1f * s->h * s->h / (s->nut_max + s->nu);
+        if (s->dt > cap)
+            s->dt = cap;
+    }
 }
 
 int aero_flow2d_step(aero_flow2d *s)
@@ -1086,10 +1117,14 @@ int aero_flow2d_step(aero_flow2d *s)
         return -1;
     choose_step(s);
     fill_ghosts(s);
+    if (s->turb_k)
+        aero_turbulence2d_step(s);
     momentum(s, s->u, s->hu, flux_u_x, flux_u_y, 0, 1, s->iy_u, s->an_u,
              s->as_u);
     momentum(s, s->v, s->hv, flux_v_x, flux_v_y, 1, 0, s->iy_v, s->an_v,
              s->as_v);
+    if (s->turb_k)
+        aero_turbulence2d_stress(s);
     convective_outflow(s);
     advance_explicit(s);
     damp_outflow(s);

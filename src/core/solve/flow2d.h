@@ -38,7 +38,17 @@ typedef struct {
                         keeps the uniform cell size; 0: uniform everywhere */
     double stretch;  /* beyond it, each row is this much taller than the
                         one before, up to AERO_FLOW2D_STRETCH_MAX cells */
+    int turbulence;  /* AERO_FLOW2D_LAMINAR, or a k-omega model
+                        (turbulence2d.h) */
+    double turbulence_intensity; /* the free stream's Tu (k = 3/2 (Tu U)^2) */
+    double turbulence_ratio;     /* and its nu_t / nu */
 } aero_flow2d_params;
+
+enum {
+    AERO_FLOW2D_LAMINAR = 0,
+    AERO_FLOW2D_KOMEGA = 1,    /* Wilcox (2006) */
+    AERO_FLOW2D_KOMEGA_KL = 2  /* with Kato and Launder's (1993) production */
+};
 
 /* the tallest stretched row, in cells of the uniform band */
 #define AERO_FLOW2D_STRETCH_MAX 8.0
@@ -98,6 +108,16 @@ typedef struct {
     long steps;
     double fx, fy;       /* force on the body at the last step / (rho U^2 d) */
     int diverged;
+    /* k-omega (turbulence2d.c): k and omega at the cell centres with a
+       ghost cell on every side, (nx + 2) * (ny + 2), the next step's, and
+       the diffusivities; nu_t, the production's factor and the stress limiter
+       (nx * ny); nu_t at the corners ((nx + 1) * (ny + 1)); the rows' 1 /
+       height and 1 / centre distance at each row face; the largest nu_t */
+    float *turb_k, *turb_omega, *turb_k_next, *turb_omega_next;
+    float *turb_diff_k, *turb_diff_omega;
+    float *nut, *turb_production, *turb_limiter, *nut_corner;
+    float *turb_inv_height, *turb_inv_centre;
+    float nut_max;
 } aero_flow2d;
 
 /* domain and numerics good for a bluff body of size d at any Re */

@@ -17,10 +17,11 @@ set -x
 $T aeolian --shape circle --diameter 0.01 --speed 10 --grid 24 \
     -o textures/cylinder.wav
 # square prism, side 1 cm at 10 m/s, 8 directions over 0-45 deg, 24 cells
-# per side; made without the 2D-to-3D correction (calibrated on the
-# circle, it moves the square's St the wrong way: textures/README.md, "Open")
+# per side; from 2D to 3D by the k-omega turbulence model (--span3d urans:
+# the circle-calibrated correction moves the square's St the wrong way,
+# textures/README.md)
 $T aeolian --shape square --diameter 0.01 --speed 10 --directions 8 \
-    --grid 24 --span3d none -o textures/square.wav
+    --grid 24 --span3d urans --duration 0.1 -o textures/square.wav
 # sword blade (lenticular 40 mm x 5 mm) at 10 m/s, every 5 deg over 0-90 deg
 $T aeolian --shape polygon textures/sword.poly --diameter 0.04 --speed 10 \
     --symmetry 2 --mirror --directions 19 --grid 20 --settle 20 \

@@ -50,9 +50,10 @@ judge $ANALYZE peakratio "$OUT/tx-static.wav" "$OUT/tx-tilt.wav" \
 #    directions (a player check): the square prism's spectrum at roll 45
 #    differs from roll 0 by 1.5 times what another noise seed changes at
 #    roll 0 (a player that ignored the roll would render the same samples);
-#    the circle's does not change. Whether the square texture's
-#    angle dependence is the measured one (St rising to a maximum at 12-15
-#    deg, Knisely 1990) is open: textures/README.md
+#    the circle's does not change. The square texture's St rises from 0 to
+#    12.9 deg as measured (Knisely 1990: a maximum at 12-15 deg) but has a
+#    second maximum at 38.6 deg that measurements do not show (open,
+#    textures/README.md)
 for r in 0 45; do
     pd_render "tx-square-roll$r" "aeolian~ -texture square -seed 1" 1 4000 \
         "; aero-obj wind 10 0 0; aero-obj roll $r"

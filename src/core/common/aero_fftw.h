@@ -15,12 +15,22 @@
 #define AERO_FFTW_H
 
 #include <fftw3.h>
+#include <string.h>
 
 static inline void aero_fftw_serialise(void)
 {
 #ifndef AERO_FFTW_UNSERIALISED
     fftwf_make_planner_thread_safe();
 #endif
+}
+
+/* n floats, zeroed and aligned for FFTW's SIMD (fftwf_free frees them);
+ * NULL when out of memory */
+static inline float *aero_fftw_zalloc(size_t n)
+{
+    float *a = fftwf_malloc(sizeof(float) * (n ? n : 1));
+    if (a) memset(a, 0, sizeof(float) * (n ? n : 1));
+    return a;
 }
 
 /* An inverse real FFT of n points with its buffers: signal[t] = the sum

@@ -35,13 +35,6 @@ void aero_flow2d_defaults(aero_flow2d_params *p, double re)
     p->turbulence_ratio = 1.0;
 }
 
-static float *zalloc(size_t n)
-{
-    float *a = fftwf_malloc(sizeof(float) * (n ? n : 1));
-    if (a) memset(a, 0, sizeof(float) * (n ? n : 1));
-    return a;
-}
-
 /* FFT sizes with small prime factors only */
 static int good_size(int n)
 {
@@ -176,30 +169,30 @@ static int alloc_fields(aero_flow2d *s, char *err, size_t errlen)
     size_t nv;
     s->sx = s->nx + 1 + 2 * G;
     nv = (size_t)s->sx * (size_t)(s->ny + 1 + 2 * G);
-    s->u = zalloc(nv);
-    s->v = zalloc(nv);
-    s->hu = zalloc(nv);
-    s->hv = zalloc(nv);
-    s->hu0 = zalloc(nv);
-    s->hv0 = zalloc(nv);
-    s->uin = zalloc((size_t)s->ny);
-    s->phi = zalloc((size_t)s->nx * s->ny);
-    s->dphi = zalloc((size_t)s->nx * s->ny);
-    s->ieig = zalloc((size_t)s->nx * s->ny);
-    s->solid = zalloc((size_t)s->nx * s->ny);
-    s->sponge = zalloc((size_t)s->nx + 1);
-    s->work = zalloc(3 * ((size_t)s->nx + 8));
+    s->u = aero_fftw_zalloc(nv);
+    s->v = aero_fftw_zalloc(nv);
+    s->hu = aero_fftw_zalloc(nv);
+    s->hv = aero_fftw_zalloc(nv);
+    s->hu0 = aero_fftw_zalloc(nv);
+    s->hv0 = aero_fftw_zalloc(nv);
+    s->uin = aero_fftw_zalloc((size_t)s->ny);
+    s->phi = aero_fftw_zalloc((size_t)s->nx * s->ny);
+    s->dphi = aero_fftw_zalloc((size_t)s->nx * s->ny);
+    s->ieig = aero_fftw_zalloc((size_t)s->nx * s->ny);
+    s->solid = aero_fftw_zalloc((size_t)s->nx * s->ny);
+    s->sponge = aero_fftw_zalloc((size_t)s->nx + 1);
+    s->work = aero_fftw_zalloc(3 * ((size_t)s->nx + 8));
     s->yf = calloc((size_t)s->ny + 1, sizeof(double));
     s->yc = calloc((size_t)s->ny, sizeof(double));
     if (s->stretched) {
-        s->wy = zalloc((size_t)s->ny);
-        s->ey = zalloc((size_t)s->ny + 1);
-        s->iy_u = zalloc((size_t)s->ny);
-        s->an_u = zalloc((size_t)s->ny);
-        s->as_u = zalloc((size_t)s->ny);
-        s->iy_v = zalloc((size_t)s->ny + 1);
-        s->an_v = zalloc((size_t)s->ny + 1);
-        s->as_v = zalloc((size_t)s->ny + 1);
+        s->wy = aero_fftw_zalloc((size_t)s->ny);
+        s->ey = aero_fftw_zalloc((size_t)s->ny + 1);
+        s->iy_u = aero_fftw_zalloc((size_t)s->ny);
+        s->an_u = aero_fftw_zalloc((size_t)s->ny);
+        s->as_u = aero_fftw_zalloc((size_t)s->ny);
+        s->iy_v = aero_fftw_zalloc((size_t)s->ny + 1);
+        s->an_v = aero_fftw_zalloc((size_t)s->ny + 1);
+        s->as_v = aero_fftw_zalloc((size_t)s->ny + 1);
         if (!s->wy || !s->ey || !s->iy_u || !s->an_u || !s->as_u ||
             !s->iy_v || !s->an_v || !s->as_v) {
             aero_flow2d_free(s);
@@ -291,9 +284,9 @@ static int plan_transforms(aero_flow2d *s, char *err, size_t errlen)
     aero_fftw_serialise();
     if (s->nx % 2 == 0) {
         int n = s->nx, nc = s->nx / 2 + 1;
-        s->dct_rows = zalloc((size_t)s->nx * s->ny);
-        s->dct_spec = zalloc(2 * (size_t)nc * s->ny);
-        s->dct_tw = zalloc(2 * (size_t)nc);
+        s->dct_rows = aero_fftw_zalloc((size_t)s->nx * s->ny);
+        s->dct_spec = aero_fftw_zalloc(2 * (size_t)nc * s->ny);
+        s->dct_tw = aero_fftw_zalloc(2 * (size_t)nc);
         if (s->dct_rows && s->dct_spec && s->dct_tw) {
             for (int k = 0; k < nc; k++) {
                 s->dct_tw[2 * k] = (float)cos(AERO_PI * k / (2.0 * n));

@@ -41,29 +41,22 @@
 #define CLONES
 #endif
 
-static float *zalloc(size_t n)
-{
-    float *a = fftwf_malloc(sizeof(float) * (n ? n : 1));
-    if (a) memset(a, 0, sizeof(float) * (n ? n : 1));
-    return a;
-}
-
 int aero_turbulence2d_alloc(aero_flow2d *s)
 {
     const size_t n = (size_t)s->nx * s->ny;
     const size_t np = (size_t)(s->nx + 2) * (s->ny + 2);
-    s->turb_k = zalloc(np);
-    s->turb_omega = zalloc(np);
-    s->turb_k_next = zalloc(np);
-    s->turb_omega_next = zalloc(np);
-    s->turb_diff_k = zalloc(np);
-    s->turb_diff_omega = zalloc(np);
-    s->nut = zalloc(n);
-    s->turb_production = zalloc(n);
-    s->turb_limiter = zalloc(n);
-    s->nut_corner = zalloc((size_t)(s->nx + 1) * (s->ny + 1));
-    s->turb_inv_height = zalloc((size_t)s->ny);
-    s->turb_inv_centre = zalloc((size_t)s->ny + 1);
+    s->turb_k = aero_fftw_zalloc(np);
+    s->turb_omega = aero_fftw_zalloc(np);
+    s->turb_k_next = aero_fftw_zalloc(np);
+    s->turb_omega_next = aero_fftw_zalloc(np);
+    s->turb_diff_k = aero_fftw_zalloc(np);
+    s->turb_diff_omega = aero_fftw_zalloc(np);
+    s->nut = aero_fftw_zalloc(n);
+    s->turb_production = aero_fftw_zalloc(n);
+    s->turb_limiter = aero_fftw_zalloc(n);
+    s->nut_corner = aero_fftw_zalloc((size_t)(s->nx + 1) * (s->ny + 1));
+    s->turb_inv_height = aero_fftw_zalloc((size_t)s->ny);
+    s->turb_inv_centre = aero_fftw_zalloc((size_t)s->ny + 1);
     if (!s->turb_k || !s->turb_omega || !s->turb_k_next ||
         !s->turb_omega_next || !s->turb_diff_k || !s->turb_diff_omega ||
         !s->nut || !s->turb_production || !s->turb_limiter ||
@@ -192,6 +185,32 @@ static inline float eddy_viscosity(float k, float w, float wl)
     return k / (w > wl ? w : wl);
 }
 
+/* what advection and diffusion add to the cell quantity q[0] per unit
+   time: first-order upwind fluxes through the four faces (ue, uw, vn, vs
+   the face velocities) plus q div, the divergence the projection leaves
+   inside the body; and diffusion with g the cells' diffusivities, a
+   face's the mean of its two cells'. pw is the padded row's length, in
+   and is the inverse centre distances north and south. */
+static inline float transport(const float *q, const float *g, int pw,
+                              float ue, float uw, float vn, float vs,
+                              float div, float ih, float idy,
+                              float in, float is)
+{
+    const float qc = q[0], qe = q[1], qw = q[-1], qn = q[pw], qs = q[-pw];
+    const float adv =
+        -((MAX0(ue, 0.0f) * qc + MIN0(ue, 0.0f) * qe) -
+          (MAX0(uw, 0.0f) * qw + MIN0(uw, 0.0f) * qc)) * ih -
+        ((MAX0(vn, 0.0f) * qc + MIN0(vn, 0.0f) * qn) -
+         (MAX0(vs, 0.0f) * qs + MIN0(vs, 0.0f) * qc)) * idy +
+        qc * div;
+    const float dif =
+        0.5f * (((g[0] + g[1]) * (qe - qc) - (g[0] + g[-1]) * (qc - qw)) *
+                    (ih * ih) +
+                ((g[0] + g[pw]) * (qn - qc) * in -
+                 (g[0] + g[-pw]) * (qc - qs) * is) * idy);
+    return adv + dif;
+}
+
 /* the new k and omega of row j */
 CLONES
 static void transport_row(aero_flow2d *s, int j)
@@ -228,32 +247,11 @@ static void transport_row(aero_flow2d *s, int j)
         const float ke = k[i + 1], kw = k[i - 1], kN = k[i + pw], kS = k[i - pw];
         const float we = w[i + 1], ww = w[i - 1], wN = w[i + pw], wS = w[i - pw];
         const float ue = u[i + 1], uw = u[i], vn = v[i + sx], vs = v[i];
-        /* first-order upwind fluxes through the four faces, and the
-           divergence the projection leaves (inside the body) */
         const float div = (ue - uw) * ih + (vn - vs) * idy;
-        const float adv_k =
-            -((MAX0(ue, 0.0f) * kc + MIN0(ue, 0.0f) * ke) -
-              (MAX0(uw, 0.0f) * kw + MIN0(uw, 0.0f) * kc)) * ih -
-            ((MAX0(vn, 0.0f) * kc + MIN0(vn, 0.0f) * kN) -
-             (MAX0(vs, 0.0f) * kS + MIN0(vs, 0.0f) * kc)) * idy +
-            kc * div;
-        const float adv_w =
-            -((MAX0(ue, 0.0f) * wc + MIN0(ue, 0.0f) * we) -
-              (MAX0(uw, 0.0f) * ww + MIN0(uw, 0.0f) * wc)) * ih -
-            ((MAX0(vn, 0.0f) * wc + MIN0(vn, 0.0f) * wN) -
-             (MAX0(vs, 0.0f) * wS + MIN0(vs, 0.0f) * wc)) * idy +
-            wc * div;
-        /* diffusion, face diffusivities the mean of the two cells' */
-        const float dif_k =
-            0.5f * (((gk[i] + gk[i + 1]) * (ke - kc) -
-                     (gk[i] + gk[i - 1]) * (kc - kw)) * ih2 +
-                    ((gk[i] + gk[i + pw]) * (kN - kc) * in -
-                     (gk[i] + gk[i - pw]) * (kc - kS) * is) * idy);
-        const float dif_w =
-            0.5f * (((gw[i] + gw[i + 1]) * (we - wc) -
-                     (gw[i] + gw[i - 1]) * (wc - ww)) * ih2 +
-                    ((gw[i] + gw[i + pw]) * (wN - wc) * in -
-                     (gw[i] + gw[i - pw]) * (wc - wS) * is) * idy);
+        const float trans_k = transport(k + i, gk + i, pw, ue, uw, vn, vs,
+                                        div, ih, idy, in, is);
+        const float trans_w = transport(w + i, gw + i, pw, ue, uw, vn, vs,
+                                        div, ih, idy, in, is);
         /* production, held below 20 beta* k omega; cross diffusion
            sigma_d / omega grad k . grad omega where positive */
         const float prod = MIN0(eddy_viscosity(kc, wc, s2[i]) * pr[i],
@@ -261,9 +259,9 @@ static void transport_row(aero_flow2d *s, int j)
         const float cross = (ke - kw) * (we - ww) * (0.25f * ih2) +
                             (kN - kS) * (wN - wS) * (icross * icross);
         const float cd = MAX0(cross, 0.0f) * (SIGMA_DO / wc);
-        float knew = (kc + dt * (adv_k + dif_k + prod)) /
+        float knew = (kc + dt * (trans_k + prod)) /
                      (1.0f + dt * BETA_STAR * wc);
-        float wnew = (wc + dt * (adv_w + dif_w + cd +
+        float wnew = (wc + dt * (trans_w + cd +
                                  ALPHA * prod * wc / MAX0(kc, 1e-12f))) /
                      (1.0f + dt * BETA0 * wc);
         knew = knew > K_FLOOR ? knew : K_FLOOR; /* also a NaN */

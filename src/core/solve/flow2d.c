@@ -1075,6 +1075,13 @@ static float peak_speed(const aero_flow2d *s)
     return m < 1e3f ? m : 1e3f; /* NaN or blown up: the check reports it */
 }
 
+/* the explicit eddy viscosity's stability bound on the step:
+   8 (nu + nu_t) dt / h^2 <= 0.8 */
+static float nut_step_bound(const aero_flow2d *s)
+{
+    return 0.1f * s->h * s->h / (s->nut_max + s->nu);
+}
+
 static void choose_step(aero_flow2d *s)
 {
     const float w = 0.1f;
@@ -1082,6 +1089,12 @@ static void choose_step(aero_flow2d *s)
     if ((s->steps & 3) == 0) {
         float limit = (float)(s->p.cfl * s->h / peak_speed(s));
         s->dt_goal = limit < s->dt_max ? limit : s->dt_max;
+        /* the eddy viscosity's bound (below), with a margin so that the
+           follower, not the hard bound, keeps the step when nu_t grows */
+        if (s->turb_k && s->nut_max > 0.0f) {
+            float cap = 0.95f * nut_step_bound(s);
+            s->dt_goal = s->dt_goal < cap ? s->dt_goal : cap;
+        }
         if (s->steps == 0) {
             s->dt = s->dt_goal;
             s->dt_rate = 0.0f;
@@ -1096,9 +1109,9 @@ static void choose_step(aero_flow2d *s)
     }
     if (s->dt > s->dt_max)
         s->dt = s->dt_max;
-    /* explicit eddy viscosity: 8 (nu + nu_t) dt / h^2 <= 0.8 */
+    /* a safety bound only: nu_t outgrew the follower between goals */
     if (s->turb_k && s->nut_max > 0.0f) {
-        float cap = 0.1f * s->h * s->h / (s->nut_max + s->nu);
+        float cap = nut_step_bound(s);
         if (s->dt > cap)
             s->dt = cap;
     }

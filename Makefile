@@ -85,7 +85,7 @@ $(BUILD)/aero-analyze: $(analyze.sources) $(core.lib)
 unit.sources = $(sort $(wildcard tests/unit/test_*.c))
 unit.binaries = $(patsubst tests/unit/%.c,$(BUILD)/tests/%,$(unit.sources))
 
-$(BUILD)/tests/%: tests/unit/%.c tests/unit/unit.h $(core.lib)
+$(BUILD)/tests/%: tests/unit/%.c $(wildcard tests/unit/*.h) $(core.lib)
 	@mkdir -p $(dir $@)
 	$(CORE_CC) $(CORE_CFLAGS) $< -o $@ $(TOOL_LIBS)
 
@@ -305,12 +305,13 @@ $(ASAN_ROOT)/build/aero-analyze: $(analyze.sources) $(asan.lib)
 	@mkdir -p $(dir $@)
 	$(ASAN_CC) $(ASAN_CFLAGS) $(analyze.sources) -o $@ \
 	    $(subst $(core.lib),$(asan.lib),$(TOOL_LIBS))
-$(ASAN_ROOT)/build/tests/%: tests/unit/%.c tests/unit/unit.h $(asan.lib)
+$(ASAN_ROOT)/build/tests/%: tests/unit/%.c $(wildcard tests/unit/*.h) $(asan.lib)
 	@mkdir -p $(dir $@)
 	$(ASAN_CC) $(ASAN_CFLAGS) $< -o $@ \
 	    $(subst $(core.lib),$(asan.lib),$(TOOL_LIBS))
 
-.PHONY: asan check-asan check-valgrind fuzz fuzz-build check-long check-globals
+.PHONY: asan check-asan check-valgrind fuzz fuzz-build check-long check-globals \
+    check-convergence
 asan: $(asan.externals) $(ASAN_ROOT)/aero.pd_linux $(asan.tools)
 check-asan:
 	@$(MAKE) --no-print-directory deps
@@ -327,6 +328,19 @@ FUZZ_SECONDS ?= 300
 fuzz:
 	@$(MAKE) --no-print-directory deps
 	@FUZZ_SECONDS=$(FUZZ_SECONDS) sh fuzz/run.sh
+
+# grid convergence of the textures' flows (~10 minutes on 2 cores):
+# tests/convergence/test_*.c, each run once
+convergence.binaries = $(patsubst tests/convergence/%.c,$(BUILD)/convergence/%,\
+    $(sort $(wildcard tests/convergence/test_*.c)))
+$(BUILD)/convergence/%: tests/convergence/%.c $(wildcard tests/unit/*.h) $(core.lib)
+	@mkdir -p $(dir $@)
+	$(CORE_CC) $(CORE_CFLAGS) $< -o $@ $(TOOL_LIBS)
+check-convergence:
+	@$(MAKE) --no-print-directory deps
+	@$(MAKE) --no-print-directory -s $(convergence.binaries) \
+	    >$(BUILD).log 2>&1 || { cat $(BUILD).log; exit 1; }
+	@sh tests/convergence/run.sh $(convergence.binaries)
 
 check-long:
 	@$(MAKE) --no-print-directory deps

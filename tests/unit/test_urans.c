@@ -22,6 +22,7 @@
 #include "flow2d.h"
 #include "shape2d.h"
 #include "turbulence2d.h"
+#include "square_flow.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -34,27 +35,11 @@ typedef struct {
     char err[256];
 } square_case;
 
+/* ~60 d/v0 recorded: 8 periods at St 0.13 */
 static void run_square(square_case *c)
 {
-    aero_shape2d square;
-    aero_aeolian_flow_params p;
-    memset(&p, 0, sizeof p);
-    aero_shape2d_square(&square, 0.01);
-    p.shape = &square;
-    p.size = 0.01;
-    p.speed = 10.0;
-    p.re = 6768.0;
-    p.grid = 24.0;
-    p.cfl = 0.5;
-    p.stretch = 1.1;
-    p.settle = 30.0;
-    p.duration = 0.05; /* ~60 d/v0 recorded: 8 periods at St 0.13 */
-    p.angle = 0.0;
-    p.turbulence = c->turbulence;
-    c->failed = aero_aeolian_flow_simulate(&p, 48000.0, NULL, 0, 0, &c->st,
-                                           NULL, 1, NULL, c->err,
-                                           sizeof c->err) != 0;
-    aero_shape2d_free(&square);
+    c->failed = square_flow(24.0, 0.05, 48000.0, c->turbulence, &c->st,
+                            c->err, sizeof c->err) != 0;
 }
 
 static void test_square(void)

@@ -15,7 +15,6 @@
 #include "../unit/square_flow.h"
 #include "aeolian_flow.h"
 #include "flow2d.h"
-#include "shape2d.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -7,6 +7,7 @@
 #include "turbulence2d.h"
 #include "aero_air.h"
 
+#include "aero_clones.h"
 #include "aero_fftw.h"
 #include <math.h>
 #include <stdio.h>
@@ -626,22 +627,11 @@ int aero_flow2d_set_body(aero_flow2d *s, const aero_shape2d *shape,
     return 0;
 }
 
-/* the step's loops (the functions marked so) are memory-bound sweeps that
-   vectorise: where the compiler can dispatch at load time (GCC or Clang,
-   x86-64 ELF), an AVX2 clone runs on the machines that have it. AVX2 without FMA: the same
-   IEEE operations on each element as the SSE2 build, so a texture is the
-   same to the bit on either. */
-#if defined(__x86_64__) && defined(__linux__) && defined(__has_attribute)
-#if __has_attribute(target_clones)
-#define AERO_FLOW2D_CLONES __attribute__((target_clones("avx2", "default")))
-#endif
-#endif
-#ifndef AERO_FLOW2D_CLONES
-#define AERO_FLOW2D_CLONES
-#endif
+/* the step's loops (the functions marked AERO_CLONES) get AVX2 clones
+   (aero_clones.h) */
 
 /* ghost layers: uniform inflow, free-slip sides, zero-gradient outflow */
-AERO_FLOW2D_CLONES
+AERO_CLONES
 static void fill_ghosts(aero_flow2d *s)
 {
     const int nx = s->nx, ny = s->ny;
@@ -683,7 +673,7 @@ static inline float upwind_flux(float a, float m, float p0, float p1, float q1)
 /* fluxes of u momentum through the faces of the u control volumes of row
    j: x faces at the cell centres (i + 1/2, j), fx[i] for -1 <= i < nx, and
    y faces at the corners (i, j + 1), fy[i] for 0 <= i <= nx */
-AERO_FLOW2D_CLONES
+AERO_CLONES
 static void flux_u_x(const aero_flow2d *s, int j, float *restrict fx)
 {
     const float *restrict u = s->u + AT(0, j);
@@ -692,7 +682,7 @@ static void flux_u_x(const aero_flow2d *s, int j, float *restrict fx)
                             u[i + 1], u[i + 2]);
 }
 
-AERO_FLOW2D_CLONES
+AERO_CLONES
 static void flux_u_y(const aero_flow2d *s, int j, float *restrict fy)
 {
     const int sx = s->sx;
@@ -704,7 +694,7 @@ static void flux_u_y(const aero_flow2d *s, int j, float *restrict fy)
 
 /* fluxes of v momentum of row j: x faces at the corners (i + 1, j),
    fx[i] for -1 <= i < nx, y faces at the cell centres (i, j + 1/2) */
-AERO_FLOW2D_CLONES
+AERO_CLONES
 static void flux_v_x(const aero_flow2d *s, int j, float *restrict fx)
 {
     const int sx = s->sx;
@@ -714,7 +704,7 @@ static void flux_v_x(const aero_flow2d *s, int j, float *restrict fx)
                             v[i + 1], v[i + 2]);
 }
 
-AERO_FLOW2D_CLONES
+AERO_CLONES
 static void flux_v_y(const aero_flow2d *s, int j, float *restrict fy)
 {
     const int sx = s->sx;
@@ -731,7 +721,7 @@ typedef void flux_row(const aero_flow2d *s, int j, float *restrict f);
    from 1; v: rows from 1, nodes from 0), each row's y fluxes through its
    bottom faces being those of the row below. On a stretched grid, iy, an
    and as are the rows' y metrics (fill_rows), else NULL. */
-AERO_FLOW2D_CLONES
+AERO_CLONES
 static void momentum(aero_flow2d *s, const float *q, float *hq,
                      flux_row *flux_x, flux_row *flux_y, int j0, int i0,
                      const float *iy, const float *an, const float *as)
@@ -768,7 +758,7 @@ static void momentum(aero_flow2d *s, const float *q, float *hq,
 /* u* = u^n + dt ((1 + r/2) H^n - r/2 H^(n-1) - grad p^(n-1/2)),
    r = dt / dt_prev (Adams-Bashforth 2 with a variable step, Euler at the
    first step; incremental pressure) */
-AERO_FLOW2D_CLONES
+AERO_CLONES
 static void advance_explicit(aero_flow2d *s)
 {
     const int nx = s->nx, ny = s->ny;
@@ -820,7 +810,7 @@ static void convective_outflow(aero_flow2d *s)
 
 /* sponge layer: u <- U + (u - U)(1 - sigma dt), v <- v (1 - sigma dt),
    so that vortices leave through the convective outflow without feedback */
-AERO_FLOW2D_CLONES
+AERO_CLONES
 static void damp_outflow(aero_flow2d *s)
 {
     const int nx = s->nx, ny = s->ny;
@@ -863,7 +853,7 @@ static void force_body(aero_flow2d *s)
 
 /* the y direction of the Poisson problem, all x modes at once (Thomas);
    the cosine transform pair along x scales by 2 nx */
-AERO_FLOW2D_CLONES
+AERO_CLONES
 static void solve_tridiagonal(aero_flow2d *s)
 {
     const int nx = s->nx, ny = s->ny;
@@ -927,7 +917,7 @@ static void force_cavity_walls(aero_flow2d *s)
    x[j] cos(pi k (j + 1/2) / n): with v the row reordered (x[0], x[2],
    ..., x[3], x[1]) and V its DFT, Y[k] = 2 Re(W_k V[k]) and Y[n - k] =
    -2 Im(W_k V[k]), W_k = exp(-i pi k / (2 n)) (Makhoul 1980) */
-AERO_FLOW2D_CLONES
+AERO_CLONES
 static void cosine_forward(aero_flow2d *s)
 {
     const int n = s->nx, h = n / 2, nc = h + 1;
@@ -963,7 +953,7 @@ static void cosine_forward(aero_flow2d *s)
    2 sum_k Y[k] cos(pi k (j + 1/2) / n) = 2 n times the inverse of
    cosine_forward: V[k] = conj(W_k) (Y[k] - i Y[n - k]) (V[0] = Y[0],
    V[n/2] = sqrt(2) Y[n/2]), its real inverse DFT unordered */
-AERO_FLOW2D_CLONES
+AERO_CLONES
 static void cosine_inverse(aero_flow2d *s)
 {
     const int n = s->nx, h = n / 2, nc = h + 1;
@@ -998,7 +988,7 @@ static void cosine_inverse(aero_flow2d *s)
 }
 
 /* lap(dp) = div(u*) / dt, u = u* - dt grad(dp), p += dp */
-AERO_FLOW2D_CLONES
+AERO_CLONES
 static void project(aero_flow2d *s)
 {
     const int nx = s->nx, ny = s->ny;
@@ -1061,7 +1051,7 @@ static int check_finite(aero_flow2d *s)
    jumped would shift the force in one step, and every jump would be a
    click in g = dF/dt. A speed-up faster than the follower is held at 1.2
    times the goal's step (CFL 0.6 for the default 0.5). */
-AERO_FLOW2D_CLONES
+AERO_CLONES
 static float peak_speed(const aero_flow2d *s)
 {
     float m = 2.0f;

@@ -8,6 +8,7 @@
  * gives for the first cell. */
 #include "turbulence2d.h"
 
+#include "aero_clones.h"
 #include "aero_fftw.h"
 #include <math.h>
 #include <string.h>
@@ -32,14 +33,6 @@
 #define MAX0(a, b) ((a) > (b) ? (a) : (b))
 #define MIN0(a, b) ((a) < (b) ? (a) : (b))
 
-#if defined(__x86_64__) && defined(__linux__) && defined(__has_attribute)
-#if __has_attribute(target_clones)
-#define CLONES __attribute__((target_clones("avx2", "default")))
-#endif
-#endif
-#ifndef CLONES
-#define CLONES
-#endif
 
 int aero_turbulence2d_alloc(aero_flow2d *s)
 {
@@ -138,7 +131,7 @@ static void fill_ghost_cells(aero_flow2d *s, float *q, float inflow)
    square roots here, out of the loops that vectorise), the production's factor
    (Kato and Launder: strain times vorticity, none at a stagnation point),
    and the diffusivities nu + sigma* k / omega, nu + sigma k / omega */
-CLONES
+AERO_CLONES
 static void cell_terms(aero_flow2d *s)
 {
     const int nx = s->nx, ny = s->ny, sx = s->sx;
@@ -212,7 +205,7 @@ static inline float transport(const float *q, const float *g, int pw,
 }
 
 /* the new k and omega of row j */
-CLONES
+AERO_CLONES
 static void transport_row(aero_flow2d *s, int j)
 {
     const int nx = s->nx, ny = s->ny, pw = nx + 2;
@@ -274,7 +267,7 @@ static void transport_row(aero_flow2d *s, int j)
 /* nu_t at the cell centres (zero inside the body), its maximum, and at
    the corners where column face i meets row face j, the mean of the
    (up to) four cells around it */
-CLONES
+AERO_CLONES
 static void eddy_viscosities(aero_flow2d *s)
 {
     const int nx = s->nx, ny = s->ny;
@@ -319,7 +312,7 @@ void aero_turbulence2d_step(aero_flow2d *s)
     eddy_viscosities(s);
 }
 
-CLONES
+AERO_CLONES
 void aero_turbulence2d_stress(aero_flow2d *s)
 {
     const int nx = s->nx, ny = s->ny, sx = s->sx, cw = nx + 1;

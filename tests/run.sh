@@ -51,6 +51,14 @@ log_clean() { # LOG: no creation failure, no error in Pd's log (Pd reports
     fi
 }
 section() { echo; echo "== $*"; }
+in_range() { # NAME VALUE LO HI SOURCE: a measured value against a published
+    # window (an empty VALUE fails)
+    if awk -v x="$2" -v lo="$3" -v hi="$4" 'BEGIN { exit !(x != "" && x >= lo && x <= hi) }'; then
+        pass "$1 = $2 in $3..$4 ($5)"
+    else
+        fail "$1 = ${2:-?} not in $3..$4 ($5)"
+    fi
+}
 # ONLY=pattern (e.g. ONLY=vortex sh tests/run.sh) runs only the unit tests,
 # object test scripts and help patches whose path contains the pattern.
 only() { case "$1" in *"${ONLY:-}"*) return 0 ;; *) return 1 ;; esac; }

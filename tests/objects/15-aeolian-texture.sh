@@ -167,13 +167,6 @@ reports_at_least "$OUT/tx-bad-msgs.log" "[aeolian~]" 8
 #     (Cd 1.0-1.3, Roshko 1961; the texture's is ~1.76), the square
 #     prism's St and Cd onto a face, the sword's clicks
 tex_meta() { build/aerotex info "textures/$1.wav" | sed -n "s/^$2=//p"; }
-in_range() { # name value lo hi source
-    if awk -v x="$2" -v lo="$3" -v hi="$4" 'BEGIN { exit !(x >= lo && x <= hi) }'; then
-        pass "$1 = $2 in $3..$4 ($5)"
-    else
-        fail "$1 = $2 not in $3..$4 ($5)"
-    fi
-}
 cyl_re=$(tex_meta cylinder re)
 in_range "cylinder St" "$(tex_meta cylinder st)" 0.19 0.21 "Roshko 1954"
 cl_fit=$(awk -v re="$cyl_re" 'BEGIN { x = log(re / 1600) / log(10)

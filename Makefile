@@ -329,7 +329,7 @@ fuzz:
 	@$(MAKE) --no-print-directory deps
 	@FUZZ_SECONDS=$(FUZZ_SECONDS) sh fuzz/run.sh
 
-# grid convergence of the textures' flows (~10 minutes on 2 cores):
+# grid convergence of the textures' flows (~40 minutes on 2 cores):
 # tests/convergence/test_*.c, each run once
 convergence.binaries = $(patsubst tests/convergence/%.c,$(BUILD)/convergence/%,\
     $(sort $(wildcard tests/convergence/test_*.c)))

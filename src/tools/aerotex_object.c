@@ -4,6 +4,7 @@
  * src/core/solve/body_flow.c, the shapes in src/core/common/body_shape.c. */
 #include "aerotex.h"
 #include "aero_air.h"
+#include "aero_util.h"
 #include "body_flow.h"
 #include "strip_body.h"
 #include "texture.h"
@@ -285,7 +286,7 @@ static int run_directions(void *plan, void *tasks)
         direction_task *c = &ctx[k];
         p.angle = o->angles[k];
         p.threads = inner;
-        p.seed = j->seed * 2654435761u + 7919u * (unsigned)(k + 1);
+        p.seed = aero_run_seed(j->seed, k);
         p.plan_lock = aerotex_plan_lock;
         c->task.job = &j->job;
         c->task.index = k;

@@ -3,6 +3,7 @@
  * simulated in parallel. The physics is in src/core/solve/vortex_sound.c. */
 #include "aerotex.h"
 #include "aero_air.h"
+#include "aero_util.h"
 #include "texture.h"
 #include "bandwidth_extension.h"
 #include "vortex_sound.h"
@@ -183,7 +184,7 @@ static int run_speeds(void *job, void *tasks)
         long steps;
         p.speed = j->speeds[k];
         /* independent turbulence per speed */
-        p.seed = j->vp.seed * 2654435761u + 7919u * (uint32_t)(k + 1);
+        p.seed = aero_run_seed(j->vp.seed, k);
         p.plan_lock = aerotex_plan_lock;
         c->task.job = &j->job;
         c->task.index = k;

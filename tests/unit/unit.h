@@ -57,6 +57,13 @@ static inline double unit_rms(const float *x, int n)
     return sqrt(sum / n);
 }
 
+/* the change from coarse to fine in percent of coarse (a grid-convergence
+   figure) */
+static inline double unit_change_percent(double fine, double coarse)
+{
+    return 100.0 * (fine - coarse) / coarse;
+}
+
 static int unit_summary(void)
 {
     printf("%d passed, %d failed\n", unit_passed, unit_failed);

@@ -67,6 +67,15 @@ static inline double aero_uniform(uint32_t *state)
     return (double)(int32_t)aero_xorshift32(state) * (1.0 / 2147483648.0);
 }
 
+/* the seed of run k (0, 1, ...) of several independent runs made from one
+   user seed, such as a texture's directions or speeds: the seed scrambled
+   by 2^32 over the golden ratio, then a prime step per run, so that
+   neighbouring seeds and runs start far apart */
+static inline uint32_t aero_run_seed(uint32_t seed, int k)
+{
+    return seed * 2654435761u + 7919u * (uint32_t)(k + 1);
+}
+
 /* neither NaN nor infinite (works without isfinite's C99 math macros) */
 static inline int aero_is_finite(double v)
 {

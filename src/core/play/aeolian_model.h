@@ -95,7 +95,6 @@ typedef struct aero_aeolian_model {
     int primed_phase;
     double envelope, envelope_lp; /* low-passed noise of the envelope */
 
-
     float scratch_amp[AERO_AEOLIAN_CHUNK];
     float scratch_sin[AERO_AEOLIAN_CHUNK];
     float scratch_cos[AERO_AEOLIAN_CHUNK];

@@ -13,7 +13,6 @@
 #define VELOCITY_TAU_S 0.008 /* smoothing of pose-derived velocities */
 #define MIN_SPEED 1e-6       /* below this the flow direction is unknown */
 
-
 /* R(q) v for a unit quaternion q = (w, x, y, z) */
 static void rotate(const double *q, const double *v, double *out)
 {

@@ -3,7 +3,6 @@
  * retarded time. */
 #include "field_render.h"
 
-
 #include "aero_air.h"
 #include "aero_util.h"
 #include "aero_ramp.h"

@@ -40,7 +40,6 @@
 #define AERO_STICK_CHUNK 32          /* samples per geometry update */
 #define AERO_STICK_MAX_DELAY_S 1.0   /* sound travel time kept: 343 m */
 
-
 typedef struct {
     double pos;          /* texture coordinate, frames */
     double inc;          /* frames per sample at the last chunk's end */

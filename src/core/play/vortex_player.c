@@ -130,7 +130,6 @@ int aero_vortex_player_set_speeds(aero_vortex_player *m, const double *u,
     return 0;
 }
 
-
 int aero_vortex_player_set_positions(aero_vortex_player *m,
                                      const double *xyz, int count)
 {

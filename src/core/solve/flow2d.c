@@ -6,7 +6,6 @@
 #include "flow2d.h"
 #include "turbulence2d.h"
 #include "aero_air.h"
-
 #include "aero_clones.h"
 #include "aero_fftw.h"
 #include <math.h>
@@ -626,9 +625,6 @@ int aero_flow2d_set_body(aero_flow2d *s, const aero_shape2d *shape,
     start_uniform_stream(s);
     return 0;
 }
-
-/* the step's loops (the functions marked AERO_CLONES) get AVX2 clones
-   (aero_clones.h) */
 
 /* ghost layers: uniform inflow, free-slip sides, zero-gradient outflow */
 AERO_CLONES

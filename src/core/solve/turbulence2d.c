@@ -33,7 +33,6 @@
 #define MAX0(a, b) ((a) > (b) ? (a) : (b))
 #define MIN0(a, b) ((a) < (b) ? (a) : (b))
 
-
 int aero_turbulence2d_alloc(aero_flow2d *s)
 {
     const size_t n = (size_t)s->nx * s->ny;

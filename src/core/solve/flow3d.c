@@ -2,6 +2,7 @@
 #include "flow3d.h"
 #include "aero_air.h"
 
+#include "aero_clones.h"
 #include "aero_fftw.h"
 #include <math.h>
 #include <stdio.h>
@@ -24,6 +25,17 @@
     for (int k = 0; k < s->nz; k++)                                       \
         for (int j = 0; j < s->ny; j++)                                   \
             for (int i = 0; i < s->nx; i++)
+
+/* the cells i = 0..nx-1 of a row, with im and ip their neighbours across
+   the periodic x side: CELL(i, im, ip) on the two edge cells apart, so
+   that the loop between them vectorises (nx >= 4, check_params) */
+#define F3_ROW(nx, CELL)                                                  \
+    do {                                                                  \
+        CELL(0, (nx) - 1, 1);                                             \
+        for (int i_ = 1; i_ < (nx) - 1; i_++)                             \
+            CELL(i_, i_ - 1, i_ + 1);                                     \
+        CELL((nx) - 1, (nx) - 2, 0);                                      \
+    } while (0)
 
 /* i modulo n for any int (the common case is one step out of range) */
 static inline int wrap(int i, int n)
@@ -214,65 +226,122 @@ static inline int floor_int(float x)
     return i - (x < (float)i);
 }
 
-/* the smallest and largest of the 8 lattice values around a sample point
-   (layers a and b, rows j0 and j1, columns i0 and i1): the MacCormack
-   limiter's bounds */
-static inline void corner_range(const float *a, const float *b, int nx,
-                                int i0, int i1, int j0, int j1, float *mm)
+/* the longest row (check_params) */
+#define ROW_MAX 1024
+
+/* the departure points of one row of faces, in grid coordinates of the
+   faces' own lattice */
+typedef struct {
+    float fi[ROW_MAX], fj[ROW_MAX], fk[ROW_MAX];
+} row_points;
+
+/* a field's lattice as the sampler sees it: layer0 the address of its
+   layer 0, first its lowest layer (-1 for u and v, which carry a ghost
+   layer below; 0 for w); both reach up to layer nz; periodic in i, j */
+typedef struct {
+    const float *layer0;
+    int first, nx, ny, nz, plane;
+} lattice;
+
+/* the 8 lattice values around a sample point and its weights */
+typedef struct {
+    float c00, c01, c10, c11, d00, d01, d10, d11; /* layers k0, k0 + 1 */
+    float tx, ty, tz;
+} corners;
+
+/* the corners of departure point i: no branches, only selects and
+   indexed loads, so that the loops over a row vectorise (AVX2 gathers).
+   The coordinates are held within a box length of the box along x and y
+   (advect_pass), so one wrap brings an index into range */
+static inline corners corners_at(const lattice *L, const row_points *pt,
+                                 int i)
 {
-    const float c[8] = {a[j0 * nx + i0], a[j0 * nx + i1], a[j1 * nx + i0],
-                        a[j1 * nx + i1], b[j0 * nx + i0], b[j0 * nx + i1],
-                        b[j1 * nx + i0], b[j1 * nx + i1]};
-    float lo = c[0], hi = c[0];
-    for (int q = 1; q < 8; q++) {
-        lo = min_f(lo, c[q]);
-        hi = max_f(hi, c[q]);
-    }
-    mm[0] = lo;
-    mm[1] = hi;
+    const float *f = L->layer0;
+    const int nx = L->nx, ny = L->ny, nz = L->nz;
+    const float x = pt->fi[i], y = pt->fj[i];
+    float z = pt->fk[i];
+    int i0, j0, k0, i1, j1, a, b;
+    corners r;
+    z = z < (float)L->first ? (float)L->first : z;
+    z = z > (float)nz ? (float)nz : z;
+    i0 = floor_int(x);
+    j0 = floor_int(y);
+    k0 = floor_int(z);
+    r.tx = x - (float)i0;
+    r.ty = y - (float)j0;
+    r.tz = z - (float)k0;
+    r.tz = k0 >= nz ? 1.0f : r.tz;
+    k0 = k0 >= nz ? nz - 1 : k0;
+    i0 += i0 < 0 ? nx : 0;
+    i0 -= i0 >= nx ? nx : 0;
+    j0 += j0 < 0 ? ny : 0;
+    j0 -= j0 >= ny ? ny : 0;
+    i1 = i0 + 1 == nx ? 0 : i0 + 1;
+    j1 = j0 + 1 == ny ? 0 : j0 + 1;
+    a = k0 * L->plane;
+    b = a + L->plane;
+    r.c00 = f[a + j0 * nx + i0];
+    r.c01 = f[a + j0 * nx + i1];
+    r.c10 = f[a + j1 * nx + i0];
+    r.c11 = f[a + j1 * nx + i1];
+    r.d00 = f[b + j0 * nx + i0];
+    r.d01 = f[b + j0 * nx + i1];
+    r.d10 = f[b + j1 * nx + i0];
+    r.d11 = f[b + j1 * nx + i1];
+    return r;
 }
 
-/* trilinear sample of a face field at grid coordinates (fi, fj, fk) of its
-   own lattice; periodic in i, j. first is the field's lowest layer (-1 for
-   u and v, which carry a ghost layer below; 0 for w), layer0 the address
-   of its layer 0; both reach up to layer nz. With mm (not NULL) also the
-   smallest and largest of the 8 values around it (the MacCormack
-   limiter) */
-static inline float sample_face(const aero_flow3d *s, const float *layer0,
-                                int first, float fi, float fj, float fk,
-                                float *mm)
+static inline float trilinear(const corners *r)
 {
-    int i0, j0, k0, i1, j1;
-    float tx, ty, tz;
-    if (fk < (float)first) fk = (float)first;
-    if (fk > (float)s->nz) fk = (float)s->nz;
-    i0 = floor_int(fi);
-    j0 = floor_int(fj);
-    k0 = floor_int(fk);
-    tx = fi - i0;
-    ty = fj - j0;
-    tz = fk - k0;
-    if (k0 >= s->nz) {
-        k0 = s->nz - 1;
-        tz = 1.0f;
+    const float a00 = r->c00 + r->tx * (r->c01 - r->c00);
+    const float a10 = r->c10 + r->tx * (r->c11 - r->c10);
+    const float b00 = r->d00 + r->tx * (r->d01 - r->d00);
+    const float b10 = r->d10 + r->tx * (r->d11 - r->d10);
+    const float a0 = a00 + r->ty * (a10 - a00), b0 = b00 + r->ty * (b10 - b00);
+    return a0 + r->tz * (b0 - a0);
+}
+
+/* trilinear samples of a field at a row's departure points (n of them) */
+AERO_CLONES
+static void sample_row(const lattice *L, const row_points *pt, int n,
+                       float *restrict out)
+{
+#pragma omp simd
+    for (int i = 0; i < n; i++) {
+        const corners r = corners_at(L, pt, i);
+        out[i] = trilinear(&r);
     }
-    i0 = wrap(i0, s->nx);
-    j0 = wrap(j0, s->ny);
-    i1 = i0 + 1 == s->nx ? 0 : i0 + 1;
-    j1 = j0 + 1 == s->ny ? 0 : j0 + 1;
-    {
-        const float *a = layer0 + (ptrdiff_t)k0 * (ptrdiff_t)s->plane;
-        const float *b = a + s->plane;
-        const int nx = s->nx;
-        float a00 = a[j0 * nx + i0] + tx * (a[j0 * nx + i1] - a[j0 * nx + i0]);
-        float a10 = a[j1 * nx + i0] + tx * (a[j1 * nx + i1] - a[j1 * nx + i0]);
-        float b00 = b[j0 * nx + i0] + tx * (b[j0 * nx + i1] - b[j0 * nx + i0]);
-        float b10 = b[j1 * nx + i0] + tx * (b[j1 * nx + i1] - b[j1 * nx + i0]);
-        float a0 = a00 + ty * (a10 - a00), b0 = b00 + ty * (b10 - b00);
-        if (mm)
-            corner_range(a, b, nx, i0, i1, j0, j1, mm);
-        return a0 + tz * (b0 - a0);
+}
+
+/* the same, with the smallest and largest of the 8 values around each
+   point (the MacCormack limiter's bounds) */
+AERO_CLONES
+static void sample_row_bounds(const lattice *L, const row_points *pt, int n,
+                              float *restrict out, float *restrict lo,
+                              float *restrict hi)
+{
+#pragma omp simd
+    for (int i = 0; i < n; i++) {
+        const corners r = corners_at(L, pt, i);
+        out[i] = trilinear(&r);
+        lo[i] = min_f(min_f(min_f(min_f(min_f(min_f(min_f(
+                    r.c00, r.c01), r.c10), r.c11), r.d00), r.d01), r.d10),
+                    r.d11);
+        hi[i] = max_f(max_f(max_f(max_f(max_f(max_f(max_f(
+                    r.c00, r.c01), r.c10), r.c11), r.d00), r.d01), r.d10),
+                    r.d11);
     }
+}
+
+/* a row's samples of one field, with the bounds when lo is not NULL
+   (offset o into lo and hi) */
+static void sample_into(const lattice *L, const row_points *pt, int n,
+                        float *out, float *lo, float *hi, size_t o)
+{
+    if (lo)
+        sample_row_bounds(L, pt, n, out, lo + o, hi + o);
+    else
+        sample_row(L, pt, n, out);
 }
 
 /* the fields one advection pass reads and writes */
@@ -282,83 +351,97 @@ typedef struct {
     float *lo, *hi;         /* limiter bounds, 3 fields of uvn (or NULL) */
 } advect_io;
 
+/* the departure point of face i of a row, carried by the face velocity
+   (U, V, W) for c = dt / h: at most a box length away along the periodic
+   x and y (so that one wrap brings it back), any distance along z (the
+   sampler clamps it) */
+static inline void depart(row_points *pt, int i, float x0, float y0,
+                          float z0, float U, float V, float W, float c,
+                          float limx, float limy)
+{
+    const float dx = max_f(-limx, min_f(limx, U * c));
+    const float dy = max_f(-limy, min_f(limy, V * c));
+    pt->fi[i] = x0 - dx;
+    pt->fj[i] = y0 - dy;
+    pt->fk[i] = z0 - W * c;
+}
+
+/* the mean of four face values, in one order (the same sum every time) */
+static inline float mean4(float a, float b, float c, float d)
+{
+    return 0.25f * (a + b + c + d);
+}
+
 /* semi-Lagrangian advection (FSJ01 sec. 3): each face value is the field
-   at the point the current velocity came from dt ago (dt < 0: forwards) */
+   at the point the current velocity came from dt ago (dt < 0: forwards).
+   Row by row: the departure points of a row's u, v and w faces (the
+   neighbours across the periodic x side at i = 0 and nx - 1 taken apart,
+   so that the rest vectorises), then their samples (sample_row) */
 static void advect_pass(aero_flow3d *s, const advect_io *io, double dt)
 {
     const int nx = s->nx, ny = s->ny, nz = s->nz;
-    const float c = (float)(dt / s->p.h), lim = (float)nx;
+    const float c = (float)(dt / s->p.h);
+    const float limx = (float)nx, limy = (float)ny;
     const float *u = s->u, *v = s->v, *w = s->w;
     const size_t uvn = s->plane * (size_t)(nz + 2);
+    const lattice lu = {io->u + s->plane, -1, nx, ny, nz, (int)s->plane};
+    const lattice lv = {io->v + s->plane, -1, nx, ny, nz, (int)s->plane};
+    const lattice lw = {io->w, 0, nx, ny, nz, (int)s->plane};
     F3_SLABS
-    for (int k = 0; k < nz; k++)
+    for (int k = 0; k < nz; k++) {
+        row_points pt;
         for (int j = 0; j < ny; j++) {
-            int jm = j ? j - 1 : ny - 1, jp = j + 1 == ny ? 0 : j + 1;
-            for (int i = 0; i < nx; i++) {
-                int im = i ? i - 1 : nx - 1, ip = i + 1 == nx ? 0 : i + 1;
-                float mm[2];
-                size_t a;
-                /* u face (i, j+1/2, k+1/2) */
-                float U = u[AERO_F3_UV(s, i, j, k)];
-                float V = 0.25f * (v[AERO_F3_UV(s, im, j, k)] +
-                                   v[AERO_F3_UV(s, i, j, k)] +
-                                   v[AERO_F3_UV(s, im, jp, k)] +
-                                   v[AERO_F3_UV(s, i, jp, k)]);
-                float W = 0.25f * (w[AERO_F3_C(s, im, j, k)] +
-                                   w[AERO_F3_C(s, i, j, k)] +
-                                   w[AERO_F3_C(s, im, j, k + 1)] +
-                                   w[AERO_F3_C(s, i, j, k + 1)]);
-                float dx = max_f(-lim, min_f(lim, U * c));
-                float dy = max_f(-lim, min_f(lim, V * c));
-                float dz = W * c;
-                a = AERO_F3_UV(s, i, j, k);
-                io->du[a] = sample_face(s, io->u + s->plane, -1, i - dx,
-                                        j - dy, k - dz, io->lo ? mm : NULL);
-                if (io->lo) {
-                    io->lo[a] = mm[0];
-                    io->hi[a] = mm[1];
-                }
-                /* v face (i+1/2, j, k+1/2) */
-                U = 0.25f * (u[AERO_F3_UV(s, i, jm, k)] +
-                             u[AERO_F3_UV(s, ip, jm, k)] +
-                             u[AERO_F3_UV(s, i, j, k)] +
-                             u[AERO_F3_UV(s, ip, j, k)]);
-                V = v[AERO_F3_UV(s, i, j, k)];
-                W = 0.25f * (w[AERO_F3_C(s, i, jm, k)] +
-                             w[AERO_F3_C(s, i, j, k)] +
-                             w[AERO_F3_C(s, i, jm, k + 1)] +
-                             w[AERO_F3_C(s, i, j, k + 1)]);
-                dx = max_f(-lim, min_f(lim, U * c));
-                dy = max_f(-lim, min_f(lim, V * c));
-                dz = W * c;
-                io->dv[a] = sample_face(s, io->v + s->plane, -1, i - dx,
-                                        j - dy, k - dz, io->lo ? mm : NULL);
-                if (io->lo) {
-                    io->lo[uvn + a] = mm[0];
-                    io->hi[uvn + a] = mm[1];
-                }
-                /* w face (i+1/2, j+1/2, k+1), k+1 = 1..nz */
-                U = 0.25f * (u[AERO_F3_UV(s, i, j, k)] +
-                             u[AERO_F3_UV(s, ip, j, k)] +
-                             u[AERO_F3_UV(s, i, j, k + 1)] +
-                             u[AERO_F3_UV(s, ip, j, k + 1)]);
-                V = 0.25f * (v[AERO_F3_UV(s, i, j, k)] +
-                             v[AERO_F3_UV(s, i, jp, k)] +
-                             v[AERO_F3_UV(s, i, j, k + 1)] +
-                             v[AERO_F3_UV(s, i, jp, k + 1)]);
-                W = w[AERO_F3_C(s, i, j, k + 1)];
-                dx = max_f(-lim, min_f(lim, U * c));
-                dy = max_f(-lim, min_f(lim, V * c));
-                dz = W * c;
-                a = AERO_F3_C(s, i, j, k + 1);
-                io->dw[a] = sample_face(s, io->w, 0, i - dx, j - dy,
-                                        (k + 1) - dz, io->lo ? mm : NULL);
-                if (io->lo) {
-                    io->lo[2 * uvn + a] = mm[0];
-                    io->hi[2 * uvn + a] = mm[1];
-                }
-            }
+            const int jm = j ? j - 1 : ny - 1, jp = j + 1 == ny ? 0 : j + 1;
+            const float y0 = (float)j, z0 = (float)k, z1 = (float)(k + 1);
+            /* rows of u, v (layers k, k + 1) and w (k, k + 1) */
+            const float *uj = u + AERO_F3_UV(s, 0, j, k);
+            const float *ujm = u + AERO_F3_UV(s, 0, jm, k);
+            const float *uj1 = u + AERO_F3_UV(s, 0, j, k + 1);
+            const float *vj = v + AERO_F3_UV(s, 0, j, k);
+            const float *vjp = v + AERO_F3_UV(s, 0, jp, k);
+            const float *vj1 = v + AERO_F3_UV(s, 0, j, k + 1);
+            const float *vjp1 = v + AERO_F3_UV(s, 0, jp, k + 1);
+            const float *wj = w + AERO_F3_C(s, 0, j, k);
+            const float *wjm = w + AERO_F3_C(s, 0, jm, k);
+            const float *wj1 = w + AERO_F3_C(s, 0, j, k + 1);
+            const float *wjm1 = w + AERO_F3_C(s, 0, jm, k + 1);
+            const size_t a = AERO_F3_UV(s, 0, j, k);
+            const size_t aw = AERO_F3_C(s, 0, j, k + 1);
+            /* u face (i, j+1/2, k+1/2): V and W from the cells either
+               side, i - 1 and i */
+#define U_FACE(i, im)                                                      \
+    depart(&pt, i, (float)(i), y0, z0, uj[i],                              \
+           mean4(vj[im], vj[i], vjp[im], vjp[i]),                          \
+           mean4(wj[im], wj[i], wj1[im], wj1[i]), c, limx, limy)
+            U_FACE(0, nx - 1);
+            for (int i = 1; i < nx; i++)
+                U_FACE(i, i - 1);
+#undef U_FACE
+            sample_into(&lu, &pt, nx, io->du + a, io->lo, io->hi, a);
+            /* v face (i+1/2, j, k+1/2): U from faces i and i + 1 of rows
+               j - 1 and j, W from rows j - 1 and j */
+#define V_FACE(i, ip)                                                      \
+    depart(&pt, i, (float)(i), y0, z0,                                     \
+           mean4(ujm[i], ujm[ip], uj[i], uj[ip]), vj[i],                   \
+           mean4(wjm[i], wj[i], wjm1[i], wj1[i]), c, limx, limy)
+            for (int i = 0; i < nx - 1; i++)
+                V_FACE(i, i + 1);
+            V_FACE(nx - 1, 0);
+#undef V_FACE
+            sample_into(&lv, &pt, nx, io->dv + a, io->lo, io->hi, uvn + a);
+            /* w face (i+1/2, j+1/2, k+1), k+1 = 1..nz */
+#define W_FACE(i, ip)                                                      \
+    depart(&pt, i, (float)(i), y0, z1,                                     \
+           mean4(uj[i], uj[ip], uj1[i], uj1[ip]),                          \
+           mean4(vj[i], vjp[i], vj1[i], vjp1[i]), wj1[i], c, limx, limy)
+            for (int i = 0; i < nx - 1; i++)
+                W_FACE(i, i + 1);
+            W_FACE(nx - 1, 0);
+#undef W_FACE
+            sample_into(&lw, &pt, nx, io->dw + aw, io->lo, io->hi,
+                        2 * uvn + aw);
         }
+    }
 }
 
 /* the boundary layers of any u, v, w triple (as apply_boundaries) */
@@ -486,25 +569,43 @@ static inline float ddz(const aero_flow3d *s, const float *f, size_t c,
 
 void aero_flow3d_vorticity(aero_flow3d *s)
 {
+    const int nx = s->nx, ny = s->ny, nz = s->nz;
+    const size_t pl = s->plane;
     const float ih = (float)(1.0 / s->p.h);
     centre_velocity(s);
-    F3_EACH_CELL(i, j, k) {
-        const f3_cell n = cell_at(s, i, j, k);
-        const size_t c = n.c;
-        size_t xm = AERO_F3_C(s, n.im, j, k), xp = AERO_F3_C(s, n.ip, j, k);
-        size_t ym = AERO_F3_C(s, i, n.jm, k), yp = AERO_F3_C(s, i, n.jp, k);
-        float dwdy = 0.5f * (s->cz[yp] - s->cz[ym]);
-        float dvdz = ddz(s, s->cy, c, k);
-        float dudz = ddz(s, s->cx, c, k);
-        float dwdx = 0.5f * (s->cz[xp] - s->cz[xm]);
-        float dvdx = 0.5f * (s->cy[xp] - s->cy[xm]);
-        float dudy = 0.5f * (s->cx[yp] - s->cx[ym]);
-        float ox = (dwdy - dvdz) * ih, oy = (dudz - dwdx) * ih,
-              oz = (dvdx - dudy) * ih;
-        s->ox[c] = ox;
-        s->oy[c] = oy;
-        s->oz[c] = oz;
-        s->omag[c] = sqrtf(ox * ox + oy * oy + oz * oz);
+    F3_SLABS
+    for (int k = 0; k < nz; k++) {
+        /* d/dz: centred inside, one-sided in the first and last layer (as
+           ddz) */
+        const ptrdiff_t up = k + 1 < nz ? (ptrdiff_t)pl : 0,
+                        down = k > 0 ? (ptrdiff_t)pl : 0;
+        const float half = k > 0 && k + 1 < nz ? 0.5f : 1.0f;
+        for (int j = 0; j < ny; j++) {
+            const int jm = j ? j - 1 : ny - 1, jp = j + 1 == ny ? 0 : j + 1;
+            const size_t c = AERO_F3_C(s, 0, j, k);
+            const ptrdiff_t ym = ((ptrdiff_t)jm - j) * nx,
+                            yp = ((ptrdiff_t)jp - j) * nx;
+            const float *cx = s->cx + c, *cy = s->cy + c, *cz = s->cz + c;
+            float *ox = s->ox + c, *oy = s->oy + c, *oz = s->oz + c;
+            float *om = s->omag + c;
+#define VORTICITY_CELL(i, im, ip)                                          \
+    do {                                                                   \
+        const float dwdy = 0.5f * (cz[yp + i] - cz[ym + i]);               \
+        const float dvdz = half * (cy[up + i] - cy[i - down]);             \
+        const float dudz = half * (cx[up + i] - cx[i - down]);             \
+        const float dwdx = 0.5f * (cz[ip] - cz[im]);                       \
+        const float dvdx = 0.5f * (cy[ip] - cy[im]);                       \
+        const float dudy = 0.5f * (cx[yp + i] - cx[ym + i]);               \
+        const float wx = (dwdy - dvdz) * ih, wy = (dudz - dwdx) * ih,      \
+                    wz = (dvdx - dudy) * ih;                               \
+        ox[i] = wx;                                                        \
+        oy[i] = wy;                                                        \
+        oz[i] = wz;                                                        \
+        om[i] = sqrtf(wx * wx + wy * wy + wz * wz);                        \
+    } while (0)
+            F3_ROW(nx, VORTICITY_CELL);
+#undef VORTICITY_CELL
+        }
     }
 }
 
@@ -512,7 +613,7 @@ void aero_flow3d_vorticity(aero_flow3d *s)
    (N x omega) at the cell centres, averaged onto the faces */
 static void confine(aero_flow3d *s, double dt)
 {
-    const int nz = s->nz;
+    const int nx = s->nx, ny = s->ny, nz = s->nz;
     const double h_over_l = s->p.confinement_length > 0.0
                                 ? s->p.h / s->p.confinement_length
                                 : 1.0;
@@ -521,33 +622,58 @@ static void confine(aero_flow3d *s, double dt)
     aero_flow3d_vorticity(s);
     /* the force goes into cx, cy, cz (the centred velocity is not needed
        any more) */
-    F3_EACH_CELL(i, j, k) {
-        const f3_cell n = cell_at(s, i, j, k);
-        const size_t c = n.c;
-        float gx = 0.5f * (s->omag[AERO_F3_C(s, n.ip, j, k)] -
-                           s->omag[AERO_F3_C(s, n.im, j, k)]);
-        float gy = 0.5f * (s->omag[AERO_F3_C(s, i, n.jp, k)] -
-                           s->omag[AERO_F3_C(s, i, n.jm, k)]);
-        float gz = ddz(s, s->omag, c, k);
-        float g = sqrtf(gx * gx + gy * gy + gz * gz);
-        float inv = g > 1e-20f ? a / g : 0.0f;
-        if (s->near_body && s->near_body[c])
-            inv = 0.0f;
-        float Nx = gx * inv, Ny = gy * inv, Nz = gz * inv;
-        s->cx[c] = Ny * s->oz[c] - Nz * s->oy[c];
-        s->cy[c] = Nz * s->ox[c] - Nx * s->oz[c];
-        s->cz[c] = Nx * s->oy[c] - Ny * s->ox[c];
+    F3_SLABS
+    for (int k = 0; k < nz; k++) {
+        const ptrdiff_t up = k + 1 < nz ? (ptrdiff_t)pl : 0,
+                        down = k > 0 ? (ptrdiff_t)pl : 0;
+        const float half = k > 0 && k + 1 < nz ? 0.5f : 1.0f;
+        for (int j = 0; j < ny; j++) {
+            const int jm = j ? j - 1 : ny - 1, jp = j + 1 == ny ? 0 : j + 1;
+            const size_t c = AERO_F3_C(s, 0, j, k);
+            const ptrdiff_t ym = ((ptrdiff_t)jm - j) * nx,
+                            yp = ((ptrdiff_t)jp - j) * nx;
+            const float *om = s->omag + c;
+            const float *ox = s->ox + c, *oy = s->oy + c, *oz = s->oz + c;
+            const unsigned char *nb = s->near_body ? s->near_body + c : NULL;
+            float *fx = s->cx + c, *fy = s->cy + c, *fz = s->cz + c;
+#define CONFINE_CELL(i, im, ip)                                            \
+    do {                                                                   \
+        const float gx = 0.5f * (om[ip] - om[im]);                         \
+        const float gy = 0.5f * (om[yp + i] - om[ym + i]);                 \
+        const float gz = half * (om[up + i] - om[i - down]);               \
+        const float g = sqrtf(gx * gx + gy * gy + gz * gz);                \
+        float inv = g > 1e-20f ? a / g : 0.0f;                             \
+        if (nb) inv = nb[i] ? 0.0f : inv;                                  \
+        fx[i] = (gy * inv) * oz[i] - (gz * inv) * oy[i];                   \
+        fy[i] = (gz * inv) * ox[i] - (gx * inv) * oz[i];                   \
+        fz[i] = (gx * inv) * oy[i] - (gy * inv) * ox[i];                   \
+    } while (0)
+            F3_ROW(nx, CONFINE_CELL);
+#undef CONFINE_CELL
+        }
     }
-    F3_EACH_CELL(i, j, k) {
-        const f3_cell n = cell_at(s, i, j, k);
-        const size_t c = n.c;
-        s->u[AERO_F3_UV(s, i, j, k)] +=
-            0.5f * (s->cx[c] + s->cx[AERO_F3_C(s, n.im, j, k)]);
-        s->v[AERO_F3_UV(s, i, j, k)] +=
-            0.5f * (s->cy[c] + s->cy[AERO_F3_C(s, i, n.jm, k)]);
-        if (k > 0)
-            s->w[c] += 0.5f * (s->cz[c] + s->cz[c - pl]);
-    }
+    F3_SLABS
+    for (int k = 0; k < nz; k++)
+        for (int j = 0; j < ny; j++) {
+            const int jm = j ? j - 1 : ny - 1;
+            const size_t c = AERO_F3_C(s, 0, j, k);
+            const float *fx = s->cx + c, *fy = s->cy + c, *fz = s->cz + c;
+            const float *fym = s->cy + AERO_F3_C(s, 0, jm, k);
+            float *u = s->u + AERO_F3_UV(s, 0, j, k);
+            float *v = s->v + AERO_F3_UV(s, 0, j, k);
+            float *w = s->w + c;
+#define FACE_FORCE(i, im, ip)                                              \
+    do {                                                                   \
+        (void)(ip);                                                        \
+        u[i] += 0.5f * (fx[i] + fx[im]);                                   \
+        v[i] += 0.5f * (fy[i] + fym[i]);                                   \
+    } while (0)
+            F3_ROW(nx, FACE_FORCE);
+#undef FACE_FORCE
+            if (k > 0)
+                for (int i = 0; i < nx; i++)
+                    w[i] += 0.5f * (fz[i] + fz[i - (ptrdiff_t)pl]);
+        }
     for (size_t c = 0; c < pl; c++) /* the top face: its one cell */
         s->w[(size_t)nz * pl + c] += s->cz[(size_t)(nz - 1) * pl + c];
 }
@@ -558,20 +684,21 @@ static void diffuse_field(const aero_flow3d *s, const float *src, float *dst,
                           int k0, int k1, int uv, float r)
 {
     const int nx = s->nx, ny = s->ny;
+    const size_t pl = s->plane;
     F3_SLABS
     for (int k = k0; k <= k1; k++)
         for (int j = 0; j < ny; j++) {
-            int jm = j ? j - 1 : ny - 1, jp = j + 1 == ny ? 0 : j + 1;
-            for (int i = 0; i < nx; i++) {
-                int im = i ? i - 1 : nx - 1, ip = i + 1 == nx ? 0 : i + 1;
-                size_t c = uv ? AERO_F3_UV(s, i, j, k) : AERO_F3_C(s, i, j, k);
-                size_t o = c - (size_t)j * nx - i;
-                float lap = src[o + j * nx + im] + src[o + j * nx + ip] +
-                            src[o + jm * nx + i] + src[o + jp * nx + i] +
-                            src[c - s->plane] + src[c + s->plane] -
-                            6.0f * src[c];
-                dst[c] = src[c] + r * lap;
-            }
+            const int jm = j ? j - 1 : ny - 1, jp = j + 1 == ny ? 0 : j + 1;
+            const size_t c = uv ? AERO_F3_UV(s, 0, j, k) : AERO_F3_C(s, 0, j, k);
+            const float *row = src + c, *below = row - pl, *above = row + pl;
+            const float *rm = src + c + ((ptrdiff_t)jm - j) * nx;
+            const float *rp = src + c + ((ptrdiff_t)jp - j) * nx;
+            float *out = dst + c;
+#define DIFFUSE_CELL(i, im, ip)                                            \
+    out[i] = row[i] + r * (row[im] + row[ip] + rm[i] + rp[i] + below[i] +  \
+                           above[i] - 6.0f * row[i])
+            F3_ROW(nx, DIFFUSE_CELL);
+#undef DIFFUSE_CELL
         }
 }
 

@@ -18,14 +18,6 @@
     _Pragma("omp parallel for schedule(static) num_threads(s->p.threads) \
              if (s->p.threads > 1)")
 
-/* the loop over every cell (i, j, k) of the layers 0..nz-1, on the
-   solver's threads (F3_SLABS); the loop's body follows */
-#define F3_EACH_CELL(i, j, k)                                             \
-    F3_SLABS                                                              \
-    for (int k = 0; k < s->nz; k++)                                       \
-        for (int j = 0; j < s->ny; j++)                                   \
-            for (int i = 0; i < s->nx; i++)
-
 /* the cells i = 0..nx-1 of a row, with im and ip their neighbours across
    the periodic x side: CELL(i, im, ip) on the two edge cells apart, so
    that the loop between them vectorises (nx >= 4, check_params) */
@@ -524,47 +516,31 @@ static void advect(aero_flow3d *s, double dt)
     }
 }
 
-/* cell (i, j, k): its index c among the cell-centred values and its
-   neighbours' columns and rows across the periodic x and y sides */
-typedef struct {
-    int im, ip, jm, jp;
-    size_t c;
-} f3_cell;
-
-static inline f3_cell cell_at(const aero_flow3d *s, int i, int j, int k)
-{
-    f3_cell n;
-    n.im = i ? i - 1 : s->nx - 1;
-    n.ip = i + 1 == s->nx ? 0 : i + 1;
-    n.jm = j ? j - 1 : s->ny - 1;
-    n.jp = j + 1 == s->ny ? 0 : j + 1;
-    n.c = AERO_F3_C(s, i, j, k);
-    return n;
-}
-
 /* cell-centred velocity into cx, cy, cz */
 static void centre_velocity(aero_flow3d *s)
 {
-    F3_EACH_CELL(i, j, k) {
-        const f3_cell n = cell_at(s, i, j, k);
-        s->cx[n.c] = 0.5f * (s->u[AERO_F3_UV(s, i, j, k)] +
-                             s->u[AERO_F3_UV(s, n.ip, j, k)]);
-        s->cy[n.c] = 0.5f * (s->v[AERO_F3_UV(s, i, j, k)] +
-                             s->v[AERO_F3_UV(s, i, n.jp, k)]);
-        s->cz[n.c] = 0.5f * (s->w[AERO_F3_C(s, i, j, k)] +
-                             s->w[AERO_F3_C(s, i, j, k + 1)]);
-    }
-}
-
-/* d/dz of a cell-centred field at (i, j, k): central inside, one-sided at
-   the bottom and top layers; returns the difference and its span (cells) */
-static inline float ddz(const aero_flow3d *s, const float *f, size_t c,
-                        int k)
-{
+    const int nx = s->nx, ny = s->ny;
     const size_t pl = s->plane;
-    if (k == 0) return f[c + pl] - f[c];
-    if (k == s->nz - 1) return f[c] - f[c - pl];
-    return 0.5f * (f[c + pl] - f[c - pl]);
+    F3_SLABS
+    for (int k = 0; k < s->nz; k++)
+        for (int j = 0; j < ny; j++) {
+            const int jp = j + 1 == ny ? 0 : j + 1;
+            const size_t c = AERO_F3_C(s, 0, j, k);
+            const float *u = s->u + AERO_F3_UV(s, 0, j, k);
+            const float *v = s->v + AERO_F3_UV(s, 0, j, k);
+            const float *vp = s->v + AERO_F3_UV(s, 0, jp, k);
+            const float *w = s->w + c, *wp = w + pl;
+            float *cx = s->cx + c, *cy = s->cy + c, *cz = s->cz + c;
+#define CENTRE_CELL(i, im, ip)                                             \
+    do {                                                                   \
+        (void)(im);                                                        \
+        cx[i] = 0.5f * (u[i] + u[ip]);                                     \
+        cy[i] = 0.5f * (v[i] + vp[i]);                                     \
+        cz[i] = 0.5f * (w[i] + wp[i]);                                     \
+    } while (0)
+            F3_ROW(nx, CENTRE_CELL);
+#undef CENTRE_CELL
+        }
 }
 
 void aero_flow3d_vorticity(aero_flow3d *s)
@@ -575,8 +551,7 @@ void aero_flow3d_vorticity(aero_flow3d *s)
     centre_velocity(s);
     F3_SLABS
     for (int k = 0; k < nz; k++) {
-        /* d/dz: centred inside, one-sided in the first and last layer (as
-           ddz) */
+        /* d/dz: centred inside, one-sided in the first and last layer */
         const ptrdiff_t up = k + 1 < nz ? (ptrdiff_t)pl : 0,
                         down = k > 0 ? (ptrdiff_t)pl : 0;
         const float half = k > 0 && k + 1 < nz ? 0.5f : 1.0f;
@@ -729,33 +704,54 @@ void aero_flow3d_project(aero_flow3d *s)
     fftwf_complex *sp = s->spec;
     apply_boundaries(s);
     /* h^2 div u, the right-hand side (h^2 lap phi = h^2 div u) */
-    F3_EACH_CELL(i, j, k) {
-        const f3_cell n = cell_at(s, i, j, k);
-        s->phi[n.c] = h * (s->u[AERO_F3_UV(s, n.ip, j, k)] -
-                           s->u[AERO_F3_UV(s, i, j, k)] +
-                           s->v[AERO_F3_UV(s, i, n.jp, k)] -
-                           s->v[AERO_F3_UV(s, i, j, k)] +
-                           s->w[n.c + pl] - s->w[n.c]);
-    }
+    F3_SLABS
+    for (int k = 0; k < nz; k++)
+        for (int j = 0; j < ny; j++) {
+            const int jp = j + 1 == ny ? 0 : j + 1;
+            const float *u = s->u + AERO_F3_UV(s, 0, j, k);
+            const float *v = s->v + AERO_F3_UV(s, 0, j, k);
+            const float *vp = s->v + AERO_F3_UV(s, 0, jp, k);
+            const float *w = s->w + AERO_F3_C(s, 0, j, k), *wp = w + pl;
+            float *phi = s->phi + AERO_F3_C(s, 0, j, k);
+#define DIVERGENCE_CELL(i, im, ip)                                         \
+    do {                                                                   \
+        (void)(im);                                                        \
+        phi[i] = h * (u[ip] - u[i] + vp[i] - v[i] + wp[i] - w[i]);         \
+    } while (0)
+            F3_ROW(nx, DIVERGENCE_CELL);
+#undef DIVERGENCE_CELL
+        }
     fftwf_execute(s->fwd);
-    /* tridiagonal along z per (kx, ky) (sub- and super-diagonal 1) */
+    /* tridiagonal along z per (kx, ky) (sub- and super-diagonal 1): the
+       modes in blocks, each swept layer by layer, so that the loops over a
+       block's modes vectorise */
     {
-        const size_t stride = (size_t)nxh * ny;
+        const size_t stride = (size_t)nxh * ny, block = 64;
+        const int blocks = (int)((stride + block - 1) / block);
+        float *d = (float *)sp; /* re, im interleaved */
         F3_SLABS
-        for (size_t m = 0; m < stride; m++) {
-            const float *tm = s->tri_m + m;
-            fftwf_complex *d = sp + m;
-            d[0][0] *= tm[0];
-            d[0][1] *= tm[0];
+        for (int b = 0; b < blocks; b++) {
+            const size_t m0 = (size_t)b * block;
+            const size_t m1 = m0 + block < stride ? m0 + block : stride;
+            for (size_t m = m0; m < m1; m++) {
+                d[2 * m] *= s->tri_m[m];
+                d[2 * m + 1] *= s->tri_m[m];
+            }
             for (int k = 1; k < nz; k++) {
-                float q = tm[k * stride];
-                d[k * stride][0] = (d[k * stride][0] - d[(k - 1) * stride][0]) * q;
-                d[k * stride][1] = (d[k * stride][1] - d[(k - 1) * stride][1]) * q;
+                const float *q = s->tri_m + (size_t)k * stride;
+                float *dk = d + 2 * (size_t)k * stride, *dl = dk - 2 * stride;
+                for (size_t m = m0; m < m1; m++) {
+                    dk[2 * m] = (dk[2 * m] - dl[2 * m]) * q[m];
+                    dk[2 * m + 1] = (dk[2 * m + 1] - dl[2 * m + 1]) * q[m];
+                }
             }
             for (int k = nz - 2; k >= 0; k--) {
-                float q = tm[k * stride];
-                d[k * stride][0] -= q * d[(k + 1) * stride][0];
-                d[k * stride][1] -= q * d[(k + 1) * stride][1];
+                const float *q = s->tri_m + (size_t)k * stride;
+                float *dk = d + 2 * (size_t)k * stride, *du = dk + 2 * stride;
+                for (size_t m = m0; m < m1; m++) {
+                    dk[2 * m] -= q[m] * du[2 * m];
+                    dk[2 * m + 1] -= q[m] * du[2 * m + 1];
+                }
             }
         }
     }
@@ -763,16 +759,27 @@ void aero_flow3d_project(aero_flow3d *s)
     /* u -= grad phi (phi scaled by the unnormalised inverse FFT) */
     {
         const float g = norm * ih;
-        F3_EACH_CELL(i, j, k) {
-            const f3_cell n = cell_at(s, i, j, k);
-            float p = s->phi[n.c];
-            s->u[AERO_F3_UV(s, i, j, k)] -=
-                g * (p - s->phi[AERO_F3_C(s, n.im, j, k)]);
-            s->v[AERO_F3_UV(s, i, j, k)] -=
-                g * (p - s->phi[AERO_F3_C(s, i, n.jm, k)]);
-            if (k > 0)
-                s->w[n.c] -= g * (p - s->phi[n.c - pl]);
-        }
+        F3_SLABS
+        for (int k = 0; k < nz; k++)
+            for (int j = 0; j < ny; j++) {
+                const int jm = j ? j - 1 : ny - 1;
+                const float *p = s->phi + AERO_F3_C(s, 0, j, k);
+                const float *pm = s->phi + AERO_F3_C(s, 0, jm, k);
+                float *u = s->u + AERO_F3_UV(s, 0, j, k);
+                float *v = s->v + AERO_F3_UV(s, 0, j, k);
+                float *w = s->w + AERO_F3_C(s, 0, j, k);
+#define GRADIENT_CELL(i, im, ip)                                           \
+    do {                                                                   \
+        (void)(ip);                                                        \
+        u[i] -= g * (p[i] - p[im]);                                        \
+        v[i] -= g * (p[i] - pm[i]);                                        \
+    } while (0)
+                F3_ROW(nx, GRADIENT_CELL);
+#undef GRADIENT_CELL
+                if (k > 0)
+                    for (int i = 0; i < nx; i++)
+                        w[i] -= g * (p[i] - p[i - (ptrdiff_t)pl]);
+            }
         /* top face: phi = 0 there, so the ghost value is -phi[nz-1] */
         for (size_t c = 0; c < pl; c++)
             s->w[(size_t)nz * pl + c] += 2.0f * g * s->phi[(size_t)(nz - 1) * pl + c];

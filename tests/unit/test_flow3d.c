@@ -210,6 +210,45 @@ static void test_turbulent_stays_bounded(void)
     aero_flow3d_free(&s);
 }
 
+/* a NaN in the velocity (a step that diverged): every step after it
+   reports the divergence (-1) and none reads outside the box, with each
+   advection. Before the sampler clamped a NaN departure height, the
+   second step's samples were indexed from (int)NaN and crashed. */
+static void test_nan_reported(void)
+{
+    const int kinds[3] = {AERO_F3_SEMI_LAGRANGIAN, AERO_F3_MACCORMACK,
+                          AERO_F3_MACCORMACK_UNLIMITED};
+    printf("a NaN in the velocity is reported, every step\n");
+    for (int q = 0; q < 3; q++) {
+        aero_flow3d s;
+        aero_flow3d_params p;
+        char err[256];
+        int r1, r2, r3;
+        memset(&p, 0, sizeof p);
+        p.nx = p.ny = 8;
+        p.nz = 12;
+        p.h = 0.01;
+        p.u_ref = 2.0;
+        p.confinement = 0.3;
+        p.advection = kinds[q];
+        if (aero_flow3d_init(&s, &p, err, sizeof err)) {
+            UNIT_CHECK(0, "init failed: %s", err);
+            continue;
+        }
+        for (size_t c = 0; c < s.plane * (s.nz + 1); c++)
+            s.w[c] = 2.0f;
+        s.w[AERO_F3_C(&s, 3, 4, 2)] = NAN;
+        s.u[AERO_F3_UV(&s, 5, 1, 1)] = NAN;
+        r1 = aero_flow3d_step(&s, 0.002);
+        r2 = aero_flow3d_step(&s, 0.002);
+        r3 = aero_flow3d_step(&s, 0.002);
+        UNIT_CHECK(r1 == -1 && r2 == -1 && r3 == -1,
+                   "advection %d: steps after the NaN return %d %d %d "
+                   "(want -1)", kinds[q], r1, r2, r3);
+        aero_flow3d_free(&s);
+    }
+}
+
 static void test_bad_params(void)
 {
     aero_flow3d s;
@@ -376,5 +415,6 @@ int main(void)
     test_vorticity();
     test_turbulent_stays_bounded();
     test_bad_params();
+    test_nan_reported();
     return unit_summary();
 }

@@ -254,7 +254,9 @@ static inline corners corners_at(const lattice *L, const row_points *pt,
     float z = pt->fk[i];
     int i0, j0, k0, i1, j1, a, b;
     corners r;
-    z = z < (float)L->first ? (float)L->first : z;
+    /* NaN (a diverging step, which aero_flow3d_step reports after it)
+       goes to the lowest layer instead of an index far outside the box */
+    z = z > (float)L->first ? z : (float)L->first;
     z = z > (float)nz ? (float)nz : z;
     i0 = floor_int(x);
     j0 = floor_int(y);

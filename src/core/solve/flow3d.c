@@ -545,23 +545,43 @@ static void centre_velocity(aero_flow3d *s)
         }
 }
 
+/* row j of layer k of the cell-centred fields: its first cell c, the
+   offsets to the same cell in the rows either side across the periodic y
+   side (ym, yp) and in the layers above and below (up, down), and the
+   weight of their difference: d/dz is centred inside, one-sided in the
+   first and last layer */
+typedef struct {
+    size_t c;
+    ptrdiff_t ym, yp, up, down;
+    float half;
+} row_stencil;
+
+static inline row_stencil stencil_at(const aero_flow3d *s, int j, int k)
+{
+    const int ny = s->ny, nz = s->nz;
+    const int jm = j ? j - 1 : ny - 1, jp = j + 1 == ny ? 0 : j + 1;
+    row_stencil r;
+    r.c = AERO_F3_C(s, 0, j, k);
+    r.ym = ((ptrdiff_t)jm - j) * s->nx;
+    r.yp = ((ptrdiff_t)jp - j) * s->nx;
+    r.up = k + 1 < nz ? (ptrdiff_t)s->plane : 0;
+    r.down = k > 0 ? (ptrdiff_t)s->plane : 0;
+    r.half = k > 0 && k + 1 < nz ? 0.5f : 1.0f;
+    return r;
+}
+
 void aero_flow3d_vorticity(aero_flow3d *s)
 {
     const int nx = s->nx, ny = s->ny, nz = s->nz;
-    const size_t pl = s->plane;
     const float ih = (float)(1.0 / s->p.h);
     centre_velocity(s);
     F3_SLABS
-    for (int k = 0; k < nz; k++) {
-        /* d/dz: centred inside, one-sided in the first and last layer */
-        const ptrdiff_t up = k + 1 < nz ? (ptrdiff_t)pl : 0,
-                        down = k > 0 ? (ptrdiff_t)pl : 0;
-        const float half = k > 0 && k + 1 < nz ? 0.5f : 1.0f;
+    for (int k = 0; k < nz; k++)
         for (int j = 0; j < ny; j++) {
-            const int jm = j ? j - 1 : ny - 1, jp = j + 1 == ny ? 0 : j + 1;
-            const size_t c = AERO_F3_C(s, 0, j, k);
-            const ptrdiff_t ym = ((ptrdiff_t)jm - j) * nx,
-                            yp = ((ptrdiff_t)jp - j) * nx;
+            const row_stencil r = stencil_at(s, j, k);
+            const size_t c = r.c;
+            const ptrdiff_t ym = r.ym, yp = r.yp, up = r.up, down = r.down;
+            const float half = r.half;
             const float *cx = s->cx + c, *cy = s->cy + c, *cz = s->cz + c;
             float *ox = s->ox + c, *oy = s->oy + c, *oz = s->oz + c;
             float *om = s->omag + c;
@@ -583,7 +603,6 @@ void aero_flow3d_vorticity(aero_flow3d *s)
             F3_ROW(nx, VORTICITY_CELL);
 #undef VORTICITY_CELL
         }
-    }
 }
 
 /* vorticity confinement (FSJ01 eq. 11-12): a = eps (h / L) U_ref
@@ -600,15 +619,12 @@ static void confine(aero_flow3d *s, double dt)
     /* the force goes into cx, cy, cz (the centred velocity is not needed
        any more) */
     F3_SLABS
-    for (int k = 0; k < nz; k++) {
-        const ptrdiff_t up = k + 1 < nz ? (ptrdiff_t)pl : 0,
-                        down = k > 0 ? (ptrdiff_t)pl : 0;
-        const float half = k > 0 && k + 1 < nz ? 0.5f : 1.0f;
+    for (int k = 0; k < nz; k++)
         for (int j = 0; j < ny; j++) {
-            const int jm = j ? j - 1 : ny - 1, jp = j + 1 == ny ? 0 : j + 1;
-            const size_t c = AERO_F3_C(s, 0, j, k);
-            const ptrdiff_t ym = ((ptrdiff_t)jm - j) * nx,
-                            yp = ((ptrdiff_t)jp - j) * nx;
+            const row_stencil r = stencil_at(s, j, k);
+            const size_t c = r.c;
+            const ptrdiff_t ym = r.ym, yp = r.yp, up = r.up, down = r.down;
+            const float half = r.half;
             const float *om = s->omag + c;
             const float *ox = s->ox + c, *oy = s->oy + c, *oz = s->oz + c;
             const unsigned char *nb = s->near_body ? s->near_body + c : NULL;
@@ -628,7 +644,6 @@ static void confine(aero_flow3d *s, double dt)
             F3_ROW(nx, CONFINE_CELL);
 #undef CONFINE_CELL
         }
-    }
     F3_SLABS
     for (int k = 0; k < nz; k++)
         for (int j = 0; j < ny; j++) {

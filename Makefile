@@ -56,12 +56,16 @@ CORE_CFLAGS = -std=c99 -D_POSIX_C_SOURCE=200809L -O3 -fPIC -fopenmp \
     -Wall -Wextra -Wshadow $(CORE_INCLUDES)
 # the 3D solver's row loops (flow3d.c) vectorise only where a conversion
 # between int and float may run unconditionally: -fno-trapping-math (nothing
-# here reads the FP exception flags; the IEEE results are the same). Its
-# trilinear sampler is fastest with AVX2 gathers, which GCC's generic tuning
-# leaves out: asked for where the compiler knows the option
+# here reads the FP exception flags; the IEEE results are the same), and
+# its square roots (vorticity, confinement) only without errno:
+# -fno-math-errno (nothing reads errno after them; sqrtf is correctly
+# rounded either way). Its trilinear sampler is fastest with AVX2 gathers,
+# which GCC's generic tuning leaves out: asked for where the compiler knows
+# the option
 F3_GATHER := $(shell $(CC) -mtune-ctrl=use_gather -x c -c -o /dev/null \
     /dev/null 2>/dev/null && echo -mtune-ctrl=use_gather)
-$(BUILD)/core/solve/flow3d.o: CORE_CFLAGS += -fno-trapping-math $(F3_GATHER)
+$(BUILD)/core/solve/flow3d.o: CORE_CFLAGS += -fno-trapping-math -fno-math-errno \
+    $(F3_GATHER)
 core.sources = $(sort $(wildcard src/core/*/*.c))
 core.objects = $(patsubst src/core/%.c,$(BUILD)/core/%.o,$(core.sources))
 core.lib = $(BUILD)/libaero_core.a

@@ -29,6 +29,18 @@
         CELL((nx) - 1, (nx) - 2, 0);                                      \
     } while (0)
 
+/* the same, for a row that reads and writes so many arrays that the
+   compiler will not check every pair for overlap at run time: omp simd
+   tells it they do not overlap (each cell writes only its own cells) */
+#define F3_ROW_SIMD(nx, CELL)                                             \
+    do {                                                                  \
+        CELL(0, (nx) - 1, 1);                                             \
+        _Pragma("omp simd")                                               \
+        for (int i_ = 1; i_ < (nx) - 1; i_++)                             \
+            CELL(i_, i_ - 1, i_ + 1);                                     \
+        CELL((nx) - 1, (nx) - 2, 0);                                      \
+    } while (0)
+
 /* i modulo n for any int (the common case is one step out of range) */
 static inline int wrap(int i, int n)
 {
@@ -570,21 +582,17 @@ static inline row_stencil stencil_at(const aero_flow3d *s, int j, int k)
     return r;
 }
 
-void aero_flow3d_vorticity(aero_flow3d *s)
+/* the vorticity of one row (its cells from r.c on) and its magnitude */
+AERO_CLONES
+static void vorticity_row(const aero_flow3d *s, row_stencil r, float ih)
 {
-    const int nx = s->nx, ny = s->ny, nz = s->nz;
-    const float ih = (float)(1.0 / s->p.h);
-    centre_velocity(s);
-    F3_SLABS
-    for (int k = 0; k < nz; k++)
-        for (int j = 0; j < ny; j++) {
-            const row_stencil r = stencil_at(s, j, k);
-            const size_t c = r.c;
-            const ptrdiff_t ym = r.ym, yp = r.yp, up = r.up, down = r.down;
-            const float half = r.half;
-            const float *cx = s->cx + c, *cy = s->cy + c, *cz = s->cz + c;
-            float *ox = s->ox + c, *oy = s->oy + c, *oz = s->oz + c;
-            float *om = s->omag + c;
+    const int nx = s->nx;
+    const size_t c = r.c;
+    const ptrdiff_t ym = r.ym, yp = r.yp, up = r.up, down = r.down;
+    const float half = r.half;
+    const float *cx = s->cx + c, *cy = s->cy + c, *cz = s->cz + c;
+    float *ox = s->ox + c, *oy = s->oy + c, *oz = s->oz + c;
+    float *om = s->omag + c;
 #define VORTICITY_CELL(i, im, ip)                                          \
     do {                                                                   \
         const float dwdy = 0.5f * (cz[yp + i] - cz[ym + i]);               \
@@ -600,9 +608,60 @@ void aero_flow3d_vorticity(aero_flow3d *s)
         oz[i] = wz;                                                        \
         om[i] = sqrtf(wx * wx + wy * wy + wz * wz);                        \
     } while (0)
-            F3_ROW(nx, VORTICITY_CELL);
+    F3_ROW_SIMD(nx, VORTICITY_CELL);
 #undef VORTICITY_CELL
-        }
+}
+
+void aero_flow3d_vorticity(aero_flow3d *s)
+{
+    const int ny = s->ny, nz = s->nz;
+    const float ih = (float)(1.0 / s->p.h);
+    centre_velocity(s);
+    F3_SLABS
+    for (int k = 0; k < nz; k++)
+        for (int j = 0; j < ny; j++)
+            vorticity_row(s, stencil_at(s, j, k), ih);
+}
+
+/* the confinement force of one row (its cells from r.c on) into cx, cy,
+   cz; none in the cells next to the body (near_body) */
+AERO_CLONES
+static void confine_row(const aero_flow3d *s, row_stencil r, float a)
+{
+    const int nx = s->nx;
+    const size_t c = r.c;
+    const ptrdiff_t ym = r.ym, yp = r.yp, up = r.up, down = r.down;
+    const float half = r.half;
+    const float *om = s->omag + c;
+    const float *ox = s->ox + c, *oy = s->oy + c, *oz = s->oz + c;
+    const unsigned char *nb = s->near_body ? s->near_body + c : NULL;
+    float *fx = s->cx + c, *fy = s->cy + c, *fz = s->cz + c;
+#define CONFINE_CELL(i, im, ip, MASK)                                      \
+    do {                                                                   \
+        const float gx = 0.5f * (om[ip] - om[im]);                         \
+        const float gy = 0.5f * (om[yp + i] - om[ym + i]);                 \
+        const float gz = half * (om[up + i] - om[i - down]);               \
+        const float g = sqrtf(gx * gx + gy * gy + gz * gz);                \
+        float inv = g > 1e-20f ? a / g : 0.0f;                             \
+        MASK(i);                                                           \
+        fx[i] = (gy * inv) * oz[i] - (gz * inv) * oy[i];                   \
+        fy[i] = (gz * inv) * ox[i] - (gx * inv) * oz[i];                   \
+        fz[i] = (gx * inv) * oy[i] - (gy * inv) * ox[i];                   \
+    } while (0)
+#define NEAR_BODY_MASK(i) (inv = nb[i] ? 0.0f : inv)
+#define NO_MASK(i) ((void)0)
+#define CONFINE_NEAR_BODY(i, im, ip) CONFINE_CELL(i, im, ip, NEAR_BODY_MASK)
+#define CONFINE_FREE(i, im, ip) CONFINE_CELL(i, im, ip, NO_MASK)
+    /* two loops, so that neither tests for the mask in every cell */
+    if (nb)
+        F3_ROW_SIMD(nx, CONFINE_NEAR_BODY);
+    else
+        F3_ROW_SIMD(nx, CONFINE_FREE);
+#undef CONFINE_FREE
+#undef CONFINE_NEAR_BODY
+#undef NO_MASK
+#undef NEAR_BODY_MASK
+#undef CONFINE_CELL
 }
 
 /* vorticity confinement (FSJ01 eq. 11-12): a = eps (h / L) U_ref
@@ -620,30 +679,8 @@ static void confine(aero_flow3d *s, double dt)
        any more) */
     F3_SLABS
     for (int k = 0; k < nz; k++)
-        for (int j = 0; j < ny; j++) {
-            const row_stencil r = stencil_at(s, j, k);
-            const size_t c = r.c;
-            const ptrdiff_t ym = r.ym, yp = r.yp, up = r.up, down = r.down;
-            const float half = r.half;
-            const float *om = s->omag + c;
-            const float *ox = s->ox + c, *oy = s->oy + c, *oz = s->oz + c;
-            const unsigned char *nb = s->near_body ? s->near_body + c : NULL;
-            float *fx = s->cx + c, *fy = s->cy + c, *fz = s->cz + c;
-#define CONFINE_CELL(i, im, ip)                                            \
-    do {                                                                   \
-        const float gx = 0.5f * (om[ip] - om[im]);                         \
-        const float gy = 0.5f * (om[yp + i] - om[ym + i]);                 \
-        const float gz = half * (om[up + i] - om[i - down]);               \
-        const float g = sqrtf(gx * gx + gy * gy + gz * gz);                \
-        float inv = g > 1e-20f ? a / g : 0.0f;                             \
-        if (nb) inv = nb[i] ? 0.0f : inv;                                  \
-        fx[i] = (gy * inv) * oz[i] - (gz * inv) * oy[i];                   \
-        fy[i] = (gz * inv) * ox[i] - (gx * inv) * oz[i];                   \
-        fz[i] = (gx * inv) * oy[i] - (gy * inv) * ox[i];                   \
-    } while (0)
-            F3_ROW(nx, CONFINE_CELL);
-#undef CONFINE_CELL
-        }
+        for (int j = 0; j < ny; j++)
+            confine_row(s, stencil_at(s, j, k), a);
     F3_SLABS
     for (int k = 0; k < nz; k++)
         for (int j = 0; j < ny; j++) {

@@ -1,5 +1,5 @@
 /* aero: grid convergence of the sphere texture's 3D flow (`make
- * check-convergence`; ~30 minutes on 2 cores, so not in `make check`).
+ * check-convergence`; ~25 minutes on 2 cores, so not in `make check`).
  *
  * The flow of textures/sphere.wav (the paper's sphere, radius 5 cm, in a
  * 10 m/s flow, Re 6.8e4; the texture's domain, settling, 0.6 s record and

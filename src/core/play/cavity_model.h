@@ -58,11 +58,21 @@ typedef struct aero_cavity_model {
     double ramp_samples, ramp_left;
     int primed;
 
+    /* laws of the geometry, the listener and the level (recomputed when a
+       control or the exponent moves: laws_dirty) */
+    int laws_dirty;
+    double depth_hz[AERO_CAVITY_DEPTH_MODES];
+    double lock_scale[AERO_CAVITY_DEPTH_MODES]; /* 1 / (LOCK_WIDTH f_n) */
+    double mode_level[AERO_CAVITY_MODES]; /* tone amplitude per U^n, unlocked */
+    double level;                         /* p_rms per U^n, Pa */
+    double speed_power;  /* U^n at the end of the last chunk (n != 2) */
+
     /* model mode, per Rossiter mode m */
-    double phase[AERO_CAVITY_MODES];
-    double mode_gain[AERO_CAVITY_MODES]; /* at the end of the last block */
+    double phasor[AERO_CAVITY_MODES][2]; /* e^{i 2 pi phase} after the last chunk */
+    double mode_gain[AERO_CAVITY_MODES]; /* at the end of the last chunk */
     double freq_factor[AERO_CAVITY_MODES]; /* f_m / U, Hz per m/s */
     double noise_state[2];   /* band-pass of the shear-layer noise */
+    uint32_t noise_rng[4];   /* the white noise's four generators */
 
     /* texture mode */
     aero_texture *texture;   /* NULL: model mode */

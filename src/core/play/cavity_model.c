@@ -134,10 +134,11 @@ void aero_cavity_model_set_seed(aero_cavity_model *m, uint32_t seed)
         cis_cycles(&p, &m->phasor[k][0], &m->phasor[k][1], 1);
     }
     m->texture_pos = 0.5 + 0.5 * aero_uniform(&m->rng); /* scaled at use */
-    /* the noise's generators, never 0 */
-    for (int j = 0; j < 4; j++) {
+    /* the noise's and the tones' generators (four lanes each), never 0 */
+    for (int j = 0; j < 8; j++) {
         uint32_t x = aero_xorshift32(&m->rng) ^ (0x9e3779b9u * (j + 1));
-        m->noise_rng[j] = x ? x : 0x6c8e9cf5u + j;
+        uint32_t *state = j < 4 ? m->noise_rng + j : m->tone_rng + (j - 4);
+        *state = x ? x : 0x6c8e9cf5u + j;
     }
 }
 
@@ -318,6 +319,25 @@ static inline lane4 l4_uniform(lane4u *state)
     typedef int32_t lane4i __attribute__((vector_size(16)));
     return __builtin_convertvector((lane4i)x, lane4) * (1.0f / 2147483648.0f);
 }
+/* cos and sin of 2 pi p on each lane, 0 <= p < 2^20, to float precision:
+   as cis_cycles, Taylor to x^8, the quarter applied by bit masks */
+static inline void l4_cis(lane4 p, lane4 *c, lane4 *s)
+{
+    typedef int32_t lane4i __attribute__((vector_size(16)));
+    lane4 q = 4.0f * (p - __builtin_convertvector(
+                              __builtin_convertvector(p, lane4i), lane4));
+    lane4i k = __builtin_convertvector(q + 0.5f, lane4i);
+    lane4 x = (q - __builtin_convertvector(k, lane4)) * (float)(0.5 * AERO_PI);
+    lane4 x2 = x * x;
+    lane4 sn = x * (1.0f - x2 * (1.0f / 6) * (1.0f - x2 * (1.0f / 20) *
+                    (1.0f - x2 * (1.0f / 42))));
+    lane4 cs = 1.0f - x2 * 0.5f * (1.0f - x2 * (1.0f / 12) *
+                    (1.0f - x2 * (1.0f / 30) * (1.0f - x2 * (1.0f / 56))));
+    lane4i odd = -(k & 1), a = (lane4i)cs, b = (lane4i)sn;
+    lane4i ca = (a & ~odd) | (b & odd), sa = (b & ~odd) | (a & odd);
+    *c = (lane4)(ca ^ (((k + 1) & 2) << 30));
+    *s = (lane4)(sa ^ ((k & 2) << 30));
+}
 #else
 typedef struct { float v[LANES]; } lane4;
 typedef struct { uint32_t v[LANES]; } lane4u;
@@ -340,6 +360,15 @@ static inline lane4 l4_uniform(lane4u *state)
         r.v[j] = (float)(int32_t)x * (1.0f / 2147483648.0f);
     }
     return r;
+}
+static inline void l4_cis(lane4 p, lane4 *c, lane4 *s)
+{
+    double pd[LANES], cd[LANES], sd[LANES];
+    for (int j = 0; j < LANES; j++)
+        pd[j] = p.v[j];
+    cis_cycles(pd, cd, sd, LANES);
+    for (int j = 0; j < LANES; j++)
+        c->v[j] = (float)cd[j], s->v[j] = (float)sd[j];
 }
 #endif
 
@@ -385,49 +414,65 @@ static void process_model(aero_cavity_model *m, const float *u, float *out,
     if (!m->primed)
         memcpy(m->mode_gain, gain_end, sizeof(gain_end));
 
-    /* The tones. Sample i sounds at phase p + w (i + 1), p the phase after
-     * the last chunk (m->phasor); lane j starts at sample T j. The cosines
-     * and sines of w, w T and w n for all modes in one batch. */
-    double arg[3 * K], ca[3 * K], sa[3 * K];
-    for (int k = 0; k < K; k++) {
-        double g = 0;
-        for (int r = 0; r < 4; r++)
-            g += aero_uniform(&m->rng);
-        double step = sqrt(0.75 * width[k] * n / (2.0 * AERO_PI * sr)) * g;
-        double w = wrap_cycles((m->freq_factor[k] * u_mean * n / sr + step) / n);
-        arg[k] = w, arg[K + k] = w * len, arg[2 * K + k] = w * n;
-    }
-    cis_cycles(arg, ca, sa, 3 * K);
+    /* The tones. Each lane j (samples T j .. T j + T - 1) has its own
+     * frequency w_j = w + s_j / T, s_j the phase's random step over the
+     * lane, so the phase walks at every lane boundary (a frequency noise
+     * constant over T samples, whose line keeps its Lorentzian shape out
+     * to sr / (2 T) from the tone). Sample T j + t sounds at phase
+     * P_j + w_j (t + 1), P_j = p + sum_{j' < j} w_j' T, p the phase after
+     * the last chunk (m->phasor). */
+    double end[K], ce[K], se[K];
+    const int jl = (n - 1) / len, tl = (n - 1) % len;
     lane4 prev[K], cur[K], coef[K], slope[K];
-    double pc[K], ps[K];
+    lane4u rng;
+    memcpy(&rng, m->tone_rng, sizeof(rng));
     for (int k = 0; k < K; k++) {
-        const double *p0 = m->phasor[k];
-        double ec = ca[k], es = sa[k];
-        pc[k] = p0[0] * ec - p0[1] * es, ps[k] = p0[0] * es + p0[1] * ec;
-        /* the phase after this chunk, kept on the unit circle (one Newton
-           step of 1 / |z|: |z| is 1 to rounding) */
-        double zc = p0[0] * ca[2 * K + k] - p0[1] * sa[2 * K + k];
-        double zs = p0[0] * sa[2 * K + k] + p0[1] * ca[2 * K + k];
-        double norm = 1.5 - 0.5 * (zc * zc + zs * zs);
-        m->phasor[k][0] = zc * norm, m->phasor[k][1] = zs * norm;
+        double w = wrap_cycles(m->freq_factor[k] * u_mean / sr);
+        double sd = sqrt(0.75 * width[k] * len / (2.0 * AERO_PI * sr)) / len;
+        /* the lanes' steps, near-Gaussian (four uniforms each) */
+        lane4 g = l4_add(l4_add(l4_uniform(&rng), l4_uniform(&rng)),
+                         l4_add(l4_uniform(&rng), l4_uniform(&rng)));
+        double offset = 0.0;
+        lane4 wl, ol;
+        for (int j = 0; j < LANES; j++) {
+            double wj = wrap_cycles(w + sd * l4_get(g, j));
+            l4_set(&wl, j, (float)wj);
+            l4_set(&ol, j, (float)offset); /* < LANES T: no wrap needed */
+            if (j == jl)
+                end[k] = offset + wj * (tl + 1);
+            offset += wj * len;
+        }
+        /* the lanes in float: each restarts from its exact phase */
+        lane4 cw, sw, co, so;
+        l4_cis(wl, &cw, &sw);
+        l4_cis(ol, &co, &so);
         /* the gain glides from g0 to g1 over the chunk: the lanes carry
            g0, the slope (g1 - g0) / (g0 n) per sample multiplies later */
         double g0 = m->mode_gain[k], g1 = gain_end[k];
         slope[k] = l4_splat(g0 > 0.0 ? (float)((g1 - g0) / (g0 * n)) : 0.0f);
-        coef[k] = l4_splat((float)(2.0 * ec));
         if (!(g0 > 0.0))
             g0 = g1;
-        pc[k] *= g0, ps[k] *= g0;
         m->mode_gain[k] = g1;
+        /* z = g0 e^{i 2 pi P_j}: sample T j - 1; one step of w_j on */
+        lane4 pc = l4_splat((float)(g0 * m->phasor[k][0]));
+        lane4 ps = l4_splat((float)(g0 * m->phasor[k][1]));
+        lane4 zc = l4_sub(l4_mul(pc, co), l4_mul(ps, so));
+        lane4 zs = l4_add(l4_mul(pc, so), l4_mul(ps, co));
+        prev[k] = zs;
+        cur[k] = l4_add(l4_mul(zc, sw), l4_mul(zs, cw));
+        coef[k] = l4_add(cw, cw);
     }
-    for (int j = 0; j < LANES; j++)
-        for (int k = 0; k < K; k++) {
-            double ec = ca[k], es = sa[k], tc = ca[K + k], ts = sa[K + k];
-            l4_set(&prev[k], j, (float)(ps[k] * ec - pc[k] * es)); /* t = -1 */
-            l4_set(&cur[k], j, (float)ps[k]);                      /* t = 0 */
-            double c = pc[k] * tc - ps[k] * ts;
-            ps[k] = pc[k] * ts + ps[k] * tc, pc[k] = c;
-        }
+    memcpy(m->tone_rng, &rng, sizeof(rng));
+    /* the phase after this chunk, in double (it accumulates), kept on the
+       unit circle (one Newton step of 1 / |z|: |z| is 1 to rounding) */
+    cis_cycles(end, ce, se, K);
+    for (int k = 0; k < K; k++) {
+        const double *p0 = m->phasor[k];
+        double zc = p0[0] * ce[k] - p0[1] * se[k];
+        double zs = p0[0] * se[k] + p0[1] * ce[k];
+        double norm = 1.5 - 0.5 * (zc * zc + zs * zs);
+        m->phasor[k][0] = zc * norm, m->phasor[k][1] = zs * norm;
+    }
 
     /* Shear-layer noise: white noise between two one-pole low-passes at
      * f_1 / 2 and 4 f_4 (y1 = LP_hi(white), y2 = LP_lo(y1), the band
@@ -450,14 +495,14 @@ static void process_model(aero_cavity_model *m, const float *u, float *out,
         const lane4 af1 = l4_splat((float)a1), pf1 = l4_splat((float)p1);
         const lane4 af2 = l4_splat((float)a2), pf2 = l4_splat((float)p2);
         lane4 y1 = l4_splat(0.0f), y2 = y1;
-        lane4u rng;
-        memcpy(&rng, m->noise_rng, sizeof(rng));
+        lane4u white;
+        memcpy(&white, m->noise_rng, sizeof(white));
         for (int t = 0; t < len; t++) {
-            y1 = l4_add(l4_mul(pf1, y1), l4_mul(af1, l4_uniform(&rng)));
+            y1 = l4_add(l4_mul(pf1, y1), l4_mul(af1, l4_uniform(&white)));
             y2 = l4_add(l4_mul(pf2, y2), l4_mul(af2, y1));
             z1[t] = y1, z2[t] = y2;
         }
-        memcpy(m->noise_rng, &rng, sizeof(rng));
+        memcpy(m->noise_rng, &white, sizeof(white));
     }
     /* the start-state responses per t, and the carries lane to lane */
     double pw1[LANE_MAX], pw2[LANE_MAX], h[LANE_MAX];
@@ -482,7 +527,6 @@ static void process_model(aero_cavity_model *m, const float *u, float *out,
             s1 = n1;
         }
         /* the states at sample n - 1, for the next chunk */
-        int jl = (n - 1) / len, tl = (n - 1) % len;
         double cl1 = l4_get(c1, jl), cl2 = l4_get(c2, jl);
         s1 = l4_get(z1[tl], jl) + pw1[tl] * cl1;
         s2 = l4_get(z2[tl], jl) + a2 * h[tl] * cl1 + pw2[tl] * cl2;

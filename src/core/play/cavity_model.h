@@ -73,6 +73,7 @@ typedef struct aero_cavity_model {
     double freq_factor[AERO_CAVITY_MODES]; /* f_m / U, Hz per m/s */
     double noise_state[2];   /* band-pass of the shear-layer noise */
     uint32_t noise_rng[4];   /* the white noise's four generators */
+    uint32_t tone_rng[4];    /* the tones' phase steps' */
 
     /* texture mode */
     aero_texture *texture;   /* NULL: model mode */

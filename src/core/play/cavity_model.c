@@ -295,6 +295,9 @@ static void update_laws(aero_cavity_model *m)
  * its exact phase, and the noise's one-pole filters from zero per lane,
  * then corrected by the true start state carried from lane to lane. */
 enum { LANES = 4, CHUNK = 64, LANE_MAX = CHUNK / LANES };
+/* the largest per-sample phase step (cycles, uniform amplitude) within a
+   lane, where the coefficient's linear expansion (below) holds */
+#define MAX_STEP 0.01
 
 /* Four lanes of floats: GCC's vector extension where the compiler has it
  * (GCC, clang), else a plain array (the portable reference, also built
@@ -423,9 +426,28 @@ static void process_model(aero_cavity_model *m, const float *u, float *out,
      * the last chunk (m->phasor). */
     double end[K], ce[K], se[K];
     const int jl = (n - 1) / len, tl = (n - 1) % len;
-    lane4 prev[K], cur[K], coef[K], slope[K];
+    lane4 prev[K], cur[K], coef[K], slope[K], kick[K];
     lane4u rng;
     memcpy(&rng, m->tone_rng, sizeof(rng));
+    /* Within a lane the phase still wanders per sample: the recurrence's
+     * coefficient 2 cos(2 pi w) moves by -4 pi sin(2 pi w) e_t, e_t the
+     * per-sample step, so the lines keep their Lorentzian tails beyond
+     * sr / (2 T). The steps (uniform) are shared by the modes, whose lines
+     * lie apart, and sum to 0 over a lane (a bridge: the lane still ends
+     * on its phase). A wider line's steps above MAX_STEP cycles are kept
+     * only in the lane steps. The linear coefficient exceeds the exact one
+     * by (2 pi x)^2 cos(2 pi w) at most (x = step e_t, |e_t| < 2), so a
+     * lane of T samples can grow by at most (1 + 4 pi MAX_STEP)^T, and
+     * each lane starts again from its exact phase and level. */
+    lane4 e[LANE_MAX];
+    {
+        lane4 mean = l4_splat(0.0f);
+        for (int t = 0; t < len; t++)
+            mean = l4_add(mean, e[t] = l4_uniform(&rng));
+        mean = l4_mul(mean, l4_splat(1.0f / len));
+        for (int t = 0; t < len; t++)
+            e[t] = l4_sub(e[t], mean);
+    }
     for (int k = 0; k < K; k++) {
         double w = wrap_cycles(m->freq_factor[k] * u_mean / sr);
         double sd = sqrt(0.75 * width[k] * len / (2.0 * AERO_PI * sr)) / len;
@@ -461,6 +483,9 @@ static void process_model(aero_cavity_model *m, const float *u, float *out,
         prev[k] = zs;
         cur[k] = l4_add(l4_mul(zc, sw), l4_mul(zs, cw));
         coef[k] = l4_add(cw, cw);
+        double step = sqrt(3.0 * width[k] / (2.0 * AERO_PI * sr));
+        step = step < MAX_STEP ? step : MAX_STEP;
+        kick[k] = l4_mul(sw, l4_splat((float)(-4.0 * AERO_PI * step)));
     }
     memcpy(m->tone_rng, &rng, sizeof(rng));
     /* the phase after this chunk, in double (it accumulates), kept on the
@@ -548,7 +573,8 @@ static void process_model(aero_cavity_model *m, const float *u, float *out,
             lane4 y = cur[k];
             s1 = l4_add(s1, y);
             s2 = l4_add(s2, l4_mul(slope[k], y));
-            cur[k] = l4_sub(l4_mul(coef[k], y), prev[k]);
+            lane4 c = l4_add(coef[k], l4_mul(kick[k], e[t]));
+            cur[k] = l4_sub(l4_mul(c, y), prev[k]);
             prev[k] = y;
         }
         lane4 band = l4_add(l4_mul(ns, l4_sub(z1[t], z2[t])),

@@ -14,7 +14,12 @@
  * a bottle or a window gap); the others stay weak. Broadband shear-layer
  * noise lies under the tones. The pressure amplitude grows as U^n, n = 2 by
  * default (Dobashi's "amplitude ~ v^4" is an intensity law), and falls as
- * 1/r.
+ * 1/r. Each tone is a narrow line whose phase wanders (a Lorentzian of
+ * width 3 % of f, narrower when locked). It is rendered in float, 64
+ * samples at a time as four lanes of 16 (two-term recurrences, the noise
+ * filters run per lane and joined by their carried states), the laws and
+ * the phase's steps per chunk and lane; U^n per sample for n = 2, else
+ * once per chunk, gliding (cavity_model.c).
  *
  * Texture mode. A cavity texture from `aerotex cavity` (g = dF/dt per unit
  * width at the base speed v0) is read at a rate v/v0, scaled by (v/v0)^n

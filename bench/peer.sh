@@ -261,6 +261,8 @@ function ns(name, per) {
 function row(label, name, per, peer, peerper,   a, b, r, lo, hi, k, x) {
     a = ns(name, per)
     if (a < 0) { printf "  %-44s not measured\n", label; return }
+    if (best[name] - best["empty"] < 0.2 || (peer != "" && (peer in best) && best[peer] - best["empty"] < 0.2))
+        label = label " [under 0.2 s CPU: too short to time]"
     if (peer == "") { printf "  %-44s %7.2f ns per source-sample\n", label, a; return }
     b = ns(peer, peerper)
     if (b <= 0) { printf "  %-44s %7.2f ns per source-sample (peer not measured)\n", label, a; return }

@@ -27,7 +27,7 @@
 #
 # Timing: N instances fed one gusting speed (10 m/s +- 3, a [line~] ramp
 # every 10 ms), summed into a [catch~], Pd in batch mode at 48 kHz for S
-# seconds of sound; the CPU time (user + sys, from /usr/bin/time) of each
+# seconds of sound; the CPU time (user + sys, bash's time) of each
 # Pd run minus that of the same patch with no instance, the fastest of R
 # repetitions, the objects alternating within each repetition. Each run
 # prints the logical time it rendered and the level of the sum, checked
@@ -182,23 +182,16 @@ gen() {
     } >"$DIR/$1.pd"
 }
 
-TIME=/usr/bin/time
-# run NAME: CPU seconds (user + sys) of one render; checks that it rendered
-# S s of logical time and that the sum sounded (or, for the empty patch,
-# did not)
+# run NAME: CPU seconds (user + sys, bash's time keyword: bash is
+# Essential in Debian, /usr/bin/time is not) of one render; checks that it
+# rendered S s of logical time and that the sum sounded (or, for the empty
+# patch, did not)
 run() {
     log=$DIR/$1.log
     # shellcheck disable=SC2086
-    if [ -x $TIME ]; then
-        $TIME -f "bench-cpu %U %S %e" timeout 3600 "$PD_BIN" -batch -nogui -noaudio \
-            -noprefs -stderr -nostdpath -r $RATE -path "$ROOT" $SDT_FLAGS \
-            -open "$DIR/$1.pd" >"$log" 2>&1
-    else
-        start=$(date +%s.%N)
+    bash -c 'TIMEFORMAT="bench-cpu %3U %3S %3R"; time "$@"' run \
         timeout 3600 "$PD_BIN" -batch -nogui -noaudio -noprefs -stderr -nostdpath \
-            -r $RATE -path "$ROOT" $SDT_FLAGS -open "$DIR/$1.pd" >"$log" 2>&1
-        echo "bench-cpu $(date +%s.%N) $start" | awk '{ print $1, $2 - $3, 0, $2 - $3 }' >>"$log"
-    fi
+        -r $RATE -path "$ROOT" $SDT_FLAGS -open "$DIR/$1.pd" >"$log" 2>&1
     ms=$(sed -n 's/^bench-logical-ms: //p' "$log")
     db=$(sed -n 's/^bench-level-dB: //p' "$log")
     cpu=$(awk '/^bench-cpu/ { printf "%.3f", $2 + $3 }' "$log")

@@ -132,6 +132,9 @@ if command -v valgrind >/dev/null 2>&1; then
 fi
 
 [ -n "$BENCH_ONLY_AEOLIAN" ] && exit 0
+# the peer: [aeolian~] and [cavity~] against SDT's [windkarman~] and
+# [windcavity~], and both texture modes per source, in one run
+sh bench/peer.sh
 for b in bench/texture.sh bench/field.sh; do
     [ -f "$b" ] && sh "$b"
 done

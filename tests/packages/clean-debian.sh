@@ -117,7 +117,7 @@ vortex|-path aero|vortex~ -texture fire -listener 0 2 0|8|-|1
 body|-path aero|body~ -texture sphere -listener 0 1 0|20|-|1
 treebranch|-path aero|treebranch~ small -listener 0 -12 1.7|8|-|1
 leafwave|-path aero|leafwave~ small|8|-|1
-fieldsound|-path aero|fieldsound~ -demo 8 -sync|-|play|1
+fieldsound|-path aero|fieldsound~ -demo 8 -sync -listener 4 0 0|-|play|1
 lib|-lib aero|aeolian~ -d 0.01|10|-|1
 wind|-path aero|aero.wind~|-|-|1
 draft|-path aero|aero.draft~|-|-|2
@@ -125,7 +125,7 @@ fence|-path aero|aero.fence~|10|-|2
 fire|-path aero|aero.fire~|-|-|2
 swing|-path aero|aero.swing~|-|bang|2
 throw|-path aero|aero.throw~|-|bang|2
-whirl|-path aero|aero.whirl~|-|whirl 1|2
+whirl|-path aero|aero.whirl~|-|rate 4 \\, whirl 1|2
 tree|-path aero|aero.tree~ small|-|-|2"
 
 DUR=2000

@@ -106,7 +106,7 @@ for pkg in $packages Sources; do
             info=$(objdump -p "$b" 2>/dev/null)
             imports=$(echo "$info" | sed -n '/Import Tables/,/Export Address/p')
             exports=$(echo "$info" | sed -n '/Ordinal\/Name Pointer/,/^$/p' |
-                awk 'NF >= 2 && $1 ~ /^\[/ { print $NF }')
+                awk '/Ordinal/ { next } NF >= 2 && $1 ~ /^\[/ { print $NF }')
         else
             h=$(readelf -h "$b" 2>/dev/null)
             echo "$h" | grep -q "Class: *$format" && echo "$h" | grep -q "Machine:.*$cpu" ||

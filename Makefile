@@ -32,7 +32,10 @@ datadirs = $(if $(wildcard textures/*.wav),textures)
 datadirs += $(if $(wildcard trees/*.tree),trees)
 
 # No -ffast-math: the core relies on NaN checks (x != x) to sanitise input.
-CFLAGS = -Wall -Wextra -Wshadow -O3 -funroll-loops -fomit-frame-pointer
+# -fvisibility=hidden: an external exports only Pd's entry points, marked
+# AERO_PD_EXPORT (src/pd/aero_pd.h); tests/objects/96-exports.sh checks it.
+CFLAGS = -Wall -Wextra -Wshadow -O3 -funroll-loops -fomit-frame-pointer \
+    -fvisibility=hidden
 # src/core by role: common (shared data and laws), solve (the flow solvers
 # and the drivers that make textures), play (the real-time players)
 CORE_INCLUDES = -Isrc/core/common -Isrc/core/solve -Isrc/core/play
@@ -53,7 +56,7 @@ endif
 BUILD = build
 CORE_CC = $(CC)
 CORE_CFLAGS = -std=c99 -D_POSIX_C_SOURCE=200809L -O3 -fPIC -fopenmp \
-    -Wall -Wextra -Wshadow $(CORE_INCLUDES)
+    -fvisibility=hidden -Wall -Wextra -Wshadow $(CORE_INCLUDES)
 # the 3D solver's row loops (flow3d.c) vectorise only where a conversion
 # between int and float may run unconditionally: -fno-trapping-math (nothing
 # here reads the FP exception flags; the IEEE results are the same), and

@@ -32,6 +32,27 @@ Windows-amd64-64:windows-amd64-64.dll:pei-x86-64:-:64" ;;
     esac
 done
 binary_re='\.(pd_linux|so|dll|exe|dylib|pd_darwin|l_[a-z0-9]+|m_[a-z0-9]+|d_[a-z0-9]+)$'
+# the libraries a binary loads beyond the system's C library and Pd
+# (ELF: its NEEDED entries; PE: the DLLs it imports from)
+foreign_libs() { # BINARY FORMAT
+    if [ "$2" = pei-x86-64 ]; then
+        objdump -p "$1" 2>/dev/null | awk '/DLL Name:/ { print $3 }' |
+            grep -v -i -x -e kernel32.dll -e msvcrt.dll -e pd.dll
+    else
+        readelf -d "$1" 2>/dev/null | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p' |
+            grep -v -x -e libc.so.6 -e libm.so.6 -e libpthread.so.0 -e libdl.so.2 \
+                -e 'ld-linux.*'
+    fi
+}
+# negative control: the native build (make), linked to the system's
+# shared libsndfile and FFTW, fails the same check
+if [ -f aeolian~.pd_linux ]; then
+    libs=$(foreign_libs aeolian~.pd_linux ELF64 | tr '\n' ' ')
+    case "$libs" in
+        *libsndfile*) pass "negative control: the native aeolian~.pd_linux needs $libs" ;;
+        *) fail "negative control: the native aeolian~.pd_linux needs no libsndfile (${libs:-nothing})" ;;
+    esac
+fi
 glibc_max=""
 for pkg in $packages Sources; do
     fs=${pkg%%:*}
@@ -132,11 +153,15 @@ for pkg in $packages Sources; do
             echo "$imports" | grep -q -w class_new && ! echo "$imports" | grep -q -w class_new64 ||
                 wrong="$wrong $n:not-32-bit-floats"
         fi
+        libs=$(foreign_libs "$b" "$format" | tr '\n' ' ')
+        [ -z "$libs" ] || wrong="$wrong $n:needs:$libs"
         other=$(echo "$exports" | grep . | grep -v '_setup$' | head -3 | tr '\n' ' ')
         [ -z "$other" ] || wrong="$wrong $n:exports:$other"
     done
     if [ -z "$wrong" ]; then
-        pass "$(basename "$dek"): every binary is $format $cpu with $bits-bit floats, exports only *_setup"
+        what=$format
+        [ "$cpu" = - ] || what="$format $cpu"
+        pass "$(basename "$dek"): every binary is $what with $bits-bit floats, loads nothing but the C library and Pd, exports only *_setup"
     else
         fail "$(basename "$dek"):$wrong"
     fi

@@ -389,7 +389,7 @@ clean-robust:
 # (platforms/pd.sh, cached the same way).
 # ============================================================================
 PLATFORMS = linux-amd64 windows-amd64 linux-arm64 linux-armv7
-DEB_PACKAGES += cmake gcc-mingw-w64-x86-64-win32 gcc-mingw-w64-x86-64-posix \
+DEB_PACKAGES += gcc-mingw-w64-x86-64-win32 gcc-mingw-w64-x86-64-posix \
     gcc-aarch64-linux-gnu libc6-dev-arm64-cross \
     gcc-arm-linux-gnueabihf libc6-dev-armhf-cross
 .PHONY: platform platforms windows linux-amd64 linux-arm64 linux-armv7

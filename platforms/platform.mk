@@ -100,6 +100,7 @@ staged.files = $(addprefix $(STAGE)/,$(staged.dirs))
 
 .PHONY: all
 all: $(externals.32) $(externals.64) $(staged.data) $(staged.files) $(TOOLS)
+	@sh platforms/check-binaries.sh $(P) $(externals.32) $(externals.64)
 	@echo "$(STAGE): $(words $(externals.32) $(externals.64)) binaries$(if $(TOOLS), and $(TOOLS))"
 
 $(STAGE)/%.pd: help/%.pd

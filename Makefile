@@ -10,6 +10,9 @@
 #                   sources) in build/deken/
 #   make check-packages  the packages' contents, and the Linux ones loaded
 #                   and played in a minimal Debian with only Pd
+#   make platform P=windows-amd64|linux-amd64|linux-arm64|linux-armv7
+#                   the library folder for that platform in build/P/aero/,
+#                   cross-compiled, FFTW and libsndfile linked statically
 #   make check-gui  the help patches drawn by the Pd GUI (part of check)
 #   make check-libpd  aero inside libpd 0.16.1 (single, multi-instance,
 #                   threads under helgrind); CI runs it after make check
@@ -403,7 +406,7 @@ clean-robust:
 # (platforms/pd.sh, cached the same way).
 # ============================================================================
 PLATFORMS = linux-amd64 windows-amd64 linux-arm64 linux-armv7
-DEB_PACKAGES += cmake gcc-mingw-w64-x86-64-win32 gcc-mingw-w64-x86-64-posix \
+DEB_PACKAGES += gcc-mingw-w64-x86-64-win32 gcc-mingw-w64-x86-64-posix \
     gcc-aarch64-linux-gnu libc6-dev-arm64-cross \
     gcc-arm-linux-gnueabihf libc6-dev-armhf-cross
 .PHONY: platform platforms windows linux-amd64 linux-arm64 linux-armv7

@@ -6,7 +6,13 @@
 #   make check-pd056  the Pd tests again under Pd 0.56 (single and double
 #                   precision, 48 kHz), built from ../shared/vendor
 #   make double     the externals for double-precision Pd (*.linux-amd64-64.so)
-#   make deken      deken packages (single, double, sources) in build/deken/
+#   make deken      deken packages (every platform, both float sizes,
+#                   sources) in build/deken/
+#   make check-packages  the packages' contents, and the Linux ones loaded
+#                   and played in a minimal Debian with only Pd
+#   make platform P=windows-amd64|linux-amd64|linux-arm64|linux-armv7
+#                   the library folder for that platform in build/P/aero/,
+#                   cross-compiled, FFTW and libsndfile linked statically
 #   make check-gui  the help patches drawn by the Pd GUI (part of check)
 #   make check-libpd  aero inside libpd 0.16.1 (single, multi-instance,
 #                   threads under helgrind); CI runs it after make check
@@ -32,7 +38,10 @@ datadirs = $(if $(wildcard textures/*.wav),textures)
 datadirs += $(if $(wildcard trees/*.tree),trees)
 
 # No -ffast-math: the core relies on NaN checks (x != x) to sanitise input.
-CFLAGS = -Wall -Wextra -Wshadow -O3 -funroll-loops -fomit-frame-pointer
+# -fvisibility=hidden: an external exports only Pd's entry points, marked
+# AERO_PD_EXPORT (src/pd/aero_pd.h); tests/objects/96-exports.sh checks it.
+CFLAGS = -Wall -Wextra -Wshadow -O3 -funroll-loops -fomit-frame-pointer \
+    -fvisibility=hidden
 # src/core by role: common (shared data and laws), solve (the flow solvers
 # and the drivers that make textures), play (the real-time players)
 CORE_INCLUDES = -Isrc/core/common -Isrc/core/solve -Isrc/core/play
@@ -53,7 +62,7 @@ endif
 BUILD = build
 CORE_CC = $(CC)
 CORE_CFLAGS = -std=c99 -D_POSIX_C_SOURCE=200809L -O3 -fPIC -fopenmp \
-    -Wall -Wextra -Wshadow $(CORE_INCLUDES)
+    -fvisibility=hidden -Wall -Wextra -Wshadow $(CORE_INCLUDES)
 # the 3D solver's row loops (flow3d.c) vectorise only where a conversion
 # between int and float may run unconditionally: -fno-trapping-math (nothing
 # here reads the FP exception flags; the IEEE results are the same), and
@@ -195,35 +204,49 @@ textures:
 
 # --- packaging: deken packages (the Pd package manager's format) ----------
 # A deken package is a zip archive of the library folder named
-# NAME[vVERSION](OS-ARCH-FLOATSIZE).dek: one for single-precision Pd
-# (*.pd_linux), one for double precision (*.linux-amd64-64.so), and the
-# (Sources) package; each .dek.txt lists the objects with the DESCRIPTION of
-# their help patch's META, each .sha256 is the archive's checksum
-# (sha256sum -c). The version is the one of help/aero-meta.pd. (Debian's
-# `deken` tool cannot run offline: it fetches its hy runtime from PyPI, so
-# the archives are made here with zip, in the same format.)
+# NAME[vVERSION](OS-CPU-FLOATSIZE).dek. `make deken` makes one package per
+# platform and float size, zipped by platforms/deken.sh from the staged
+# folders build/PLATFORM/aero/ (`make platform P=...`):
+#   (Linux-amd64-32) *.pd_linux        (Linux-amd64-64) *.linux-amd64-64.so
+#   (Linux-arm64-32) *.pd_linux        (Linux-armv7-32) *.pd_linux
+#   (Windows-amd64-32) *.windows-amd64-32.dll
+#   (Windows-amd64-64) *.windows-amd64-64.dll
+# and (Sources) (git archive of HEAD); each with its .dek.txt (the objects
+# with the DESCRIPTION of their help patch's META) and .sha256.
+# One package per platform, not one multi-platform ("fat") package, which
+# deken also allows (several (ARCH) in one name): the arm and amd64 Linux
+# binaries all have to be named *.pd_linux (Pd 0.53, the Pd of Debian and
+# Raspberry Pi OS, knows no other Linux name), so they cannot share one
+# folder; a user downloads only the binaries Pd can load (deken's plugin
+# offers the packages of Pd's own platform and float size); and a platform
+# that fails its check does not hold back the others.
+# The version is the one of help/aero-meta.pd. (Debian's `deken` tool
+# cannot run offline: it fetches its hy runtime from PyPI, so the archives
+# are made here with zip, in the same format.)
+#   make deken DEKEN_PLATFORMS=linux-amd64   only some platforms
+#   make check-packages  every package's contents (tests/objects/96-packaging.sh)
+#                   and the Linux ones in a minimal Debian 12 with only Pd
+#                   (tests/packages/clean-debian.sh); run after the
+#                   platform builds (make deken builds what is missing)
 AERO_VERSION = $(shell sed -n 's/^\#X text [0-9]* [0-9]* VERSION \([0-9][0-9.]*\).*/\1/p' \
     help/aero-meta.pd | head -n 1)
 DEKEN_DIR = $(BUILD)/deken
-DEKEN_ARCH = $(shell uname -s)-$(shell uname -m | sed 's/x86_64/amd64/; s/aarch64/arm64/')
-DEKEN_NAME = aero[v$(AERO_VERSION)]
+DEKEN_PLATFORMS ?= linux-amd64 linux-arm64 linux-armv7 windows-amd64
 DEB_PACKAGES += unzip # the packaging test unpacks the .dek files
-deken.objects = $(class.sources:src/pd/%.c=%) \
-    $(patsubst abstractions/%.pd,%,$(wildcard abstractions/*.pd))
-deken: all
+DEB_PACKAGES += debootstrap # the clean Debian of check-packages
+deken:
 	@test -n "$(AERO_VERSION)" || { echo "no VERSION in help/aero-meta.pd" >&2; exit 1; }
 	rm -rf $(DEKEN_DIR)
-	$(MAKE) --no-print-directory -s install PDLIBDIR=$(CURDIR)/$(DEKEN_DIR)/stage
-	cd $(DEKEN_DIR)/stage && \
-	    zip -q -r "../$(DEKEN_NAME)($(DEKEN_ARCH)-32).dek" aero -x '*-64.so' && \
-	    zip -q -r "../$(DEKEN_NAME)($(DEKEN_ARCH)-64).dek" aero -x '*.pd_linux'
-	git archive --format=zip --prefix=aero/ \
-	    -o "$(DEKEN_DIR)/$(DEKEN_NAME)(Sources).dek" HEAD
-	sh tests/deken-objects.sh $(deken.objects) >$(DEKEN_DIR)/objects.txt
-	cd $(DEKEN_DIR) && for f in *.dek; do \
-	    cp objects.txt "$$f.txt" && sha256sum "$$f" >"$$f.sha256"; done
-	rm -rf $(DEKEN_DIR)/stage $(DEKEN_DIR)/objects.txt
-	@ls -1 $(DEKEN_DIR)/*.dek*
+	@for p in $(DEKEN_PLATFORMS); do \
+	    $(MAKE) --no-print-directory platform P=$$p || exit 1; done
+	sh platforms/deken.sh $(DEKEN_DIR) $(AERO_VERSION) $(DEKEN_PLATFORMS)
+
+.PHONY: check-packages
+check-packages:
+	@$(MAKE) --no-print-directory deps
+	@$(MAKE) --no-print-directory -s all lib double >$(BUILD).log 2>&1 || \
+	    { cat $(BUILD).log; exit 1; }
+	@sh tests/packages/check.sh
 
 # --- libpd: aero linked into a host program -------------------------------
 #   make libpd-example LIBPD_DIR=/path/to/libpd
@@ -368,3 +391,35 @@ check-globals:
 clean: clean-robust
 clean-robust:
 	rm -rf $(ASAN_DIR) $(ASAN_DIR).log $(FUZZ_DIR)
+
+# ============================================================================
+# --- platforms: cross builds, the staged library folder per platform --------
+#   make platform P=PLATFORM   build/PLATFORM/aero/: every external, the
+#                  single-binary library, help, abstractions, textures,
+#                  trees, meta, LICENSE, README (a deken package's folder);
+#                  PLATFORM is linux-amd64, windows-amd64, linux-arm64 or
+#                  linux-armv7 (platforms/platform.mk says what each holds)
+#   make windows | linux-amd64 | linux-arm64 | linux-armv7   the same
+# FFTW and libsndfile are linked statically, built once per machine by
+# platforms/deps.sh (cached in ${AERO_CACHE:-~/.cache/aero}); the Windows
+# externals link pd.dll's import library from Pd for Windows
+# (platforms/pd.sh, cached the same way).
+# ============================================================================
+PLATFORMS = linux-amd64 windows-amd64 linux-arm64 linux-armv7
+DEB_PACKAGES += gcc-mingw-w64-x86-64-win32 gcc-mingw-w64-x86-64-posix \
+    gcc-aarch64-linux-gnu libc6-dev-arm64-cross \
+    gcc-arm-linux-gnueabihf libc6-dev-armhf-cross
+.PHONY: platform platforms windows linux-amd64 linux-arm64 linux-armv7
+platform:
+	@case " $(PLATFORMS) " in *" $(P) "*) ;; *) \
+	    echo "make platform P=PLATFORM, one of: $(PLATFORMS)" >&2; exit 2 ;; esac
+	@sh platforms/deps.sh $(P)
+	@$(if $(filter windows-%,$(P)),sh platforms/pd.sh $(P) single >/dev/null)
+	@$(MAKE) --no-print-directory -f platforms/platform.mk P=$(P)
+windows:
+	@$(MAKE) --no-print-directory platform P=windows-amd64
+linux-amd64 linux-arm64 linux-armv7:
+	@$(MAKE) --no-print-directory platform P=$@
+platforms:
+	@for p in $(PLATFORMS); do \
+	    $(MAKE) --no-print-directory platform P=$$p || exit 1; done

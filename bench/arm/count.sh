@@ -1,0 +1,76 @@
+#!/bin/sh
+# make bench: instructions per source-sample of [aeolian~] (model mode) on
+# linux-arm64 and linux-armv7 against linux-amd64, in one run: the core's
+# player alone (bench/arm/aeolian-core.c, src/core/play/aeolian_model.c and
+# strouhal.c, built with the core's flags by each architecture's compiler),
+# N and 0 sources for 1 s at 48 kHz, the difference over N x 48000.
+# Counters: valgrind's callgrind on amd64 (as bench/run.sh); QEMU's user
+# emulator for all three (bench/arm/qcount.sh), so amd64 is also counted by
+# the same method as the arm builds. Each counter is first checked on a
+# loop of exactly 4 instructions per iteration (bench/arm/known-loop.c).
+# The sum of squares printed by each build shows they render the same sound.
+# Not a test: figures go to BENCHMARKS.md ("[aeolian~] on arm").
+#   COUNT_SOURCES=8 (N)
+ROOT=$(pwd)
+DIR=build/bench/arm
+mkdir -p "$DIR"
+N=${COUNT_SOURCES:-8}
+CFLAGS="-std=c99 -D_POSIX_C_SOURCE=200809L -O3 -fPIC -Wall -Wextra -Wshadow \
+    -Isrc/core/common -Isrc/core/play -Isrc/core/solve"
+SRC="bench/arm/aeolian-core.c src/core/play/aeolian_model.c src/core/common/strouhal.c"
+
+# ARCH COMPILER QEMU...: the command prefix to run that architecture's
+# binaries under QEMU
+targets="amd64:gcc:qemu-x86_64-static
+arm64:aarch64-linux-gnu-gcc:qemu-aarch64-static -L /usr/aarch64-linux-gnu
+armv7:arm-linux-gnueabihf-gcc:qemu-arm-static -L /usr/arm-linux-gnueabihf"
+
+# per-source-sample from two counts (N and 0 sources)
+per_sample() { awk -v a="$1" -v b="$2" -v n="$N" 'BEGIN {
+    if (a == "" || b == "") print "?"; else printf "%.2f", (a - b) / (n * 48000) }'; }
+# the known loop: counts of 100000 and 200000 iterations differ by 400000
+check_loop() { # LABEL COUNT-COMMAND...
+    label=$1
+    shift
+    c1=$("$@" 100000 2>/dev/null | tail -n 1)
+    c2=$("$@" 200000 2>/dev/null | tail -n 1)
+    d=$((c2 - c1))
+    if [ "$d" -eq 400000 ]; then
+        echo "  $label: known loop counted exactly (400000 for 100000 iterations)"
+    else
+        echo "  $label: known loop counted $d, not 400000: counter not trusted"
+        return 1
+    fi
+}
+callgrind() { # PROGRAM ARGS: instructions (callgrind's Ir)
+    valgrind --tool=callgrind --callgrind-out-file="$DIR/cg.out" "$@" \
+        >"$DIR/cg.stdout" 2>/dev/null &&
+        sed -n 's/^summary: //p' "$DIR/cg.out"
+}
+
+echo "[aeolian~] model mode, instructions per source-sample by architecture ($N sources, 1 s at 48 kHz)"
+results=""
+echo "$targets" | while IFS=: read -r arch cc qemu; do
+    if ! command -v "$cc" >/dev/null || ! command -v "${qemu%% *}" >/dev/null; then
+        echo "  $arch: no $cc or ${qemu%% *} (make deps), skipped"
+        continue
+    fi
+    # shellcheck disable=SC2086
+    $cc $CFLAGS $SRC -lm -o "$DIR/aeolian-core-$arch" &&
+        $cc -O2 bench/arm/known-loop.c -o "$DIR/known-loop-$arch" || continue
+    # shellcheck disable=SC2086
+    if check_loop "$arch, QEMU" sh bench/arm/qcount.sh $qemu "$DIR/known-loop-$arch"; then
+        # shellcheck disable=SC2086
+        q0=$(sh bench/arm/qcount.sh $qemu "$DIR/aeolian-core-$arch" 0 1 2>/dev/null)
+        # shellcheck disable=SC2086
+        qn=$(sh bench/arm/qcount.sh $qemu "$DIR/aeolian-core-$arch" "$N" 1 \
+            2>"$DIR/out-$arch.txt")
+        echo "  $arch (QEMU count): $(per_sample "$qn" "$q0") instructions per source-sample; $(cat "$DIR/out-$arch.txt")"
+    fi
+    if [ "$arch" = amd64 ] && command -v valgrind >/dev/null &&
+        check_loop "amd64, callgrind" callgrind "$DIR/known-loop-$arch"; then
+        c0=$(callgrind "$DIR/aeolian-core-$arch" 0 1)
+        cn=$(callgrind "$DIR/aeolian-core-$arch" "$N" 1)
+        echo "  amd64 (callgrind, native): $(per_sample "$cn" "$c0") instructions per source-sample; $(cat "$DIR/cg.stdout")"
+    fi
+done | tee "$DIR/count.txt"

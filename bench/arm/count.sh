@@ -74,3 +74,87 @@ echo "$targets" | while IFS=: read -r arch cc qemu; do
         echo "  amd64 (callgrind, native): $(per_sample "$cn" "$c0") instructions per source-sample; $(cat "$DIR/cg.stdout")"
     fi
 done | tee "$DIR/count.txt"
+
+# --- in Pd: the same sources as objects in a patch ---------------------------
+# N [aeolian~ -d 0.01] and none, each fed the same gusting speed as
+# bench/run.sh (a 10 ms metro -> [expr] -> [line~]) and summed by
+# [throw~], 1 s at 48 kHz in batch mode: on amd64 Debian's Pd with the
+# externals of make all (callgrind), on arm Pd 0.56-5 (platforms/pd.sh)
+# with the staged package (make platform P=...) under QEMU. Skipped where
+# either is missing.
+pd_patch() { # FILE N
+    {
+        echo "#N canvas 0 50 450 300 10;"
+        echo "#X obj 10 10 loadbang;"
+        echo "#X msg 10 30 \\; pd dsp 1;"
+        echo "#X obj 100 30 delay 1000;"
+        echo "#X msg 100 50 \\; pd quit;"
+        echo "#X obj 200 10 metro 10;"
+        echo "#X obj 200 30 expr 12 + 4*sin(\\\$f1*0.013) + 3*sin(\\\$f1*0.031);"
+        echo "#X obj 200 50 f;"
+        echo "#X obj 230 50 + 1;"
+        echo "#X msg 200 70 \\\$1 10;"
+        echo "#X obj 200 90 line~;"
+        echo "#X obj 10 200 catch~ sum;"
+        echo "#X obj 10 220 env~ 16384;"
+        i=0
+        while [ $i -lt "$2" ]; do
+            echo "#X obj 10 120 aeolian~ -d 0.01;"
+            echo "#X obj 10 150 throw~ sum;"
+            i=$((i + 1))
+        done
+        for c in "0 0 1 0" "0 0 2 0" "2 0 3 0" "0 0 4 0" "4 0 6 0" "6 0 7 0" \
+            "7 0 6 1" "6 0 5 0" "5 0 8 0" "8 0 9 0" "10 0 11 0"; do
+            echo "#X connect $c;"
+        done
+        i=0
+        while [ $i -lt "$2" ]; do
+            echo "#X connect 9 0 $((12 + 2 * i)) 0;"
+            echo "#X connect $((12 + 2 * i)) 0 $((13 + 2 * i)) 0;"
+            i=$((i + 1))
+        done
+    } >"$1"
+}
+PD_N=${COUNT_PD_SOURCES:-20}
+pd_patch "$DIR/pd-empty.pd" 0
+pd_patch "$DIR/pd-aeolian.pd" "$PD_N"
+PDFLAGS="-batch -nogui -noaudio -noprefs -stderr -nostdpath -r 48000"
+echo "[aeolian~] in Pd, instructions per source-sample ($PD_N objects, 1 s at 48 kHz, minus an empty patch)" |
+    tee -a "$DIR/count.txt"
+{
+    native_pd=$(command -v pd || command -v puredata)
+    if [ -n "$native_pd" ] && [ -f "aeolian~.pd_linux" ] && command -v valgrind >/dev/null; then
+        # shellcheck disable=SC2086
+        c0=$(callgrind "$native_pd" $PDFLAGS -path "$ROOT" -open "$DIR/pd-empty.pd")
+        # shellcheck disable=SC2086
+        cn=$(callgrind "$native_pd" $PDFLAGS -path "$ROOT" -open "$DIR/pd-aeolian.pd")
+        N=$PD_N
+        echo "  amd64 ($("$native_pd" -version 2>&1 | sed -n 's/^Pd-\([0-9.]*\).*/Pd \1/p'), callgrind): $(per_sample "$cn" "$c0")"
+    else
+        echo "  amd64: no native Pd, aeolian~.pd_linux or valgrind, skipped"
+    fi
+    for p in linux-arm64 linux-armv7; do
+        case $p in
+            linux-arm64) qemu="qemu-aarch64-static -L /usr/aarch64-linux-gnu" ;;
+            linux-armv7) qemu="qemu-arm-static -L /usr/arm-linux-gnueabihf" ;;
+        esac
+        pkg=build/$p/aero
+        if [ ! -f "$pkg/aeolian~.pd_linux" ] || ! command -v "${qemu%% *}" >/dev/null ||
+            ! pd=$(sh platforms/pd.sh "$p" single 2>/dev/null); then
+            echo "  $p: no $pkg/aeolian~.pd_linux (make platform P=$p) or no Pd, skipped"
+            continue
+        fi
+        # shellcheck disable=SC2086
+        q0=$(sh bench/arm/qcount.sh $qemu "$pd/bin/pd" $PDFLAGS -path "$pkg" \
+            -open "$DIR/pd-empty.pd" 2>/dev/null)
+        # shellcheck disable=SC2086
+        qn=$(sh bench/arm/qcount.sh $qemu "$pd/bin/pd" $PDFLAGS -path "$pkg" \
+            -open "$DIR/pd-aeolian.pd" 2>"$DIR/pd-$p.log")
+        N=$PD_N
+        if grep -q "couldn't create" "$DIR/pd-$p.log"; then
+            echo "  $p: [aeolian~] not created (see $DIR/pd-$p.log)"
+        else
+            echo "  $p (Pd 0.56-5 under QEMU, QEMU count): $(per_sample "$qn" "$q0")"
+        fi
+    done
+} | tee -a "$DIR/count.txt"

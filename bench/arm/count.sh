@@ -2,7 +2,7 @@
 # make bench: instructions per source-sample of [aeolian~] (model mode) on
 # linux-arm64 and linux-armv7 against linux-amd64, in one run: the core's
 # player alone (bench/arm/aeolian-core.c, src/core/play/aeolian_model.c and
-# strouhal.c, built with the core's flags by each architecture's compiler),
+# strouhal.c, built with the packages' flags by each architecture's compiler),
 # N and 0 sources for 1 s at 48 kHz, the difference over N x 48000.
 # Counters: valgrind's callgrind on amd64 (as bench/run.sh); QEMU's user
 # emulator for all three (bench/arm/qcount.sh), so amd64 is also counted by
@@ -10,12 +10,14 @@
 # loop of exactly 4 instructions per iteration (bench/arm/known-loop.c).
 # The sum of squares printed by each build shows they render the same sound.
 # Not a test: figures go to BENCHMARKS.md ("[aeolian~] on arm").
-#   COUNT_SOURCES=8 (N)
+#   COUNT_SOURCES=8 (N), COUNT_PD_SOURCES=20 (the objects in Pd; 0: none)
 ROOT=$(pwd)
 DIR=build/bench/arm
 mkdir -p "$DIR"
 N=${COUNT_SOURCES:-8}
-CFLAGS="-std=c99 -D_POSIX_C_SOURCE=200809L -O3 -fPIC -Wall -Wextra -Wshadow \
+# the flags of the packages' core (platforms/platform.mk), on each target
+CFLAGS="-std=c99 -D_POSIX_C_SOURCE=200809L -O3 -funroll-loops -fomit-frame-pointer \
+    -fPIC -fopenmp-simd -Wall -Wextra -Wshadow \
     -Isrc/core/common -Isrc/core/play -Isrc/core/solve"
 SRC="bench/arm/aeolian-core.c src/core/play/aeolian_model.c src/core/common/strouhal.c"
 
@@ -116,6 +118,7 @@ pd_patch() { # FILE N
     } >"$1"
 }
 PD_N=${COUNT_PD_SOURCES:-20}
+[ "$PD_N" -gt 0 ] || exit 0
 pd_patch "$DIR/pd-empty.pd" 0
 pd_patch "$DIR/pd-aeolian.pd" "$PD_N"
 PDFLAGS="-batch -nogui -noaudio -noprefs -stderr -nostdpath -r 48000"

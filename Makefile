@@ -33,7 +33,10 @@ datadirs = $(if $(wildcard textures/*.wav),textures)
 datadirs += $(if $(wildcard trees/*.tree),trees)
 
 # No -ffast-math: the core relies on NaN checks (x != x) to sanitise input.
-CFLAGS = -Wall -Wextra -Wshadow -O3 -funroll-loops -fomit-frame-pointer
+# -fvisibility=hidden: an external exports only Pd's entry points, marked
+# AERO_PD_EXPORT (src/pd/aero_pd.h); tests/objects/96-exports.sh checks it.
+CFLAGS = -Wall -Wextra -Wshadow -O3 -funroll-loops -fomit-frame-pointer \
+    -fvisibility=hidden
 # src/core by role: common (shared data and laws), solve (the flow solvers
 # and the drivers that make textures), play (the real-time players)
 CORE_INCLUDES = -Isrc/core/common -Isrc/core/solve -Isrc/core/play
@@ -54,7 +57,7 @@ endif
 BUILD = build
 CORE_CC = $(CC)
 CORE_CFLAGS = -std=c99 -D_POSIX_C_SOURCE=200809L -O3 -fPIC -fopenmp \
-    -Wall -Wextra -Wshadow $(CORE_INCLUDES)
+    -fvisibility=hidden -Wall -Wextra -Wshadow $(CORE_INCLUDES)
 # the 3D solver's row loops (flow3d.c) vectorise only where a conversion
 # between int and float may run unconditionally: -fno-trapping-math (nothing
 # here reads the FP exception flags; the IEEE results are the same), and
@@ -388,3 +391,35 @@ check-globals:
 clean: clean-robust
 clean-robust:
 	rm -rf $(ASAN_DIR) $(ASAN_DIR).log $(FUZZ_DIR)
+
+# ============================================================================
+# --- platforms: cross builds, the staged library folder per platform --------
+#   make platform P=PLATFORM   build/PLATFORM/aero/: every external, the
+#                  single-binary library, help, abstractions, textures,
+#                  trees, meta, LICENSE, README (a deken package's folder);
+#                  PLATFORM is linux-amd64, windows-amd64, linux-arm64 or
+#                  linux-armv7 (platforms/platform.mk says what each holds)
+#   make windows | linux-amd64 | linux-arm64 | linux-armv7   the same
+# FFTW and libsndfile are linked statically, built once per machine by
+# platforms/deps.sh (cached in ${AERO_CACHE:-~/.cache/aero}); the Windows
+# externals link pd.dll's import library from Pd for Windows
+# (platforms/pd.sh, cached the same way).
+# ============================================================================
+PLATFORMS = linux-amd64 windows-amd64 linux-arm64 linux-armv7
+DEB_PACKAGES += cmake gcc-mingw-w64-x86-64-win32 gcc-mingw-w64-x86-64-posix \
+    gcc-aarch64-linux-gnu libc6-dev-arm64-cross \
+    gcc-arm-linux-gnueabihf libc6-dev-armhf-cross
+.PHONY: platform platforms windows linux-amd64 linux-arm64 linux-armv7
+platform:
+	@case " $(PLATFORMS) " in *" $(P) "*) ;; *) \
+	    echo "make platform P=PLATFORM, one of: $(PLATFORMS)" >&2; exit 2 ;; esac
+	@sh platforms/deps.sh $(P)
+	@$(if $(filter windows-%,$(P)),sh platforms/pd.sh $(P) single >/dev/null)
+	@$(MAKE) --no-print-directory -f platforms/platform.mk P=$(P)
+windows:
+	@$(MAKE) --no-print-directory platform P=windows-amd64
+linux-amd64 linux-arm64 linux-armv7:
+	@$(MAKE) --no-print-directory platform P=$@
+platforms:
+	@for p in $(PLATFORMS); do \
+	    $(MAKE) --no-print-directory platform P=$$p || exit 1; done

@@ -166,8 +166,8 @@ deps:
 #                   P=linux-armv7) in Pd 0.56-5 cross-built for each
 #                   (platforms/pd.sh, cached) under qemu-user, by the shared
 #                   platform runner (tests/platform/arm.sh -> run.sh)
-DEB_PACKAGES += qemu-user-static gcc-aarch64-linux-gnu gcc-arm-linux-gnueabihf \
-    libc6-dev-arm64-cross libc6-dev-armhf-cross
+# (the cross compilers: the platforms section below)
+DEB_PACKAGES += qemu-user-static
 ARM_PLATFORMS = linux-arm64 linux-armv7
 .PHONY: check-arm
 check-arm:

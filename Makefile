@@ -8,6 +8,7 @@
 #   make double     the externals for double-precision Pd (*.linux-amd64-64.so)
 #   make deken      deken packages (single, double, sources) in build/deken/
 #   make check-gui  the help patches drawn by the Pd GUI (part of check)
+#   make check-arm  aero's arm64 and armv7 packages in Pd under qemu-user
 #   make check-libpd  aero inside libpd 0.16.1 (single, multi-instance,
 #                   threads under helgrind); CI runs it after make check
 #   make check-windows  aero's Windows package in Pd for Windows under wine
@@ -160,6 +161,25 @@ DEB_PACKAGES = puredata-core puredata-dev pd-lib-builder libfftw3-dev \
 DEB_PACKAGES += puredata-gui xvfb xauth imagemagick fonts-dejavu-core
 deps:
 	@sh tests/deps.sh $(DEB_PACKAGES)
+
+# --- platforms: arm (linux-arm64, linux-armv7) under qemu-user ---------------
+#   make check-arm  the staged arm packages (make platform P=linux-arm64,
+#                   P=linux-armv7) in Pd 0.56-5 cross-built for each
+#                   (platforms/pd.sh, cached) under qemu-user, by the shared
+#                   platform runner (tests/platform/arm.sh -> run.sh)
+# (the cross compilers: the platforms section below)
+DEB_PACKAGES += qemu-user-static
+ARM_PLATFORMS = linux-arm64 linux-armv7
+.PHONY: check-arm
+check-arm:
+	@$(MAKE) --no-print-directory deps
+	@$(MAKE) --no-print-directory -s all lib >$(BUILD).log 2>&1 || \
+	    { cat $(BUILD).log; exit 1; }
+	@for p in $(ARM_PLATFORMS); do \
+	    $(MAKE) --no-print-directory -s platform P=$$p >$(BUILD)-$$p.log 2>&1 || \
+	    { cat $(BUILD)-$$p.log; exit 1; }; done
+	@sh tests/platform/arm.sh $(ARM_PLATFORMS)
+# --- end of the arm section ---------------------------------------------------
 
 # --- the two commands of the README -----------------------------------------
 check:

@@ -303,7 +303,7 @@ DEB_PACKAGES += wine64 gcc-mingw-w64-x86-64-win32 binutils-mingw-w64-x86-64
 .PHONY: check-windows
 check-windows:
 	@$(MAKE) --no-print-directory deps
-	@$(MAKE) --no-print-directory -s all lib >$(BUILD).log 2>&1 || \
+	@$(MAKE) --no-print-directory -s all lib double >$(BUILD).log 2>&1 || \
 	    { cat $(BUILD).log; exit 1; }
 	@echo "check-windows: the Windows package (log: $(BUILD)-windows-amd64.log)"
 	@$(MAKE) --no-print-directory -s platform P=windows-amd64 \

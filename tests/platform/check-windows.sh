@@ -3,9 +3,11 @@
 # by `make platform P=windows-amd64`) in Pd 0.56-5 for Windows
 # (platforms/pd.sh, cross-built with mingw-w64) under wine64, by
 # tests/platform/run.sh: the whole representative subset in the
-# single-precision Pd (*.windows-amd64-32.dll), and every object's creation
-# and one render compared with the native one in the double-precision Pd
-# (*.windows-amd64-64.dll).
+# single-precision Pd (*.windows-amd64-32.dll), against Debian's Pd; every
+# object's creation and one render in the double-precision Pd
+# (*.windows-amd64-64.dll), against Pd 0.56 with 64-bit floats built here
+# (platforms/pd.sh linux-amd64 double) playing the *.linux-amd64-64.so of
+# `make double`.
 #
 # Wine runs with a new, empty prefix in build/wine (its own Windows folders
 # and registry, nothing installed): so the package loads with nothing but
@@ -18,7 +20,7 @@
 # Before the runs, every DLL's imports are checked: only Pd (pd.dll) and
 # the system's own libraries, so nothing else needs to be installed.
 # Ends with `N passed, N failed`. Run from the repository root after
-# `make all lib` and `make platform P=windows-amd64`.
+# `make all lib double` and `make platform P=windows-amd64`.
 ROOT=$(pwd)
 PKG=${WINDOWS_PKG:-build/windows-amd64/aero}
 WINE=${WINE:-/usr/lib/wine/wine64}
@@ -31,8 +33,9 @@ if [ ! -d "$PKG" ]; then
     echo "check-windows: no $PKG (make platform P=windows-amd64)" >&2
     exit 1
 fi
-for p in single double; do
-    sh platforms/pd.sh windows-amd64 $p >/dev/null || exit 1
+for p in "windows-amd64 single" "windows-amd64 double" "linux-amd64 double"; do
+    # shellcheck disable=SC2086
+    sh platforms/pd.sh $p >/dev/null || exit 1
 done
 pd_built=$(date +%s)
 
@@ -46,6 +49,7 @@ mkdir -p "$WINEPREFIX"
 stop_wine() { "$WINESERVER" -k 2>/dev/null; "$WINESERVER" -w 2>/dev/null; }
 trap stop_wine EXIT
 trap 'exit 1' INT TERM
+echo "check-windows: $("$WINE" --version) with a new prefix in $WINEPREFIX (log: build/wine.log)"
 "$WINE" wineboot --init >build/wine.log 2>&1
 # one wineserver for all the Pd runs (it would otherwise start anew for
 # each), shut down by stop_wine
@@ -69,12 +73,13 @@ for dll in "$PKG"/*.dll; do
 done
 
 summary=""
-run() { # NAME LABEL ARGS...: one run of tests/platform/run.sh
-    _name=$1 _label=$2
-    shift 2
+run() { # NAME LABEL NATIVE_PD ARGS...: one run of tests/platform/run.sh
+    _name=$1 _label=$2 _native=$3
+    shift 3
     echo
     echo "######## Pd 0.56-5 for Windows ($_label) under wine"
-    sh tests/platform/run.sh "$@" | tee "build/tests/windows-$_name.log"
+    NATIVE_PD=$_native sh tests/platform/run.sh "$@" |
+        tee "build/tests/windows-$_name.log"
     line=$(tail -n 1 "build/tests/windows-$_name.log")
     case "$line" in
         *" passed, "*" failed") ;;
@@ -86,9 +91,11 @@ run() { # NAME LABEL ARGS...: one run of tests/platform/run.sh
 $_label: $line"
 }
 mkdir -p build/tests
-run single "32-bit floats" "$PKG" windows-amd64-32.dll \
+run single "32-bit floats" "$(command -v pd || command -v puredata)" \
+    "$PKG" windows-amd64-32.dll \
     "$WINE" "$ROOT/build/pd-windows-amd64-single/bin/pd.com" -mmio
-run double "64-bit floats" -quick "$PKG" windows-amd64-64.dll \
+run double "64-bit floats" "$ROOT/build/pd-linux-amd64-double/bin/pd" \
+    -quick "$PKG" windows-amd64-64.dll \
     "$WINE" "$ROOT/build/pd-windows-amd64-double/bin/pd.com" -mmio
 stop_wine
 end=$(date +%s)

@@ -305,10 +305,10 @@ check-windows:
 	@$(MAKE) --no-print-directory deps
 	@$(MAKE) --no-print-directory -s all lib double >$(BUILD).log 2>&1 || \
 	    { cat $(BUILD).log; exit 1; }
-	@echo "check-windows: the Windows package (log: $(BUILD)-windows-amd64.log)"
+	@echo "check-windows: the Windows package (log: $(BUILD)/windows-amd64.log)"
 	@$(MAKE) --no-print-directory -s platform P=windows-amd64 \
-	    >$(BUILD)-windows-amd64.log 2>&1 || \
-	    { cat $(BUILD)-windows-amd64.log; exit 1; }
+	    >$(BUILD)/windows-amd64.log 2>&1 || \
+	    { cat $(BUILD)/windows-amd64.log; exit 1; }
 	@sh tests/platform/check-windows.sh
 # --- end of the Windows section ----------------------------------------------
 

@@ -139,6 +139,19 @@ for a in $abstractions; do
         fail "[$a] not opened from the package's $a.pd"
     fi
 done
+# negative control: without the package in the search path nothing
+# creates them (neither Pd's own files nor the wine prefix or system)
+# shellcheck disable=SC2086
+timeout 120 "$PD" $PD_FLAGS -open "$ROOT/$OUT/create-all.pd" \
+    -send "pd quit" >"$OUT/create-none.log" 2>&1
+n=$(grep -c "couldn't create" "$OUT/create-none.log")
+want=$(echo $classes $abstractions | wc -w)
+if [ "$n" -eq "$want" ]; then
+    pass "negative control: without -path to the package none of the $want objects is created"
+else
+    fail "negative control: without the package $n of $want objects fail to create"
+    sed 's/^/        /' "$OUT/create-none.log" | head -20
+fi
 # the single binary, loaded with -lib aero, creates every class
 {
     echo '#N canvas 0 50 450 300 12;'

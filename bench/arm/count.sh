@@ -51,15 +51,17 @@ callgrind() { # PROGRAM ARGS: instructions (callgrind's Ir)
 }
 
 echo "[aeolian~] model mode, instructions per source-sample by architecture ($N sources, 1 s at 48 kHz)"
-results=""
 echo "$targets" | while IFS=: read -r arch cc qemu; do
     if ! command -v "$cc" >/dev/null || ! command -v "${qemu%% *}" >/dev/null; then
         echo "  $arch: no $cc or ${qemu%% *} (make deps), skipped"
         continue
     fi
     # shellcheck disable=SC2086
-    $cc $CFLAGS $SRC -lm -o "$DIR/aeolian-core-$arch" &&
-        $cc -O2 bench/arm/known-loop.c -o "$DIR/known-loop-$arch" || continue
+    if ! $cc $CFLAGS $SRC -lm -o "$DIR/aeolian-core-$arch" ||
+        ! $cc -O2 bench/arm/known-loop.c -o "$DIR/known-loop-$arch"; then
+        echo "  $arch: the bench did not build"
+        continue
+    fi
     # shellcheck disable=SC2086
     if check_loop "$arch, QEMU" sh bench/arm/qcount.sh $qemu "$DIR/known-loop-$arch"; then
         # shellcheck disable=SC2086

@@ -11,6 +11,7 @@
 #   make check-arm  aero's arm64 and armv7 packages in Pd under qemu-user
 #   make check-libpd  aero inside libpd 0.16.1 (single, multi-instance,
 #                   threads under helgrind); CI runs it after make check
+#   make check-windows  aero's Windows package in Pd for Windows under wine
 #   make demo       renders the demo scenes under build/demo/
 #   make bench      benchmarks (not part of check), see BENCHMARKS.md
 #   make deps       installs the Debian packages the project needs
@@ -291,6 +292,25 @@ check-libpd:
 clean: clean-aero
 clean-aero:
 	rm -rf $(BUILD) $(BUILD).log $(double.externals) $(double.lib)
+
+# --- platforms: Windows under wine (make check-windows) ----------------------
+#   make check-windows  the staged Windows package (make platform
+#                   P=windows-amd64) in Pd 0.56-5 for Windows (platforms/pd.sh,
+#                   single and double precision, cached) under wine64 with an
+#                   empty prefix in build/wine and no display, by the shared
+#                   platform runner (tests/platform/check-windows.sh -> run.sh)
+DEB_PACKAGES += wine64 gcc-mingw-w64-x86-64-win32 binutils-mingw-w64-x86-64
+.PHONY: check-windows
+check-windows:
+	@$(MAKE) --no-print-directory deps
+	@$(MAKE) --no-print-directory -s all lib double >$(BUILD).log 2>&1 || \
+	    { cat $(BUILD).log; exit 1; }
+	@echo "check-windows: the Windows package (log: $(BUILD)/windows-amd64.log)"
+	@$(MAKE) --no-print-directory -s platform P=windows-amd64 \
+	    >$(BUILD)/windows-amd64.log 2>&1 || \
+	    { cat $(BUILD)/windows-amd64.log; exit 1; }
+	@sh tests/platform/check-windows.sh
+# --- end of the Windows section ----------------------------------------------
 
 # ============================================================================
 # --- robustness: sanitizers, fuzzing, long runs, globals --------

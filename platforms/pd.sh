@@ -5,9 +5,10 @@
 #
 #   sh platforms/pd.sh PLATFORM [single|double]
 #
-# PLATFORM is Pd's name: windows-amd64 (here), linux-arm64, linux-armv7
-# (each a case below). double builds Pd with -DPD_FLOATSIZE=64, which
-# loads only externals named *.PLATFORM-64.* (Pd >= 0.54).
+# PLATFORM is Pd's name: windows-amd64, linux-arm64, linux-armv7,
+# linux-amd64 (each a case below). double builds Pd with
+# -DPD_FLOATSIZE=64, which loads only externals named *.PLATFORM-64.*
+# (Pd >= 0.54).
 #
 # The build is cached outside the clone, in
 # ${AERO_CACHE:-$HOME/.cache/aero}/pd/PLATFORM-PRECISION-KEY, KEY made of the
@@ -21,10 +22,10 @@
 #     src/m_pd.h   Pd's headers
 #     extra/ doc/  Pd's own abstractions (extra/*.pd) and documentation,
 #                  where Pd looks for them (the folder above bin/)
-#   linux-arm64, linux-armv7 (Debian's aarch64-linux-gnu- and
-#   arm-linux-gnueabihf- cross compilers, makefile.gnu without ALSA or OSS:
-#   Pd's dummy audio API, for batch mode with -noaudio):
-#     bin/pd       run under qemu-user, e.g.
+#   linux-arm64, linux-armv7, linux-amd64 (Debian's aarch64-linux-gnu-,
+#   arm-linux-gnueabihf- and x86_64-linux-gnu- compilers, makefile.gnu
+#   without ALSA or OSS: Pd's dummy audio API, for batch mode with -noaudio):
+#     bin/pd       on arm run under qemu-user, e.g.
 #                  qemu-aarch64-static -L /usr/aarch64-linux-gnu bin/pd ...
 #                  qemu-arm-static -L /usr/arm-linux-gnueabihf bin/pd ...
 #     src/m_pd.h   Pd's headers
@@ -88,11 +89,15 @@ build_linux_cross() { # TRIPLET
 }
 build_linux_arm64() { build_linux_cross aarch64-linux-gnu; }
 build_linux_armv7() { build_linux_cross arm-linux-gnueabihf; }
+# the native one: the reference a double-precision platform Pd's renders
+# are compared with (make check-windows)
+build_linux_amd64() { build_linux_cross x86_64-linux-gnu; }
 
 case $PLATFORM in
     windows-amd64) build=build_windows_amd64 ;;
     linux-arm64) build=build_linux_arm64 ;;
     linux-armv7) build=build_linux_armv7 ;;
+    linux-amd64) build=build_linux_amd64 ;;
     *) echo "pd.sh: no build for platform $PLATFORM" >&2; exit 2 ;;
 esac
 

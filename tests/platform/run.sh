@@ -13,7 +13,7 @@
 #   - one render per object compared with the native Linux render of the
 #     same patch made in this run (Debian's Pd and the externals of
 #     `make all` in the repository), and a negative control showing that
-#     the comparison fails on a render 0.001 dB louder.
+#     the comparison fails on a render 0.01 dB louder.
 # WAVs written by the platform's Pd are measured by the native
 # build/aero-analyze. Ends with `N passed, N failed`.
 #
@@ -28,15 +28,31 @@
 # -quick    only the objects' creation and one render compared (the
 #           double-precision Pd)
 # Run from the repository root after `make all lib` (native externals and
-# build/aero-analyze, build/aerotex). NATIVE_PD (default: Debian's pd)
-# renders the references; TEST_OUT (default build/tests/platform-EXT
+# build/aero-analyze, build/aerotex; `make double` too for a double-precision
+# platform Pd). NATIVE_PD renders the references: by default Debian's pd;
+# for a double-precision platform Pd a native double-precision Pd (Pd 0.56
+# with -DPD_FLOATSIZE=64: platforms/pd.sh linux-amd64 double), which
+# plays the repository's *.linux-amd64-64.so; TEST_OUT (default build/tests/platform-EXT
 # without its suffix) holds patches, logs and WAVs.
 #
 # Two renders of one patch on two platforms agree only within float
-# rounding: the externals' own code is the same C compiled by another
-# compiler, and its libm (sinf, expf, powf... of mingw's or glibc's) and
-# FFTW's codelets may round differently in the last place. Measured
-# (make check-windows, Debian 12): see SAME_TOL.
+# rounding: the externals are the same C compiled by another compiler
+# against another C library, whose libm (sinf, expf, powf...) may round
+# differently in the last place, and FFTW's codelets may add in another
+# order; in a resonant synthesis a last-place difference does not stay in
+# the last place. How far it carries was measured with the one rounding
+# difference at hand: the same [aeolian~ -d 0.01] patch (1 s, 10 m/s) in
+# Pd 0.56 with 64-bit floats (its [line~] and the wrappers' conversions
+# round differently from 32-bit Pd) differs from the 32-bit render by
+# 2.8e-5 of the peak (233 float steps of it) in 43996 of 44100 samples. So
+# a render counts as the same when no sample differs by more than 1e-4 of
+# the peak (SAME_TOL; 3.6 times that); a 0.01 dB gain error (1.2e-3) fails
+# it (the negative control). Measured on Debian 12 (mingw-w64 10, wine
+# 8.0, make check-windows): 7 of the 9 Windows renders in 32-bit Pd and the
+# one in 64-bit Pd are bit-identical to the native ones; [treebranch~] and
+# [leafwave~], the two that synthesise through FFTW's inverse transforms
+# (the vendored static FFTW there, Debian's here), differ in most samples
+# by at most 2 float steps of the peak (2.4e-7 and 2.2e-7 of it).
 ROOT=$(pwd)
 quick=
 if [ "${1:-}" = -quick ]; then
@@ -56,7 +72,7 @@ ANALYZE=build/aero-analyze
 NATIVE_PD=${NATIVE_PD:-$(command -v pd || command -v puredata)}
 # the largest difference from the native render, relative to its peak, that
 # counts as float rounding (see above)
-SAME_TOL=${SAME_TOL:-1e-5}
+SAME_TOL=${SAME_TOL:-1e-4}
 export ROOT OUT
 # the data must come from the package: no AERO_DATA from the environment
 unset AERO_DATA
@@ -105,7 +121,9 @@ on_platform
 # shellcheck disable=SC2086
 timeout 120 "$PD" $PD_FLAGS -verbose -path "$PKG" -open "$ROOT/$OUT/create-all.pd" \
     -send "pd quit" >"$OUT/create-all.log" 2>&1
-grep -v -e "^tried " -e "^  *tried " "$OUT/create-all.log" >"$OUT/create-all.errors"
+# (the lines of the search itself name every file tried: not errors)
+grep -v -E "tried .* and (succeeded|failed)" "$OUT/create-all.log" \
+    >"$OUT/create-all.errors"
 log_clean "$OUT/create-all.errors" "creates $(echo $classes $abstractions)"
 for c in $classes; do
     if grep -F "$c.$EXT" "$OUT/create-all.log" | grep -q "succeeded"; then
@@ -121,6 +139,19 @@ for a in $abstractions; do
         fail "[$a] not opened from the package's $a.pd"
     fi
 done
+# negative control: without the package in the search path nothing
+# creates them (neither Pd's own files nor the wine prefix or system)
+# shellcheck disable=SC2086
+timeout 120 "$PD" $PD_FLAGS -open "$ROOT/$OUT/create-all.pd" \
+    -send "pd quit" >"$OUT/create-none.log" 2>&1
+n=$(grep -c "couldn't create" "$OUT/create-none.log")
+want=$(echo $classes $abstractions | wc -w)
+if [ "$n" -eq "$want" ]; then
+    pass "negative control: without -path to the package none of the $want objects is created"
+else
+    fail "negative control: without the package $n of $want objects fail to create"
+    sed 's/^/        /' "$OUT/create-none.log" | head -20
+fi
 # the single binary, loaded with -lib aero, creates every class
 {
     echo '#N canvas 0 50 450 300 12;'
@@ -150,9 +181,20 @@ compare() {
     judge $ANALYZE same "$OUT/native-$_cmp.wav" "$OUT/$_cmp.wav" --max "$SAME_TOL"
 }
 
+# negative_control NAME MS: the comparison fails on the native render of
+# NAME's patch ([aeolian~ -d 0.01] at 10 m/s for MS ms) 0.01 dB louder
+# (1.2e-3 relative)
+negative_control() {
+    on_native
+    pd_render "native-$1-gain" "aeolian~ -d 0.01 -gain 0.01" 1 "$2" "; aero-speed 10"
+    judge_fails $ANALYZE same "$OUT/native-$1-gain.wav" "$OUT/$1.wav" \
+        --max "$SAME_TOL"
+}
+
 if [ -n "$quick" ]; then
     section "one render against the native render"
     compare ae-u10 "aeolian~ -d 0.01" 1 1000 "; aero-speed 10"
+    negative_control ae-u10 1000
     echo
     echo "$passed passed, $failed failed"
     [ "$failed" -eq 0 ]
@@ -229,12 +271,7 @@ compare fieldsound "snapshot~|fieldsound~ -demo 24 -sync -listener 4 0 0" 1 400 
     "" 0 "0 ; aero-obj play"
 compare stereo "aeolian~ -d 0.01 -l 0.2 -stereo" 2 1000 \
     "; aero-speed 10; aero-obj ears 0 1 0 0 2 0"
-# negative control: the same comparison fails on a render 0.001 dB louder
-# (1.2e-4 relative), made natively
-on_native
-pd_render native-peak-gain "aeolian~ -d 0.01 -gain 0.001" 1 4000 "; aero-speed 10"
-judge_fails $ANALYZE same "$OUT/native-peak-gain.wav" "$OUT/peak-u10-d0.01.wav" \
-    --max "$SAME_TOL"
+negative_control peak-u10-d0.01 4000
 
 echo
 echo "$passed passed, $failed failed"

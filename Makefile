@@ -7,6 +7,9 @@
 #                   precision, 48 kHz), built from ../shared/vendor
 #   make double     the externals for double-precision Pd (*.linux-amd64-64.so)
 #   make deken      deken packages (single, double, sources) in build/deken/
+#   make platform P=windows-amd64|linux-amd64|linux-arm64|linux-armv7
+#                   the library folder for that platform in build/P/aero/,
+#                   cross-compiled, FFTW and libsndfile linked statically
 #   make check-gui  the help patches drawn by the Pd GUI (part of check)
 #   make check-arm  aero's arm64 and armv7 packages in Pd under qemu-user
 #   make check-libpd  aero inside libpd 0.16.1 (single, multi-instance,
@@ -426,7 +429,7 @@ clean-robust:
 # (platforms/pd.sh, cached the same way).
 # ============================================================================
 PLATFORMS = linux-amd64 windows-amd64 linux-arm64 linux-armv7
-DEB_PACKAGES += cmake gcc-mingw-w64-x86-64-win32 gcc-mingw-w64-x86-64-posix \
+DEB_PACKAGES += gcc-mingw-w64-x86-64-win32 gcc-mingw-w64-x86-64-posix \
     gcc-aarch64-linux-gnu libc6-dev-arm64-cross \
     gcc-arm-linux-gnueabihf libc6-dev-armhf-cross
 .PHONY: platform platforms windows linux-amd64 linux-arm64 linux-armv7

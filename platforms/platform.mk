@@ -5,7 +5,8 @@
 #   linux-amd64    NAME.pd_linux (single: Pd 0.53 and 0.54+) and
 #                  NAME.linux-amd64-64.so (double)
 #   windows-amd64  NAME.windows-amd64-32.dll and NAME.windows-amd64-64.dll,
-#                  and build/windows-amd64/aerotex.exe beside the folder
+#                  and build/windows-amd64/aerotex.exe (and the tests'
+#                  aero-analyze.exe) beside the folder
 #   linux-arm64, linux-armv7
 #                  NAME.pd_linux (single: Debian and Raspberry Pi OS ship
 #                  Pd 0.53, which knows only .pd_linux)
@@ -38,7 +39,7 @@ SYSLIBS = -Wl,-Bstatic -lwinpthread -Wl,-Bdynamic -lm
 TOOL_CC = $(TARGET)gcc-posix
 TOOL_LDFLAGS = -static
 TOOL_EXE = .exe
-TOOLS = $(B)/aerotex.exe
+TOOLS = $(B)/aerotex.exe $(B)/aero-analyze.exe
 else
 EXT.32 = pd_linux
 EXT.64 = $(if $(filter linux-amd64,$(P)),linux-amd64-64.so)
@@ -99,6 +100,7 @@ staged.files = $(addprefix $(STAGE)/,$(staged.dirs))
 
 .PHONY: all
 all: $(externals.32) $(externals.64) $(staged.data) $(staged.files) $(TOOLS)
+	@sh platforms/check-binaries.sh $(P) $(externals.32) $(externals.64)
 	@echo "$(STAGE): $(words $(externals.32) $(externals.64)) binaries$(if $(TOOLS), and $(TOOLS))"
 
 $(STAGE)/%.pd: help/%.pd
@@ -158,3 +160,9 @@ $(B)/aerotex$(TOOL_EXE): $(aerotex.sources) $(wildcard src/tools/*.h) \
 	    $(core.omp.objects) -o $@ $(B)/libaero_core.a \
 	    $(DEPS)/lib/libsndfile.a $(DEPS)/lib/libfftw3.a \
 	    $(DEPS)/lib/libfftw3f.a -lm
+
+# the tests' analyser, for comparing renders on the platform itself
+$(B)/aero-analyze$(TOOL_EXE): tests/analyze/aero-analyze.c $(B)/libaero_core.a
+	$(TOOL_CC) $(filter-out -fopenmp -DAEROTEX_NO_PNG,$(TOOL_CFLAGS)) \
+	    $(TOOL_LDFLAGS) $< -o $@ $(B)/libaero_core.a \
+	    $(DEPS)/lib/libsndfile.a $(DEPS)/lib/libfftw3.a -lm

@@ -181,9 +181,9 @@ check-arm:
 	@$(MAKE) --no-print-directory deps
 	@$(MAKE) --no-print-directory -s all lib >$(BUILD).log 2>&1 || \
 	    { cat $(BUILD).log; exit 1; }
-	@for p in $(ARM_PLATFORMS); do \
-	    $(MAKE) --no-print-directory -s platform P=$$p >$(BUILD)-$$p.log 2>&1 || \
-	    { cat $(BUILD)-$$p.log; exit 1; }; done
+	@mkdir -p $(BUILD) && for p in $(ARM_PLATFORMS); do \
+	    $(MAKE) --no-print-directory -s platform P=$$p >$(BUILD)/platform-$$p.log 2>&1 || \
+	    { cat $(BUILD)/platform-$$p.log; exit 1; }; done
 	@sh tests/platform/arm.sh $(ARM_PLATFORMS)
 # --- end of the arm section ---------------------------------------------------
 

@@ -51,15 +51,17 @@ callgrind() { # PROGRAM ARGS: instructions (callgrind's Ir)
 }
 
 echo "[aeolian~] model mode, instructions per source-sample by architecture ($N sources, 1 s at 48 kHz)"
-results=""
 echo "$targets" | while IFS=: read -r arch cc qemu; do
     if ! command -v "$cc" >/dev/null || ! command -v "${qemu%% *}" >/dev/null; then
         echo "  $arch: no $cc or ${qemu%% *} (make deps), skipped"
         continue
     fi
     # shellcheck disable=SC2086
-    $cc $CFLAGS $SRC -lm -o "$DIR/aeolian-core-$arch" &&
-        $cc -O2 bench/arm/known-loop.c -o "$DIR/known-loop-$arch" || continue
+    if ! $cc $CFLAGS $SRC -lm -o "$DIR/aeolian-core-$arch" ||
+        ! $cc -O2 bench/arm/known-loop.c -o "$DIR/known-loop-$arch"; then
+        echo "  $arch: the bench did not build"
+        continue
+    fi
     # shellcheck disable=SC2086
     if check_loop "$arch, QEMU" sh bench/arm/qcount.sh $qemu "$DIR/known-loop-$arch"; then
         # shellcheck disable=SC2086
@@ -78,7 +80,7 @@ echo "$targets" | while IFS=: read -r arch cc qemu; do
 done | tee "$DIR/count.txt"
 
 # --- in Pd: the same sources as objects in a patch ---------------------------
-# N [aeolian~ -d 0.01] and none, each fed the same gusting speed as
+# N + 1 [aeolian~ -d 0.01] and one, each fed the same gusting speed as
 # bench/run.sh (a 10 ms metro -> [expr] -> [line~]) and summed by
 # [throw~], 1 s at 48 kHz in batch mode: on amd64 Debian's Pd with the
 # externals of make all (callgrind), on arm Pd 0.56-5 (platforms/pd.sh)
@@ -119,10 +121,12 @@ pd_patch() { # FILE N
 }
 PD_N=${COUNT_PD_SOURCES:-20}
 [ "$PD_N" -gt 0 ] || exit 0
-pd_patch "$DIR/pd-empty.pd" 0
-pd_patch "$DIR/pd-aeolian.pd" "$PD_N"
+# the baseline has one object, so that loading the external and setting up
+# its class (a few million instructions, once) cancel out
+pd_patch "$DIR/pd-empty.pd" 1
+pd_patch "$DIR/pd-aeolian.pd" $((PD_N + 1))
 PDFLAGS="-batch -nogui -noaudio -noprefs -stderr -nostdpath -r 48000"
-echo "[aeolian~] in Pd, instructions per source-sample ($PD_N objects, 1 s at 48 kHz, minus an empty patch)" |
+echo "[aeolian~] in Pd, instructions per source-sample ($((PD_N + 1)) objects minus 1, 1 s at 48 kHz)" |
     tee -a "$DIR/count.txt"
 {
     native_pd=$(command -v pd || command -v puredata)

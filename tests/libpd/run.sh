@@ -17,27 +17,7 @@ VENDOR=${LIBPD_VENDOR:-../shared/vendor}
 RATE=48000
 started=$(date +%s)
 
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); echo "  ok    $*"; }
-fail() { failed=$((failed + 1)); echo "  FAIL  $*"; }
-judge() { # a command's exit status; its own output says what it measured
-    if line=$("$@" 2>&1); then
-        passed=$((passed + 1)); echo "  $line"
-    else
-        failed=$((failed + 1)); echo "  $line"
-        case "$line" in FAIL*) ;; *) echo "  FAIL  ($*)" ;; esac
-    fi
-}
-log_clean() { # LOG WHAT: no error in Pd's messages (as tests/run.sh's)
-    if grep -q -i -e "couldn't create" -e "error" -e "connection failed" \
-        -e "no method for" -e "inlet: expected" -e "bad arguments" "$1"; then
-        fail "$2"; sed 's/^/        /' "$1" | head -20
-    else
-        pass "$2"
-    fi
-}
-section() { echo; echo "== $*"; }
+. tests/judge.sh # pass, fail, judge, log_clean, section
 # the same samples (libsndfile's PEAK chunk holds a time stamp: files
 # written at different seconds differ in their headers)
 same_sound() {
@@ -61,15 +41,7 @@ pass "libpd built: build/libpd/single (make STATIC=true), build/libpd/multi (mak
 rm -rf "$OUT"
 mkdir -p "$OUT"
 
-# the published laws, as in tests/run.sh: Re = rho U d / mu; St after
-# Williamson (Re < 178) and Roshko (Re > 260); f = St U / d
-tone_hz() {
-    awk -v u="$1" -v d="$2" 'BEGIN {
-        re = 1.225 * u * d / 1.81e-5
-        st = (re < 178) ? -3.3265 / re + 0.1816 + 1.6e-4 * re \
-                        : 0.198 * (1 - 19.7 / re)
-        printf "%.6g\n", st * u / d }'
-}
+. tests/laws.sh # tone_hz: the published St(Re) laws
 # Curle: p_rms = rho U^3 St C_L' L_c / (4 c0 r), C_L'(Re) from Norberg's
 # (2003) fits for 1600 < Re < 2.25e5 (as tests/objects/10-aeolian.sh),
 # L_c = 3 d: a 3 d long cylinder heard at r across the flow

@@ -40,17 +40,7 @@ RATE=44100
 PD056_ARCHIVE=${PD056_ARCHIVE:-$ROOT/../shared/vendor/pure-data-0.56-5.tar.gz}
 PD64=$ROOT/build/pd056/double
 
-passed=0 failed=0
-pass() { passed=$((passed + 1)); echo "  ok    $*"; }
-fail() { failed=$((failed + 1)); echo "  FAIL  $*"; }
-judge() {
-    if line=$("$@" 2>&1); then
-        passed=$((passed + 1)); echo "  $line"
-    else
-        failed=$((failed + 1)); echo "  $line"
-        case "$line" in FAIL*) ;; *) echo "  FAIL  ($*)" ;; esac
-    fi
-}
+. "$ROOT/tests/judge.sh" # pass, fail, judge
 finish() {
     echo
     echo "clean Debian: $(($(date +%s) - start)) s"

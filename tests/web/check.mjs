@@ -48,10 +48,16 @@ try {
   await page.click('#play');
   await page.waitForFunction(() => window.aero.state.playing, null, { timeout: 60000 });
   await page.waitForTimeout(1500);
-  const live = await page.evaluate(() => ({
-    rate: window.aero.state.ctx.sampleRate, time: window.aero.state.ctx.currentTime }));
-  say(live.time > 0.5, `the wires scene plays live in an AudioWorklet at ${live.rate} Hz ` +
-    `(context time ${live.time.toFixed(2)} s)`);
+  const live = await page.evaluate(() => {
+    const { ctx, analyser } = window.aero.state;
+    const x = new Float32Array(analyser.fftSize);
+    analyser.getFloatTimeDomainData(x);
+    const rms = Math.sqrt(x.reduce((a, v) => a + v * v, 0) / x.length);
+    return { rate: ctx.sampleRate, time: ctx.currentTime, rms };
+  });
+  say(live.time > 0.5 && live.rms > 1e-4 && Number.isFinite(live.rms),
+    `the wires scene plays live in an AudioWorklet at ${live.rate} Hz ` +
+    `(context time ${live.time.toFixed(2)} s, output rms ${live.rms.toExponential(2)})`);
   await page.screenshot({ path: `${out}/page.png` });
   await page.click('#play');
 

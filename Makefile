@@ -7,6 +7,9 @@
 #                   precision, 48 kHz), built from ../shared/vendor
 #   make double     the externals for double-precision Pd (*.linux-amd64-64.so)
 #   make deken      deken packages (single, double, sources) in build/deken/
+#   make platform P=windows-amd64|linux-amd64|linux-arm64|linux-armv7
+#                   the library folder for that platform in build/P/aero/,
+#                   cross-compiled, FFTW and libsndfile linked statically
 #   make check-gui  the help patches drawn by the Pd GUI (part of check)
 #   make check-libpd  aero inside libpd 0.16.1 (single, multi-instance,
 #                   threads under helgrind); CI runs it after make check
@@ -32,7 +35,10 @@ datadirs = $(if $(wildcard textures/*.wav),textures)
 datadirs += $(if $(wildcard trees/*.tree),trees)
 
 # No -ffast-math: the core relies on NaN checks (x != x) to sanitise input.
-CFLAGS = -Wall -Wextra -Wshadow -O3 -funroll-loops -fomit-frame-pointer
+# -fvisibility=hidden: an external exports only Pd's entry points, marked
+# AERO_PD_EXPORT (src/pd/aero_pd.h); tests/objects/96-exports.sh checks it.
+CFLAGS = -Wall -Wextra -Wshadow -O3 -funroll-loops -fomit-frame-pointer \
+    -fvisibility=hidden
 # src/core by role: common (shared data and laws), solve (the flow solvers
 # and the drivers that make textures), play (the real-time players)
 CORE_INCLUDES = -Isrc/core/common -Isrc/core/solve -Isrc/core/play
@@ -53,7 +59,7 @@ endif
 BUILD = build
 CORE_CC = $(CC)
 CORE_CFLAGS = -std=c99 -D_POSIX_C_SOURCE=200809L -O3 -fPIC -fopenmp \
-    -Wall -Wextra -Wshadow $(CORE_INCLUDES)
+    -fvisibility=hidden -Wall -Wextra -Wshadow $(CORE_INCLUDES)
 # the 3D solver's row loops (flow3d.c) vectorise only where a conversion
 # between int and float may run unconditionally: -fno-trapping-math (nothing
 # here reads the FP exception flags; the IEEE results are the same), and
@@ -369,11 +375,43 @@ clean: clean-robust
 clean-robust:
 	rm -rf $(ASAN_DIR) $(ASAN_DIR).log $(FUZZ_DIR)
 
+# ============================================================================
+# --- platforms: cross builds, the staged library folder per platform --------
+#   make platform P=PLATFORM   build/PLATFORM/aero/: every external, the
+#                  single-binary library, help, abstractions, textures,
+#                  trees, meta, LICENSE, README (a deken package's folder);
+#                  PLATFORM is linux-amd64, windows-amd64, linux-arm64 or
+#                  linux-armv7 (platforms/platform.mk says what each holds)
+#   make windows | linux-amd64 | linux-arm64 | linux-armv7   the same
+# FFTW and libsndfile are linked statically, built once per machine by
+# platforms/deps.sh (cached in ${AERO_CACHE:-~/.cache/aero}); the Windows
+# externals link pd.dll's import library from Pd for Windows
+# (platforms/pd.sh, cached the same way).
+# ============================================================================
+PLATFORMS = linux-amd64 windows-amd64 linux-arm64 linux-armv7
+DEB_PACKAGES += gcc-mingw-w64-x86-64-win32 gcc-mingw-w64-x86-64-posix \
+    gcc-aarch64-linux-gnu libc6-dev-arm64-cross \
+    gcc-arm-linux-gnueabihf libc6-dev-armhf-cross
+.PHONY: platform platforms windows linux-amd64 linux-arm64 linux-armv7
+platform:
+	@case " $(PLATFORMS) " in *" $(P) "*) ;; *) \
+	    echo "make platform P=PLATFORM, one of: $(PLATFORMS)" >&2; exit 2 ;; esac
+	@sh platforms/deps.sh $(P)
+	@$(if $(filter windows-%,$(P)),sh platforms/pd.sh $(P) single >/dev/null)
+	@$(MAKE) --no-print-directory -f platforms/platform.mk P=$(P)
+windows:
+	@$(MAKE) --no-print-directory platform P=windows-amd64
+linux-amd64 linux-arm64 linux-armv7:
+	@$(MAKE) --no-print-directory platform P=$@
+platforms:
+	@for p in $(PLATFORMS); do \
+	    $(MAKE) --no-print-directory platform P=$$p || exit 1; done
+
 # --- web: aero in the browser (libpd + aero compiled to WebAssembly) --------
 #   make web        build/web/: the page of web/, libpd 0.16.1 (Pd 0.56-5)
 #                   with aero linked in (one aero_setup()) as aero.wasm +
 #                   its ES module aero.js, FFTW and libsndfile for wasm
-#                   (platforms/wasm-deps.sh, cached), the scene patches,
+#                   (platforms/deps.sh wasm, cached), the scene patches,
 #                   abstractions, textures and trees the page loads into
 #                   the module's file system
 #   make web-serve  serves build/web/ on http://localhost:8000/
@@ -413,9 +451,13 @@ web.data = $(wildcard web/scenes/*.pd) $(wildcard abstractions/*.pd) \
     $(web.textures) $(web.trees)
 web.page = $(wildcard web/*.html web/*.js web/*.css)
 
-$(WASM_DEPS)/lib/libfftw3f.a $(WASM_DEPS)/lib/libsndfile.a: platforms/wasm-deps.sh
-	sh platforms/wasm-deps.sh $(VENDOR)
-	@touch $(WASM_DEPS)/lib/libfftw3f.a $(WASM_DEPS)/lib/libsndfile.a
+# platforms/deps.sh wasm: links in build/deps/wasm to the cached libraries
+# (whose times are the cache's: a stamp says when they were linked)
+WASM_DEPS_STAMP = $(WASM_DEPS)/.linked
+$(WASM_DEPS_STAMP): platforms/deps.sh platforms/deps/fftw.sh platforms/deps/sndfile.sh
+	NODE_PATH=/usr/share/nodejs AERO_VENDOR=$(abspath $(VENDOR)) \
+	    nice -n 10 sh platforms/deps.sh wasm
+	touch $@
 
 # libpd's own Makefile with emcc: the static library only, no extras (pd~
 # forks), no utils
@@ -432,7 +474,7 @@ $(WASM_LIBPD)/libs/libpd.a:
 	NODE_PATH=/usr/share/nodejs emranlib $@
 
 $(BUILD)/wasm/core/%.o: src/core/%.c $(wildcard src/core/*/*.h) \
-    $(WASM_DEPS)/lib/libfftw3f.a
+    $(WASM_DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(EMCC) $(WASM_CFLAGS) -c $< -o $@
 
@@ -442,7 +484,7 @@ $(wasm.core.lib): $(wasm.core.objects)
 
 $(WEB)/aero.js: web/aero_web.c $(class.sources) $(lib.setup.sources) \
     $(common.sources) src/pd/aero_pd.h $(wasm.core.lib) \
-    $(WASM_LIBPD)/libs/libpd.a $(WASM_DEPS)/lib/libsndfile.a
+    $(WASM_LIBPD)/libs/libpd.a $(WASM_DEPS_STAMP)
 	@mkdir -p $(WEB)
 	$(EMCC) -std=c99 -D_POSIX_C_SOURCE=200809L -Wall -Wextra \
 	    -Wno-unknown-pragmas -DHAVE_LIBPD -I$(WASM_LIBPD)/libpd_wrapper \

@@ -218,7 +218,7 @@ static void aeolian_tilde_free(t_aeolian_tilde *x)
     aero_aeolian_free(&x->x_engine);
 }
 
-void aeolian_tilde_setup(void)
+AERO_PD_EXPORT void aeolian_tilde_setup(void)
 {
     aeolian_tilde_class = aero_pd_class_new(
         &aeolian_tilde_spec, (t_newmethod)(t_method)aeolian_tilde_new,

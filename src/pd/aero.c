@@ -1,8 +1,7 @@
 /* aero: setup of the single-binary library (`-lib aero`, or a libpd app that
  * links every class statically): it only calls each class's setup, as
  * libpd_init() does for the objects it bundles. */
-#include "m_pd.h"
-#include "aero.h"
+#include "aero_pd.h"
 
 void aeolian_tilde_setup(void);
 void cavity_tilde_setup(void);
@@ -12,7 +11,7 @@ void vortex_tilde_setup(void);
 void fieldsound_tilde_setup(void);
 void body_tilde_setup(void);
 
-void aero_setup(void)
+AERO_PD_EXPORT void aero_setup(void)
 {
     aeolian_tilde_setup();
     cavity_tilde_setup();

@@ -328,8 +328,9 @@ void aero_set_data_path(const char *dir)
 {
     size_t n = dir ? strlen(dir) : 0;
     if (n >= sizeof(aero_data_dir)) {
-        pd_error(NULL, "aero: data path of %zu bytes is too long (max %zu): "
-                 "unset", n, sizeof(aero_data_dir) - 1);
+        pd_error(NULL, "aero: data path of %lu bytes is too long (max %lu): "
+                 "unset", (unsigned long)n,
+                 (unsigned long)(sizeof(aero_data_dir) - 1));
         n = 0;
     }
     memcpy(aero_data_dir, dir ? dir : "", n);

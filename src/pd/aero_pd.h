@@ -23,6 +23,19 @@
 #include "aero_ears.h"
 #include "texture.h"
 
+/* The only names an external (or the library) exports are Pd's entry
+ * points, the *_setup functions: Pd loads externals with RTLD_GLOBAL, so
+ * any other exported name could bind to another library's. The build hides
+ * the rest (-fvisibility=hidden); on Windows a DLL with one dllexport
+ * exports nothing else. */
+#if defined(_WIN32)
+#define AERO_PD_EXPORT __declspec(dllexport)
+#elif defined(__GNUC__)
+#define AERO_PD_EXPORT __attribute__((visibility("default")))
+#else
+#define AERO_PD_EXPORT
+#endif
+
 /* --- one table per object: its messages, each also a creation flag ------ */
 
 typedef enum {

@@ -189,7 +189,7 @@ static void body_tilde_free(t_body_tilde *x)
     aero_body_texture_free(&x->x_body);
 }
 
-void body_tilde_setup(void)
+AERO_PD_EXPORT void body_tilde_setup(void)
 {
     body_tilde_class = aero_pd_class_new(
         &body_tilde_spec, (t_newmethod)(t_method)body_tilde_new,

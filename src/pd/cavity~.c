@@ -151,7 +151,7 @@ static void cavity_tilde_free(t_cavity_tilde *x)
     aero_cavity_model_free(&x->x_model);
 }
 
-void cavity_tilde_setup(void)
+AERO_PD_EXPORT void cavity_tilde_setup(void)
 {
     cavity_tilde_class = aero_pd_class_new(
         &cavity_tilde_spec, (t_newmethod)(t_method)cavity_tilde_new,

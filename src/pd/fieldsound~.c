@@ -425,7 +425,7 @@ static void fieldsound_tilde_free(t_fieldsound_tilde *x)
     outlet_free(x->x_info);
 }
 
-void fieldsound_tilde_setup(void)
+AERO_PD_EXPORT void fieldsound_tilde_setup(void)
 {
     fieldsound_tilde_class = aero_pd_class_new(
         &fieldsound_tilde_spec, (t_newmethod)(t_method)fieldsound_tilde_new,

@@ -271,7 +271,7 @@ static void leafwave_tilde_free(t_leafwave_tilde *x)
         aero_leafwave_free(&x->x_model);
 }
 
-void leafwave_tilde_setup(void)
+AERO_PD_EXPORT void leafwave_tilde_setup(void)
 {
     leafwave_tilde_class = aero_pd_class_new(
         &leafwave_tilde_spec, (t_newmethod)(t_method)leafwave_tilde_new,

@@ -230,7 +230,7 @@ static void treebranch_tilde_free(t_treebranch_tilde *x)
     aero_treebranch_free(&x->x_tb);
 }
 
-void treebranch_tilde_setup(void)
+AERO_PD_EXPORT void treebranch_tilde_setup(void)
 {
     treebranch_tilde_class = aero_pd_class_new(
         &treebranch_tilde_spec, (t_newmethod)(t_method)treebranch_tilde_new,

@@ -223,7 +223,7 @@ static void vortex_tilde_free(t_vortex_tilde *x)
     aero_vortex_player_free(&x->x_player);
 }
 
-void vortex_tilde_setup(void)
+AERO_PD_EXPORT void vortex_tilde_setup(void)
 {
     vortex_tilde_class = aero_pd_class_new(
         &vortex_tilde_spec, (t_newmethod)(t_method)vortex_tilde_new,

@@ -15,6 +15,15 @@
 #include <omp.h>
 #include <stddef.h>
 #include <stdio.h>
+#include <sys/stat.h>
+
+/* a folder (0 or -1 with errno): Windows' C library takes no mode */
+#ifdef _WIN32
+#include <direct.h>
+#define aerotex_mkdir(path) _mkdir(path)
+#else
+#define aerotex_mkdir(path) mkdir(path, 0777)
+#endif
 
 /* --- option tables ----------------------------------------------------- */
 

@@ -131,7 +131,14 @@ int aerotex_job_start(aerotex_job *j, int argc, char **argv, int channels)
     }
     j->loop = aerotex_plan_loop(l0);
     command_line(j->command, sizeof j->command, argc, argv);
-    if (j->png_dir && mkdir(j->png_dir, 0777) && errno != EEXIST) {
+#ifdef AEROTEX_NO_PNG
+    if (j->png_dir) {
+        aerotex_error("%s: --png: this aerotex is built without libpng",
+                      j->name);
+        return 2;
+    }
+#endif
+    if (j->png_dir && aerotex_mkdir(j->png_dir) && errno != EEXIST) {
         aerotex_error("%s: can't create %s: %s", j->name, j->png_dir,
                       strerror(errno));
         return 1;

@@ -90,7 +90,7 @@ static int field_demo_run(int argc, char **argv)
         aerotex_error("field-demo: no output directory (-o DIR)");
         return 2;
     }
-    if (mkdir(j.dir, 0777) && errno != EEXIST) {
+    if (aerotex_mkdir(j.dir) && errno != EEXIST) {
         aerotex_error("field-demo: can't make directory %s: %s", j.dir,
                       strerror(errno));
         return 1;

@@ -1,5 +1,9 @@
-/* aerotex: vorticity snapshots as PNG images (libpng). */
+/* aerotex: vorticity snapshots as PNG images (libpng). A build without
+ * libpng (-DAEROTEX_NO_PNG: Windows, where Debian has no libpng for
+ * mingw) refuses --png when it parses the options (aerotex_common.c). */
 #include "aerotex.h"
+
+#ifndef AEROTEX_NO_PNG
 
 #include <png.h>
 #include <stdio.h>
@@ -57,3 +61,12 @@ int aerotex_png_vorticity(const char *path, const float *w,
     free(row);
     return fclose(f) ? -1 : 0;
 }
+#else
+/* never reached: --png is refused before a solver runs */
+int aerotex_png_vorticity(const char *path, const float *w,
+                          const float *solid, int nx, int ny, float wmax)
+{
+    (void)path, (void)w, (void)solid, (void)nx, (void)ny, (void)wmax;
+    return -1;
+}
+#endif

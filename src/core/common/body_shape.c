@@ -157,9 +157,10 @@ static int check_closed(const mesh_build *m, char *err, size_t errlen)
             j++;
         if (j - i != 2) {
             snprintf(err, errlen, "the mesh is not closed: edge %u-%u "
-                     "belongs to %zu face%s (every edge must join exactly "
+                     "belongs to %lu face%s (every edge must join exactly "
                      "two)", (unsigned)(e[i] >> 32) + 1,
-                     (unsigned)(e[i] & 0xffffffffu) + 1, j - i,
+                     (unsigned)(e[i] & 0xffffffffu) + 1,
+                     (unsigned long)(j - i),
                      j - i == 1 ? "" : "s");
             free(e);
             return -1;
@@ -330,8 +331,8 @@ int aero_body_mesh_parse(aero_body_shape *b, const char *text, char *err,
         char buf[1024];
         line++;
         if (n >= sizeof buf) {
-            snprintf(err, errlen, "line %d is longer than %zu characters",
-                     line, sizeof buf - 1);
+            snprintf(err, errlen, "line %d is longer than %lu characters",
+                     line, (unsigned long)(sizeof buf - 1));
             goto fail;
         }
         memcpy(buf, p, n);

@@ -314,7 +314,8 @@ int aero_volume_read_frame(const aero_volume_info *v, int k, float *data,
     size_t got = fread(data, sizeof(float), n, f);
     fclose(f);
     if (got != n) {
-        aero_say(err, errlen, "%s: read %zu of %zu values", path, got, n);
+        aero_say(err, errlen, "%s: read %lu of %lu values", path,
+                 (unsigned long)got, (unsigned long)n);
         return -1;
     }
     if (!host_is_little_endian())

@@ -119,19 +119,23 @@ function logPd(text) {
   else console.debug('Pd: ' + line);
 }
 
-// --- the spectrogram: a column per animation frame, 0-8 kHz, dB colour --
+// --- the spectrogram: a column per animation frame, 30 Hz - 12 kHz on a
+// log axis (the scenes' tones span 30 Hz to several kHz), dB as colour --
+const SPEC_LO = 30, SPEC_HI = 12000;
 function drawSpectrogram() {
   const canvas = $('spectrogram'), g = canvas.getContext('2d');
   const bins = new Float32Array(state.analyser.frequencyBinCount);
-  const top = Math.min(bins.length, Math.round(8000 / (state.ctx.sampleRate / 2) * bins.length));
+  const hzPerBin = state.ctx.sampleRate / state.analyser.fftSize;
+  // the FFT bin of each pixel row, bottom = SPEC_LO
+  const rowBin = Array.from({ length: canvas.height }, (_, y) => Math.min(bins.length - 1,
+    Math.round(SPEC_LO * Math.pow(SPEC_HI / SPEC_LO, (canvas.height - 1 - y) / (canvas.height - 1)) / hzPerBin)));
   const column = g.createImageData(1, canvas.height);
   const frame = () => {
     if (state.playing) {
       state.analyser.getFloatFrequencyData(bins);
       g.drawImage(canvas, -1, 0);
       for (let y = 0; y < canvas.height; y++) {
-        const k = Math.floor((canvas.height - 1 - y) / canvas.height * top);
-        const v = Math.max(0, Math.min(1, (bins[k] + 110) / 80));
+        const v = Math.max(0, Math.min(1, (bins[rowBin[y]] + 110) / 80));
         const i = 4 * y;
         column.data[i] = 255 * Math.min(1, v * 2);
         column.data[i + 1] = 255 * Math.max(0, v * 2 - 1);

@@ -95,6 +95,26 @@ try {
   }
   say(true, 'the wind-speed slider of the wires scene renders at 12 and 24 m/s');
 
+  // keyboard: the sword scene chosen and swung from the keyboard alone
+  await page.focus('#scenes button[data-id="sword"]');
+  await page.keyboard.press('Enter');
+  await page.focus('#swingpad');
+  await page.keyboard.press('Shift+ArrowLeft');
+  const swung = await page.textContent('#status');
+  say(/^Swing left, 160 ms/.test(swung), `keyboard: Enter on a scene, Shift+Left on the swing pad (${swung})`);
+
+  // a browser without AudioWorklet: the page says so instead of failing
+  const old = await browser.newPage();
+  old.on('console', m => { if (m.type() === 'error') errors.push(m.text()); });
+  old.on('pageerror', e => errors.push(String(e)));
+  await old.addInitScript(() => { delete window.AudioWorkletNode; });
+  await old.goto(url);
+  await old.waitForSelector('#unsupported:not([hidden])', { timeout: 30000 });
+  const text = await old.textContent('#unsupported');
+  say(/AudioWorklet/.test(text) && await old.isHidden('#app'),
+    `without AudioWorklet the page shows: "${text.slice(0, 60)}..."`);
+  await old.close();
+
   if (bench) {
     for (const id of scenes) {
       const ms = await page.evaluate(id => window.aero.blockCost(id), id);

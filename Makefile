@@ -14,6 +14,8 @@
 #   make check-libpd  aero inside libpd 0.16.1 (single, multi-instance,
 #                   threads under helgrind); CI runs it after make check
 #   make demo       renders the demo scenes under build/demo/
+#   make web        the web page (libpd + aero in WebAssembly) in build/web/;
+#                   make web-serve, make check-web, make bench-web (below)
 #   make bench      benchmarks (not part of check), see BENCHMARKS.md
 #   make deps       installs the Debian packages the project needs
 #   make install    installs into Pd's externals folder (pd-lib-builder)

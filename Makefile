@@ -6,13 +6,18 @@
 #   make check-pd056  the Pd tests again under Pd 0.56 (single and double
 #                   precision, 48 kHz), built from ../shared/vendor
 #   make double     the externals for double-precision Pd (*.linux-amd64-64.so)
-#   make deken      deken packages (single, double, sources) in build/deken/
+#   make deken      deken packages (every platform, both float sizes,
+#                   sources) in build/deken/
+#   make check-packages  the packages' contents, and the Linux ones loaded
+#                   and played in a minimal Debian with only Pd
 #   make platform P=windows-amd64|linux-amd64|linux-arm64|linux-armv7
 #                   the library folder for that platform in build/P/aero/,
 #                   cross-compiled, FFTW and libsndfile linked statically
 #   make check-gui  the help patches drawn by the Pd GUI (part of check)
+#   make check-arm  aero's arm64 and armv7 packages in Pd under qemu-user
 #   make check-libpd  aero inside libpd 0.16.1 (single, multi-instance,
 #                   threads under helgrind); CI runs it after make check
+#   make check-windows  aero's Windows package in Pd for Windows under wine
 #   make demo       renders the demo scenes under build/demo/
 #   make web        the web page (libpd + aero in WebAssembly) in build/web/;
 #                   make web-serve, make check-web, make bench-web (below)
@@ -165,6 +170,25 @@ DEB_PACKAGES += puredata-gui xvfb xauth imagemagick fonts-dejavu-core
 deps:
 	@sh tests/deps.sh $(DEB_PACKAGES)
 
+# --- platforms: arm (linux-arm64, linux-armv7) under qemu-user ---------------
+#   make check-arm  the staged arm packages (make platform P=linux-arm64,
+#                   P=linux-armv7) in Pd 0.56-5 cross-built for each
+#                   (platforms/pd.sh, cached) under qemu-user, by the shared
+#                   platform runner (tests/platform/arm.sh -> run.sh)
+# (the cross compilers: the platforms section below)
+DEB_PACKAGES += qemu-user-static
+ARM_PLATFORMS = linux-arm64 linux-armv7
+.PHONY: check-arm
+check-arm:
+	@$(MAKE) --no-print-directory deps
+	@$(MAKE) --no-print-directory -s all lib >$(BUILD).log 2>&1 || \
+	    { cat $(BUILD).log; exit 1; }
+	@for p in $(ARM_PLATFORMS); do \
+	    $(MAKE) --no-print-directory -s platform P=$$p >$(BUILD)-$$p.log 2>&1 || \
+	    { cat $(BUILD)-$$p.log; exit 1; }; done
+	@sh tests/platform/arm.sh $(ARM_PLATFORMS)
+# --- end of the arm section ---------------------------------------------------
+
 # --- the two commands of the README -----------------------------------------
 check:
 	@$(MAKE) --no-print-directory deps
@@ -203,35 +227,49 @@ textures:
 
 # --- packaging: deken packages (the Pd package manager's format) ----------
 # A deken package is a zip archive of the library folder named
-# NAME[vVERSION](OS-ARCH-FLOATSIZE).dek: one for single-precision Pd
-# (*.pd_linux), one for double precision (*.linux-amd64-64.so), and the
-# (Sources) package; each .dek.txt lists the objects with the DESCRIPTION of
-# their help patch's META, each .sha256 is the archive's checksum
-# (sha256sum -c). The version is the one of help/aero-meta.pd. (Debian's
-# `deken` tool cannot run offline: it fetches its hy runtime from PyPI, so
-# the archives are made here with zip, in the same format.)
+# NAME[vVERSION](OS-CPU-FLOATSIZE).dek. `make deken` makes one package per
+# platform and float size, zipped by platforms/deken.sh from the staged
+# folders build/PLATFORM/aero/ (`make platform P=...`):
+#   (Linux-amd64-32) *.pd_linux        (Linux-amd64-64) *.linux-amd64-64.so
+#   (Linux-arm64-32) *.pd_linux        (Linux-armv7-32) *.pd_linux
+#   (Windows-amd64-32) *.windows-amd64-32.dll
+#   (Windows-amd64-64) *.windows-amd64-64.dll
+# and (Sources) (git archive of HEAD); each with its .dek.txt (the objects
+# with the DESCRIPTION of their help patch's META) and .sha256.
+# One package per platform, not one multi-platform ("fat") package, which
+# deken also allows (several (ARCH) in one name): the arm and amd64 Linux
+# binaries all have to be named *.pd_linux (Pd 0.53, the Pd of Debian and
+# Raspberry Pi OS, knows no other Linux name), so they cannot share one
+# folder; a user downloads only the binaries Pd can load (deken's plugin
+# offers the packages of Pd's own platform and float size); and a platform
+# that fails its check does not hold back the others.
+# The version is the one of help/aero-meta.pd. (Debian's `deken` tool
+# cannot run offline: it fetches its hy runtime from PyPI, so the archives
+# are made here with zip, in the same format.)
+#   make deken DEKEN_PLATFORMS=linux-amd64   only some platforms
+#   make check-packages  every package's contents (tests/objects/96-packaging.sh)
+#                   and the Linux ones in a minimal Debian 12 with only Pd
+#                   (tests/packages/clean-debian.sh); run after the
+#                   platform builds (make deken builds what is missing)
 AERO_VERSION = $(shell sed -n 's/^\#X text [0-9]* [0-9]* VERSION \([0-9][0-9.]*\).*/\1/p' \
     help/aero-meta.pd | head -n 1)
 DEKEN_DIR = $(BUILD)/deken
-DEKEN_ARCH = $(shell uname -s)-$(shell uname -m | sed 's/x86_64/amd64/; s/aarch64/arm64/')
-DEKEN_NAME = aero[v$(AERO_VERSION)]
+DEKEN_PLATFORMS ?= linux-amd64 linux-arm64 linux-armv7 windows-amd64
 DEB_PACKAGES += unzip # the packaging test unpacks the .dek files
-deken.objects = $(class.sources:src/pd/%.c=%) \
-    $(patsubst abstractions/%.pd,%,$(wildcard abstractions/*.pd))
-deken: all
+DEB_PACKAGES += debootstrap # the clean Debian of check-packages
+deken:
 	@test -n "$(AERO_VERSION)" || { echo "no VERSION in help/aero-meta.pd" >&2; exit 1; }
 	rm -rf $(DEKEN_DIR)
-	$(MAKE) --no-print-directory -s install PDLIBDIR=$(CURDIR)/$(DEKEN_DIR)/stage
-	cd $(DEKEN_DIR)/stage && \
-	    zip -q -r "../$(DEKEN_NAME)($(DEKEN_ARCH)-32).dek" aero -x '*-64.so' && \
-	    zip -q -r "../$(DEKEN_NAME)($(DEKEN_ARCH)-64).dek" aero -x '*.pd_linux'
-	git archive --format=zip --prefix=aero/ \
-	    -o "$(DEKEN_DIR)/$(DEKEN_NAME)(Sources).dek" HEAD
-	sh tests/deken-objects.sh $(deken.objects) >$(DEKEN_DIR)/objects.txt
-	cd $(DEKEN_DIR) && for f in *.dek; do \
-	    cp objects.txt "$$f.txt" && sha256sum "$$f" >"$$f.sha256"; done
-	rm -rf $(DEKEN_DIR)/stage $(DEKEN_DIR)/objects.txt
-	@ls -1 $(DEKEN_DIR)/*.dek*
+	@for p in $(DEKEN_PLATFORMS); do \
+	    $(MAKE) --no-print-directory platform P=$$p || exit 1; done
+	sh platforms/deken.sh $(DEKEN_DIR) $(AERO_VERSION) $(DEKEN_PLATFORMS)
+
+.PHONY: check-packages
+check-packages:
+	@$(MAKE) --no-print-directory deps
+	@$(MAKE) --no-print-directory -s all lib double >$(BUILD).log 2>&1 || \
+	    { cat $(BUILD).log; exit 1; }
+	@sh tests/packages/check.sh
 
 # --- libpd: aero linked into a host program -------------------------------
 #   make libpd-example LIBPD_DIR=/path/to/libpd
@@ -276,6 +314,25 @@ check-libpd:
 clean: clean-aero
 clean-aero:
 	rm -rf $(BUILD) $(BUILD).log $(double.externals) $(double.lib)
+
+# --- platforms: Windows under wine (make check-windows) ----------------------
+#   make check-windows  the staged Windows package (make platform
+#                   P=windows-amd64) in Pd 0.56-5 for Windows (platforms/pd.sh,
+#                   single and double precision, cached) under wine64 with an
+#                   empty prefix in build/wine and no display, by the shared
+#                   platform runner (tests/platform/check-windows.sh -> run.sh)
+DEB_PACKAGES += wine64 gcc-mingw-w64-x86-64-win32 binutils-mingw-w64-x86-64
+.PHONY: check-windows
+check-windows:
+	@$(MAKE) --no-print-directory deps
+	@$(MAKE) --no-print-directory -s all lib double >$(BUILD).log 2>&1 || \
+	    { cat $(BUILD).log; exit 1; }
+	@echo "check-windows: the Windows package (log: $(BUILD)/windows-amd64.log)"
+	@$(MAKE) --no-print-directory -s platform P=windows-amd64 \
+	    >$(BUILD)/windows-amd64.log 2>&1 || \
+	    { cat $(BUILD)/windows-amd64.log; exit 1; }
+	@sh tests/platform/check-windows.sh
+# --- end of the Windows section ----------------------------------------------
 
 # ============================================================================
 # --- robustness: sanitizers, fuzzing, long runs, globals --------

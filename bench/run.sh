@@ -131,7 +131,14 @@ if command -v valgrind >/dev/null 2>&1; then
     N=$N_SAVED
 fi
 
+# instructions per source-sample on arm64 and armv7 against amd64 (QEMU's
+# count and callgrind), for the Raspberry Pi estimate in BENCHMARKS.md
+sh bench/arm/count.sh
+
 [ -n "$BENCH_ONLY_AEOLIAN" ] && exit 0
+# the peer: [aeolian~] and [cavity~] against SDT's [windkarman~] and
+# [windcavity~], and both texture modes per source, in one run
+sh bench/peer.sh
 for b in bench/texture.sh bench/field.sh; do
     [ -f "$b" ] && sh "$b"
 done

@@ -5,9 +5,10 @@
 #
 #   sh platforms/pd.sh PLATFORM [single|double]
 #
-# PLATFORM is Pd's name: windows-amd64 (here), linux-arm64, linux-armv7
-# (each a case below). double builds Pd with -DPD_FLOATSIZE=64, which
-# loads only externals named *.PLATFORM-64.* (Pd >= 0.54).
+# PLATFORM is Pd's name: windows-amd64, linux-arm64, linux-armv7,
+# linux-amd64 (each a case below). double builds Pd with
+# -DPD_FLOATSIZE=64, which loads only externals named *.PLATFORM-64.*
+# (Pd >= 0.54).
 #
 # The build is cached outside the clone, in
 # ${AERO_CACHE:-$HOME/.cache/aero}/pd/PLATFORM-PRECISION-KEY, KEY made of the
@@ -21,6 +22,14 @@
 #     src/m_pd.h   Pd's headers
 #     extra/ doc/  Pd's own abstractions (extra/*.pd) and documentation,
 #                  where Pd looks for them (the folder above bin/)
+#   linux-arm64, linux-armv7, linux-amd64 (Debian's aarch64-linux-gnu-,
+#   arm-linux-gnueabihf- and x86_64-linux-gnu- compilers, makefile.gnu
+#   without ALSA or OSS: Pd's dummy audio API, for batch mode with -noaudio):
+#     bin/pd       on arm run under qemu-user, e.g.
+#                  qemu-aarch64-static -L /usr/aarch64-linux-gnu bin/pd ...
+#                  qemu-arm-static -L /usr/arm-linux-gnueabihf bin/pd ...
+#     src/m_pd.h   Pd's headers
+#     extra/       Pd's own abstractions
 # Prints the path of build/pd-PLATFORM-PRECISION. PD_ARCHIVE overrides the
 # archive.
 set -e
@@ -69,8 +78,26 @@ build_windows_amd64() {
     cp -R "$SRC/doc" "$DEST/"
 }
 
+# Linux on arm: makefile.gnu with the cross compiler (~40 s of CPU each)
+build_linux_cross() { # TRIPLET
+    nice -n 10 make -C "$SRC/src" -j2 -f makefile.gnu CC="$1-gcc" \
+        ALSA=false OSS=false "MORECFLAGS=$FLOATSIZE" ../bin/pd
+    mkdir -p "$DEST/bin" "$DEST/src" "$DEST/extra"
+    cp "$SRC/bin/pd" "$DEST/bin/"
+    cp "$SRC"/src/*.h "$DEST/src/"
+    cp "$SRC"/extra/*.pd "$DEST/extra/"
+}
+build_linux_arm64() { build_linux_cross aarch64-linux-gnu; }
+build_linux_armv7() { build_linux_cross arm-linux-gnueabihf; }
+# the native one: the reference a double-precision platform Pd's renders
+# are compared with (make check-windows)
+build_linux_amd64() { build_linux_cross x86_64-linux-gnu; }
+
 case $PLATFORM in
     windows-amd64) build=build_windows_amd64 ;;
+    linux-arm64) build=build_linux_arm64 ;;
+    linux-armv7) build=build_linux_armv7 ;;
+    linux-amd64) build=build_linux_amd64 ;;
     *) echo "pd.sh: no build for platform $PLATFORM" >&2; exit 2 ;;
 esac
 

@@ -19,6 +19,9 @@
 # PD_RATE (default 44100) is passed to every run as -r: Pd 0.55 and later
 # default to 48 kHz, 0.54 and earlier to 44.1 kHz, and the recordings'
 # headers must say the rate Pd really ran at.
+# PD_SEARCH=/folder makes that folder Pd's only search path (-path) instead
+# of the repository (and its abstractions/): a staged package, so that
+# every object and file comes from there (tests/platform/run.sh).
 
 : "${OUT:=build/tests/out}"
 : "${ROOT:=$(pwd)}"
@@ -122,7 +125,7 @@ pd_render() {
         done
     } >"$_patch"
     # shellcheck disable=SC2086
-    timeout 300 "$PD" $PD_FLAGS -path "$ROOT" \
+    timeout 300 "$PD" $PD_FLAGS -path "${PD_SEARCH:-$ROOT}" \
         -open "$_patch" >"$OUT/$_name.log" 2>&1
 }
 
@@ -130,7 +133,9 @@ pd_render() {
 # logical time with DSP on, then quit; the log goes to LOG.
 pd_open_log() {
     # shellcheck disable=SC2086
-    timeout 120 "$PD" $PD_FLAGS -path "$ROOT" -path "$ROOT/abstractions" \
+    # (with PD_SEARCH, that folder twice: Pd ignores the repeat)
+    timeout 120 "$PD" $PD_FLAGS -path "${PD_SEARCH:-$ROOT}" \
+        -path "${PD_SEARCH:-$ROOT/abstractions}" \
         -open "$1" -open "$ROOT/tests/pd/run-1s-and-quit.pd" >"$2" 2>&1
 }
 

@@ -18,58 +18,11 @@ export ROOT OUT
 rm -rf "$OUT"
 mkdir -p "$OUT"
 
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); echo "  ok    $*"; }
-fail() { failed=$((failed + 1)); echo "  FAIL  $*"; }
-# judge a command by its exit status; its own output says what it measured
-judge() {
-    if line=$("$@" 2>&1); then
-        passed=$((passed + 1)); echo "  $line"
-    else
-        failed=$((failed + 1)); echo "  $line"
-        case "$line" in FAIL*) ;; *) echo "  FAIL  ($*)" ;; esac
-    fi
-}
-# the same, for a check that is meant to fail (a negative control)
-judge_fails() { # exit 1 is a measured failure; 2 (unreadable file) is not
-    line=$("$@" 2>&1)
-    status=$?
-    if [ "$status" -eq 1 ]; then
-        pass "negative control fails as it must: $line"
-    else
-        fail "negative control (exit $status): $line"
-    fi
-}
-log_clean() { # LOG: no creation failure, no error in Pd's log (Pd reports
-    # a bad connection or a message nothing takes without the word error)
-    if grep -q -i -e "couldn't create" -e "error" -e "connection failed" \
-        -e "no method for" -e "inlet: expected" -e "bad arguments" "$1"; then
-        fail "$2"; sed 's/^/        /' "$1" | head -20
-    else
-        pass "$2"
-    fi
-}
-section() { echo; echo "== $*"; }
-in_range() { # NAME VALUE LO HI SOURCE: a measured value against a published
-    # window (an empty VALUE fails)
-    if awk -v x="$2" -v lo="$3" -v hi="$4" 'BEGIN { exit !(x != "" && x >= lo && x <= hi) }'; then
-        pass "$1 = $2 in $3..$4 ($5)"
-    else
-        fail "$1 = ${2:-?} not in $3..$4 ($5)"
-    fi
-}
+. tests/judge.sh
+
 # ONLY=pattern (e.g. ONLY=vortex sh tests/run.sh) runs only the unit tests,
 # object test scripts and help patches whose path contains the pattern.
 only() { case "$1" in *"${ONLY:-}"*) return 0 ;; *) return 1 ;; esac; }
-reports_at_least() { # LOG OBJECT N: each bad flag/message named the object
-    count=$(grep -c -F "$2" "$1")
-    if [ "$count" -ge "$3" ]; then
-        pass "$2 reports each bad flag and message ($count reports)"
-    else
-        fail "$2: only $count reports of bad input (want >= $3)"; cat "$1"
-    fi
-}
 
 # --- unit tests of src/core ------------------------------------------------
 section "unit tests (src/core)"
@@ -130,17 +83,7 @@ else
 fi
 
 # --- each object's tests in real Pd: tests/objects/NN-name.sh, in order ----
-# The published laws, written here independently of src/core:
-# Re = rho U d / mu (rho 1.225, mu 1.81e-5); St: Williamson (1996)
-# -3.3265/Re + 0.1816 + 1.6e-4 Re for Re < 178, Roshko 0.198 (1 - 19.7/Re)
-# for Re > 260 (Roshko 1954); f = St U / d.
-tone_hz() {
-    awk -v u="$1" -v d="$2" 'BEGIN {
-        re = 1.225 * u * d / 1.81e-5
-        st = (re < 178) ? -3.3265 / re + 0.1816 + 1.6e-4 * re \
-                        : 0.198 * (1 - 19.7 / re)
-        printf "%.6g\n", st * u / d }'
-}
+. tests/laws.sh
 
 # A NaN made inside Pd (inf - inf), to feed objects through a signal inlet
 # (1e300: the product overflows in double-precision Pd too)

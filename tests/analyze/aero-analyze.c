@@ -31,6 +31,10 @@
  *                               [fmin, fmax], each smoothed by --smooth, dB
  *   aero-analyze onset FILE     time of the first sample with |x| > 1e-3
  *                               of the file's peak, seconds (after --skip)
+ *   aero-analyze same A B       largest |b - a| over every sample of every
+ *                               channel, relative to A's largest |a| (the
+ *                               same render on two platforms); files of
+ *                               other lengths, channels or rates differ (1)
  * options: --ch K (channel, default 0)  --skip S (seconds ignored at the
  * start)  --dur S (seconds analysed after the skip; default all)
  * --skip2 S (B's own skip, for two windows of one file; default --skip)
@@ -429,6 +433,71 @@ static double spectral_distance(const signal_t *a, const signal_t *b,
     return count ? sqrt(sum / count) : 1e9;
 }
 
+/* every sample of every channel of PATH (NULL if unreadable), its shape */
+static float *read_all(const char *path, SF_INFO *info)
+{
+    memset(info, 0, sizeof(*info));
+    SNDFILE *f = sf_open(path, SFM_READ, info);
+    if (!f)
+        return NULL;
+    size_t n = (size_t)info->frames * (size_t)info->channels;
+    float *x = malloc(sizeof(float) * (n + 1));
+    if (x && sf_readf_float(f, x, info->frames) != info->frames) {
+        free(x);
+        x = NULL;
+    }
+    sf_close(f);
+    return x;
+}
+
+static int verdict(const char *what, double value, const char *unit,
+                   const options *o, int relative_tol);
+
+static int same(const char *pa, const char *pb, const options *o)
+{
+    SF_INFO ia, ib;
+    float *a = read_all(pa, &ia), *b = read_all(pb, &ib);
+    if (!a || !b) {
+        printf("FAIL cannot read %s\n", a ? pb : pa);
+        free(a);
+        free(b);
+        return 2;
+    }
+    int rc;
+    if (ia.frames != ib.frames || ia.channels != ib.channels ||
+        ia.samplerate != ib.samplerate) {
+        printf("FAIL %s (%ld frames, %d ch, %d Hz) and %s (%ld frames, %d ch,"
+               " %d Hz) differ in shape\n", pa, (long)ia.frames, ia.channels,
+               ia.samplerate, pb, (long)ib.frames, ib.channels, ib.samplerate);
+        rc = 1;
+    } else {
+        size_t n = (size_t)ia.frames * (size_t)ia.channels, differ = 0;
+        double top = 0, worst = 0;
+        int bad = 0;
+        for (size_t i = 0; i < n; i++) {
+            if (!isfinite(a[i]) || !isfinite(b[i]))
+                bad = 1;
+            double d = fabs((double)b[i] - (double)a[i]);
+            differ += a[i] != b[i];
+            if (d > worst)
+                worst = d;
+            if (fabs(a[i]) > top)
+                top = fabs(a[i]);
+        }
+        double rel = bad || top == 0 ? NAN : worst / top;
+        /* 2^-24: a float's rounding step (half an ulp) at 1, so rel / 2^-23
+         * is the difference in ulps of the peak */
+        char what[1200];
+        snprintf(what, sizeof(what), "difference of %s from %s (%zu of %zu "
+                 "samples differ, largest %.3g = %.3g ulp of the peak %.4g)",
+                 pb, pa, differ, n, worst, rel / 1.1920929e-7, top);
+        rc = verdict(what, rel, "of the peak", o, 0);
+    }
+    free(a);
+    free(b);
+    return rc;
+}
+
 static int verdict(const char *what, double value, const char *unit,
                    const options *o, int relative_tol)
 {
@@ -462,7 +531,7 @@ static int verdict(const char *what, double value, const char *unit,
 static void usage(void)
 {
     fprintf(stderr, "usage: aero-analyze peak|peakratio|scaleratio|width|level|leveldiff|band|finite|"
-                    "centroid|centroidratio|clicks|onset FILE [FILE2] [F1 F2] [options]\n");
+                    "centroid|centroidratio|clicks|onset|same FILE [FILE2] [F1 F2] [options]\n");
 }
 
 int main(int argc, char **argv)
@@ -619,6 +688,8 @@ int main(int argc, char **argv)
             }
         snprintf(what, sizeof(what), "onset of %s", pos[0]);
         rc = verdict(what, first < 0 ? NAN : first / s.sr, "s", &o, 0);
+    } else if (!strcmp(cmd, "same") && npos >= 2) {
+        rc = same(pos[0], pos[1], &o);
     } else if (!strcmp(cmd, "clicks")) {
         snprintf(what, sizeof(what), "click ratio of %s", pos[0]);
         rc = verdict(what, click_ratio(&s), "", &o, 0);

@@ -19,29 +19,14 @@ judge $ANALYZE width "$OUT/peak-u2-d0.0005.wav" --fmin 300 --fmax 900 --max 0.01
 judge $ANALYZE width "$OUT/peak-u10-d0.01.wav" --fmin 100 --fmax 300 --min 0.03
 judge $ANALYZE width "$OUT/peak-u30-d0.003.wav" --fmin 1000 --fmax 3000 --min 0.03
 
-# Sectional rms lift coefficient C_L'(Re) of a circular cylinder, Norberg's
-# (2003, J. Fluids Struct. 17) fits for 1600 < Re < 2.25e5
-norberg_lift_rms() {
-    awk -v re="$1" 'BEGIN { x = log(re / 1600) / log(10)
-        if (re < 5400) c = 0.045 + 3 * x^4.6; else c = 0.52 - 0.06 * x^-2.6
-        printf "%.5f", c }'
-}
-speed_re() { awk -v u="$1" -v d="$2" 'BEGIN { printf "%.1f", 1.225 * u * d / 1.81e-5 }'; }
-
-# 2. level: p ~ U^3 C_L'(Re) St(Re): +18 dB per doubling of speed at a
-# constant C_L', plus the rise of the sectional lift with Re (Norberg 2003:
-# 0.11 at Re 3400, 0.32 at 6800, 0.44 at 13500), twice
+# 2. level: p ~ U^3 C_L'(Re) St(Re) (tests/laws.sh), twice
 pd_render lvl-u5 "aeolian~ -d 0.01" 1 3000 "; aero-speed 5"
 pd_render lvl-u10 "aeolian~ -d 0.01" 1 3000 "; aero-speed 10"
 pd_render lvl-u20 "aeolian~ -d 0.01" 1 3000 "; aero-speed 20"
 for pair in "5 10" "10 20"; do
     set -- $pair
-    expect=$(awk -v c1="$(norberg_lift_rms "$(speed_re "$1" 0.01)")" \
-        -v c2="$(norberg_lift_rms "$(speed_re "$2" 0.01)")" \
-        -v r1="$(speed_re "$1" 0.01)" -v r2="$(speed_re "$2" 0.01)" \
-        'BEGIN { s1 = 1 - 19.7 / r1; s2 = 1 - 19.7 / r2
-                 printf "%.2f", 20 * log(8 * c2 * s2 / (c1 * s1)) / log(10) }')
-    judge $ANALYZE leveldiff "$OUT/lvl-u$1.wav" "$OUT/lvl-u$2.wav" --expect "$expect" --tol 1.5
+    judge $ANALYZE leveldiff "$OUT/lvl-u$1.wav" "$OUT/lvl-u$2.wav" \
+        --expect "$(level_step_db "$1" "$2" 0.01)" --tol 1.5
 done
 
 # 3. level: -6 dB per doubling of distance (p ~ 1/r)

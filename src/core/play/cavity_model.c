@@ -33,16 +33,37 @@ static const double mode_weight[AERO_CAVITY_MODES] = {0.6, 1.0, 0.5, 0.25};
 /* broadband shear-layer noise relative to the tones (rms) */
 #define NOISE_LEVEL 0.3
 
-/* sin(2 pi p), p in [0, 1): quarter-period reflection, Taylor to t^9 */
-static float sin_cycles(float p)
+/* x - floor(x), without a libm call (|x| < 2^62) */
+static double wrap_cycles(double x)
 {
-    float x = p - 0.5f;
-    float a = fabsf(x);
-    float b = fminf(a, 0.5f - a);
-    float t = 6.28318530717958647f * b, t2 = t * t;
-    float s = t * (1.0f + t2 * (-1.0f / 6 + t2 * (1.0f / 120 +
-              t2 * (-1.0f / 5040 + t2 * (1.0f / 362880)))));
-    return copysignf(s, -x);
+    double t = (double)(int64_t)x;
+    t -= t > x;
+    return x - t;
+}
+
+/* cos and sin of 2 pi p[i], 0 <= p[i] < 2^30, for count arguments at once
+ * (independent, so they overlap): reduced to +-1/8 cycle around the
+ * nearest quarter k, Taylor to x^12 (error below 1e-11), the quarter
+ * applied without a branch */
+static void cis_cycles(const double *p, double *c, double *s, int count)
+{
+    for (int i = 0; i < count; i++) {
+        double q = 4.0 * (p[i] - (double)(int)p[i]); /* [0, 4) quarters */
+        int k = (int)(q + 0.5);
+        double x = (q - k) * (0.5 * AERO_PI), x2 = x * x;
+        double sn = x * (1.0 - x2 * (1.0 / 6) * (1.0 - x2 * (1.0 / 20) *
+                    (1.0 - x2 * (1.0 / 42) * (1.0 - x2 * (1.0 / 72) *
+                    (1.0 - x2 * (1.0 / 110))))));
+        double cs = 1.0 - x2 * 0.5 * (1.0 - x2 * (1.0 / 12) * (1.0 - x2 * (1.0 / 30) *
+                    (1.0 - x2 * (1.0 / 56) * (1.0 - x2 * (1.0 / 90) *
+                    (1.0 - x2 * (1.0 / 132))))));
+        /* e^{i k pi / 2} (cs + i sn): k odd swaps, k 1, 2 negate the
+           cosine, k 2, 3 the sine */
+        double odd = (double)(k & 1);
+        double a = cs + odd * (sn - cs), b = sn + odd * (cs - sn);
+        c[i] = a * (double)(1 - ((k + 1) & 2));
+        s[i] = b * (double)(1 - (k & 2));
+    }
 }
 
 double aero_cavity_rossiter_hz(double speed, double length, int mode)
@@ -87,6 +108,7 @@ int aero_cavity_model_init(aero_cavity_model *m, double sample_rate,
     m->ctl_target[AERO_CAV_GAIN] = 1.0;
     m->ctl_target[AERO_CAV_EAR + 1] = 1.0;
     memcpy(m->ctl, m->ctl_target, sizeof(m->ctl));
+    m->laws_dirty = 1;
     aero_cavity_model_set_ramp_ms(m, 20.0);
     aero_cavity_model_set_seed(m, seed);
     return sr_ok ? 0 : -1;
@@ -107,8 +129,17 @@ void aero_cavity_model_set_seed(aero_cavity_model *m, uint32_t seed)
     s ^= s >> 16;
     m->rng = s ? s : 0x2545f491u;
     for (int k = 0; k < AERO_CAVITY_MODES; k++)
-        m->phase[k] = 0.5 + 0.5 * aero_uniform(&m->rng);
+    {
+        double p = 0.5 + 0.5 * aero_uniform(&m->rng);
+        cis_cycles(&p, &m->phasor[k][0], &m->phasor[k][1], 1);
+    }
     m->texture_pos = 0.5 + 0.5 * aero_uniform(&m->rng); /* scaled at use */
+    /* the noise's and the tones' generators (four lanes each), never 0 */
+    for (int j = 0; j < 8; j++) {
+        uint32_t x = aero_xorshift32(&m->rng) ^ (0x9e3779b9u * (j + 1));
+        uint32_t *state = j < 4 ? m->noise_rng + j : m->tone_rng + (j - 4);
+        *state = x ? x : 0x6c8e9cf5u + j;
+    }
 }
 
 static int size_ok(double v)
@@ -119,6 +150,7 @@ static int size_ok(double v)
 
 static int set_ctl(aero_cavity_model *m, int k, double v)
 {
+    m->laws_dirty = 1;
     m->ctl_target[k] = v;
     if (!m->primed)
         m->ctl[k] = v;
@@ -177,6 +209,7 @@ int aero_cavity_model_set_exponent(aero_cavity_model *m, double n)
     if (!aero_is_finite(n) || n < 0.0 || n > AERO_CAVITY_EXPONENT_MAX)
         return -1;
     m->exponent = n;
+    m->laws_dirty = 1;
     return 0;
 }
 
@@ -215,12 +248,14 @@ int aero_cavity_model_set_texture(aero_cavity_model *m, aero_texture *t,
     return 0;
 }
 
-static void advance_ramps(aero_cavity_model *m, int n)
+/* 1 when the controls moved */
+static int advance_ramps(aero_cavity_model *m, int n)
 {
     if (m->ramp_left <= 0)
-        return;
+        return 0;
     aero_glide_values(m->ctl, m->ctl_target, AERO_CAV_COUNT,
                       aero_glide_fraction(&m->ramp_left, n));
+    return 1;
 }
 
 static double listener_distance(const aero_cavity_model *m, double r_min)
@@ -229,83 +264,348 @@ static double listener_distance(const aero_cavity_model *m, double r_min)
     return fmax(sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]), r_min);
 }
 
-/* Model mode: per block the Rossiter frequencies per unit speed, the
- * lock-in gains and the level; per sample four narrow-band tones. */
-static void process_model(aero_cavity_model *m, const float *u, float *out,
-                          int n, double u_end)
+/* Geometry, listener and level laws, when a control or the exponent has
+ * moved: the depth modes and, per Rossiter mode, the unlocked tone
+ * amplitude per U^n. */
+static void update_laws(aero_cavity_model *m)
 {
     double l = m->ctl[AERO_CAV_LENGTH], d = m->ctl[AERO_CAV_DEPTH];
-    double w = m->ctl[AERO_CAV_WIDTH], sr = m->sample_rate;
-    double mach = u_end / AERO_C0;
-    double gain_end[AERO_CAVITY_MODES], jitter[AERO_CAVITY_MODES];
+    double w = m->ctl[AERO_CAV_WIDTH];
+    for (int j = 0; j < AERO_CAVITY_DEPTH_MODES; j++) {
+        m->depth_hz[j] = aero_cavity_depth_hz(d, l, w, j + 1);
+        m->lock_scale[j] = 1.0 / (LOCK_WIDTH * m->depth_hz[j]);
+    }
     double weight_sum = 0;
     for (int k = 0; k < AERO_CAVITY_MODES; k++)
         weight_sum += mode_weight[k] * mode_weight[k];
     /* p_rms = LEVEL (rho/2) U_ref^(2-n) U^n sqrt(L W) / r; the tones share
      * it by their weights (sqrt 2: rms -> amplitude) */
     double r = listener_distance(m, sqrt(l * w));
-    double level = LEVEL * 0.5 * AERO_RHO *
-                   pow(REFERENCE_SPEED, 2.0 - m->exponent) * sqrt(l * w) / r *
-                   m->ctl[AERO_CAV_GAIN];
-    for (int k = 0; k < AERO_CAVITY_MODES; k++) {
-        m->freq_factor[k] = (k + 1 - ROSSITER_ALPHA) /
-                            (l * (mach + 1.0 / ROSSITER_KAPPA));
-        double f = m->freq_factor[k] * u_end, lock = 0;
-        for (int j = 1; j <= AERO_CAVITY_DEPTH_MODES; j++) {
-            double fd = aero_cavity_depth_hz(d, l, w, j);
-            double x = (f - fd) / (LOCK_WIDTH * fd);
-            lock = fmax(lock, 1.0 / (1.0 + x * x));
+    m->level = LEVEL * 0.5 * AERO_RHO * pow(REFERENCE_SPEED, 2.0 - m->exponent) *
+               sqrt(l * w) / r * m->ctl[AERO_CAV_GAIN];
+    for (int k = 0; k < AERO_CAVITY_MODES; k++)
+        m->mode_level[k] = m->level * sqrt(2.0) * mode_weight[k] / sqrt(weight_sum);
+    m->laws_dirty = 0;
+}
+
+/* A chunk is rendered as LANES lanes of T = ceil(n / LANES) consecutive
+ * samples each (lane j holds samples T j .. T j + T - 1), so that every
+ * per-sample recursion runs on LANES samples at once: the tones by the
+ * two-term recurrence s[t+1] = 2 cos(w) s[t] - s[t-1], started per lane from
+ * its exact phase, and the noise's one-pole filters from zero per lane,
+ * then corrected by the true start state carried from lane to lane. */
+enum { LANES = 4, CHUNK = 64, LANE_MAX = CHUNK / LANES };
+/* the largest per-sample phase step (cycles, uniform amplitude) within a
+   lane, where the coefficient's linear expansion (below) holds */
+#define MAX_STEP 0.01
+
+/* Four lanes of floats: GCC's vector extension where the compiler has it
+ * (GCC, clang), else a plain array (the portable reference, also built
+ * with -DAERO_PORTABLE_LANES). */
+#if defined(__GNUC__) && !defined(AERO_PORTABLE_LANES)
+typedef float lane4 __attribute__((vector_size(16)));
+typedef uint32_t lane4u __attribute__((vector_size(16)));
+static inline lane4 l4_add(lane4 a, lane4 b) { return a + b; }
+static inline lane4 l4_sub(lane4 a, lane4 b) { return a - b; }
+static inline lane4 l4_mul(lane4 a, lane4 b) { return a * b; }
+static inline lane4 l4_splat(float x) { return (lane4){x, x, x, x}; }
+static inline float l4_get(lane4 a, int j) { return a[j]; }
+static inline void l4_set(lane4 *a, int j, float x) { (*a)[j] = x; }
+/* xorshift32 on each lane; the new words as uniform floats on [-1, 1) */
+static inline lane4 l4_uniform(lane4u *state)
+{
+    lane4u x = *state;
+    x ^= x << 13;
+    x ^= x >> 17;
+    x ^= x << 5;
+    *state = x;
+    typedef int32_t lane4i __attribute__((vector_size(16)));
+    return __builtin_convertvector((lane4i)x, lane4) * (1.0f / 2147483648.0f);
+}
+/* cos and sin of 2 pi p on each lane, 0 <= p < 2^20, to float precision:
+   as cis_cycles, Taylor to x^8, the quarter applied by bit masks */
+static inline void l4_cis(lane4 p, lane4 *c, lane4 *s)
+{
+    typedef int32_t lane4i __attribute__((vector_size(16)));
+    lane4 q = 4.0f * (p - __builtin_convertvector(
+                              __builtin_convertvector(p, lane4i), lane4));
+    lane4i k = __builtin_convertvector(q + 0.5f, lane4i);
+    lane4 x = (q - __builtin_convertvector(k, lane4)) * (float)(0.5 * AERO_PI);
+    lane4 x2 = x * x;
+    lane4 sn = x * (1.0f - x2 * (1.0f / 6) * (1.0f - x2 * (1.0f / 20) *
+                    (1.0f - x2 * (1.0f / 42))));
+    lane4 cs = 1.0f - x2 * 0.5f * (1.0f - x2 * (1.0f / 12) *
+                    (1.0f - x2 * (1.0f / 30) * (1.0f - x2 * (1.0f / 56))));
+    lane4i odd = -(k & 1), a = (lane4i)cs, b = (lane4i)sn;
+    lane4i ca = (a & ~odd) | (b & odd), sa = (b & ~odd) | (a & odd);
+    *c = (lane4)(ca ^ (((k + 1) & 2) << 30));
+    *s = (lane4)(sa ^ ((k & 2) << 30));
+}
+#else
+typedef struct { float v[LANES]; } lane4;
+typedef struct { uint32_t v[LANES]; } lane4u;
+#define L4_EACH(expr) { lane4 r; for (int j = 0; j < LANES; j++) r.v[j] = (expr); return r; }
+static inline lane4 l4_add(lane4 a, lane4 b) L4_EACH(a.v[j] + b.v[j])
+static inline lane4 l4_sub(lane4 a, lane4 b) L4_EACH(a.v[j] - b.v[j])
+static inline lane4 l4_mul(lane4 a, lane4 b) L4_EACH(a.v[j] * b.v[j])
+static inline lane4 l4_splat(float x) L4_EACH(x)
+static inline float l4_get(lane4 a, int j) { return a.v[j]; }
+static inline void l4_set(lane4 *a, int j, float x) { a->v[j] = x; }
+static inline lane4 l4_uniform(lane4u *state)
+{
+    lane4 r;
+    for (int j = 0; j < LANES; j++) {
+        uint32_t x = state->v[j];
+        x ^= x << 13;
+        x ^= x >> 17;
+        x ^= x << 5;
+        state->v[j] = x;
+        r.v[j] = (float)(int32_t)x * (1.0f / 2147483648.0f);
+    }
+    return r;
+}
+static inline void l4_cis(lane4 p, lane4 *c, lane4 *s)
+{
+    double pd[LANES], cd[LANES], sd[LANES];
+    for (int j = 0; j < LANES; j++)
+        pd[j] = p.v[j];
+    cis_cycles(pd, cd, sd, LANES);
+    for (int j = 0; j < LANES; j++)
+        c->v[j] = (float)cd[j], s->v[j] = (float)sd[j];
+}
+#endif
+
+/* Model mode, one chunk of n <= CHUNK samples. Per chunk: the Rossiter
+ * frequencies (from the chunk's mean speed, so the phase reaches the same
+ * point as with the speed per sample), the lock-in, the gains, the noise
+ * filters, each tone's random phase step (a Lorentzian line of width B
+ * wanders by B n / (2 pi sr) cycles^2 per chunk, drawn near-Gaussian: the
+ * sum of four uniforms, as the per-sample steps it replaces add up to);
+ * per sample the four recurrences, the white noise and its two filters, in
+ * float. */
+static void process_model(aero_cavity_model *m, const float *u, float *out,
+                          int n, double u_mean, double u_end)
+{
+    enum { K = AERO_CAVITY_MODES };
+    if (m->laws_dirty)
+        update_laws(m);
+    const double sr = m->sample_rate, l = m->ctl[AERO_CAV_LENGTH];
+    const int len = (n + LANES - 1) / LANES;
+    double gain_end[K], width[K];
+    double inv = 1.0 / (l * (u_end / AERO_C0 + 1.0 / ROSSITER_KAPPA));
+    for (int k = 0; k < K; k++) {
+        double factor = (k + 1 - ROSSITER_ALPHA) * inv;
+        double fk = factor * u_end, lock = 0, best = 0, pulled = fk;
+        for (int j = 0; j < AERO_CAVITY_DEPTH_MODES; j++) {
+            double fd = m->depth_hz[j];
+            double x = (fk - fd) * m->lock_scale[j], x2 = x * x;
+            /* 1 / (1 + x^2) and 1 / (1 + x^4) from one division */
+            double r = 1.0 / ((1.0 + x2) * (1.0 + x2 * x2));
+            double near = (1.0 + x2 * x2) * r, pull = (1.0 + x2) * r;
+            lock = near > lock ? near : lock;
+            /* the locked tone's frequency holds on the depth mode
+               (aero_cavity_locked_hz) */
+            if (pull > best)
+                best = pull, pulled = fk - (fk - fd) * pull;
         }
         double grow = 1.0 + LOCK_GAIN * lock;
-        /* the locked tone's frequency holds on the depth mode */
-        if (f > 0.0)
-            m->freq_factor[k] *= aero_cavity_locked_hz(f, d, l, w) / f;
-        gain_end[k] = level * sqrt(2.0) * mode_weight[k] / sqrt(weight_sum) *
-                      grow;
+        m->freq_factor[k] = fk > 0.0 ? factor * pulled / fk : factor;
+        gain_end[k] = m->mode_level[k] * grow;
         /* a locked tone is purer: the width shrinks as it grows */
-        double width = TONE_WIDTH * f / grow;
-        jitter[k] = sqrt(3.0 * width / (2.0 * AERO_PI * sr));
+        width[k] = TONE_WIDTH * fk / grow;
     }
     if (!m->primed)
         memcpy(m->mode_gain, gain_end, sizeof(gain_end));
-    /* shear-layer noise: white noise between two one-pole low-passes at
-     * f_1 / 2 and 4 f_4, scaled to NOISE_LEVEL of the tones */
-    double f_lo = 0.5 * m->freq_factor[0] * u_end,
-           f_hi = 4.0 * m->freq_factor[AERO_CAVITY_MODES - 1] * u_end;
-    double a_lo = 1.0 - exp(-2.0 * AERO_PI * fmin(f_lo, 0.4 * sr) / sr);
-    double a_hi = 1.0 - exp(-2.0 * AERO_PI * fmin(f_hi, 0.4 * sr) / sr);
-    double noise_scale = a_hi > 1e-9 ? NOISE_LEVEL * level /
-                                           sqrt((1.0 / 3.0) * a_hi / (2.0 - a_hi))
-                                     : 0.0;
-    double exponent = m->exponent;
-    for (int i = 0; i < n; i++) {
-        double t = (i + 1.0) / n, s = 0;
-        /* one random word gives the four modes' phase steps, a byte each
-         * (uniform on [-1, 1): only the variance of the diffusion matters) */
-        uint32_t word = aero_xorshift32(&m->rng);
-        for (int k = 0; k < AERO_CAVITY_MODES; k++) {
-            double g = m->mode_gain[k] + (gain_end[k] - m->mode_gain[k]) * t;
-            double p = m->phase[k] + m->freq_factor[k] * u[i] / sr +
-                       jitter[k] * (double)(int8_t)(word >> (8 * k)) * (1.0 / 128.0);
-            /* a short cavity in a fast flow (or a low sample rate) puts
-             * a mode above the sample rate: the phase may step by more
-             * than a cycle, so wrap by floor (sin_cycles needs [0, 1)) */
-            if (p < 0.0 || p >= 1.0)
-                p -= floor(p);
-            m->phase[k] = p;
-            s += g * sin_cycles((float)p);
-        }
-        double white = aero_uniform(&m->rng);
-        m->noise_state[0] += a_hi * (white - m->noise_state[0]);
-        m->noise_state[1] += a_lo * (m->noise_state[0] - m->noise_state[1]);
-        s += noise_scale * (m->noise_state[0] - m->noise_state[1]);
-        double un = exponent == 2.0 ? (double)u[i] * u[i] : pow(u[i], exponent);
-        out[i] = (float)(s * un);
+
+    /* The tones. Each lane j (samples T j .. T j + T - 1) has its own
+     * frequency w_j = w + s_j / T, s_j the phase's random step over the
+     * lane, so the phase walks at every lane boundary (a frequency noise
+     * constant over T samples, whose line keeps its Lorentzian shape out
+     * to sr / (2 T) from the tone). Sample T j + t sounds at phase
+     * P_j + w_j (t + 1), P_j = p + sum_{j' < j} w_j' T, p the phase after
+     * the last chunk (m->phasor). */
+    double end[K];
+    const int jl = (n - 1) / len, tl = (n - 1) % len;
+    lane4 prev[K], cur[K], coef[K], slope[K], kick[K];
+    lane4u rng;
+    memcpy(&rng, m->tone_rng, sizeof(rng));
+    /* Within a lane the phase still wanders per sample: the recurrence's
+     * coefficient 2 cos(2 pi w) moves by -4 pi sin(2 pi w) e_t, e_t the
+     * per-sample step, so the lines keep their Lorentzian tails beyond
+     * sr / (2 T). The steps (uniform) are shared by the modes, whose lines
+     * lie apart, and sum to 0 over a lane (a bridge: the lane still ends
+     * on its phase). A wider line's steps above MAX_STEP cycles are kept
+     * only in the lane steps. The linear coefficient exceeds the exact one
+     * by (2 pi x)^2 cos(2 pi w) at most (x = step e_t, |e_t| < 2), so a
+     * lane of T samples can grow by at most (1 + 4 pi MAX_STEP)^T, and
+     * each lane starts again from its exact phase and level. */
+    lane4 e[LANE_MAX];
+    {
+        lane4 mean = l4_splat(0.0f);
+        for (int t = 0; t < len; t++)
+            mean = l4_add(mean, e[t] = l4_uniform(&rng));
+        mean = l4_mul(mean, l4_splat(1.0f / len));
+        for (int t = 0; t < len; t++)
+            e[t] = l4_sub(e[t], mean);
     }
-    memcpy(m->mode_gain, gain_end, sizeof(gain_end));
-    for (int k = 0; k < 2; k++)
-        if (fabs(m->noise_state[k]) < 1e-20)
-            m->noise_state[k] = 0; /* no denormals */
+    for (int k = 0; k < K; k++) {
+        double w = wrap_cycles(m->freq_factor[k] * u_mean / sr);
+        double sd = sqrt(0.75 * width[k] * len / (2.0 * AERO_PI * sr)) / len;
+        /* the lanes' steps, near-Gaussian (four uniforms each) */
+        lane4 g = l4_add(l4_add(l4_uniform(&rng), l4_uniform(&rng)),
+                         l4_add(l4_uniform(&rng), l4_uniform(&rng)));
+        double offset = 0.0;
+        lane4 wl, ol;
+        for (int j = 0; j < LANES; j++) {
+            double wj = wrap_cycles(w + sd * l4_get(g, j));
+            l4_set(&wl, j, (float)wj);
+            l4_set(&ol, j, (float)offset); /* < LANES T: no wrap needed */
+            if (j == jl)
+                end[k] = offset + wj * (tl + 1);
+            offset += wj * len;
+        }
+        /* the lanes in float: each restarts from its exact phase */
+        lane4 cw, sw, co, so;
+        l4_cis(wl, &cw, &sw);
+        l4_cis(ol, &co, &so);
+        /* the gain glides from g0 to g1 over the chunk: the lanes carry
+           g0, the slope (g1 - g0) / (g0 n) per sample multiplies later */
+        double g0 = m->mode_gain[k], g1 = gain_end[k];
+        slope[k] = l4_splat(g0 > 0.0 ? (float)((g1 - g0) / (g0 * n)) : 0.0f);
+        if (!(g0 > 0.0))
+            g0 = g1;
+        m->mode_gain[k] = g1;
+        /* z = g0 e^{i 2 pi P_j}: sample T j - 1; one step of w_j on */
+        lane4 pc = l4_splat((float)(g0 * m->phasor[k][0]));
+        lane4 ps = l4_splat((float)(g0 * m->phasor[k][1]));
+        lane4 zc = l4_sub(l4_mul(pc, co), l4_mul(ps, so));
+        lane4 zs = l4_add(l4_mul(pc, so), l4_mul(ps, co));
+        prev[k] = zs;
+        cur[k] = l4_add(l4_mul(zc, sw), l4_mul(zs, cw));
+        coef[k] = l4_add(cw, cw);
+        double step = sqrt(3.0 * width[k] / (2.0 * AERO_PI * sr));
+        step = step < MAX_STEP ? step : MAX_STEP;
+        kick[k] = l4_mul(sw, l4_splat((float)(-4.0 * AERO_PI * step)));
+    }
+    memcpy(m->tone_rng, &rng, sizeof(rng));
+    /* the phase after this chunk, kept on the unit circle (one Newton step
+       of 1 / |z|: |z| is 1 to rounding); its step from the four modes'
+       float cosines and sines at once (their rounding, ~1e-5 cycles, is
+       far below the phase's own random step per chunk) */
+    {
+        lane4 ev, cv, sv;
+        for (int k = 0; k < K; k++)
+            l4_set(&ev, k, (float)end[k]);
+        l4_cis(ev, &cv, &sv);
+        for (int k = 0; k < K; k++) {
+            const double *p0 = m->phasor[k];
+            double c = l4_get(cv, k), sn = l4_get(sv, k);
+            double zc = p0[0] * c - p0[1] * sn, zs = p0[0] * sn + p0[1] * c;
+            double norm = 1.5 - 0.5 * (zc * zc + zs * zs);
+            m->phasor[k][0] = zc * norm, m->phasor[k][1] = zs * norm;
+        }
+    }
+
+    /* Shear-layer noise: white noise between two one-pole low-passes at
+     * f_1 / 2 and 4 f_4 (y1 = LP_hi(white), y2 = LP_lo(y1), the band
+     * y1 - y2), scaled to NOISE_LEVEL of the tones. Each lane runs both
+     * filters from zero (z1, z2, together); the true start states C1, C2
+     * of a lane, carried from the one before, add p1^(t+1) C1 to y1 and
+     * a2 h[t] C1 + p2^(t+1) C2 to y2, h[t] = sum_m p2^(t-m) p1^(m+1) (the
+     * low filter's response to the high one's decaying start). */
+    double f_lo = 0.5 * m->freq_factor[0] * u_end,
+           f_hi = 4.0 * m->freq_factor[K - 1] * u_end;
+    double a1 = 1.0 - exp(-2.0 * AERO_PI * fmin(f_hi, 0.4 * sr) / sr);
+    double a2 = 1.0 - exp(-2.0 * AERO_PI * fmin(f_lo, 0.4 * sr) / sr);
+    double p1 = 1.0 - a1, p2 = 1.0 - a2;
+    double noise_scale = a1 > 1e-9 ? NOISE_LEVEL * m->level /
+                                         sqrt((1.0 / 3.0) * a1 / (2.0 - a1))
+                                   : 0.0;
+    lane4 z1[LANE_MAX], z2[LANE_MAX];
+    float k1[LANE_MAX], k2[LANE_MAX];
+    {
+        const lane4 af1 = l4_splat((float)a1), pf1 = l4_splat((float)p1);
+        const lane4 af2 = l4_splat((float)a2), pf2 = l4_splat((float)p2);
+        lane4 y1 = l4_splat(0.0f), y2 = y1;
+        lane4u white;
+        memcpy(&white, m->noise_rng, sizeof(white));
+        for (int t = 0; t < len; t++) {
+            y1 = l4_add(l4_mul(pf1, y1), l4_mul(af1, l4_uniform(&white)));
+            y2 = l4_add(l4_mul(pf2, y2), l4_mul(af2, y1));
+            z1[t] = y1, z2[t] = y2;
+        }
+        memcpy(m->noise_rng, &white, sizeof(white));
+    }
+    /* the start-state responses per t, and the carries lane to lane */
+    double pw1[LANE_MAX], pw2[LANE_MAX], h[LANE_MAX];
+    {
+        double q1 = 1.0, q2 = 1.0, hh = 0.0;
+        for (int t = 0; t < len; t++) {
+            q1 *= p1, q2 *= p2;
+            hh = p2 * hh + q1;
+            pw1[t] = q1, pw2[t] = q2, h[t] = hh;
+            /* the band's share: y1 - y2 */
+            k1[t] = (float)(q1 - a2 * hh), k2[t] = (float)q2;
+        }
+    }
+    lane4 c1, c2;
+    {
+        double s1 = m->noise_state[0], s2 = m->noise_state[1];
+        double e1 = pw1[len - 1], e2 = pw2[len - 1], eh = a2 * h[len - 1];
+        for (int j = 0; j < LANES; j++) {
+            l4_set(&c1, j, (float)s1), l4_set(&c2, j, (float)s2);
+            double n1 = l4_get(z1[len - 1], j) + e1 * s1;
+            s2 = l4_get(z2[len - 1], j) + eh * s1 + e2 * s2;
+            s1 = n1;
+        }
+        /* the states at sample n - 1, for the next chunk */
+        double cl1 = l4_get(c1, jl), cl2 = l4_get(c2, jl);
+        s1 = l4_get(z1[tl], jl) + pw1[tl] * cl1;
+        s2 = l4_get(z2[tl], jl) + a2 * h[tl] * cl1 + pw2[tl] * cl2;
+        m->noise_state[0] = fabs(s1) < 1e-20 ? 0.0 : s1; /* no denormals */
+        m->noise_state[1] = fabs(s2) < 1e-20 ? 0.0 : s2;
+    }
+
+    /* per sample: the recurrences, the gain slopes, the noise band;
+       written back in sample order */
+    float sum[LANES * LANE_MAX];
+    const lane4 ns = l4_splat((float)noise_scale);
+    c1 = l4_mul(c1, ns), c2 = l4_mul(c2, ns);
+    lane4 index;
+    for (int j = 0; j < LANES; j++)
+        l4_set(&index, j, (float)(len * j + 1));
+    for (int t = 0; t < len; t++) {
+        lane4 s1 = l4_splat(0.0f), s2 = s1;
+        for (int k = 0; k < K; k++) {
+            lane4 y = cur[k];
+            s1 = l4_add(s1, y);
+            s2 = l4_add(s2, l4_mul(slope[k], y));
+            lane4 c = l4_add(coef[k], l4_mul(kick[k], e[t]));
+            cur[k] = l4_sub(l4_mul(c, y), prev[k]);
+            prev[k] = y;
+        }
+        lane4 band = l4_add(l4_mul(ns, l4_sub(z1[t], z2[t])),
+                            l4_sub(l4_mul(l4_splat(k1[t]), c1),
+                                   l4_mul(l4_splat(k2[t]), c2)));
+        lane4 v = l4_add(l4_add(s1, l4_mul(index, s2)), band);
+        index = l4_add(index, l4_splat(1.0f));
+        for (int j = 0; j < LANES; j++)
+            sum[len * j + t] = l4_get(v, j);
+    }
+    if (m->exponent == 2.0) {
+        for (int i = 0; i < n; i++)
+            out[i] = sum[i] * (u[i] * u[i]);
+    } else {
+        /* U^n once per chunk, gliding linearly over it */
+        double q = pow(u_end, m->exponent);
+        if (!m->primed)
+            m->speed_power = q;
+        const float q0 = (float)m->speed_power;
+        const float dq = (float)((q - m->speed_power) / n);
+        for (int i = 0; i < n; i++)
+            out[i] = sum[i] * (q0 + dq * (float)(i + 1));
+        m->speed_power = q;
+    }
 }
 
 /* Texture mode: the texture coordinate advances by (v/v0)(L0/L) (Dobashi et
@@ -314,7 +614,7 @@ static void process_model(aero_cavity_model *m, const float *u, float *out,
  * (v/v0)^n (g = dF/dt per unit width: F ~ v^2 L, f ~ v/L), Curle dipole
  * p = (x . g) W / (4 pi c0 r^2). */
 static void process_texture(aero_cavity_model *m, const float *u, float *out,
-                            int n)
+                            int n, double u_end)
 {
     const aero_texture *t = m->texture;
     const double *e = m->ctl + AERO_CAV_EAR;
@@ -322,47 +622,75 @@ static void process_texture(aero_cavity_model *m, const float *u, float *out,
     double r = listener_distance(m, sqrt(l * w));
     double radiation = w / (4.0 * AERO_PI * AERO_C0 * r * r) *
                        m->ctl[AERO_CAV_GAIN];
-    double cx = e[0] * radiation, cy = e[1] * radiation;
-    double step = t->rate / m->sample_rate / m->texture_v0 *
-                  (m->texture_length > 0.0 ? m->texture_length / l : 1.0);
-    for (int i = 0; i < n; i++) {
-        double v = u[i] / m->texture_v0;
-        long k = (long)m->texture_pos;
-        double frac = m->texture_pos - k;
-        double gx = aero_texture_sample(t, k, 0, 0) * (1 - frac) +
-                    aero_texture_sample(t, k + 1, 0, 0) * frac;
-        double gy = aero_texture_sample(t, k, 0, 1) * (1 - frac) +
-                    aero_texture_sample(t, k + 1, 0, 1) * frac;
-        double scale = m->exponent == 2.0 ? v * v : pow(v, m->exponent);
-        out[i] = (float)((cx * gx + cy * gy) * scale);
-        m->texture_pos += u[i] * step;
-        if (m->texture_pos >= t->frames)
-            m->texture_pos -= t->frames * floor(m->texture_pos / t->frames);
+    double inv_v0 = 1.0 / m->texture_v0;
+    /* the speed law folded into the projection: (v/v0)^2 per sample, or
+       (v/v0)^n once per chunk, gliding over it */
+    double p1 = 1.0, p0 = 1.0;
+    int square = m->exponent == 2.0;
+    if (square) {
+        radiation *= inv_v0 * inv_v0;
+    } else {
+        p1 = pow(u_end * inv_v0, m->exponent);
+        if (!m->primed)
+            m->speed_power = p1;
+        p0 = m->speed_power;
+        m->speed_power = p1;
     }
+    const float cx = (float)(e[0] * radiation), cy = (float)(e[1] * radiation);
+    const double step = t->rate / m->sample_rate * inv_v0 *
+                        (m->texture_length > 0.0 ? m->texture_length / l : 1.0);
+    const float *data = t->data;
+    const long frames = t->frames, channels = t->channels;
+    double pos = m->texture_pos;
+    for (int i = 0; i < n; i++) {
+        long k = (long)pos;
+        long k1 = k + 1 < frames ? k + 1 : 0;
+        float frac = (float)(pos - k);
+        const float *a = data + k * channels, *b = data + k1 * channels;
+        float g = cx * (a[0] + (b[0] - a[0]) * frac) +
+                  cy * (a[1] + (b[1] - a[1]) * frac);
+        out[i] = square ? g * (u[i] * u[i])
+                        : g * (float)(p0 + (p1 - p0) * (i + 1) / n);
+        pos += u[i] * step;
+        if (pos >= frames)
+            pos -= frames * floor(pos / frames);
+    }
+    m->texture_pos = pos;
 }
 
 int aero_cavity_model_process(aero_cavity_model *m, const float *speed,
                               float *const *outs, int n)
 {
     float *out = outs[0];
-    enum { CHUNK = 64 };
     const float limit = (float)(AERO_MACH_LIMIT * AERO_C0);
     int clamped = 0;
     float u[CHUNK];
     for (int start = 0; start < n; start += CHUNK) {
         int len = n - start < CHUNK ? n - start : CHUNK;
+        /* sanitised |U| (NaN -> 0, clamped at Mach 0.3) and its sum, in
+           lanes so that it vectorises */
         for (int i = 0; i < len; i++) {
             float x = speed[start + i];
             float v = x == x ? fabsf(x) : 0.0f;
-            if (v > limit)
-                v = limit, clamped = 1;
-            u[i] = v;
+            u[i] = v < limit ? v : limit;
         }
-        advance_ramps(m, len);
+        for (int i = 0; i < len; i++)
+            clamped |= fabsf(speed[start + i]) > limit;
+        float lane_sum[8] = {0}, sum = 0;
+        int i = 0;
+        for (; i + 8 <= len; i += 8)
+            for (int j = 0; j < 8; j++)
+                lane_sum[j] += u[i + j];
+        for (; i < len; i++)
+            sum += u[i];
+        for (int j = 0; j < 8; j++)
+            sum += lane_sum[j];
+        if (advance_ramps(m, len))
+            m->laws_dirty = 1;
         if (m->texture)
-            process_texture(m, u, out + start, len);
+            process_texture(m, u, out + start, len, u[len - 1]);
         else
-            process_model(m, u, out + start, len, u[len - 1]);
+            process_model(m, u, out + start, len, sum / len, u[len - 1]);
         m->primed = 1;
     }
     return clamped;

@@ -14,7 +14,12 @@
  * a bottle or a window gap); the others stay weak. Broadband shear-layer
  * noise lies under the tones. The pressure amplitude grows as U^n, n = 2 by
  * default (Dobashi's "amplitude ~ v^4" is an intensity law), and falls as
- * 1/r.
+ * 1/r. Each tone is a narrow line whose phase wanders (a Lorentzian of
+ * width 3 % of f, narrower when locked). It is rendered in float, 64
+ * samples at a time as four lanes of 16 (two-term recurrences, the noise
+ * filters run per lane and joined by their carried states), the laws and
+ * the phase's steps per chunk and lane; U^n per sample for n = 2, else
+ * once per chunk, gliding (cavity_model.c).
  *
  * Texture mode. A cavity texture from `aerotex cavity` (g = dF/dt per unit
  * width at the base speed v0) is read at a rate v/v0, scaled by (v/v0)^n
@@ -58,11 +63,22 @@ typedef struct aero_cavity_model {
     double ramp_samples, ramp_left;
     int primed;
 
+    /* laws of the geometry, the listener and the level (recomputed when a
+       control or the exponent moves: laws_dirty) */
+    int laws_dirty;
+    double depth_hz[AERO_CAVITY_DEPTH_MODES];
+    double lock_scale[AERO_CAVITY_DEPTH_MODES]; /* 1 / (LOCK_WIDTH f_n) */
+    double mode_level[AERO_CAVITY_MODES]; /* tone amplitude per U^n, unlocked */
+    double level;                         /* p_rms per U^n, Pa */
+    double speed_power;  /* U^n at the end of the last chunk (n != 2) */
+
     /* model mode, per Rossiter mode m */
-    double phase[AERO_CAVITY_MODES];
-    double mode_gain[AERO_CAVITY_MODES]; /* at the end of the last block */
+    double phasor[AERO_CAVITY_MODES][2]; /* e^{i 2 pi phase} after the last chunk */
+    double mode_gain[AERO_CAVITY_MODES]; /* at the end of the last chunk */
     double freq_factor[AERO_CAVITY_MODES]; /* f_m / U, Hz per m/s */
     double noise_state[2];   /* band-pass of the shear-layer noise */
+    uint32_t noise_rng[4];   /* the white noise's four generators */
+    uint32_t tone_rng[4];    /* the tones' phase steps' */
 
     /* texture mode */
     aero_texture *texture;   /* NULL: model mode */

@@ -249,36 +249,69 @@ function showScene(scene) {
   loadLive(scene).catch(err => status('Cannot load: ' + err.message));
 }
 
-// a drag across the pad is a swing: its direction, its speed (pad widths
-// per second) sets the swing's duration, its length the arc
+// a keyboard swing: aero.swing~'s own arc ((1 - cos)/2 speed profile)
 function swing(direction, duration, arc) {
   sendAll([['aero-scene', 'direction', direction], ['aero-scene', 'duration', duration],
     ['aero-scene', 'arc', arc], ['aero-scene', 'swing']]);
-  status(`Swing ${direction > 0 ? 'right' : 'left'}, ${Math.round(duration)} ms over ${Math.round(arc)} deg`);
+  status(`Swing ${direction > 0 ? 'left' : 'right'}, ${Math.round(duration)} ms over ${Math.round(arc)} deg`);
 }
 
+// The blade's pose as aero.swing~ makes it (its [expr]): the hand 30 cm in
+// front of the head, the blade from 0.2 m to 0.2 + L m along the angle A
+// (deg, 90 = straight ahead) in the horizontal plane at 1.3 m, its chord
+// along the motion (DIR +1: A increasing), edge first
+function bladePose(angle, dir, length) {
+  const a = angle * Math.PI / 180, c = Math.cos(a), s = Math.sin(a);
+  return [0.2 * c, 0.3 + 0.2 * s, 1.3, (length + 0.2) * c, 0.3 + (length + 0.2) * s, 1.3,
+    -dir * s, dir * c, 0];
+}
+
+// Dragging across the pad moves the blade live: the pointer's position
+// across the pad is the blade's angle (left edge 165 deg, right edge 15),
+// each pointer move a pose glided to over the time since the last one, so
+// the drag's speed is the blade's speed (and its sound: pitch ~ v, level
+// ~ v^3 at every point along the blade)
 function setupSwingPad() {
   const pad = $('swingpad');
-  let start = null;
+  let drag = null;
+  const angleAt = e => {
+    const r = pad.getBoundingClientRect();
+    const x = Math.max(0, Math.min(1, (e.clientX - r.left) / (r.width || 1)));
+    return 165 - 150 * x;
+  };
   pad.addEventListener('pointerdown', e => {
-    start = { x: e.clientX, t: e.timeStamp };
     pad.setPointerCapture(e.pointerId);
+    const angle = angleAt(e);
+    drag = { angle, t: e.timeStamp, dir: 1, top: 0 };
+    sendAll([['aero-scene', 'ramp', 5],
+      ['aero-scene', 'place', ...bladePose(angle, 1, state.scene.blade)]]);
   });
-  pad.addEventListener('pointerup', e => {
-    if (!start) return;
-    const dx = e.clientX - start.x, dt = Math.max(1, e.timeStamp - start.t);
-    start = null;
-    const width = pad.clientWidth || 1;
-    if (Math.abs(dx) < 0.05 * width) return;
-    const speed = Math.abs(dx) / width / (dt / 1000);         // widths per second
-    const duration = Math.max(120, Math.min(1200, 400 / speed));
-    const arc = Math.max(60, Math.min(180, 180 * Math.abs(dx) / width));
-    swing(Math.sign(dx), duration, arc);
+  pad.addEventListener('pointermove', e => {
+    if (!drag) return;
+    const angle = angleAt(e), dt = e.timeStamp - drag.t;
+    if (dt <= 0 || angle === drag.angle) return;
+    const dir = angle > drag.angle ? 1 : -1;
+    // the glide: the time since the last move, but no faster than a tip
+    // speed of 60 m/s (a hard sword swing's tip moves at 30-50 m/s)
+    const arm = Math.abs(angle - drag.angle) * Math.PI / 180 * (state.scene.blade + 0.2);
+    const ramp = Math.max(5, Math.min(200, Math.max(dt, 1000 * arm / 60)));
+    drag.top = Math.max(drag.top, arm / (ramp / 1000));
+    sendAll([['aero-scene', 'ramp', ramp],
+      ['aero-scene', 'pose', ...bladePose(angle, dir, state.scene.blade)]]);
+    Object.assign(drag, { angle, t: e.timeStamp, dir });
   });
+  const end = () => {
+    if (!drag) return;
+    status(`Swing by hand: the tip reached ${drag.top.toFixed(1)} m/s`);
+    drag = null;
+    post({ send: ['aero-scene', 'ramp', 5] });
+  };
+  pad.addEventListener('pointerup', end);
+  pad.addEventListener('pointercancel', end);
   pad.addEventListener('keydown', e => {
     if (!['ArrowLeft', 'ArrowRight', 'Enter', ' '].includes(e.key)) return;
     e.preventDefault();
-    swing(e.key === 'ArrowLeft' ? -1 : 1, e.shiftKey ? 160 : 300, 150);
+    swing(e.key === 'ArrowRight' ? -1 : 1, e.shiftKey ? 160 : 300, 150);
   });
 }
 

@@ -69,13 +69,14 @@ export const SCENES = [
   },
   {
     id: 'sword', title: 'Sword swing', patch: 'sword.pd', gain: 18,
-    data: ['textures/sword.wav'], swing: true,
+    data: ['textures/sword.wav'], swing: true, blade: 0.8,
     text: 'A sword swung in first person. The blade plays a sound texture ' +
       'computed by aero\'s flow solver for its cross-section (Dobashi et ' +
       'al.): each point along the blade moves at its own speed (faster ' +
       'towards the tip), its force scales as (v/v0)^3 and is heard r/c0 ' +
-      'later at each ear, with Doppler. Drag across the pad: the faster ' +
-      'the drag, the faster the swing and the louder and higher its swoosh.',
+      'later at each ear, with Doppler. Drag across the pad and the blade ' +
+      'follows your hand: the faster the drag, the higher and louder the ' +
+      'swoosh (pitch ~ v, level ~ v^3).',
     controls: [
       { id: 'roll', label: 'Blade roll', unit: 'deg', min: 0, max: 90, step: 1,
         value: 20, send: v => [['aero-scene', 'roll', v]] },
@@ -84,7 +85,7 @@ export const SCENES = [
   },
   {
     id: 'club', title: 'Club swing', patch: 'club.pd', gain: 26,
-    data: ['textures/cylinder.wav'], swing: true,
+    data: ['textures/cylinder.wav'], swing: true, blade: 0.6,
     text: 'A club: a 4 cm rod 60 cm long, swung in first person with the ' +
       'circular cylinder\'s texture. A thick rod sheds at a lower ' +
       'frequency (f = St v / d) than a thin blade at the same speed: a ' +

@@ -103,6 +103,18 @@ try {
   const swung = await page.textContent('#status');
   say(/^Swing left, 160 ms/.test(swung), `keyboard: Enter on a scene, Shift+Left on the swing pad (${swung})`);
 
+  // the mouse: a drag across the swing pad moves the blade live
+  await page.click('#play');
+  await page.waitForFunction(() => window.aero.state.playing, null, { timeout: 30000 });
+  const pad = await page.locator('#swingpad').boundingBox();
+  await page.mouse.move(pad.x + 10, pad.y + pad.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(pad.x + pad.width - 10, pad.y + pad.height / 2, { steps: 12 });
+  await page.mouse.up();
+  const dragged = await page.textContent('#status');
+  say(/tip reached [1-9]/.test(dragged), `mouse: a drag across the swing pad (${dragged})`);
+  await page.click('#play');
+
   // a browser without AudioWorklet: the page says so instead of failing
   const old = await browser.newPage();
   old.on('console', m => { if (m.type() === 'error') errors.push(m.text()); });

@@ -19,6 +19,8 @@
 #                   threads under helgrind); CI runs it after make check
 #   make check-windows  aero's Windows package in Pd for Windows under wine
 #   make demo       renders the demo scenes under build/demo/
+#   make web        the web page (libpd + aero in WebAssembly) in build/web/;
+#                   make web-serve, make check-web, make bench-web (below)
 #   make bench      benchmarks (not part of check), see BENCHMARKS.md
 #   make deps       installs the Debian packages the project needs
 #   make install    installs into Pd's externals folder (pd-lib-builder)
@@ -463,3 +465,115 @@ linux-amd64 linux-arm64 linux-armv7:
 platforms:
 	@for p in $(PLATFORMS); do \
 	    $(MAKE) --no-print-directory platform P=$$p || exit 1; done
+
+# --- web: aero in the browser (libpd + aero compiled to WebAssembly) --------
+#   make web        build/web/: the page of web/, libpd 0.16.1 (Pd 0.56-5)
+#                   with aero linked in (one aero_setup()) as aero.wasm +
+#                   its ES module aero.js, FFTW and libsndfile for wasm
+#                   (platforms/deps.sh wasm, cached), the scene patches,
+#                   abstractions, textures and trees the page loads into
+#                   the module's file system
+#   make web-serve  serves build/web/ on http://localhost:8000/
+#   make check-web  the page in headless Chromium against native renders
+#                   (tests/web/run.sh)
+# Debian's emscripten works offline from its own cache (EM_CACHE unset);
+# its tools run under this Node with Debian's node modules.
+DEB_PACKAGES += emscripten chromium nodejs
+# npm: Debian's package, unless a node that brings its own npm (NodeSource's,
+# which conflicts with Debian's npm) is installed
+DEB_PACKAGES += $(if $(shell command -v npm),,npm)
+WEB = $(BUILD)/web
+VENDOR ?= ../shared/vendor
+EMCC = NODE_PATH=/usr/share/nodejs nice -n 10 emcc
+EMAR = NODE_PATH=/usr/share/nodejs emar
+WASM_DEPS = $(BUILD)/deps/wasm
+WASM_LIBPD = $(BUILD)/libpd/wasm
+# the core as for the native build, without OpenMP (its pragmas only
+# parallelise the texture solvers, which a page does not run)
+WASM_CFLAGS = -std=c99 -D_POSIX_C_SOURCE=200809L -O3 -Wall -Wextra -Wshadow \
+    -Wno-unknown-pragmas $(CORE_INCLUDES) -I$(WASM_DEPS)/include
+wasm.core.objects = $(patsubst src/core/%.c,$(BUILD)/wasm/core/%.o,$(core.sources))
+wasm.core.lib = $(BUILD)/wasm/libaero_core.a
+WASM_EXPORTS = _aero_web_init,_aero_web_open,_aero_web_close,_aero_web_process,$\
+    _libpd_start_message,_libpd_add_float,_libpd_add_symbol,$\
+    _libpd_finish_message,_libpd_finish_list,_libpd_bang,_libpd_float,$\
+    _malloc,_free
+WASM_LDFLAGS = -O3 -sMODULARIZE=1 -sEXPORT_ES6=1 -sEXPORT_NAME=createAero \
+    -sENVIRONMENT=web -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=33554432 \
+    -sFORCE_FILESYSTEM=1 -sEXPORTED_RUNTIME_METHODS=FS,ccall,cwrap \
+    -sEXPORTED_FUNCTIONS=$(WASM_EXPORTS)
+# the data the scenes load (web/scenes.js lists each scene's), no more
+web.textures = textures/sword.wav textures/cylinder.wav textures/sphere.wav \
+    textures/fire.wav
+web.trees = trees/medium.tree
+web.data = $(wildcard web/scenes/*.pd) $(wildcard abstractions/*.pd) \
+    $(web.textures) $(web.trees)
+web.page = $(wildcard web/*.html web/*.js web/*.css)
+
+# platforms/deps.sh wasm: links in build/deps/wasm to the cached libraries
+# (whose times are the cache's: a stamp says when they were linked)
+WASM_DEPS_STAMP = $(WASM_DEPS)/.linked
+$(WASM_DEPS_STAMP): platforms/deps.sh platforms/deps/fftw.sh platforms/deps/sndfile.sh
+	NODE_PATH=/usr/share/nodejs AERO_VENDOR=$(abspath $(VENDOR)) \
+	    nice -n 10 sh platforms/deps.sh wasm
+	touch $@
+
+# libpd's own Makefile with emcc: the static library only, no extras (pd~
+# forks), no utils
+$(WASM_LIBPD)/libs/libpd.a:
+	rm -rf $(WASM_LIBPD) && mkdir -p $(WASM_LIBPD)/pure-data
+	tar xzf $(VENDOR)/libpd-0.16.1.tar.gz -C $(WASM_LIBPD) --strip-components=1
+	tar xzf $(VENDOR)/pure-data-0.56-5.tar.gz -C $(WASM_LIBPD)/pure-data \
+	    --strip-components=1
+	env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL NODE_PATH=/usr/share/nodejs \
+	    nice -n 10 make -C $(WASM_LIBPD) -j2 CC=emcc AR=emar STATIC=true \
+	    EXTRA=false UTIL=false libs/libpd.a >$(WASM_LIBPD).log 2>&1 || \
+	    { tail -20 $(WASM_LIBPD).log; exit 1; }
+	# libpd's Makefile archives with the host's ar: the index for wasm-ld
+	NODE_PATH=/usr/share/nodejs emranlib $@
+
+$(BUILD)/wasm/core/%.o: src/core/%.c $(wildcard src/core/*/*.h) \
+    $(WASM_DEPS_STAMP)
+	@mkdir -p $(dir $@)
+	$(EMCC) $(WASM_CFLAGS) -c $< -o $@
+
+$(wasm.core.lib): $(wasm.core.objects)
+	rm -f $@
+	$(EMAR) rcs $@ $^
+
+$(WEB)/aero.js: web/aero_web.c $(class.sources) $(lib.setup.sources) \
+    $(common.sources) src/pd/aero_pd.h $(wasm.core.lib) \
+    $(WASM_LIBPD)/libs/libpd.a $(WASM_DEPS_STAMP)
+	@mkdir -p $(WEB)
+	$(EMCC) -std=c99 -D_POSIX_C_SOURCE=200809L -Wall -Wextra \
+	    -Wno-unknown-pragmas -DHAVE_LIBPD -I$(WASM_LIBPD)/libpd_wrapper \
+	    -I$(WASM_LIBPD)/pure-data/src -Isrc/pd $(CORE_INCLUDES) \
+	    -I$(WASM_DEPS)/include web/aero_web.c $(class.sources) \
+	    $(lib.setup.sources) $(common.sources) $(wasm.core.lib) \
+	    $(WASM_LIBPD)/libs/libpd.a $(WASM_DEPS)/lib/libsndfile.a \
+	    $(WASM_DEPS)/lib/libfftw3f.a $(WASM_LDFLAGS) -o $@
+
+.PHONY: web web-serve check-web bench-web
+web: $(WEB)/aero.js $(web.data) $(web.page)
+	@mkdir -p $(WEB)/aero/scenes $(WEB)/aero/abstractions \
+	    $(WEB)/aero/textures $(WEB)/aero/trees
+	cp $(web.page) $(WEB)/
+	cp web/scenes/*.pd $(WEB)/aero/scenes/
+	cp abstractions/*.pd $(WEB)/aero/abstractions/
+	cp $(web.textures) $(WEB)/aero/textures/
+	cp $(web.trees) $(WEB)/aero/trees/
+	@echo "web: $(WEB)/ (make web-serve, then open http://localhost:8000/)"
+
+web-serve: web
+	cd $(WEB) && python3 -m http.server 8000
+
+# only what it uses natively: the core for the native host, the analyser
+check-web:
+	@$(MAKE) --no-print-directory deps
+	@$(MAKE) --no-print-directory -s -j2 $(core.lib) $(BUILD)/aero-analyze web \
+	    >$(BUILD).log 2>&1 || { cat $(BUILD).log; exit 1; }
+	@sh tests/web/run.sh
+
+bench-web: web
+	@test -x $(BUILD)/web-check/render-native || $(MAKE) --no-print-directory check-web
+	@sh bench/web.sh

@@ -5,7 +5,7 @@
 # builds, from the archives in ../shared/vendor (AERO_VENDOR overrides):
 #   libfftw3f.a   FFTW 3.3.10, single precision, its threads API inside
 #                 (fftwf_make_planner_thread_safe): pthreads, or win32
-#                 threads on Windows (platforms/deps/fftw.sh)
+#                 threads on Windows, none for wasm (platforms/deps/fftw.sh)
 #   libfftw3.a    the same in double precision (aerotex's bandwidth
 #                 extension), where aerotex is built (Windows)
 #   libsndfile.a  libsndfile 1.2.0 without external codecs: WAV, AIFF and

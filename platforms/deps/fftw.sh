@@ -21,7 +21,7 @@ $( [ "$1" = single ] && echo "#define FFTW_SINGLE 1" && echo "#define BENCHFFT_S
 #define DISABLE_FORTRAN 1
 #define FFTW_ENABLE_ALLOCA 1
 #define HAVE_ALLOCA 1
-#define HAVE_THREADS 1
+$( [ "$P" = wasm ] || echo "#define HAVE_THREADS 1")
 #define STDC_HEADERS 1
 #define HAVE_STDDEF_H 1
 #define HAVE_STDINT_H 1
@@ -75,6 +75,12 @@ esac
 
 FFTW_DIRS="kernel api dft dft/scalar dft/scalar/codelets rdft rdft/scalar
     rdft/scalar/r2cf rdft/scalar/r2cb rdft/scalar/r2r reodft threads"
+# wasm: no threads. Without -pthread emscripten has none to offer (FFTW's
+# threads.c does not link there: no pthread_attr_setscope), and the web
+# module runs one Pd in one thread, so the planner lock aero asks for
+# (fftwf_make_planner_thread_safe) has nothing to serialise: web/aero_web.c
+# defines it as a no-op
+[ "$P" = wasm ] && FFTW_DIRS=$(echo $FFTW_DIRS | sed 's/ threads$//')
 # the SIMD codelets (stubs that include dft/simd/common/*.c) and the
 # detection in simd-support/ (each file guarded by its HAVE_ macro)
 [ "$FFTW_SIMD" = none ] ||

@@ -1,0 +1,187 @@
+// The scenes of the page: each is a patch in scenes/ (played by libpd +
+// aero in the page, and by native Pd in `make check-web`), the data files
+// it needs in the module's file system, a short text on the physics it
+// follows, and its controls. A control sends its messages only when moved
+// away from its default (the default is what the patch's arguments set),
+// so a render with every control at its default is the patch as it is.
+
+const wind = (speed, gust) => [
+  { id: 'speed', label: 'Wind speed', unit: 'm/s', min: 1, max: 30, step: 0.5,
+    value: speed, send: v => [['aero-scene', 'speed', v]] },
+  { id: 'gust', label: 'Gustiness', unit: '', min: 0, max: 1, step: 0.05,
+    value: gust, send: v => [['aero-scene', 'gust', v]] },
+];
+
+// the wires of the wires scene, in metres from the listener (x right,
+// y ahead): their ears in the patch are (listener -+ 0.1 m) - wire
+const WIRES = [[2, -2], [-1, -3], [-3, -1.5], [0, -5]];
+const wireEars = (lx, ly) => WIRES.map(([wx, wy], i) => [
+  `aero-wire${i + 1}`, 'ears',
+  lx - 0.1 - wx, ly - wy, 0, lx + 0.1 - wx, ly - wy, 0]);
+
+export const SCENES = [
+  {
+    id: 'wires', title: 'Wind on wires', patch: 'wires.pd', gain: 10, data: [],
+    text: 'Four wires and rods (3, 6, 12 and 25 mm) in a gusting wind. Each ' +
+      'sheds vortices at f = St U / d, the Strouhal number St following the ' +
+      'Reynolds number (Williamson, Roshko: about 0.2); the lift force ' +
+      'radiates a dipole whose pressure grows as U^3 (Curle), so a wind twice ' +
+      'as fast sings an octave higher and 18 dB louder. The wire spans ' +
+      'sound as incoherent segments; distance lowers the level as 1/r.',
+    controls: [
+      ...wind(12, 0.4),
+      // 0: every wire; 1-4: that wire alone (3, 6, 12, 25 mm), the others
+      // 200 dB down
+      { id: 'solo', label: 'Solo wire (0 = all)', unit: '', min: 0, max: 4,
+        step: 1, value: 0, send: v => WIRES.map((w, i) =>
+          [`aero-wire${i + 1}`, 'gain', v === 0 || v === i + 1 ? 0 : -200]) },
+      { id: 'lx', label: 'Listener x', unit: 'm', min: -5, max: 5, step: 0.1,
+        value: 0, group: 'listener',
+        send: (v, c) => wireEars(v, c.ly) },
+      { id: 'ly', label: 'Listener y', unit: 'm', min: -3, max: 3, step: 0.1,
+        value: 0, group: 'listener',
+        send: (v, c) => wireEars(c.lx, v) },
+    ],
+    actions: [{ label: 'Squall', send: [['aero-scene', 'squall']] }],
+  },
+  {
+    id: 'fence', title: 'Fence', patch: 'fence.pd', gain: 10, data: [],
+    text: 'Six fence wires of 3 to 7 mm, 1.5 m apart, 3 m away, in one ' +
+      'gusting wind: six Aeolian tones at St U / d that rise and fall ' +
+      'together with the gusts, each from its own place in the stereo ' +
+      'image, beating where their frequencies are close.',
+    controls: wind(12, 0.5),
+    actions: [{ label: 'Squall', send: [['aero-scene', 'squall']] }],
+  },
+  {
+    id: 'draft', title: 'Window draft', patch: 'draft.pd', gain: 12, data: [],
+    text: 'Air across a 2 cm window gap 16 cm deep. The shear layer over the ' +
+      'gap oscillates at the Rossiter modes f_n = U/L (n - 0.25)/(M + 1/0.57); ' +
+      'the gap\'s depth resonates as a quarter-wave tube with end ' +
+      'correction. When a Rossiter mode crosses the depth resonance, they ' +
+      'lock in and the gap whistles. Level grows as U^2 here.',
+    controls: [
+      ...wind(9, 0.5),
+      { id: 'dist', label: 'Listener distance', unit: 'm', min: 0.3, max: 10,
+        step: 0.1, value: 1, send: v => [['aero-scene', 'listener', 0, v, 0]] },
+    ],
+    actions: [{ label: 'Squall', send: [['aero-scene', 'squall']] }],
+  },
+  {
+    id: 'sword', title: 'Sword swing', patch: 'sword.pd', gain: 18,
+    data: ['textures/sword.wav'], swing: true, blade: 0.8,
+    text: 'A sword swung in first person. The blade plays a sound texture ' +
+      'computed by aero\'s flow solver for its cross-section (Dobashi et ' +
+      'al.): each point along the blade moves at its own speed (faster ' +
+      'towards the tip), its force scales as (v/v0)^3 and is heard r/c0 ' +
+      'later at each ear, with Doppler. Drag across the pad and the blade ' +
+      'follows your hand: the faster the drag, the higher and louder the ' +
+      'swoosh (pitch ~ v, level ~ v^3).',
+    controls: [
+      { id: 'roll', label: 'Blade roll', unit: 'deg', min: 0, max: 90, step: 1,
+        value: 20, send: v => [['aero-scene', 'roll', v]] },
+    ],
+    actions: [{ label: 'Swing', send: [['aero-scene', 'swing']] }],
+  },
+  {
+    id: 'club', title: 'Club swing', patch: 'club.pd', gain: 26,
+    data: ['textures/cylinder.wav'], swing: true, blade: 0.6,
+    text: 'A club: a 4 cm rod 60 cm long, swung in first person with the ' +
+      'circular cylinder\'s texture. A thick rod sheds at a lower ' +
+      'frequency (f = St v / d) than a thin blade at the same speed: a ' +
+      'low whoomph instead of a swish.',
+    controls: [],
+    actions: [{ label: 'Swing', send: [['aero-scene', 'swing']] }],
+  },
+  {
+    id: 'throw', title: 'Thrown stick', patch: 'throw.pd', gain: 6,
+    data: ['textures/cylinder.wav'],
+    text: 'A 50 cm stick thrown past the listener at 15 m/s, spinning end ' +
+      'over end. Its tips move faster than its centre, so they whoosh ' +
+      'twice a turn; the pitch falls as it passes (Doppler) and the level ' +
+      'follows 1/r.',
+    controls: [
+      { id: 'speed', label: 'Throw speed', unit: 'm/s', min: 3, max: 40,
+        step: 0.5, value: 15, send: v => [['aero-scene', 'speed', v]] },
+      { id: 'spin', label: 'Spin', unit: 'turns/s', min: 0, max: 12, step: 0.5,
+        value: 4, send: v => [['aero-scene', 'spin', v]] },
+      { id: 'miss', label: 'Listener distance (miss)', unit: 'm', min: 0.5,
+        max: 10, step: 0.1, value: 2, send: v => [['aero-scene', 'miss', v]] },
+    ],
+    actions: [{ label: 'Throw', send: [['aero-scene', 'throw']] }],
+  },
+  {
+    id: 'whirl', title: 'Whirled ball', patch: 'whirl.pd', gain: 14,
+    data: ['textures/sphere.wav', 'textures/cylinder.wav'],
+    text: 'A 5 cm ball whirled overhead on a cord. The ball plays the 3D ' +
+      'sphere texture (the force on each region of the sphere from aero\'s ' +
+      '3D flow solver), the cord a cylinder whose speed grows along it. ' +
+      'Each turn the pitch and level rise and fall with the speed, the ' +
+      'Doppler shift and the distance.',
+    controls: [
+      { id: 'rate', label: 'Turns per second', unit: '/s', min: 0.5, max: 5,
+        step: 0.1, value: 2, send: v => [['aero-scene', 'rate', v]] },
+      { id: 'radius', label: 'Cord radius', unit: 'm', min: 0.3, max: 2,
+        step: 0.05, value: 1.2, send: v => [['aero-scene', 'radius', v]] },
+    ],
+    actions: [
+      { label: 'Stop', send: [['aero-scene', 'whirl', 0]] },
+      { label: 'Start', send: [['aero-scene', 'whirl', 1]] },
+    ],
+  },
+  {
+    id: 'fire', title: 'Campfire, flamethrower, explosion', patch: 'fire.pd',
+    gain: -8, data: ['textures/fire.wav'],
+    text: 'Flames: combustion noise of the heat release (a monopole, its ' +
+      'power following the fuel burnt: 30 kW for a 40 cm fire) plus vortex ' +
+      'sound, with a flickering flame speed, crackle, hiss and lapping. ' +
+      'Burst is a 50 kW flamethrower jet at 15 m/s; explode a 300 kW blast, ' +
+      'clipped at 1 Pa like a microphone.',
+    controls: [
+      { id: 'intensity', label: 'Fire power (flame speed)', unit: 'm/s',
+        min: 0.5, max: 8, step: 0.1, value: 3,
+        send: v => [['aero-scene', 'intensity', v]] },
+      { id: 'size', label: 'Size', unit: 'm', min: 0.1, max: 2, step: 0.05,
+        value: 0.4, send: v => [['aero-scene', 'size', v]] },
+      { id: 'distance', label: 'Listener distance', unit: 'm', min: 0.5,
+        max: 20, step: 0.1, value: 1.5,
+        send: v => [['aero-scene', 'distance', v]] },
+    ],
+    actions: [
+      { label: 'Flamethrower', send: [['aero-scene', 'burst', 1.5]] },
+      { label: 'Explode', send: [['aero-scene', 'explode']] },
+    ],
+  },
+  {
+    id: 'tree', title: 'Tree in gusts', patch: 'tree.pd', gain: 14,
+    data: ['trees/medium.tree'],
+    text: 'A tree 8 m away: each of its 126 branches sings its own Aeolian ' +
+      'tone (St U / d for its diameter) and its 4860 leaves rustle as they ' +
+      'collide and rub, all swaying in step with one gusting wind, so a ' +
+      'gust swells branches and leaves together.',
+    controls: [
+      ...wind(9, 0.5),
+      { id: 'distance', label: 'Listener distance', unit: 'm', min: 2, max: 40,
+        step: 0.5, value: 8, send: v => [['aero-scene', 'distance', v]] },
+    ],
+    actions: [{ label: 'Squall', send: [['aero-scene', 'squall']] }],
+  },
+];
+
+// the messages that put a scene's controls at VALUES (id -> value): those
+// of every control away from its default
+export function controlMessages(scene, values) {
+  const all = {};
+  for (const c of scene.controls) all[c.id] = values[c.id] ?? c.value;
+  const out = [];
+  const groups = new Set();
+  for (const c of scene.controls) {
+    if (all[c.id] === c.value) continue;
+    if (c.group) {
+      if (groups.has(c.group)) continue;
+      groups.add(c.group);
+    }
+    out.push(...c.send(all[c.id], all));
+  }
+  return out;
+}

@@ -47,11 +47,15 @@ judge $ANALYZE leveldiff "$OUT/fs-r4.wav" "$OUT/fs-slow.wav" --max -6
 # recording and `play`; 2.5 s later the recording is written and Pd
 # quits. Batch mode runs logical time far ahead of any thread, so this one
 # runs Pd in real time (-nosound), as long as the preprocessing takes (a
-# fixed 5 s was not always enough on a busy machine), at most 60 s.
+# fixed 5 s was not always enough on a busy machine), at most 60 s. The
+# `demo 40` message starts the preprocessing 200 ms after the scheduler
+# runs: with the creation flag it started while Pd was still starting up,
+# and a slow start-up (a busy machine) let it finish before the first poll,
+# so that no progress was posted.
 {
     echo "#N canvas 0 50 450 300 12;"
     echo "#X obj 10 10 loadbang;"                                   # 0
-    echo "#X obj 10 40 fieldsound~ -demo 40 -listener 2 0 0;"       # 1
+    echo "#X obj 10 40 fieldsound~ -listener 2 0 0;"                # 1
     echo "#X obj 10 70 route ready done;"                           # 2
     echo "#X obj 10 100 t b b;"                                     # 3
     echo "#X msg 100 130 play;"                                     # 4
@@ -63,7 +67,9 @@ judge $ANALYZE leveldiff "$OUT/fs-r4.wav" "$OUT/fs-slow.wav" --max -6
     echo "#X obj 200 160 soundfiler;"                               # 10
     echo "#X msg 200 190 \\; pd quit;"                             # 11
     echo "#X msg 300 10 \\; pd dsp 1;"                             # 12
-    for c in "0 0 12 0" "3 0 8 0" "1 1 2 0" "2 0 3 0" "2 0 7 0" "3 0 5 0" \
+    echo "#X obj 300 40 delay 200;"                                 # 13
+    echo "#X msg 300 70 demo 40;"                                   # 14
+    for c in "0 0 12 0" "0 0 13 0" "13 0 14 0" "14 0 1 0" "3 0 8 0" "1 1 2 0" "2 0 3 0" "2 0 7 0" "3 0 5 0" \
         "3 1 4 0" "4 0 1 0" "1 0 5 0" "8 0 9 0" "9 0 10 0" "10 0 11 0"; do
         echo "#X connect $c;"
     done

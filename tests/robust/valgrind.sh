@@ -3,36 +3,57 @@
 # build) under valgrind memcheck: no invalid read/write, no use of
 # uninitialised values, no definite or indirect leak. "Possibly lost" and
 # "still reachable" blocks are libgomp's thread pool and are not errors.
-# VALGRIND_SKIP (default: the three flow-solver tests, which run a minute
-# or more natively and would run hours under valgrind; check-asan runs them
-# under ASan+LSan instead) lists test names to leave out.
+# Memcheck runs code some 30-80x slower than natively: a test whose source
+# declares it slow (a line `/* aero-test: slow */`, listed by
+# tests/robust/slow-tests.sh; CONTRIBUTING.md) is left out here, and
+# check-asan runs it under ASan+UBSan+LSan instead. An undeclared test that
+# needs more than VALGRIND_CPU_LIMIT seconds of CPU under memcheck (default
+# 240, the whole run must stay under 15 minutes) is stopped and fails,
+# saying to declare it, so a slow test shows itself instead of hanging.
+#   ONLY=pattern       only the tests whose path contains it (as tests/run.sh)
+#   VALGRIND_SKIP="test_a test_b"  more tests to leave out, by name
 set -u
-SKIP=${VALGRIND_SKIP-test_flow2d test_cavity_flow test_body_flow}
+LIMIT=${VALGRIND_CPU_LIMIT:-240}
+SLOW=$(sh tests/robust/slow-tests.sh | tr '\n' ' ')
+SKIP=${VALGRIND_SKIP:-}
 D=build/valgrind
 mkdir -p "$D"
 passed=0
 failed=0
 skipped=""
+slow=""
 for t in build/tests/test_*; do
     [ -x "$t" ] || continue
+    case "$t" in *"${ONLY:-}"*) ;; *) continue ;; esac
     name=$(basename "$t")
+    case " $SLOW " in *" $name "*) slow="$slow $name"; continue ;; esac
     case " $SKIP " in *" $name "*) skipped="$skipped $name"; continue ;; esac
-    OMP_NUM_THREADS=1 nice valgrind --tool=memcheck --leak-check=full \
-        --errors-for-leak-kinds=definite,indirect \
-        --show-leak-kinds=definite,indirect --track-origins=yes \
-        --error-exitcode=9 --log-file="$D/$name.log" "$t" >"$D/$name.out" 2>&1
+    # a hard CPU limit: SIGKILL past it, whatever the machine's load
+    (ulimit -t "$LIMIT"
+        OMP_NUM_THREADS=1 exec nice valgrind --tool=memcheck --leak-check=full \
+            --errors-for-leak-kinds=definite,indirect \
+            --show-leak-kinds=definite,indirect --track-origins=yes \
+            --error-exitcode=9 --log-file="$D/$name.log" "$t") \
+        >"$D/$name.out" 2>&1
     status=$?
     summary=$(grep "ERROR SUMMARY" "$D/$name.log" | sed 's/^==[0-9]*== //')
     leaks=$(grep -E "definitely lost|indirectly lost" "$D/$name.log" | sed 's/^==[0-9]*== *//' | tr '\n' ' ')
     if [ "$status" -eq 0 ]; then
         passed=$((passed + 1))
         echo "  ok    valgrind $name: ${summary:-no errors} ${leaks:-(no leaks)}"
+    elif [ "$status" -eq 137 ] || [ "$status" -eq 152 ]; then
+        failed=$((failed + 1))
+        echo "  FAIL  valgrind $name: stopped after $LIMIT s of CPU under memcheck;" \
+            "if it is correct but long, declare it with a line" \
+            "'/* aero-test: slow */' in tests/unit/$name.c (CONTRIBUTING.md)"
     else
         failed=$((failed + 1))
         echo "  FAIL  valgrind $name (exit $status): $summary"
         grep -E -A12 "Invalid|uninitialised|definitely lost in" "$D/$name.log" | head -30
     fi
 done
-[ -n "$skipped" ] && echo "  (skipped under valgrind, run by check-asan:$skipped)"
+[ -n "$slow" ] && echo "  (declared slow, left to check-asan's ASan+UBSan run:$slow)"
+[ -n "$skipped" ] && echo "  (left out by VALGRIND_SKIP:$skipped)"
+[ -n "${ONLY:-}" ] && [ $((passed + failed)) -eq 0 ] && echo "  (no unit test to run under memcheck matches ONLY=$ONLY)"
 echo "valgrind: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

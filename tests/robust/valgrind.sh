@@ -17,6 +17,13 @@ LIMIT=${VALGRIND_CPU_LIMIT:-240}
 SLOW=$(sh tests/robust/slow-tests.sh | tr '\n' ' ')
 SKIP=${VALGRIND_SKIP:-}
 D=build/valgrind
+cpu() { # CPU seconds of the shell's finished children so far, in $cpu
+    # (`times` in the shell itself: a command substitution would fork)
+    times >"$D/times"
+    cpu=$(awk 'NR == 2 { s = 0
+        for (i = 1; i <= 2; i++) { split($i, a, "m"); s += a[1] * 60 + a[2] }
+        printf "%.1f\n", s }' "$D/times")
+}
 mkdir -p "$D"
 passed=0
 failed=0
@@ -29,6 +36,8 @@ for t in build/tests/test_*; do
     case " $SLOW " in *" $name "*) slow="$slow $name"; continue ;; esac
     case " $SKIP " in *" $name "*) skipped="$skipped $name"; continue ;; esac
     # a hard CPU limit: SIGKILL past it, whatever the machine's load
+    cpu
+    before=$cpu
     (ulimit -t "$LIMIT"
         OMP_NUM_THREADS=1 exec nice valgrind --tool=memcheck --leak-check=full \
             --errors-for-leak-kinds=definite,indirect \
@@ -36,11 +45,13 @@ for t in build/tests/test_*; do
             --error-exitcode=9 --log-file="$D/$name.log" "$t") \
         >"$D/$name.out" 2>&1
     status=$?
+    cpu
+    took=$(awk -v a="$before" -v b="$cpu" 'BEGIN { printf "%.1f s CPU", b - a }')
     summary=$(grep "ERROR SUMMARY" "$D/$name.log" | sed 's/^==[0-9]*== //')
     leaks=$(grep -E "definitely lost|indirectly lost" "$D/$name.log" | sed 's/^==[0-9]*== *//' | tr '\n' ' ')
     if [ "$status" -eq 0 ]; then
         passed=$((passed + 1))
-        echo "  ok    valgrind $name: ${summary:-no errors} ${leaks:-(no leaks)}"
+        echo "  ok    valgrind $name ($took): ${summary:-no errors} ${leaks:-(no leaks)}"
     elif [ "$status" -eq 137 ] || [ "$status" -eq 152 ]; then
         failed=$((failed + 1))
         echo "  FAIL  valgrind $name: stopped after $LIMIT s of CPU under memcheck;" \
@@ -48,7 +59,7 @@ for t in build/tests/test_*; do
             "'/* aero-test: slow */' in tests/unit/$name.c (CONTRIBUTING.md)"
     else
         failed=$((failed + 1))
-        echo "  FAIL  valgrind $name (exit $status): $summary"
+        echo "  FAIL  valgrind $name (exit $status, $took): $summary"
         grep -E -A12 "Invalid|uninitialised|definitely lost in" "$D/$name.log" | head -30
     fi
 done

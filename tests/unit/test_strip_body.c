@@ -3,6 +3,7 @@
  * amplitude), so what each region plays can be checked against Roshko's
  * (1954) St and Norberg's (2003) C_L' at its own Reynolds number and the
  * cross-flow speed, not against the texture's metadata. */
+/* aero-test: slow */
 #include "strip_body.h"
 #include "aero_air.h"
 #include "strouhal.h"

@@ -21,7 +21,8 @@ mkdir -p "$REPORTS" "$ROOT/build-asan/bin"
 
 # the suite runs in a mirror of the tree whose build/ and externals are the
 # instrumented ones
-for d in tests help textures trees src abstractions fuzz Makefile pd-lib-builder; do
+for d in tests help textures trees src abstractions fuzz demo examples docs \
+    LICENSE README.md Makefile pd-lib-builder; do
     [ -e "$ROOT/$d" ] && ln -sfn "$ROOT/$d" "$ASAN_ROOT/$d"
 done
 # the writable-globals check reads the normal build's objects (the

@@ -338,7 +338,10 @@ check-windows:
 # --- robustness: sanitizers, fuzzing, long runs, globals --------
 #   make check-asan   unit tests + Pd batch tests under ASan/UBSan (gcc),
 #                     instrumented externals loaded into Pd with libasan
-#                     preloaded, + valgrind of the core unit tests
+#                     preloaded, then check-valgrind
+#   make check-valgrind  the core unit tests under valgrind memcheck, but
+#                     those declared slow (tests/robust/slow-tests.sh)
+#   ONLY=pattern      scopes both, as in tests/run.sh (ONLY=aeolian)
 #   make fuzz         libFuzzer harnesses of fuzz/targets.txt (FUZZ_SECONDS
 #                     per harness, default 300)
 #   make check-long   one hour of audio per line of tests/robust/long.txt

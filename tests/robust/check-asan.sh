@@ -5,7 +5,12 @@
 # sanitizer runtime preloaded. Any sanitizer report fails the run, even one
 # that did not change a test's verdict (e.g. a leak found at Pd's exit).
 # Run from the repository root after `make all asan`. ONLY=pattern is
-# passed to tests/run.sh (e.g. ONLY=objects/9 for the robustness scripts).
+# passed to tests/run.sh (e.g. ONLY=aeolian: the unit tests, object scripts
+# and help patches whose path contains it; ONLY=objects/9 for the
+# robustness scripts), and `make check-asan` passes it on to
+# check-valgrind; the negative control below always runs. Every unit test
+# runs here, those declared slow for memcheck (tests/robust/slow-tests.sh)
+# included.
 set -u
 ROOT=$(pwd)
 ASAN_ROOT=$ROOT/build-asan/root
@@ -16,7 +21,8 @@ mkdir -p "$REPORTS" "$ROOT/build-asan/bin"
 
 # the suite runs in a mirror of the tree whose build/ and externals are the
 # instrumented ones
-for d in tests help textures trees src abstractions fuzz Makefile pd-lib-builder; do
+for d in tests help textures trees src abstractions fuzz demo examples docs \
+    LICENSE README.md Makefile pd-lib-builder; do
     [ -e "$ROOT/$d" ] && ln -sfn "$ROOT/$d" "$ASAN_ROOT/$d"
 done
 # the writable-globals check reads the normal build's objects (the
@@ -51,6 +57,9 @@ HOSTILE_TIMEOUT=${HOSTILE_TIMEOUT:-900}
 export HOSTILE_TIMEOUT PATH ASAN_OPTIONS LSAN_OPTIONS UBSAN_OPTIONS OMP_NUM_THREADS FUZZ_REPLAY_FLAGS
 
 echo "== check-asan: tests/run.sh with ASan+UBSan ($LIBASAN preloaded into Pd)"
+slow=$(sh tests/robust/slow-tests.sh | while read -r n; do
+    case "build/tests/$n" in *"${ONLY:-}"*) printf ' %s' "$n" ;; esac; done)
+[ -n "$slow" ] && echo "   (declared slow for memcheck, covered by this run alone:$slow)"
 (cd "$ASAN_ROOT" && sh tests/run.sh)
 suite=$?
 (cd "$ASAN_ROOT" && sh tests/robust/asan-control.sh "$REPORTS")

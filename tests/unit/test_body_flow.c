@@ -3,6 +3,7 @@
  * must give), and the 3D flow past a sphere: its volume and frontal area,
  * a divergence-free flow, a wake that sheds (its published drag and
  * Strouhal number are not reached: see sphere_flow). */
+/* aero-test: slow */
 #include <stdlib.h>
 #include <string.h>
 

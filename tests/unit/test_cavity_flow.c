@@ -25,6 +25,7 @@
  * Pohlhausen's profile with the momentum thickness asked for (integral of
  * u (1 - u) dy over the inflow column; Schlichting & Gersten 2000), and
  * an out-of-range thickness is refused. */
+/* aero-test: slow */
 #include "unit.h"
 #include "aero_air.h"
 #include "aeolian_flow.h"

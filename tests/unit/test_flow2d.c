@@ -15,6 +15,7 @@
  * aerotex's textures do: it must give the uniform grid's St, drag and lift,
  * since those rows only carry the far field. The runs go in parallel on the
  * available cores. */
+/* aero-test: slow */
 #include "unit.h"
 #include "aero_air.h"
 #include "flow2d.h"

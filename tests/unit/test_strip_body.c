@@ -3,6 +3,7 @@
  * amplitude), so what each region plays can be checked against Roshko's
  * (1954) St and Norberg's (2003) C_L' at its own Reynolds number and the
  * cross-flow speed, not against the texture's metadata. */
+/* aero-test: slow */
 #include "strip_body.h"
 #include "aero_air.h"
 #include "strouhal.h"
@@ -151,7 +152,7 @@ static void test_render(void)
     /* along the axis nothing sheds */
     out = calloc((size_t)400 * 30, sizeof(float));
     aero_strip_render(&sec, &L, 0.0, 10.0, 4000.0, 1, out, 30, 400, &st);
-    UNIT_CHECK(rms(out + 1, 1, 400 * 30) == 0.0 && st.cl_rms == 0.0,
+    UNIT_CHECK(rms(out, 1, 400 * 30) == 0.0 && st.cl_rms == 0.0,
                "flow along the axis: silent");
     free(out);
     make_section(&square, "square");

@@ -17,6 +17,7 @@
  * Also: the model's free stream stays as set far upstream, and bad
  * parameters are refused. The runs go in parallel on the available
  * cores. */
+/* aero-test: slow */
 #include "unit.h"
 #include "aeolian_flow.h"
 #include "flow2d.h"

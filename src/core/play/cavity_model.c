@@ -33,9 +33,16 @@ static const double mode_weight[AERO_CAVITY_MODES] = {0.6, 1.0, 0.5, 0.25};
 /* broadband shear-layer noise relative to the tones (rms) */
 #define NOISE_LEVEL 0.3
 
-/* x - floor(x), without a libm call (|x| < 2^62) */
+/* x - floor(x), in [0, 1): without a libm call where |x| < 2^62 (every
+ * phase a control can make); beyond, where the int64 cast would overflow
+ * (a hostile speed can pull a locked tone's factor that far), floor, and 0
+ * for what is not finite */
 static double wrap_cycles(double x)
 {
+    if (!(fabs(x) < 0x1p62)) {
+        double f = x - floor(x);
+        return f >= 0.0 && f < 1.0 ? f : 0.0;
+    }
     double t = (double)(int64_t)x;
     t -= t > x;
     return x - t;

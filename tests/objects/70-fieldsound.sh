@@ -48,10 +48,11 @@ judge $ANALYZE leveldiff "$OUT/fs-r4.wav" "$OUT/fs-slow.wav" --max -6
 # quits. Batch mode runs logical time far ahead of any thread, so this one
 # runs Pd in real time (-nosound), as long as the preprocessing takes (a
 # fixed 5 s was not always enough on a busy machine), at most 60 s. The
-# `demo 40` message starts the preprocessing 200 ms after the scheduler
-# runs: with the creation flag it started while Pd was still starting up,
-# and a slow start-up (a busy machine) let it finish before the first poll,
-# so that no progress was posted.
+# `demo 64` message starts the preprocessing 200 ms after the scheduler
+# runs (with the creation flag it started while Pd was still starting up),
+# and the burst is 64^3 (48 frames, ~4 s of work): on a busy machine (two
+# Pds side by side in check-pd056) Pd's polls of a 1 s job came too late
+# to see it between its quarters, so that no progress was posted.
 {
     echo "#N canvas 0 50 450 300 12;"
     echo "#X obj 10 10 loadbang;"                                   # 0
@@ -68,7 +69,7 @@ judge $ANALYZE leveldiff "$OUT/fs-r4.wav" "$OUT/fs-slow.wav" --max -6
     echo "#X msg 200 190 \\; pd quit;"                             # 11
     echo "#X msg 300 10 \\; pd dsp 1;"                             # 12
     echo "#X obj 300 40 delay 200;"                                 # 13
-    echo "#X msg 300 70 demo 40;"                                   # 14
+    echo "#X msg 300 70 demo 64;"                                   # 14
     for c in "0 0 12 0" "0 0 13 0" "13 0 14 0" "14 0 1 0" "3 0 8 0" "1 1 2 0" "2 0 3 0" "2 0 7 0" "3 0 5 0" \
         "3 1 4 0" "4 0 1 0" "1 0 5 0" "8 0 9 0" "9 0 10 0" "10 0 11 0"; do
         echo "#X connect $c;"
@@ -79,7 +80,7 @@ timeout 60 "$PD" -nogui -nosound -noprefs -stderr -nostdpath -r "$PD_RATE" -path
     -open "$OUT/fs-thread.pd" >"$OUT/fs-thread.log" 2>&1
 if grep -q "preprocessed in" "$OUT/fs-thread.log" &&
     grep -q "^ready:" "$OUT/fs-thread.log" &&
-    grep -q "preprocessing demo burst 40^3: [0-9]*% " "$OUT/fs-thread.log"; then
+    grep -q "preprocessing demo burst 64^3: [0-9]*% " "$OUT/fs-thread.log"; then
     pass "threaded preprocessing: progress posted ($(grep -c '[0-9]*% (' "$OUT/fs-thread.log") lines), $(grep -o 'preprocessed in [0-9.]* s' "$OUT/fs-thread.log"), then 'ready' on the right outlet"
 else
     fail "threaded preprocessing did not report"; cat "$OUT/fs-thread.log"

@@ -5,8 +5,7 @@
 # unit tests are the same under any Pd and `make check` runs them), every
 # help patch, install and deken, once with single precision and once with a
 # double-precision Pd (PD_FLOATSIZE=64) playing the *.linux-amd64-64.so
-# externals (side by side; the float-size-independent checks in the single
-# pass only). Both Pd builds stay in build/pd056/ (made once).
+# externals. Both Pd builds stay in build/pd056/ (made once).
 # Ends with one line per Pd and `N passed, N failed` over both.
 # Run from the repository root after `make all lib double`.
 ROOT=$(pwd)
@@ -36,34 +35,16 @@ build_pd() { # NAME MORECFLAGS: $PDDIR/NAME/bin/pd, built once
 build_pd single "" || exit 1
 build_pd double "-DPD_FLOATSIZE=64" || exit 1
 
-# The two passes run side by side (one Pd each, on a core each); the
-# checks whose result cannot depend on Pd's float size (what the binaries
-# export, how the GUI draws the help patches) run in the single pass only.
-# What both passes share is made before they start: the [body~] fixture
-# and the staged linux-amd64 package that `make deken` zips.
-[ -f build/tests/sine-sphere.wav ] || build/tests/test_body_texture >/dev/null 2>&1
-make -s platform P=linux-amd64 >build/tests/pd056-platform.log 2>&1 ||
-    { tail -20 build/tests/pd056-platform.log; exit 1; }
-
 start=$(date +%s)
-run_pass() { # NAME FLOATSIZE SKIP
-    PD=$PDDIR/$1/bin/pd PD_RATE=$RATE PD_FLOATSIZE=$2 PD_ONLY=1 PD_SKIP=$3 \
-        TEST_OUT=build/tests/out-pd056-$1 sh tests/run.sh \
-        >"build/tests/pd056-$1.log" 2>&1
-}
-run_pass single 32 "" &
-single_pid=$!
-run_pass double 64 "96-exports 97-gui" &
-double_pid=$!
-wait "$single_pid" "$double_pid"
-
 passed=0 failed=0 summary=""
 for v in single:32 double:64; do
     name=${v%%:*} fs=${v#*:}
     pd=$PDDIR/$name/bin/pd
     echo
     echo "######## $("$pd" -version 2>&1 | head -n 1), $fs-bit floats, $RATE Hz"
-    cat "build/tests/pd056-$name.log"
+    PD=$pd PD_RATE=$RATE PD_FLOATSIZE=$fs PD_ONLY=1 \
+        TEST_OUT=build/tests/out-pd056-$name sh tests/run.sh |
+        tee "build/tests/pd056-$name.log"
     line=$(tail -n 1 "build/tests/pd056-$name.log")
     case "$line" in
         *" passed, "*" failed") ;;

@@ -7,10 +7,6 @@
 #   PD=/path/to/pd      the Pd to test with (default: Debian's pd)
 #   PD_RATE=48000       its sample rate (default 44100), passed as -r
 #   PD_FLOATSIZE=64     that Pd is a double-precision build
-#   PD_SKIP="96-exports 97-gui"  leaves out the tests/objects/ files whose
-#                       names contain one of these words (check-pd056's
-#                       double-precision pass: their results cannot depend
-#                       on Pd's float size, the single pass runs them)
 #   PD_ONLY=1           only the tests that run Pd: the unit tests, fuzz
 #                       replays and compile checks do not depend on which
 #                       Pd runs them (make check-pd056 runs them once)
@@ -97,11 +93,6 @@ for object_tests in tests/objects/*.sh; do
     case "$object_tests" in # no Pd in these
         *fuzz-replay.sh | *globals.sh) [ -n "${PD_ONLY:-}" ] && continue ;;
     esac
-    skipped=""
-    for word in ${PD_SKIP:-}; do
-        case "$object_tests" in *"$word"*) skipped=$word ;; esac
-    done
-    [ -n "$skipped" ] && continue
     . "$object_tests"
 done
 

@@ -280,7 +280,7 @@ check-packages:
 # overrides), linked statically with libs/libpd.a when it exists, else with
 # libpd.so and an rpath (LIBPD_LINK=static|shared overrides). Against a
 # shared single-instance libpd the wrappers must be position-independent
-# (-fPIC): README.md, "Embedding with libpd".
+# (-fPIC): docs/libpd.md.
 #   make check-libpd  builds libpd 0.16.1 from ../shared/vendor into
 #                     build/libpd/ (both variants, once) and runs
 #                     tests/libpd/run.sh; skipped without the archives

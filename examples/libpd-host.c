@@ -6,8 +6,8 @@
  *   libpd-host [PATCH_DIR [DATA_DIR [OUT.wav]]]
  * defaults: examples, . (the aero folder, which holds textures/), and
  * sword-swing.wav. Build it with `make libpd-example LIBPD_DIR=...` against
- * a single-instance or a multi-instance (MULTI=true) libpd: README.md,
- * "Embedding with libpd". `make check` compiles it against Pd's headers
+ * a single-instance or a multi-instance (MULTI=true) libpd: docs/libpd.md.
+ * `make check` compiles it against Pd's headers
  * with -DPDINSTANCE so its use of the API stays correct; `make
  * check-libpd` builds and runs it against libpd 0.16.1, both variants.
  *

@@ -1,6 +1,6 @@
 /* aero for host programs that link it into themselves (a libpd app: games,
  * plugins, plugdata): after libpd_init(), call aero_setup() once to register
- * every aero class. README.md, "Embedding with libpd", says how to build
+ * every aero class. docs/libpd.md says how to build
  * and link: every .c file of src/pd (the classes; aero_pd.c, which defines
  * the data path below; aero.c). */
 #ifndef AERO_H

@@ -214,7 +214,7 @@ int aero_pd_floats(void *x, const char *obj, const char *what, int argc,
 /* --- files ----------------------------------------------------------------- */
 
 /* Finds a data file (a texture in textures/, a tree in trees/), in this
- * order (README, "Embedding with libpd"):
+ * order (docs/libpd.md):
  *   1. next to the patch, its [declare -path] folders and Pd's search path
  *      (canvas_open; a libpd host adds folders with libpd_add_to_search_path)
  *   2. DIR/`folder` for DIR in the AERO_DATA environment variable

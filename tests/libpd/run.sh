@@ -160,7 +160,7 @@ for variant in single multi; do
     judge $ANALYZE level "$OUT/every-$variant.wav" --ch 0 --min 20
     judge $ANALYZE level "$OUT/every-$variant.wav" --ch 1 --min 20
 
-    # 4. the example, built and run exactly as README says, static then
+    # 4. the example, built and run exactly as docs/libpd.md says, static then
     #    shared (an rpath; -fPIC wrappers)
     for link in static shared; do
         host=$OUT/libpd-host-$variant-$link
@@ -187,7 +187,7 @@ for variant in single multi; do
     else
         fail "static and shared example hosts differ"
     fi
-    # README's pitfall: against a shared single-instance libpd, wrappers
+    # docs/libpd.md's pitfall: against a shared single-instance libpd, wrappers
     # built without -fPIC get a copy relocation of Pd's s_signal (libpd,
     # linked -Bsymbolic, keeps its own) and crash in their DSP routine; the
     # example's shared build (-fPIC) has no such relocation
@@ -204,7 +204,7 @@ for variant in single multi; do
             ! readelf -r "$OUT/libpd-host-single-shared" | grep -q "COPY.* s_signal"; then
             pass "the pitfall: without -fPIC, a copy relocation of s_signal and exit $status; with -fPIC none"
         else
-            fail "the copy-relocation pitfall of README did not show (exit $status)"
+            fail "the copy-relocation pitfall of docs/libpd.md did not show (exit $status)"
         fi
     fi
     # The swing (examples/libpd-host.c): 20 -> 160 degrees in 300 ms,

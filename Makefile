@@ -3,6 +3,8 @@
 #   make            externals (one per object), the core library, aerotex
 #   make lib        the single-binary library aero.pd_linux (aero_setup())
 #   make check      every test CI runs (installs missing dependencies first)
+#   make check-unit the unit tests of src/core alone; ONLY=test_x picks
+#                   binaries, CASE="a b" their cases (tests/unit/unit.h)
 #   make check-pd056  the Pd tests again under Pd 0.56 (single and double
 #                   precision, 48 kHz), built from ../shared/vendor
 #   make double     the externals for double-precision Pd (*.linux-amd64-64.so)
@@ -113,6 +115,14 @@ unit.binaries = $(patsubst tests/unit/%.c,$(BUILD)/tests/%,$(unit.sources))
 $(BUILD)/tests/%: tests/unit/%.c $(wildcard tests/unit/*.h) $(core.lib)
 	@mkdir -p $(dir $@)
 	$(CORE_CC) $(CORE_CFLAGS) $< -o $@ $(TOOL_LIBS)
+
+# the unit tests alone (tests/unit/run.sh): make check-unit ONLY=cavity_model
+# CASE=lock_in; each binary also runs alone (build/tests/test_x --list)
+.PHONY: check-unit
+check-unit:
+	@$(MAKE) --no-print-directory -s tools >$(BUILD).log 2>&1 || \
+	    { cat $(BUILD).log; exit 1; }
+	@ONLY='$(ONLY)' CASE='$(CASE)' sh tests/unit/run.sh
 
 .PHONY: tools lib pdinstance deps check check-only check-pd056 check-gui demo bench textures deken libpd-example
 

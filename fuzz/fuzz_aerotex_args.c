@@ -8,8 +8,13 @@
 
 #include <stdarg.h>
 
-/* the option tables, static in aerotex_run.c */
-#include "../src/tools/aerotex_run.c"
+/* the job of aeolian and cavity (aerotex_section.h); the commands'
+   tables come with their sources (fuzz/targets.txt) */
+#include "../src/tools/aerotex_section.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
 
 /* aerotex.c's message function (its main() is not wanted here) */
 void aerotex_error(const char *fmt, ...)

@@ -21,36 +21,17 @@ mkdir -p "$OUT"
 . tests/judge.sh
 
 # ONLY=pattern (e.g. ONLY=vortex sh tests/run.sh) runs only the unit tests,
-# object test scripts and help patches whose path contains the pattern.
+# object test scripts and help patches whose path contains the pattern;
+# CASE="name..." only those cases of the unit tests (tests/unit/run.sh).
 only() { case "$1" in *"${ONLY:-}"*) return 0 ;; *) return 1 ;; esac; }
 
-# --- unit tests of src/core ------------------------------------------------
-section "unit tests (src/core)"
-for t in build/tests/test_*; do
-    [ -x "$t" ] || continue
-    [ -n "${PD_ONLY:-}" ] && break
-    only "$t" || continue
-    echo "-- $t"
-    "$t" >"$OUT/$(basename "$t").txt" 2>&1
-    status=$?
-    sed 's/^/  /' "$OUT/$(basename "$t").txt" | grep -v "^  *[0-9]* passed, [0-9]* failed$"
-    summary=$(grep -E "^[0-9]+ passed, [0-9]+ failed$" "$OUT/$(basename "$t").txt" | tail -n 1)
-    if [ -z "$summary" ]; then
-        fail "$t ended without a summary (exit $status)"
-        continue
-    fi
-    p=${summary%% passed*}
-    f=${summary#*passed, }
-    f=${f%% failed*}
-    passed=$((passed + p))
-    failed=$((failed + f))
-    [ "$status" -ne 0 ] && [ "$f" -eq 0 ] && fail "$t exited $status"
-done
+# --- unit tests of src/core (tests/unit/run.sh; CASE= picks cases) --------
+[ -z "${PD_ONLY:-}" ] && . tests/unit/run.sh
 
 # the fixture the [body~] tests play, written by test_body_texture (which
 # PD_ONLY=1, or an ONLY that does not name it, does not run as a test)
 if [ ! -f build/tests/sine-sphere.wav ] && [ -x build/tests/test_body_texture ]; then
-    build/tests/test_body_texture >"$OUT/test_body_texture.txt" 2>&1
+    build/tests/test_body_texture pd_fixture >"$OUT/test_body_texture.txt" 2>    build/tests/test_body_texture >"$OUT/test_body_texture.txt" 2>&11
 fi
 
 # --- build variants ----------------------------------------------------------

@@ -41,7 +41,7 @@ static double render_rms(aero_aeolian_model *m, float speed, double seconds,
     return count ? sqrt(sum / count) : 0;
 }
 
-static void test_strouhal(void)
+UNIT_TEST(strouhal)
 {
     UNIT_NEAR_REL(aero_reynolds(10, 0.01), 1.225 * 10 * 0.01 / 1.81e-5, 1e-9,
                   "Re = rho U d / mu");
@@ -73,7 +73,7 @@ static void test_strouhal(void)
  * circular cylinder. Points read from his fits (laminar 47-190, 260-1600,
  * 1600-5400, 5400-2.25e5); the measured values scatter by ~10-20 % around
  * them, the tolerance here is the arithmetic of the fit (1 %). */
-static void test_lift_rms(void)
+UNIT_TEST(lift_rms)
 {
     UNIT_CHECK(aero_lift_rms(40) == 0.0, "no lift below onset");
     UNIT_NEAR_REL(aero_lift_rms(100), 0.227, 0.01,
@@ -98,7 +98,7 @@ static void test_lift_rms(void)
     UNIT_CHECK(worst == 0, "0 < C_L' < 0.7 from onset to 3e5 (bad %g)", worst);
 }
 
-static void test_onset_and_level(void)
+UNIT_TEST(onset_and_level)
 {
     aero_aeolian_model m;
     int bad = 0;
@@ -136,7 +136,7 @@ static void test_onset_and_level(void)
     UNIT_CHECK(bad == 0, "no NaN/Inf (%d)", bad);
 }
 
-static void test_block_sizes(void)
+UNIT_TEST(block_sizes)
 {
     static const int blocks[] = {1, 7, 64, 1000, 4096};
     double ref = 0;
@@ -154,7 +154,7 @@ static void test_block_sizes(void)
     UNIT_CHECK(bad == 0, "no NaN/Inf at any block size");
 }
 
-static void test_bad_input(void)
+UNIT_TEST(bad_input)
 {
     aero_aeolian_model m;
     aero_aeolian_model_init(&m, SR, 2, 4);
@@ -197,12 +197,4 @@ static void test_bad_input(void)
     UNIT_CHECK(isfinite(in[255]), "in-place processing works");
 }
 
-int main(void)
-{
-    test_strouhal();
-    test_lift_rms();
-    test_onset_and_level();
-    test_block_sizes();
-    test_bad_input();
-    return unit_summary();
-}
+UNIT_MAIN(UNIT_CASE(strouhal), UNIT_CASE(lift_rms), UNIT_CASE(onset_and_level), UNIT_CASE(block_sizes), UNIT_CASE(bad_input))

@@ -41,14 +41,19 @@ static void bad(const char *args, const char *msg)
                args, r, msg);
 }
 
-int main(void)
+static int tool_built(void)
 {
     FILE *f = fopen(TOOL, "r");
-    if (!f) {
-        printf("  skip  %s not built\n", TOOL);
-        return unit_summary();
-    }
+    if (!f)
+        return 0;
     fclose(f);
+    return 1;
+}
+
+UNIT_TEST(bad_arguments)
+{
+    if (!tool_built())
+        UNIT_SKIP("%s not built", TOOL);
     UNIT_CHECK(run("help") == 0 && said("aeolian") && said("cavity"),
                "help lists the commands");
     bad("", "usage");
@@ -89,6 +94,13 @@ int main(void)
     bad("tree --depth 9 -o x.tree", "tree: --depth 9 is out of range");
     bad("auralize d --map 0 1 -1 1 --path p.txt -o x.wav",
         "auralize: --map -1 is out of range");
+    remove(OUT);
+}
+
+UNIT_TEST(tiny_texture_info)
+{
+    if (!tool_built())
+        UNIT_SKIP("%s not built", TOOL);
     {
         /* a tiny, coarse texture and its metadata */
         int r = run("aeolian --shape circle --re 80 --grid 8 --duration 0.01 "
@@ -103,6 +115,13 @@ int main(void)
                    "2D-to-3D method (none at Re 80: a 2D wake), command");
         remove("build/tests/aerotex_tiny.wav");
     }
+    remove(OUT);
+}
+
+UNIT_TEST(cavity_inflow_layer)
+{
+    if (!tool_built())
+        UNIT_SKIP("%s not built", TOOL);
     {
         /* a cavity with an inflow boundary layer: its thickness in the
            metadata and the report; too short a run to oscillate, and the
@@ -121,5 +140,7 @@ int main(void)
         remove("build/tests/aerotex_cavity.wav");
     }
     remove(OUT);
-    return unit_summary();
 }
+
+UNIT_MAIN(UNIT_CASE(bad_arguments), UNIT_CASE(tiny_texture_info),
+          UNIT_CASE(cavity_inflow_layer))

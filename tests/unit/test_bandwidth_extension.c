@@ -71,7 +71,7 @@ static double slope_of(fftw_complex *X, double f0, double f1)
     return (m * sxy - sx * sy) / (m * sxx - sx * sx);
 }
 
-int main(void)
+UNIT_TEST(falling_spectrum_extended)
 {
     float *x = malloc(sizeof(float) * N), *y = malloc(sizeof(float) * N);
     fftw_complex *X = fftw_malloc(sizeof(fftw_complex) * (N / 2 + 1));
@@ -134,7 +134,17 @@ int main(void)
         UNIT_CHECK(c > 0.8, "the extension's envelope follows the band's: "
                    "correlation %.2f", c);
     }
-    printf("a rising spectrum is left alone\n");
+    free(x);
+    free(y);
+    fftw_free(X);
+    fftw_free(Y);
+}
+
+UNIT_TEST(rising_spectrum_left_alone)
+{
+    float *x = malloc(sizeof(float) * N), *y = malloc(sizeof(float) * N);
+    aero_bandext_info info;
+
     make(x, 1.0, 1000.0, 1750.0, 6);
     memcpy(y, x, sizeof(float) * N);
     aero_bandext_apply(y, N, 1, RATE, 1000.0, 1750.0, 14000.0, 9, &info);
@@ -147,7 +157,7 @@ int main(void)
                "bad bands refused");
     free(x);
     free(y);
-    fftw_free(X);
-    fftw_free(Y);
-    return unit_summary();
 }
+
+UNIT_MAIN(UNIT_CASE(falling_spectrum_extended),
+          UNIT_CASE(rising_spectrum_left_alone))

@@ -51,7 +51,7 @@ static double sampled_volume(const aero_body_shape *b, int n)
     return v * cell[0] * cell[1] * cell[2];
 }
 
-static void shapes(void)
+UNIT_TEST(shapes)
 {
     aero_body_shape b;
     char err[256], *text;
@@ -126,7 +126,7 @@ static void shapes(void)
 }
 
 /* the sphere of Dobashi et al. 2003 (radius 5 cm) at v0 = 10 m/s on a coarse grid */
-static void sphere_flow(void)
+UNIT_TEST(sphere_flow)
 {
     aero_body_shape b;
     aero_body_flow_params p;
@@ -184,9 +184,4 @@ static void sphere_flow(void)
     free(out);
 }
 
-int main(void)
-{
-    shapes();
-    sphere_flow();
-    return unit_summary();
-}
+UNIT_MAIN(UNIT_CASE(shapes), UNIT_CASE(sphere_flow))

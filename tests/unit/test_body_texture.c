@@ -90,13 +90,15 @@ static double static_rms(aero_texture *t, const double *wind,
     return rms(buf + n / 4, n - n / 4);
 }
 
-int main(void)
+/* the winds and listeners the cases share */
+static const double w10[3] = {10, 0, 0}, w20[3] = {20, 0, 0};
+static const double side5[3] = {0, 5, 0}, side10[3] = {0, 10, 0};
+static const double axis5[3] = {0, 0, 5};
+
+UNIT_TEST(static_sphere_laws)
 {
     const int n = 48000;
     float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
-    const double w10[3] = {10, 0, 0}, w20[3] = {20, 0, 0};
-    const double side5[3] = {0, 5, 0}, side10[3] = {0, 10, 0};
-    const double axis5[3] = {0, 0, 5};
     double hz, r1, r2;
 
     /* 1. a sphere at rest in a wind along x: its lift (texture y = e2 =
@@ -118,7 +120,14 @@ int main(void)
     r2 = static_rms(sphere(1), w10, axis5, 1.0, a, n, NULL);
     UNIT_CHECK(r2 < 1e-4 * r1, "dipole: the lift is silent along the body "
                "axis (rms %g vs %g across)", r2, r1);
+    free(a);
+    free(b);
+}
 
+UNIT_TEST(block_sizes)
+{
+    const int n = 48000;
+    float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
     /* 2. any block size gives the same sound */
     {
         aero_body_texture s;
@@ -136,7 +145,14 @@ int main(void)
         UNIT_CHECK(diff <= 1e-3 * rms(a, n) && rms(a, n) > 0,
                    "blocks of 1 and of 64 samples agree: max diff %g", diff);
     }
+    free(a);
+    free(b);
+}
 
+UNIT_TEST(doppler_approach)
+{
+    const int n = 48000;
+    float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
     /* 3. Doppler: the sphere flies at 40 m/s straight at the listener,
      *    carried by a wind of that velocity plus 10 m/s across, so the air
      *    it meets is the static case's: the tone rises by c0 / (c0 - v) */
@@ -159,7 +175,14 @@ int main(void)
                       100.0 * 343.0 / (343.0 - 40.0), 0.003,
                       "approaching at 40 m/s: c0 / (c0 - v)");
     }
+    free(a);
+    free(b);
+}
 
+UNIT_TEST(whirled_sphere)
+{
+    const int n = 48000;
+    float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
     /* 4. a sphere whirled on a 2 m cord at 30 m/s in still air, heard
      *    50 m away in the plane of the circle: its drag tone (300 Hz at
      *    30 m/s) rises to c0/(c0 - v) as it comes at the listener and
@@ -196,7 +219,14 @@ int main(void)
                       "rise over fall per revolution");
         free(x);
     }
+    free(a);
+    free(b);
+}
 
+UNIT_TEST(direction_interpolation)
+{
+    const int n = 48000;
+    float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
     /* 5. a body of revolution: directions between the sampled ones are
      *    interpolated (amplitude 1 along the axis, 2 broadside, so 1.5 at
      *    45 deg), heard along e1 */
@@ -220,7 +250,14 @@ int main(void)
         UNIT_NEAR_REL(r135 / r90, 1.0, 0.01, "mirror=0: 135 deg is beyond "
                       "the sampled 90 deg (the nearest is read)");
     }
+    free(a);
+    free(b);
+}
 
+UNIT_TEST(regions_centres)
+{
+    const int n = 48000;
+    float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
     /* 6. regions are point sources at their centres: two regions 2 m
      *    apart along the axis; only region 1 sounds; a listener on the
      *    axis hears it 2 m / c0 earlier when it is the near one */
@@ -255,7 +292,14 @@ int main(void)
                       "a region is heard from its own centre (turned "
                       "upside down: 2 m farther)");
     }
+    free(a);
+    free(b);
+}
 
+UNIT_TEST(bad_input)
+{
+    const int n = 48000;
+    float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
     /* 7. bad input */
     {
         aero_body_texture s;
@@ -310,7 +354,14 @@ int main(void)
         }
         aero_body_texture_free(&s);
     }
+    free(a);
+    free(b);
+}
 
+UNIT_TEST(save_and_load)
+{
+    const int n = 48000;
+    float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
     /* 8. an object texture survives a save and a load */
     {
         aero_texture *t = sphere(2), back;
@@ -329,6 +380,14 @@ int main(void)
         aero_texture_free(t);
         free(t);
     }
+    free(a);
+    free(b);
+}
+
+UNIT_TEST(pd_fixture)
+{
+    const int n = 48000;
+    float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
     /* 9. a fixture for the Pd tests (tests/objects/45-body.sh): a sphere
      *    texture whose drag is a pure 100 Hz sine at v0 = 10 m/s, d = 0.1 m,
      *    so the Doppler of a whirl in real Pd can be read off one peak */
@@ -344,5 +403,10 @@ int main(void)
     }
     free(a);
     free(b);
-    return unit_summary();
 }
+
+UNIT_MAIN(UNIT_CASE(static_sphere_laws), UNIT_CASE(block_sizes),
+          UNIT_CASE(doppler_approach), UNIT_CASE(whirled_sphere),
+          UNIT_CASE(direction_interpolation), UNIT_CASE(regions_centres),
+          UNIT_CASE(bad_input), UNIT_CASE(save_and_load),
+          UNIT_CASE(pd_fixture))

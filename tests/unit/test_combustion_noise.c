@@ -104,15 +104,13 @@ static double peak_hz(const double *psd, double f0, double f1)
     return fbest;
 }
 
-int main(void)
+UNIT_TEST(monopole_spreading)
 {
     const int n = (int)(8.0 * SR);
     float *a = malloc(sizeof(float) * (size_t)n);
     float *b = malloc(sizeof(float) * (size_t)n);
     double *psd = malloc(sizeof(double) * (NFFT / 2 + 1));
     aero_combustion m;
-
-    printf("combustion noise: Strahle's monopole\n");
     {
         /* 1/r: the same flame (seed) at 1 m and 2 m, the 2 m one delayed
            by 1 m / c0 = 139.9 samples */
@@ -136,6 +134,18 @@ int main(void)
                    "the 2 m flame arrives %d samples later (1 m / c0 = "
                    "139.9)", lag);
     }
+    free(a);
+    free(b);
+    free(psd);
+}
+
+UNIT_TEST(strahle_level)
+{
+    const int n = (int)(8.0 * SR);
+    float *a = malloc(sizeof(float) * (size_t)n);
+    float *b = malloc(sizeof(float) * (size_t)n);
+    double *psd = malloc(sizeof(double) * (NFFT / 2 + 1));
+    aero_combustion m;
     {
         /* the level: p_rms = (gamma - 1) eps P 2 pi f_p kappa /
            (4 pi c0^2 r), statistical +-5 % over 8 s */
@@ -151,8 +161,18 @@ int main(void)
                       "(gamma - 1) / (4 pi c0^2 r) dQ/dt for 1 MW/s at 1 m");
         aero_combustion_free(&m);
     }
+    free(a);
+    free(b);
+    free(psd);
+}
 
-    printf("combustion noise: level vs power and speed\n");
+UNIT_TEST(level_vs_power_and_speed)
+{
+    const int n = (int)(8.0 * SR);
+    float *a = malloc(sizeof(float) * (size_t)n);
+    float *b = malloc(sizeof(float) * (size_t)n);
+    double *psd = malloc(sizeof(double) * (NFFT / 2 + 1));
+    aero_combustion m;
     {
         double l30, l60, lu6;
         setup(&m, 30.0, 0.03, 5);
@@ -173,8 +193,18 @@ int main(void)
                    "doubling the speed (f_p): %+.2f dB (p ~ f_p: +6.02)",
                    lu6 - l30);
     }
+    free(a);
+    free(b);
+    free(psd);
+}
 
-    printf("combustion noise: spectrum (Rajaram & Lieuwen 2009)\n");
+UNIT_TEST(spectrum)
+{
+    const int n = (int)(8.0 * SR);
+    float *a = malloc(sizeof(float) * (size_t)n);
+    float *b = malloc(sizeof(float) * (size_t)n);
+    double *psd = malloc(sizeof(double) * (NFFT / 2 + 1));
+    aero_combustion m;
     {
         const double fp_cases[2] = {150.0, 400.0};
         for (int c = 0; c < 2; c++) {
@@ -204,8 +234,18 @@ int main(void)
             }
         }
     }
+    free(a);
+    free(b);
+    free(psd);
+}
 
-    printf("combustion noise: a gliding speed does not click\n");
+UNIT_TEST(glide_does_not_click)
+{
+    const int n = (int)(8.0 * SR);
+    float *a = malloc(sizeof(float) * (size_t)n);
+    float *b = malloc(sizeof(float) * (size_t)n);
+    double *psd = malloc(sizeof(double) * (NFFT / 2 + 1));
+    aero_combustion m;
     {
         /* u 2 -> 12 -> 2 m/s over 4 s (f_p 100 -> 600 -> 100 Hz with
            L 2 cm): the filter is re-made as it goes; the crest factor of
@@ -252,8 +292,18 @@ int main(void)
         UNIT_CHECK(worst < 6.0, "steps 0 <-> 3 m/s: largest crest factor "
                    "over 20 ms: %.2f", worst);
     }
+    free(a);
+    free(b);
+    free(psd);
+}
 
-    printf("combustion noise: a campfire at 2 m\n");
+UNIT_TEST(campfire)
+{
+    const int n = (int)(8.0 * SR);
+    float *a = malloc(sizeof(float) * (size_t)n);
+    float *b = malloc(sizeof(float) * (size_t)n);
+    double *psd = malloc(sizeof(double) * (NFFT / 2 + 1));
+    aero_combustion m;
     {
         /* 30 kW, length scale 2 cm, gas at 3 m/s: f_p 150 Hz (the
            settings of help/vortex~-help.pd and aero.fire~) */
@@ -275,8 +325,18 @@ int main(void)
                    "campfire peak %.0f Hz (f_p %.0f): low hundreds of Hz", pk,
                    fp);
     }
+    free(a);
+    free(b);
+    free(psd);
+}
 
-    printf("combustion noise: hostile input\n");
+UNIT_TEST(hostile_input)
+{
+    const int n = (int)(8.0 * SR);
+    float *a = malloc(sizeof(float) * (size_t)n);
+    float *b = malloc(sizeof(float) * (size_t)n);
+    double *psd = malloc(sizeof(double) * (NFFT / 2 + 1));
+    aero_combustion m;
     {
         const double src[3] = {0, 0, 0};
         double ears[6] = {0, 1e9, 0, NAN, 0, 0};
@@ -307,5 +367,9 @@ int main(void)
     free(a);
     free(b);
     free(psd);
-    return unit_summary();
 }
+
+UNIT_MAIN(UNIT_CASE(monopole_spreading), UNIT_CASE(strahle_level),
+          UNIT_CASE(level_vs_power_and_speed), UNIT_CASE(spectrum),
+          UNIT_CASE(glide_does_not_click), UNIT_CASE(campfire),
+          UNIT_CASE(hostile_input))

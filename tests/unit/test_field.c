@@ -48,7 +48,7 @@ static void bad_header(const char *text, const char *expect)
                err);
 }
 
-static void test_format(void)
+UNIT_TEST(format)
 {
     aero_volume_info v, w;
     mkdir("build/tests", 0777);
@@ -225,7 +225,7 @@ static long lag_of(const float *a, const float *b, long n, long maxlag)
     return best;
 }
 
-static void test_monopole(void)
+UNIT_TEST(monopole)
 {
     memvol m;
     aero_field_sources s;
@@ -295,7 +295,7 @@ static void test_monopole(void)
 
 /* a source 60 m away (outside the audible distance at first) is silent
  * until its radiation arrives; a near one is heard alone until then */
-static void test_reach(void)
+UNIT_TEST(reach)
 {
     memvol m;
     aero_field_sources s_near, s_both;
@@ -386,7 +386,7 @@ static void translating_blob(memvol *m, const double *u, double sigma,
     }
 }
 
-static void test_classification(void)
+UNIT_TEST(classification)
 {
     memvol m;
     aero_field_sources s;
@@ -432,7 +432,7 @@ static void test_classification(void)
 
 /* the demo burst: sources of every type, finite output, chunk polynomials
  * = per-sample sum with a moving listener; hostile data stay finite */
-static void test_demo(void)
+UNIT_TEST(demo)
 {
     aero_field_demo d;
     aero_volume_info v;
@@ -507,12 +507,4 @@ static void test_demo(void)
                "zero threshold refused: \"%s\"", err);
 }
 
-int main(void)
-{
-    test_format();
-    test_monopole();
-    test_reach();
-    test_classification();
-    test_demo();
-    return unit_summary();
-}
+UNIT_MAIN(UNIT_CASE(format), UNIT_CASE(monopole), UNIT_CASE(reach), UNIT_CASE(classification), UNIT_CASE(demo))

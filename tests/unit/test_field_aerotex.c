@@ -73,16 +73,24 @@ static double rms_of(const char *path, double *seconds)
     return bad_samples ? -1 : sqrt(s / (n ? n : 1));
 }
 
-int main(void)
+/* the tool built, the output folder and the listener paths of both cases */
+static int prepare(void)
 {
     FILE *f = fopen(TOOL, "r");
-    if (!f) {
-        printf("  skip  %s not built\n", TOOL);
-        return unit_summary();
-    }
+    if (!f)
+        return 0;
     fclose(f);
     mkdir("build/tests", 0777);
     mkdir(DIR, 0777);
+    text(DIR "/p3.txt", "# 3 m along x\n0 3 0 0\n");
+    text(DIR "/p6.txt", "0 6 0 0\n");
+    return 1;
+}
+
+UNIT_TEST(bad_arguments)
+{
+    if (!prepare())
+        UNIT_SKIP("%s not built", TOOL);
     UNIT_CHECK(run("help") == 0 && said("field-demo") && said("auralize"),
                "help lists field-demo and auralize");
     bad("field-demo", "no output directory");
@@ -100,13 +108,16 @@ int main(void)
     text(DIR "/backpath.txt", "1 0 0 3\n0.5 0 0 3\n");
     bad("auralize " DIR "/burst --path " DIR "/backpath.txt -o " DIR
         "/a.wav", "goes back");
-    text(DIR "/p3.txt", "# 3 m along x\n0 3 0 0\n");
-    text(DIR "/p6.txt", "0 6 0 0\n");
     bad("auralize " DIR "/nowhere --path " DIR "/p3.txt -o " DIR "/a.wav",
         "can't open");
     bad("auralize " DIR "/burst --path " DIR "/p3.txt --threshold 1 0 1 -o "
         DIR "/a.wav", "out of range");
+}
 
+UNIT_TEST(burst_auralized)
+{
+    if (!prepare())
+        UNIT_SKIP("%s not built", TOOL);
     /* a small burst on disk: 20^3, 24 frames */
     int r = run("field-demo --size 20 --frames 24 --spacing 0.064 -q -o " DIR
                 "/burst");
@@ -157,5 +168,6 @@ int main(void)
     double swd = rms_of(DIR "/walkd.wav", &d6);
     UNIT_CHECK(r == 0 && fabs(swd - sw) <= 1e-5 * sw,
                "--direct (per-sample sum) agrees: %g vs %g Pa rms", swd, sw);
-    return unit_summary();
 }
+
+UNIT_MAIN(UNIT_CASE(bad_arguments), UNIT_CASE(burst_auralized))

@@ -118,7 +118,7 @@ static double dominant(const float *x, int stride, int n, double rate,
     return fb;
 }
 
-static void test_shapes(void)
+UNIT_TEST(shapes)
 {
     aero_shape2d s;
     char err[256];
@@ -184,12 +184,18 @@ static void test_shapes(void)
     }
 }
 
-int main(void)
+/* the five flows, run once (side by side) for whichever cases ask; NULL
+   if one did not run */
+static flowcase *flows(void)
 {
+    static flowcase c[5];
+    static int ran, failed;
+    if (ran)
+        return failed ? NULL : c;
+    ran = 1;
     /* 0: Re 30 (no shedding), 1: Re 100, 2: Re 200, 3: Re 100 finer grid
        (30 cells: the lift amplitude converges from below, 0.283 at 16
        and 0.297 at 22 cells) */
-    flowcase c[5];
     const double setup[5][7] = {
         /* Re, grid, settle, record (d/U), xmin, xmax, half-width (d) */
         {30.0, 12.0, 60.0, 30.0, -10.0, 16.0, 8.0},
@@ -199,7 +205,6 @@ int main(void)
         {100.0, 16.0, 45.0, 36.0, -20.0, 24.0, 16.0}, /* stretched rows */
     };
     const int order[5] = {3, 1, 2, 4, 0}; /* longest first */
-    test_shapes();
     memset(c, 0, sizeof c);
     c[4].ycore = 2.5; /* aerotex's: 2 d beyond the body, 10 % growth */
     c[4].stretch = 1.1;
@@ -220,20 +225,39 @@ int main(void)
     for (int k = 0; k < 5; k++)
         UNIT_CHECK(!c[k].failed, "Re %g grid %g ran: %s", c[k].re, c[k].grid,
                    c[k].err);
-    if (c[0].failed || c[1].failed || c[2].failed || c[3].failed ||
-        c[4].failed)
-        return unit_summary();
+    failed = c[0].failed || c[1].failed || c[2].failed || c[3].failed ||
+             c[4].failed;
+    return failed ? NULL : c;
+}
 
+UNIT_TEST(steady_wake_re30)
+{
+    flowcase *c = flows();
+    if (!c)
+        return;
     printf("Re 30: steady wake, no shedding\n");
     UNIT_CHECK(c[0].st.cl_amp < 0.01 && c[0].st.st == 0.0,
                "Re 30 lift amplitude %g < 0.01, St %g", c[0].st.cl_amp,
                c[0].st.st);
     UNIT_CHECK(c[1].st.cl_amp > 0.2, "Re 100 sheds: lift amplitude %g > 0.2",
                c[1].st.cl_amp);
+}
 
+UNIT_TEST(strouhal_williamson)
+{
+    flowcase *c = flows();
+    if (!c)
+        return;
     printf("Strouhal number against Williamson (1996)\n");
     UNIT_NEAR_REL(c[1].st.st, williamson(100.0), 0.03, "St at Re 100");
     UNIT_NEAR_REL(c[2].st.st, williamson(200.0), 0.03, "St at Re 200");
+}
+
+UNIT_TEST(drag_and_lift_re100)
+{
+    flowcase *c = flows();
+    if (!c)
+        return;
     printf("mean drag at Re 100 (published 1.33-1.35)\n");
     UNIT_CHECK(c[1].st.cd > 1.2 && c[1].st.cd < 1.5, "Cd(100) = %.3f in 1.2-1.5",
                c[1].st.cd);
@@ -242,11 +266,25 @@ int main(void)
     UNIT_CHECK(c[3].st.cl_amp > 0.30 && c[3].st.cl_amp < 0.34,
                "lift amplitude at Re 100, 30 cells: %.4f (published 0.30-0.34)",
                c[3].st.cl_amp);
+}
+
+UNIT_TEST(grid_independence)
+{
+    flowcase *c = flows();
+    if (!c)
+        return;
     printf("grid independence, Re 100: 16 -> 30 cells per diameter\n");
     UNIT_NEAR_REL(c[3].st.st, c[1].st.st, 0.02, "St on the finer grid");
     printf("  St %.4f (grid 16), %.4f (grid 30), Williamson %.4f; Cd %.3f, "
            "%.3f\n", c[1].st.st, c[3].st.st, williamson(100.0), c[1].st.cd,
            c[3].st.cd);
+}
+
+UNIT_TEST(stretched_rows)
+{
+    flowcase *c = flows();
+    if (!c)
+        return;
     /* the stretched rows hold the far field only: the forces are the
        uniform grid's to within a fraction of the 16 -> 30 cells change
        (St +0.06 %, Cd +1.4 %, lift amplitude +7 %) */
@@ -256,7 +294,14 @@ int main(void)
     UNIT_NEAR_REL(c[4].st.cd, c[1].st.cd, 0.005, "Cd against the uniform grid");
     UNIT_NEAR_REL(c[4].st.cl_amp, c[1].st.cl_amp, 0.01,
                   "lift amplitude against the uniform grid");
+}
 
+/* last: it turns the Re 200 run's forces into newtons in place */
+UNIT_TEST(texture_from_force)
+{
+    flowcase *c = flows();
+    if (!c)
+        return;
     {
         /* the texture of the Re 200 run: d = 1 cm, v0 = 10 m/s */
         const double d = 0.01, v0 = 10.0, rate = 16000.0;
@@ -303,10 +348,9 @@ int main(void)
         aero_texture_free(&t);
         remove(path);
     }
-    for (int k = 0; k < 5; k++) {
-        free(c[k].t);
-        free(c[k].fx);
-        free(c[k].fy);
-    }
-    return unit_summary();
 }
+
+UNIT_MAIN(UNIT_CASE(shapes), UNIT_CASE(steady_wake_re30),
+          UNIT_CASE(strouhal_williamson), UNIT_CASE(drag_and_lift_re100),
+          UNIT_CASE(grid_independence), UNIT_CASE(stretched_rows),
+          UNIT_CASE(texture_from_force))

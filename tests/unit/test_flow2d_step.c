@@ -36,7 +36,7 @@ static double max_abs_second_difference(const double *f, int from, int to)
     return m;
 }
 
-int main(void)
+UNIT_TEST(step_follows_the_forces)
 {
     aero_flow2d_params p;
     aero_flow2d s;
@@ -60,7 +60,7 @@ int main(void)
         aero_flow2d_set_body(&s, &plate, 0.5 * AERO_PI, err,
                              sizeof err)) {
         UNIT_CHECK(0, "solver set up: %s", err);
-        return unit_summary();
+        return;
     }
     while (s.t < 5.0 && !aero_flow2d_step(&s)) /* past the seeding spin */
         ;
@@ -83,7 +83,7 @@ int main(void)
     if (recorded < BEFORE + AFTER) {
         aero_flow2d_free(&s);
         aero_shape2d_free(&plate);
-        return unit_summary();
+        return;
     }
     UNIT_CHECK(worst_ratio < 0.02,
                "the step changes by at most %.2f %% per step (< 2 %%)",
@@ -105,5 +105,6 @@ int main(void)
     }
     aero_flow2d_free(&s);
     aero_shape2d_free(&plate);
-    return unit_summary();
 }
+
+UNIT_MAIN(UNIT_CASE(step_follows_the_forces))

@@ -42,7 +42,7 @@ static double max_abs(const float *a, size_t n)
     return m;
 }
 
-static void test_projection(void)
+UNIT_TEST(projection)
 {
     aero_flow3d s;
     uint32_t rng = 12345;
@@ -89,7 +89,7 @@ static void test_projection(void)
 
 /* a discrete gradient (Neumann at the inflow, phi = 0 on the top face)
    is removed entirely: the Poisson solve is exact for its operator */
-static void test_gradient_removed(void)
+UNIT_TEST(gradient_removed)
 {
     aero_flow3d s;
     double *phi;
@@ -129,7 +129,7 @@ static void test_gradient_removed(void)
     aero_flow3d_free(&s);
 }
 
-static void test_uniform_flow(void)
+UNIT_TEST(uniform_flow)
 {
     aero_flow3d s;
     const double U = 2.0;
@@ -156,7 +156,7 @@ static void test_uniform_flow(void)
 /* a shear u = A sin(2 pi j / ny) (divergence-free) has omega_z =
    -du/dy = -A (2 pi / L) cos(...), within the central difference's
    sin(k h)/(k h) */
-static void test_vorticity(void)
+UNIT_TEST(vorticity)
 {
     aero_flow3d s;
     const double A = 1.0;
@@ -180,7 +180,7 @@ static void test_vorticity(void)
 }
 
 /* a strongly perturbed inflow for many steps: finite and bounded */
-static void test_turbulent_stays_bounded(void)
+UNIT_TEST(turbulent_stays_bounded)
 {
     aero_flow3d s;
     const double U = 2.0, dt = 0.5 * 0.01 / U;
@@ -214,7 +214,7 @@ static void test_turbulent_stays_bounded(void)
    reports the divergence (-1) and none reads outside the box, with each
    advection. Before the sampler clamped a NaN departure height, the
    second step's samples were indexed from (int)NaN and crashed. */
-static void test_nan_reported(void)
+UNIT_TEST(nan_reported)
 {
     const int kinds[3] = {AERO_F3_SEMI_LAGRANGIAN, AERO_F3_MACCORMACK,
                           AERO_F3_MACCORMACK_UNLIMITED};
@@ -249,7 +249,7 @@ static void test_nan_reported(void)
     }
 }
 
-static void test_bad_params(void)
+UNIT_TEST(bad_params)
 {
     aero_flow3d s;
     aero_flow3d_params p;
@@ -329,7 +329,7 @@ static double confinement_accel(int n, double eps, double length)
     return sqrt(sum / count);
 }
 
-static void test_confinement_scales_with_h(void)
+UNIT_TEST(confinement_scales_with_h)
 {
     double a16, a32, o16, o32;
     printf("vorticity confinement eps h (FSJ01)\n");
@@ -390,7 +390,7 @@ static double carried_wave(int advection)
 /* the MacCormack limiter (Selle et al. 2008) clamps every new extremum,
    so a wave of 8 cells loses amplitude at each crest as under a
    first-order step; without it the second-order scheme keeps it */
-static void test_limiter_damping(void)
+UNIT_TEST(limiter_damping)
 {
     double sl, limited, unlimited;
     printf("advection of an 8-cell wave across the box\n");
@@ -405,16 +405,4 @@ static void test_limiter_damping(void)
                "of the wave: %.3f > %.3f > %.3f", unlimited, limited, sl);
 }
 
-int main(void)
-{
-    test_limiter_damping();
-    test_confinement_scales_with_h();
-    test_projection();
-    test_gradient_removed();
-    test_uniform_flow();
-    test_vorticity();
-    test_turbulent_stays_bounded();
-    test_bad_params();
-    test_nan_reported();
-    return unit_summary();
-}
+UNIT_MAIN(UNIT_CASE(limiter_damping), UNIT_CASE(confinement_scales_with_h), UNIT_CASE(projection), UNIT_CASE(gradient_removed), UNIT_CASE(uniform_flow), UNIT_CASE(vorticity), UNIT_CASE(turbulent_stays_bounded), UNIT_CASE(bad_params), UNIT_CASE(nan_reported))

@@ -67,7 +67,7 @@ static void table_power(const float *tab, double *power)
 
 /* eq. 14: f_i = fm 2^(i/N); table i's spectrum starts at f_i (its
    strongest bin is the first at or above f_i, nothing below) */
-static void test_table_frequencies(void)
+UNIT_TEST(table_frequencies)
 {
     aero_leafwave lw;
     aero_leafwave_init(&lw, SR, 1, 3);
@@ -147,7 +147,7 @@ static int allowed(int from, int to)
     return 0;
 }
 
-static void test_state_machine(void)
+UNIT_TEST(state_machine)
 {
     aero_leafwave lw;
     make(&lw, 1.0, 11);
@@ -196,7 +196,7 @@ static void test_state_machine(void)
 }
 
 /* no wind: the leaves stay apart, no key on, exact silence */
-static void test_still_air(void)
+UNIT_TEST(still_air)
 {
     aero_leafwave lw;
     make(&lw, 1.0, 4);
@@ -215,7 +215,7 @@ static void test_still_air(void)
 /* a collision is an onset: before the first key on the output is exactly
    0; the note starts at a zero crossing of its table, so its first
    samples are small against its peak */
-static void test_collision_onset(void)
+UNIT_TEST(collision_onset)
 {
     aero_leafwave lw;
     make(&lw, 1.0, 21);
@@ -268,7 +268,7 @@ static void test_collision_onset(void)
 }
 
 /* more wind: more collisions per second and a louder sound */
-static void test_wind(void)
+UNIT_TEST(wind)
 {
     double winds[3] = {3.0, 6.0, 12.0}, keyons[3], level[3];
     for (int w = 0; w < 3; w++) {
@@ -343,7 +343,7 @@ static double mean_contact_rate(double wind)
     return n ? sum / n : 0.0;
 }
 
-static void test_friction_rate(void)
+UNIT_TEST(friction_rate)
 {
     double slow = mean_contact_rate(3.0), fast = mean_contact_rate(12.0);
     UNIT_CHECK(fast > 1.2 * slow && slow >= 0.25 && fast <= 2.0,
@@ -352,7 +352,7 @@ static void test_friction_rate(void)
 }
 
 /* determinism: the same seed gives the same samples, another seed not */
-static void test_seed(void)
+UNIT_TEST(seed)
 {
     long n = (long)(1.0 * SR);
     float *x = malloc(sizeof(float) * n), *y = malloc(sizeof(float) * n),
@@ -423,7 +423,7 @@ static double centroid(const float *x, long n)
    centroid rises by more than 1.3 (friction speeds and the different
    collisions spread it); the tables alone by more than 1.5 (a negative
    control: the same size gives the same table). */
-static void test_centroid_follows_size(void)
+UNIT_TEST(centroid_follows_size)
 {
     long n = (long)(2.0 * SR);
     float *x = malloc(sizeof(float) * n), *y = malloc(sizeof(float) * n);
@@ -464,7 +464,7 @@ static void test_centroid_follows_size(void)
 }
 
 /* the hashed neighbour lists equal a brute-force search */
-static void test_neighbours(void)
+UNIT_TEST(neighbours)
 {
     aero_leafwave lw;
     make(&lw, 1.0, 2);
@@ -523,7 +523,7 @@ static void test_neighbours(void)
 }
 
 /* rendering: 1/r (-6 dB per doubling of distance) and the cardioid */
-static void test_rendering(void)
+UNIT_TEST(rendering)
 {
     double rms[3];
     double dist[3] = {5.0, 10.0, 20.0};
@@ -566,7 +566,7 @@ static void test_rendering(void)
 
 /* bad values are refused and change nothing; NaN speeds give silence,
    never NaN */
-static void test_bad_input(void)
+UNIT_TEST(bad_input)
 {
     aero_leafwave lw;
     make(&lw, 1.0, 8);
@@ -604,7 +604,7 @@ static void test_bad_input(void)
    tree motion of the same tree, seed and wind, whatever the block size
    (tree_motion steps at a fixed rate): an independent aero_tree_motion
    advanced in other steps gives the same branch points */
-static void test_in_step(void)
+UNIT_TEST(in_step)
 {
     aero_leafwave lw;
     aero_tree t;
@@ -652,23 +652,4 @@ static void test_in_step(void)
     aero_leafwave_free(&lw);
 }
 
-int main(void)
-{
-    printf("leafwave: wave tables\n");
-    test_table_frequencies();
-    printf("leafwave: state machine\n");
-    test_state_machine();
-    test_still_air();
-    test_collision_onset();
-    printf("leafwave: wind\n");
-    test_wind();
-    test_friction_rate();
-    test_seed();
-    test_in_step();
-    test_centroid_follows_size();
-    printf("leafwave: neighbours, rendering, bad input\n");
-    test_neighbours();
-    test_rendering();
-    test_bad_input();
-    return unit_summary();
-}
+UNIT_MAIN(UNIT_CASE(table_frequencies), UNIT_CASE(state_machine), UNIT_CASE(still_air), UNIT_CASE(collision_onset), UNIT_CASE(wind), UNIT_CASE(friction_rate), UNIT_CASE(seed), UNIT_CASE(in_step), UNIT_CASE(centroid_follows_size), UNIT_CASE(neighbours), UNIT_CASE(rendering), UNIT_CASE(bad_input))

@@ -358,7 +358,7 @@ static int interleaved_differences(const core_api *c)
     return diff;
 }
 
-int main(void)
+UNIT_TEST(instances_independent)
 {
     for (size_t k = 0; k < sizeof(cores) / sizeof(cores[0]); k++) {
         int diff = interleaved_differences(&cores[k]);
@@ -367,9 +367,14 @@ int main(void)
                    "(%d of %d samples differ)",
                    cores[k].name, diff, 2 * BLOCK * BLOCKS);
     }
+}
+
+UNIT_TEST(negative_control)
+{
     int diff = interleaved_differences(&control);
     UNIT_CHECK(diff > 0,
                "negative control: a core with static state is caught (%d "
                "samples differ)", diff);
-    return unit_summary();
 }
+
+UNIT_MAIN(UNIT_CASE(instances_independent), UNIT_CASE(negative_control))

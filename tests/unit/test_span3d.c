@@ -15,7 +15,7 @@
 #define M_PI 3.14159265358979323846
 #endif
 
-static void test_spectral_st(void)
+UNIT_TEST(spectral_st)
 {
     /* a lift at St 0.21 with its third harmonic, a stronger slow drift
        below the scan and noise, on a jittered time axis as the solver's
@@ -62,7 +62,7 @@ static void test_spectral_st(void)
     free(c);
 }
 
-static void test_calibration(void)
+UNIT_TEST(calibration)
 {
     aero_span3d c;
     /* laminar wake: two-dimensional in reality, nothing changes */
@@ -86,7 +86,7 @@ static void test_calibration(void)
    36-cell circle at Re 6768 sheds at St 0.192, Roshko's is 0.197) is
    squeezed in time, so its run records on until the texture is full (it
    stopped with "recording too short") */
-static void test_slow_2d_flow(void)
+UNIT_TEST(slow_2d_flow)
 {
     enum { RATE = 16000, NOUT = 160 };
     aero_shape2d sh;
@@ -120,10 +120,4 @@ static void test_slow_2d_flow(void)
     UNIT_CHECK(finite && rms > 0.0, "its samples are finite and not silent");
 }
 
-int main(void)
-{
-    test_spectral_st();
-    test_calibration();
-    test_slow_2d_flow();
-    return unit_summary();
-}
+UNIT_MAIN(UNIT_CASE(spectral_st), UNIT_CASE(calibration), UNIT_CASE(slow_2d_flow))

@@ -97,11 +97,11 @@ static double zero_crossing_hz(const float *x, int n)
 
 #define rms unit_rms
 
-int main(void)
+UNIT_TEST(static_stick_pitch)
 {
     const int n = 48000;
     float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
-    double f100[1] = {100.0}, noise[1] = {0.0}, two[2] = {100.0, 200.0};
+    double f100[1] = {100.0};
     double wind[3] = {10.0, 0, 0};
     aero_stick_texture s;
 
@@ -120,6 +120,17 @@ int main(void)
     UNIT_NEAR_REL(aero_stick_texture_tone_hz(&s, 20.0), 400.0, 1e-9,
                   "tone_hz agrees");
     aero_stick_texture_free(&s);
+    free(a);
+    free(b);
+}
+
+UNIT_TEST(block_sizes)
+{
+    const int n = 48000;
+    float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
+    double f100[1] = {100.0};
+    double wind[3] = {10.0, 0, 0};
+    aero_stick_texture s;
 
     /* 2. any block size gives the same sound (static geometry) */
     setup(&s, make_texture(1, f100, "0", "1", "0"), 7);
@@ -136,6 +147,16 @@ int main(void)
                "blocks of 1 and of 64 samples agree: max diff %g (rms %g)",
                diff, rms(a, n));
     aero_stick_texture_free(&s);
+    free(a);
+    free(b);
+}
+
+UNIT_TEST(doppler_approach)
+{
+    const int n = 48000;
+    float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
+    double f100[1] = {100.0};
+    aero_stick_texture s;
 
     /* 3. Doppler, exact for a moving source: a one-source stick flies at
      *    40 m/s straight at the listener, carried by a wind of the same
@@ -156,6 +177,16 @@ int main(void)
                   100.0 * 343.0 / (343.0 - 40.0), 0.002,
                   "approaching at 40 m/s: c0 / (c0 - v)");
     aero_stick_texture_free(&s);
+    free(a);
+    free(b);
+}
+
+UNIT_TEST(level_with_speed)
+{
+    const int n = 48000;
+    float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
+    double f100[1] = {100.0};
+    aero_stick_texture s;
 
     /* 4. level: (v/v0)^3, and the paper's ^6 on request */
     double lv[2];
@@ -169,6 +200,17 @@ int main(void)
         aero_stick_texture_free(&s);
     }
     UNIT_NEAR_REL(lv[1] - lv[0], 18.06, 0.005, "dB per speed doubling");
+    free(a);
+    free(b);
+}
+
+UNIT_TEST(incoherent_sources)
+{
+    const int n = 48000;
+    float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
+    double noise[1] = {0.0}, lv[2];
+    double wind[3] = {10.0, 0, 0};
+    aero_stick_texture s;
 
     /* 5. incoherent sources: 16 sources with their own offsets sum in
      *    power (-12 dB against one source of the whole length) */
@@ -184,6 +226,17 @@ int main(void)
     UNIT_CHECK(fabs(lv[1] - lv[0] + 10 * log10(16.0)) < 1.0,
                "16 sources of 1/16 the span: %+.2f dB (incoherent -12.04, "
                "coherent 0)", lv[1] - lv[0]);
+    free(a);
+    free(b);
+}
+
+UNIT_TEST(directions)
+{
+    const int n = 48000;
+    float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
+    double two[2] = {100.0, 200.0}, diff;
+    double wind[3] = {10.0, 0, 0};
+    aero_stick_texture s;
 
     /* 6. directions: square-like symmetry (period 90, mirrored), sampled at
      *    0 and 45 deg. The flow angle in the body is -roll. */
@@ -235,6 +288,17 @@ int main(void)
         diff = fmax(diff, fabs(c[i] - 0.5f * (a[i] + b[i])));
     UNIT_CHECK(diff < 1e-4 * rms(a, n),
                "22.5 deg = (0 deg + 45 deg) / 2: max diff %g", diff);
+    free(c);
+    free(a);
+    free(b);
+}
+
+UNIT_TEST(bad_values)
+{
+    const int n = 48000;
+    float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
+    double f100[1] = {100.0};
+    aero_stick_texture s;
 
     /* 7. bad values are refused and nothing non-finite comes out */
     setup(&s, make_texture(1, f100, "0", "1", "0"), 1);
@@ -274,6 +338,17 @@ int main(void)
         finite &= isfinite(a[i]) && fabs(a[i]) < 1e4;
     UNIT_CHECK(finite, "listener on the stick: finite, max bounded");
     aero_stick_texture_free(&s);
+    free(speed);
+    free(a);
+    free(b);
+}
+
+UNIT_TEST(wrong_kind)
+{
+    const int n = 48000;
+    float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
+    double f100[1] = {100.0};
+    aero_stick_texture s;
 
     /* 8. a texture of the wrong kind is refused and not taken */
     aero_texture *wrong = make_texture(1, f100, "0", "1", "0");
@@ -286,6 +361,17 @@ int main(void)
     aero_stick_texture_free(&s);
     aero_texture_free(wrong);
     free(wrong);
+    free(a);
+    free(b);
+}
+
+UNIT_TEST(phase_wander)
+{
+    const int n = 48000;
+    float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
+    double f100[1] = {100.0};
+    double diff;
+    aero_stick_texture s;
 
     /* 9. the sources' phases wander, so they add their powers, as model
      *    mode's incoherent segments do: n sources of length L/n give 1/n of
@@ -340,10 +426,12 @@ int main(void)
         free(x);
         free(y);
     }
-
     free(a);
     free(b);
-    free(c);
-    free(speed);
-    return unit_summary();
 }
+
+UNIT_MAIN(UNIT_CASE(static_stick_pitch), UNIT_CASE(block_sizes),
+          UNIT_CASE(doppler_approach), UNIT_CASE(level_with_speed),
+          UNIT_CASE(incoherent_sources), UNIT_CASE(directions),
+          UNIT_CASE(bad_values), UNIT_CASE(wrong_kind),
+          UNIT_CASE(phase_wander))

@@ -65,7 +65,7 @@ static double rms(const float *x, int stride, int n)
     return sqrt(s / n);
 }
 
-static void test_layout(void)
+UNIT_TEST(layout)
 {
     aero_body_shape club, capsule, sphere;
     aero_strip_layout L;
@@ -131,7 +131,7 @@ static void check_region(const aero_texture *sec, const aero_strip_layout *L,
     free(out);
 }
 
-static void test_render(void)
+UNIT_TEST(render)
 {
     aero_texture sec, square;
     aero_body_shape club;
@@ -166,9 +166,4 @@ static void test_render(void)
     aero_body_free(&club);
 }
 
-int main(void)
-{
-    test_layout();
-    test_render();
-    return unit_summary();
-}
+UNIT_MAIN(UNIT_CASE(layout), UNIT_CASE(render))

@@ -31,7 +31,7 @@ static void make_texture(aero_texture *t, int frames, int dirs)
     aero_texture_set(t, "command", "aerotex aeolian --shape square -o x.wav");
 }
 
-static void test_round_trip(void)
+UNIT_TEST(round_trip)
 {
     aero_texture t, b;
     char err[256] = "", buf[128];
@@ -72,7 +72,7 @@ static void test_round_trip(void)
     aero_texture_free(&t);
 }
 
-static void test_bad_files(void)
+UNIT_TEST(bad_files)
 {
     aero_texture t, b;
     char err[256];
@@ -158,7 +158,7 @@ static void test_bad_files(void)
     remove(DIR "tex_rate.wav");
 }
 
-static void test_resample(void)
+UNIT_TEST(resample)
 {
     /* F = sin(2 pi f t) sampled at 64 kHz -> g = 2 pi f cos(2 pi f t) at
        16 kHz; a 10 kHz component (above the 7.2 kHz cut-off) is removed */
@@ -196,7 +196,7 @@ static void test_resample(void)
     free(gh);
 }
 
-static void test_loop(void)
+UNIT_TEST(loop)
 {
     /* period of 97 frames: the best loop in [900, 1100] is 970 or 1067 */
     const int period = 97, xf = 120, n = 1100 + xf;
@@ -221,11 +221,4 @@ static void test_loop(void)
     free(x);
 }
 
-int main(void)
-{
-    test_round_trip();
-    test_bad_files();
-    test_resample();
-    test_loop();
-    return unit_summary();
-}
+UNIT_MAIN(UNIT_CASE(round_trip), UNIT_CASE(bad_files), UNIT_CASE(resample), UNIT_CASE(loop))

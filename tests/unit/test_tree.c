@@ -31,7 +31,7 @@ static int reported(const reports *r, int line)
     return 0;
 }
 
-static void test_parse_good(void)
+UNIT_TEST(parse_good)
 {
     const char *text =
         "# a trunk and two branches\n"
@@ -68,7 +68,7 @@ static void test_parse_good(void)
     aero_tree_free(&t);
 }
 
-static void test_parse_bad_lines(void)
+UNIT_TEST(parse_bad_lines)
 {
     /* every line from 3 on is wrong in its own way, except 4, 13 and 17 */
     const char *text =
@@ -125,7 +125,7 @@ static void test_parse_bad_lines(void)
     aero_tree_free(&t);
 }
 
-static void test_parse_empty(void)
+UNIT_TEST(parse_empty)
 {
     aero_tree t;
     char err[256] = "";
@@ -160,7 +160,7 @@ static void test_parse_empty(void)
     }
 }
 
-static void test_long_line(void)
+UNIT_TEST(long_line)
 {
     size_t n = 5000;
     char *text = malloc(n + 100);
@@ -200,7 +200,7 @@ static int same_leaves(const aero_tree *a, const aero_tree *b)
     return 1;
 }
 
-static void test_round_trip_and_generator(void)
+UNIT_TEST(round_trip_and_generator)
 {
     aero_tree_shape shape = {6, 16380, 3.0, 0.3, 0.08, 0.05, 7};
     aero_tree t, u, v;
@@ -303,13 +303,4 @@ static void test_round_trip_and_generator(void)
     }
 }
 
-int main(void)
-{
-    printf("test_tree\n");
-    test_parse_good();
-    test_parse_bad_lines();
-    test_parse_empty();
-    test_long_line();
-    test_round_trip_and_generator();
-    return unit_summary();
-}
+UNIT_MAIN(UNIT_CASE(parse_good), UNIT_CASE(parse_bad_lines), UNIT_CASE(parse_empty), UNIT_CASE(long_line), UNIT_CASE(round_trip_and_generator))

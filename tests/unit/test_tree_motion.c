@@ -25,7 +25,7 @@ static void rod_tree(aero_tree *t)
                     sizeof err);
 }
 
-static void test_still_air(void)
+UNIT_TEST(still_air)
 {
     aero_tree t;
     aero_tree_motion m;
@@ -59,7 +59,7 @@ static void test_still_air(void)
 /* eq. 1: the mean deflection is the load over the spring constant:
    theta = F l^2 / (2 E I), F = 0.5 rho Cd d l U^2, soft-limited by
    0.3 tanh(theta / 0.3) */
-static void test_static_deflection(void)
+UNIT_TEST(static_deflection)
 {
     aero_tree t;
     aero_tree_motion m;
@@ -109,7 +109,7 @@ static void test_static_deflection(void)
 
 /* released from a deflection, the rod swings at its cantilever frequency
    omega = sqrt(3 E I / (l^3 M)) */
-static void test_sway_frequency(void)
+UNIT_TEST(sway_frequency)
 {
     aero_tree t;
     aero_tree_motion m;
@@ -150,7 +150,7 @@ static void test_sway_frequency(void)
 
 /* children move with their parents: a child's start stays on its parent's
    end (the generated tree's children start at their parent's end) */
-static void test_accumulation_and_steps(void)
+UNIT_TEST(accumulation_and_steps)
 {
     aero_tree t;
     aero_tree_motion m, a, b, c;
@@ -290,7 +290,7 @@ static double sway_slope(double beta)
     return (cnt * sxy - sx * sy) / (cnt * sxx - sx * sx);
 }
 
-static void test_noise_spectrum(void)
+UNIT_TEST(noise_spectrum)
 {
     double betas[3] = {0.5, 1.0, 5.0 / 3.0};
     int i;
@@ -302,13 +302,4 @@ static void test_noise_spectrum(void)
     }
 }
 
-int main(void)
-{
-    printf("test_tree_motion\n");
-    test_still_air();
-    test_static_deflection();
-    test_sway_frequency();
-    test_accumulation_and_steps();
-    test_noise_spectrum();
-    return unit_summary();
-}
+UNIT_MAIN(UNIT_CASE(still_air), UNIT_CASE(static_deflection), UNIT_CASE(sway_frequency), UNIT_CASE(accumulation_and_steps), UNIT_CASE(noise_spectrum))

@@ -50,7 +50,7 @@ static double total_power(const double *p, int nbins)
     return s;
 }
 
-static void test_strouhal_peak(void)
+UNIT_TEST(strouhal_peak)
 {
     static double p[MAXBINS];
     aero_treebranch tb;
@@ -90,7 +90,7 @@ static void test_strouhal_peak(void)
 
 /* amplitude ~ U^3 (Curle 1955): +18.06 dB per doubling; the paper's
    I ~ U^6 applied to amplitudes would give +36 */
-static void test_speed_law(void)
+UNIT_TEST(speed_law)
 {
     static double p[MAXBINS];
     aero_treebranch tb;
@@ -116,7 +116,7 @@ static void test_speed_law(void)
 }
 
 /* sqrt(l): twice the length, +3 dB (incoherent segments) */
-static void test_length_law(void)
+UNIT_TEST(length_law)
 {
     static double p[MAXBINS];
     aero_treebranch tb;
@@ -167,7 +167,7 @@ static double render(aero_treebranch *tb, double seconds, double *maxstep,
     return sqrt(sum / ((n / 64) * 64));
 }
 
-static void test_rendering(void)
+UNIT_TEST(rendering)
 {
     static double p[MAXBINS];
     aero_treebranch tb;
@@ -231,7 +231,7 @@ static void test_rendering(void)
     aero_treebranch_free(&tb);
 }
 
-static void test_still_and_bad(void)
+UNIT_TEST(still_and_bad)
 {
     aero_treebranch tb;
     aero_tree t;
@@ -279,7 +279,7 @@ static void test_still_and_bad(void)
 }
 
 /* the same seed gives the same sound; another seed another */
-static void test_seed(void)
+UNIT_TEST(seed)
 {
     aero_treebranch a, b;
     aero_tree t1, t2;
@@ -314,14 +314,4 @@ static void test_seed(void)
     aero_treebranch_free(&b);
 }
 
-int main(void)
-{
-    printf("test_treebranch\n");
-    test_strouhal_peak();
-    test_speed_law();
-    test_length_law();
-    test_rendering();
-    test_still_and_bad();
-    test_seed();
-    return unit_summary();
-}
+UNIT_MAIN(UNIT_CASE(strouhal_peak), UNIT_CASE(speed_law), UNIT_CASE(length_law), UNIT_CASE(rendering), UNIT_CASE(still_and_bad), UNIT_CASE(seed))

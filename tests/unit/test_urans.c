@@ -43,7 +43,7 @@ static void run_square(square_case *c)
                             c->err, sizeof c->err) != 0;
 }
 
-static void test_square(void)
+UNIT_TEST(square)
 {
     square_case c[2];
     memset(c, 0, sizeof c);
@@ -80,7 +80,7 @@ static void test_square(void)
                c[1].st.st_peak);
 }
 
-static void test_refusals(void)
+UNIT_TEST(refusals)
 {
     aero_flow2d_params p;
     aero_flow2d s;
@@ -106,7 +106,7 @@ static void test_refusals(void)
    (dk/dt = -beta* k omega, d omega/dt = -beta0 omega^2, so k = k0 (1 +
    beta0 omega0 t)^(-beta* / beta0): 8.5 % in 1 d/v0), nu_t stays finite and
    positive, and is zero inside the body */
-static void test_fields(void)
+UNIT_TEST(fields)
 {
     aero_flow2d_params p;
     aero_flow2d s;
@@ -151,10 +151,4 @@ static void test_fields(void)
     aero_shape2d_free(&square);
 }
 
-int main(void)
-{
-    test_refusals();
-    test_fields();
-    test_square();
-    return unit_summary();
-}
+UNIT_MAIN(UNIT_CASE(refusals), UNIT_CASE(fields), UNIT_CASE(square))

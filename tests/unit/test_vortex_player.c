@@ -71,7 +71,7 @@ static void setup(aero_vortex_player *m, aero_texture *t, int n)
         printf("  texture refused: %s\n", err);
 }
 
-static void test_distance_and_speed(void)
+UNIT_TEST(distance_and_speed)
 {
     const double amp[2] = {1.0, 3.0};
     aero_vortex_player m;
@@ -101,7 +101,7 @@ static void test_distance_and_speed(void)
     aero_vortex_player_free(&m);
 }
 
-static void test_doppler(void)
+UNIT_TEST(doppler)
 {
     const double amp[2] = {1.0, 1.0}, v = 60.0;
     aero_vortex_player m;
@@ -136,7 +136,7 @@ static void test_doppler(void)
     aero_vortex_player_free(&m);
 }
 
-static void test_clip_and_sources(void)
+UNIT_TEST(clip_and_sources)
 {
     const double amp[2] = {1.0, 1.0};
     aero_vortex_player m;
@@ -174,7 +174,7 @@ static void test_clip_and_sources(void)
     aero_vortex_player_free(&m);
 }
 
-static void test_hostile(void)
+UNIT_TEST(hostile)
 {
     const double amp[2] = {1.0, 1.0};
     aero_vortex_player m;
@@ -217,7 +217,7 @@ static void test_hostile(void)
 
 /* the paper's 1/r^3 (Dobashi et al. 2004, eq. 5) as an option: -18.06 dB
    per doubling of the distance, the same level at 1 m */
-static void test_falloff(void)
+UNIT_TEST(falloff)
 {
     const double amp[2] = {1.0, 3.0};
     aero_vortex_player m;
@@ -244,7 +244,7 @@ static void test_falloff(void)
 
 /* combustion noise through the player: off by default; with a power, the
    law of combustion_noise.h at the listener, with or without a texture */
-static void test_combustion(void)
+UNIT_TEST(combustion)
 {
     aero_vortex_player m;
     enum { N = 8 * 48000 };
@@ -271,13 +271,4 @@ static void test_combustion(void)
     aero_vortex_player_free(&m);
 }
 
-int main(void)
-{
-    test_falloff();
-    test_combustion();
-    test_distance_and_speed();
-    test_doppler();
-    test_clip_and_sources();
-    test_hostile();
-    return unit_summary();
-}
+UNIT_MAIN(UNIT_CASE(falloff), UNIT_CASE(combustion), UNIT_CASE(distance_and_speed), UNIT_CASE(doppler), UNIT_CASE(clip_and_sources), UNIT_CASE(hostile))

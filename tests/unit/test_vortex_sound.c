@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-static void test_d3_kernel(void)
+UNIT_TEST(d3_kernel)
 {
     enum { K = 48, N = 600 };
     double h[2 * K + 1], x[N];
@@ -55,7 +55,7 @@ static void test_d3_kernel(void)
     }
 }
 
-static void test_resample(void)
+UNIT_TEST(resample)
 {
     enum { N = 800, M = 4000 };
     double x[N];
@@ -98,7 +98,7 @@ static int make(aero_flow3d *s, int n, int nz)
     return aero_flow3d_init(s, &p, err, sizeof err);
 }
 
-static void test_moment(void)
+UNIT_TEST(moment)
 {
     aero_flow3d s;
     float *win;
@@ -158,7 +158,7 @@ static void test_moment(void)
 /* The paper's integral cells (eq. 3-4): a voxel whose 27-neighbourhood
  * lies inside the box adds exactly nothing, whatever the vorticity and
  * the receiver; only voxels on the faces make sound. */
-static void test_cells_cancel(void)
+UNIT_TEST(cells_cancel)
 {
     aero_flow3d s;
     uint32_t rng = 11;
@@ -216,7 +216,7 @@ static void measure(const float *x, int n, double rate, double *rms,
 
 /* The texture on a tiny grid (12 x 12 x 18, box 6 cm): four speeds, each
  * recorded for the same 40 flow-through times, independent seeds. */
-static void test_texture_physics(void)
+UNIT_TEST(texture_physics)
 {
     const double speeds[4] = {2.0, 4.0, 8.0, 16.0}, rate = 16000.0;
     double lr[4], lu[4], rms[4], cen[4];
@@ -288,12 +288,4 @@ static void test_texture_physics(void)
                cen[3] / cen[0]);
 }
 
-int main(void)
-{
-    test_d3_kernel();
-    test_resample();
-    test_moment();
-    test_cells_cancel();
-    test_texture_physics();
-    return unit_summary();
-}
+UNIT_MAIN(UNIT_CASE(d3_kernel), UNIT_CASE(resample), UNIT_CASE(moment), UNIT_CASE(cells_cancel), UNIT_CASE(texture_physics))

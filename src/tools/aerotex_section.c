@@ -1,9 +1,9 @@
 /* aerotex aeolian / cavity: the texture of a 2D cross-section, one
  * channel triple per sampled flow direction, the directions simulated in
- * parallel. The physics is in src/core/solve/aeolian_flow.c, the shapes in
- * src/core/common/shape2d.c. */
-#include "aerotex.h"
-#include "aeolian_flow.h"
+ * parallel (the run both commands share: aerotex_section.h; their
+ * options: aerotex_aeolian.c, aerotex_cavity.c). The physics is in
+ * src/core/solve/aeolian_flow.c, the shapes in src/core/common/shape2d.c. */
+#include "aerotex_section.h"
 #include "aero_air.h"
 #include "texture.h"
 
@@ -11,23 +11,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-typedef struct {
-    aerotex_job job;
-    int cavity;
-    const char *shape_name, *poly_file;
-    double d, aspect, v0, re, nu, grid, settle, cfl, stretch;
-    double length, depth;
-    double theta;         /* cavity: the inflow boundary layer's momentum
-                             thickness, m (0: none) */
-    double thin;          /* the section's thinnest frontal width, m */
-    int directions, symmetry, mirror; /* symmetry, mirror: -1 by shape */
-    int span3d;           /* SPAN3D_NONE, _CIRCLE (the circle-calibrated
-                             2D-to-3D correction) or _URANS (k-omega) */
-    aero_span3d correction; /* what the texture carries (span3d.h) */
-} aeolian_job;
-
-enum { SPAN3D_NONE, SPAN3D_CIRCLE, SPAN3D_URANS };
 
 /* --span3d urans: Wilcox's (2006) k-omega with Kato and Launder's (1993)
    production, in flow2d.h's default free stream */
@@ -49,118 +32,6 @@ typedef struct {
                              rows at their true heights, and the body's */
     float wmax;           /* --png: |vorticity| at full colour, v0/d */
 } direction;
-
-/* --shape circle|square|ellipse|polygon FILE */
-static int parse_shape(void *job, const char *cmd, int argc, char **argv,
-                       int *i)
-{
-    aeolian_job *j = job;
-    if (*i + 1 >= argc) {
-        aerotex_error("%s: --shape needs circle, square, ellipse or polygon "
-                      "FILE", cmd);
-        return -1;
-    }
-    j->shape_name = argv[++*i];
-    if (!strcmp(j->shape_name, "polygon")) {
-        if (*i + 1 >= argc) {
-            aerotex_error("%s: --shape polygon needs a FILE", cmd);
-            return -1;
-        }
-        j->poly_file = argv[++*i];
-    } else if (strcmp(j->shape_name, "circle") &&
-               strcmp(j->shape_name, "square") &&
-               strcmp(j->shape_name, "ellipse")) {
-        aerotex_error("%s: unknown shape '%s' (circle, square, ellipse, "
-                      "polygon FILE)", cmd, j->shape_name);
-        return -1;
-    }
-    return 0;
-}
-
-#define AT(field) offsetof(aeolian_job, field)
-/* the options aeolian and cavity share */
-#define FLOW_OPTIONS(grid_def, settle_def, settle_shown)                \
-    {"--speed", AEROTEX_NUMBER, "m/s", 10.0, 1e-3, 1e4, AT(v0),         \
-     "base speed v0", NULL, NULL},                                      \
-    {"--re", AEROTEX_NUMBER, "Re", 0.0, 1.0, 1e6, AT(re),               \
-     "Reynolds number v0 d / nu", "air", NULL},                         \
-    {"--duration", AEROTEX_NUMBER, "s", 0.2, 1e-3, 10.0,                \
-     AT(job.duration), "texture length", NULL, NULL},                   \
-    {"--rate", AEROTEX_NUMBER, "Hz", 16000.0, 1000.0, 192000.0,         \
-     AT(job.rate), "texture sample rate", NULL, NULL},                  \
-    {"--grid", AEROTEX_NUMBER, "cells", grid_def, 4.0, 200.0, AT(grid), \
-     "cells per reference size d", NULL, NULL},                         \
-    {"--settle", AEROTEX_NUMBER, "d/v0", settle_def, 0.0, 1e4,          \
-     AT(settle), "start-up discarded, in units of d/v0", settle_shown,  \
-     NULL},                                                             \
-    {"--cfl", AEROTEX_NUMBER, "c", 0.5, 0.05, 0.8, AT(cfl),             \
-     "solver step factor", NULL, NULL},                                 \
-    AEROTEX_JOB_OPTIONS("directions",                                   \
-                        "vorticity snapshots DIR/dirKK_NNNN.png")
-
-static const aerotex_option aeolian_options[] = {
-    {"--shape", AEROTEX_CUSTOM, "circle|square|ellipse|polygon FILE", NAN, 0,
-     0, 0, "the cross-section (polygon: textures/README.md)",
-     "circle", parse_shape},
-    {"--diameter", AEROTEX_NUMBER, "m", 0.01, 1e-5, 10.0, AT(d),
-     "reference size d: diameter, side, major axis or\nthe polygon's x "
-     "extent", NULL, NULL},
-    {"--aspect", AEROTEX_NUMBER, "a", 0.5, 0.01, 1.0, AT(aspect),
-     "ellipse minor/major axis ratio", NULL, NULL},
-    {"--directions", AEROTEX_WHOLE, "N", 1.0, 1.0, 360.0, AT(directions),
-     "sampled flow directions", NULL, NULL},
-    {"--symmetry", AEROTEX_WHOLE, "K", -1.0, 1.0, 64.0, AT(symmetry),
-     "the shape repeats every 360/K deg", "square 4, ellipse 2, polygon 1",
-     NULL},
-    {"--mirror", AEROTEX_SWITCH, NULL, -1.0, 1, 0, AT(mirror),
-     "the shape is mirror-symmetric about its x axis",
-     "yes for square and ellipse", NULL},
-    {"--no-mirror", AEROTEX_SWITCH, NULL, NAN, 0, 0, AT(mirror),
-     "it is not", NULL, NULL},
-    {"--span3d", AEROTEX_CHOICE, "none|circle|urans", 1.0, 0, 0, AT(span3d),
-     "2D section to 3D body above Re 190: circle: frequencies\nand force "
-     "scaled by the 2D circle's error at this Re\nand grid against Roshko's "
-     "St and Norberg's C_L';\nurans: the turbulence as an eddy viscosity "
-     "(Wilcox's\nk-omega, Kato and Launder's production)\n"
-     "(textures/README.md)", NULL, NULL},
-    {"--stretch", AEROTEX_NUMBER, "r", 1.1, 1.0, 1.2, AT(stretch),
-     "rows beyond 2 d of the body grow by r each\n(1: a uniform grid)",
-     NULL, NULL},
-    FLOW_OPTIONS(16.0, -1.0, "30, 100 below Re 300")};
-
-static const aerotex_option cavity_options[] = {
-    {"--length", AEROTEX_NUMBER, "m", 0.0, 1e-5, 10.0, AT(length),
-     "the cavity's length along the flow", "", NULL},
-    {"--depth", AEROTEX_NUMBER, "m", 0.0, 1e-5, 10.0, AT(depth),
-     "its depth", "", NULL},
-    /* the shear layer over the cavity starts as the boundary layer the
-       wall brings: its thickness selects the mode (Gharib & Roshko 1987;
-       Rowley et al. 2002), textures/README.md */
-    {"--theta", AEROTEX_NUMBER, "m", 0.0, 0.0, 1.0, AT(theta),
-     "momentum thickness of the laminar boundary layer\nthe wall brings "
-     "to the inflow edge, 0.3 length\nupstream of the cavity (at most 0.1 "
-     "length)", "0: none, it grows from the inflow edge", NULL},
-    /* a cavity's shear layer starts as the wall's boundary layer, a cell
-       or two thick: below ~48 cells per length the grid damps it and the
-       flow stays steady (no Rossiter tone); its oscillation takes ~50-80
-       L/v0 to grow from the seeding to its saturated level */
-    FLOW_OPTIONS(48.0, 80.0, NULL)};
-
-static void aeolian_init(void *job)
-{
-    aeolian_job *j = job;
-    j->shape_name = "circle";
-}
-
-static void cavity_init(void *job)
-{
-    aeolian_job *j = job;
-    j->cavity = 1;
-    j->stretch = 1.0; /* its wall force sums rows of h: a uniform grid */
-    j->directions = 1;
-    j->symmetry = 1;
-    j->mirror = 0;
-}
 
 /* the shape, its description and its symmetry: 0, or 2 with a message */
 static int make_shape(aeolian_job *j, aero_shape2d *shape, char *desc,
@@ -621,7 +492,7 @@ static int write_stage(void *plan, void *tasks)
     return write_texture(p->j, tasks, p->desc);
 }
 
-static int aeolian_run(const aerotex_command *cmd, int argc, char **argv)
+int aerotex_section_run(const aerotex_command *cmd, int argc, char **argv)
 {
     aeolian_job j;
     aero_shape2d shape;
@@ -644,25 +515,3 @@ static int aeolian_run(const aerotex_command *cmd, int argc, char **argv)
     aero_shape2d_free(&shape);
     return status;
 }
-
-static int run_aeolian(int argc, char **argv)
-{
-    return aeolian_run(&aerotex_aeolian_command, argc, argv);
-}
-
-static int run_cavity(int argc, char **argv)
-{
-    return aeolian_run(&aerotex_cavity_command, argc, argv);
-}
-
-const aerotex_command aerotex_aeolian_command = {
-    "aeolian", "--shape <circle|square|ellipse|polygon FILE> -o FILE.wav",
-    "sound texture of the aeolian tone of a stick: 2D incompressible flow\n"
-    "past its cross-section, g = dF/dt of the force per unit span",
-    aeolian_options, sizeof(aeolian_job), aeolian_init, run_aeolian};
-
-const aerotex_command aerotex_cavity_command = {
-    "cavity", "--length <m> --depth <m> --speed <m/s> -o FILE.wav",
-    "sound texture of a cavity tone: 2D flow over a rectangular cavity in\n"
-    "a wall, g = dF/dt of the force on its walls",
-    cavity_options, sizeof(aeolian_job), cavity_init, run_cavity};

@@ -486,6 +486,53 @@ static void describe_calibration(const object_plan *o,
     aero_texture_set(tex, "st_sim_list", buf);
 }
 
+/* what it matches, for aerotex info (aerotex_matches.c): quantity, the
+   texture's value, the published one, source, test, calibrated or
+   independent */
+static void describe_matches(const object_plan *o,
+                             const aero_body_flow_stats *stb,
+                             aero_texture *tex)
+{
+    const object_job *j = o->j;
+    char buf[1024];
+    int n = 0;
+    if (j->method != METHOD_FLOW3D)
+        return; /* strip theory: aerotex info derives its rows */
+    if (j->calibrate != CAL_NONE) {
+        snprintf(buf, sizeof buf, "St of the lateral force, as heard|%.3f "
+                 "(the flow's %.3f, time x %.3f)|%.3f|%s|%s|calibrated",
+                 o->st_loop * o->scale, o->st_loop, 1.0 / o->scale,
+                 o->st_ref, j->calibrate == CAL_SPHERE
+                     ? "Sakamoto and Haniu 1990; Kim and Durbin 1988"
+                     : "Roshko 1954 (cylinder St(Re))",
+                 o->sphere && j->calibrate == CAL_SPHERE
+                     ? "46-sphere-pitch.sh (whirled in Pd, +-5 %)"
+                     : "(no test for this body)");
+        aero_texture_set(tex, "match1", buf);
+        n = 1;
+    }
+    snprintf(buf, sizeof buf, "mean Cd|%.2f|%s|%s|%s|independent", stb->cd,
+             o->sphere ? "0.4-0.55 (subcritical)" : "(none for this body)",
+             o->sphere ? "Achenbach 1972" : "-",
+             o->sphere ? "45-body.sh 1b" : "-");
+    {
+        char key[16];
+        snprintf(key, sizeof key, "match%d", ++n);
+        aero_texture_set(tex, key, buf);
+        if (o->sphere) {
+            snprintf(key, sizeof key, "match%d", ++n);
+            aero_texture_set(tex, key, "level against speed|U^3|+18.06 dB "
+                             "per doubling|Curle 1955|45-body.sh 1|"
+                             "independent");
+            snprintf(key, sizeof key, "match%d", ++n);
+            aero_texture_set(tex, key, "whirled: coming over going|"
+                             "(c0 + v k)/(c0 - v k)|the Doppler shift|"
+                             "Doppler|46-sphere-pitch.sh; 45-body.sh 2b|"
+                             "independent");
+        }
+    }
+}
+
 /* the texture's metadata */
 static void describe(const object_plan *o, const direction_task *ctx,
                      aero_texture *tex)
@@ -544,6 +591,7 @@ static void describe(const object_plan *o, const direction_task *ctx,
               offsetof(aero_body_flow_stats, cl_rms), 1.0);
     aero_texture_set(tex, "cl_rms_list", buf);
     describe_calibration(o, ctx, kb, tex);
+    describe_matches(o, stb, tex);
     if (j->method == METHOD_STRIP) {
         aero_texture_set(tex, "method", "strip");
         aero_texture_set(tex, "section", j->section);

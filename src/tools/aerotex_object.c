@@ -139,10 +139,10 @@ static const aerotex_option object_options[] = {
     {"--calibrate", AEROTEX_CHOICE, "sphere|cylinder|none", CAL_BY_BODY, 0,
      0, AT(calibrate),
      "the published body whose St the simulated force's\ntime axis is "
-     "scaled to (its shape, level and\ndirectivity kept): sphere: St 0.2 "
+     "scaled to (the force's shape, level\nand directivity kept): sphere: St 0.2 "
      "(Re 800-3e5;\nSakamoto and Haniu 1990), cylinder: Roshko's\nSt(Re) "
      "on d (a body broadside like a rod),\nnone: the flow's own St",
-     "sphere for --shape sphere, else none", NULL},
+     "sphere for a sphere at Re 800-3e5, else none", NULL},
     {"--seed", AEROTEX_SEED, "n", 1.0, 0, 0, AT(seed),
      "start-up noise seed (strip: the regions' places)", NULL, NULL},
     AEROTEX_JOB_OPTIONS("directions",
@@ -220,9 +220,13 @@ static int plan_calibration(object_job *j, object_plan *o)
     o->scale = 1.0;
     o->rate = j->job.rate;
     o->st_ref = 0.0;
+    /* by default a sphere in the published range is calibrated (outside
+       it, and for other bodies, the flow's own St is kept) */
     if (j->calibrate == CAL_BY_BODY)
-        j->calibrate = o->sphere && j->method == METHOD_FLOW3D ? CAL_SPHERE
-                                                                : CAL_NONE;
+        j->calibrate = o->sphere && j->method == METHOD_FLOW3D &&
+                               re >= SPHERE_RE_MIN && re <= SPHERE_RE_MAX
+                           ? CAL_SPHERE
+                           : CAL_NONE;
     if (j->calibrate == CAL_NONE)
         return 0;
     if (j->method == METHOD_STRIP) {

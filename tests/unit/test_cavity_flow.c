@@ -217,10 +217,10 @@ static cavity_result cavity_flow(double grid, double theta, double record)
  * past that, the wake mode. So over a sweep of incoming layers the
  * dominant St_L lies within +-15 % of a stage (the scatter of Rossiter's
  * fit) and the stage does not fall as L/theta0 grows. 64 cells per L
- * (the layers are 5.4-7.7 cells thick, delta = 8.51 theta); the thinner
+ * (the layers are 5.4-7.8 cells thick, delta = 8.51 theta); the thinner
  * layers of L/theta0 120-200 fall between stages on this grid (St_L
  * 0.75-0.80; textures/README.md), and thicker ones than L/70 do not
- * oscillate. ~15 s a run on one core. */
+ * oscillate. ~5 s a run on one core (the whole file ~30 s). */
 static void check_rossiter_stages(void)
 {
     static const double l_theta[] = {CAVITY_SWEEP};

@@ -118,6 +118,11 @@ int main(void)
         r = run("info build/tests/aerotex_cavity.wav");
         UNIT_CHECK(r == 0 && said("kind=cavity") && said("theta=0.001"),
                    "info prints the cavity's theta");
+        /* and the table of what it matches (textures/README.md) */
+        UNIT_CHECK(r == 0 && said("| quantity | texture | published |") &&
+                       said("| St_L of the shear-layer tone |") &&
+                       said("Rossiter 1964"),
+                   "info prints what the texture matches, with its source");
         remove("build/tests/aerotex_cavity.wav");
     }
     remove(OUT);

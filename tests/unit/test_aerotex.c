@@ -84,6 +84,15 @@ int main(void)
         "vortex: --source takes window or cells");
     bad("object --shape sphere --sources 2.5 -o x.wav",
         "object: --sources takes a whole number");
+    /* --calibrate: the sphere's published St holds for Re 800-3e5; strip
+       theory takes its St from the section */
+    bad("object --shape sphere --speed 0.1 --calibrate sphere -o x.wav",
+        "the published St 0.2 holds for Re 800-300000");
+    bad("object --shape club --method strip --section textures/cylinder.wav "
+        "--calibrate cylinder -o x.wav",
+        "--method strip takes its St from the section");
+    bad("object --shape sphere --calibrate cube -o x.wav",
+        "--calibrate takes sphere, cylinder or none");
     bad("cavity --diameter 0.01 -o x.wav",
         "cavity: unknown option '--diameter'");
     bad("tree --depth 9 -o x.tree", "tree: --depth 9 is out of range");

@@ -650,6 +650,10 @@ static int write_texture(void *plan, void *tasks)
                "frames (%.3f s at %g Hz)\n", j->job.out, o->desc, o->d, nd,
                nd > 1 ? "s" : "", o->nr, o->nr > 1 ? "s" : "", len,
                len / o->rate, o->rate);
+        if (o->scale != 1.0 && j->job.rate / len * o->d / j->speed > 0.02)
+            fprintf(stderr, "aerotex: the loop's lines lie %.3f apart in St: "
+                    "its St is coarse (a longer --duration)\n",
+                    j->job.rate / len * o->d / j->speed);
         if (o->scale != 1.0)
             printf("  --calibrate %s: St %.3f -> %.3f (the loop's lateral "
                    "force; time axis x %.4f, rate %g Hz)\n",

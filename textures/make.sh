@@ -35,7 +35,9 @@ $T vortex --speeds 1,2,3,4,6,8,12,16 --box 0.1 --grid 32 --duration 0.5 \
     --rate 32000 --extend 14000 \
     -o textures/fire.wav
 # 3D object textures (Dobashi et al. 2003, 3D case): the paper's sphere (radius
-# 5 cm) from a 3D flow at 16.8 cells per diameter, and a club (handle 12.5 mm,
+# 5 cm) from a 3D flow at 16.8 cells per diameter, its time axis calibrated
+# to the subcritical sphere's St 0.2 (--calibrate sphere, the default for a
+# sphere; textures/README.md), and a club (handle 12.5 mm,
 # tip 30 mm, 0.8 m) with 10 regions and 5 flow directions from its axis (0,
 # 45, 90, 135, 180 deg) by strip theory over the cylinder texture's section
 # (made above)

@@ -59,6 +59,7 @@ static int aerotex_info(int argc, char **argv)
         printf("%.*s\n", n, p);
         p = e ? e + 1 : NULL;
     }
+    aerotex_print_matches(&t);
     aero_texture_free(&t);
     return 0;
 }

@@ -195,6 +195,8 @@ void aerotex_task_progress(aerotex_task *t, long step);
 int aerotex_task_snapshot_due(aerotex_task *t, long step);
 
 /* x[0..n-1] as "a,b,c" with fmt per number */
+/* aerotex info: the table of what a texture matches (aerotex_matches.c) */
+void aerotex_print_matches(const aero_texture *t);
 void aerotex_join(char *buf, size_t len, const double *x, int n,
                   const char *fmt);
 

@@ -7,6 +7,7 @@
 #include "aero_util.h"
 #include "body_flow.h"
 #include "strip_body.h"
+#include "strouhal.h"
 #include "texture.h"
 
 #include <math.h>
@@ -19,6 +20,18 @@
 
 enum { SHAPE_NONE = -1, SHAPE_SPHERE, SHAPE_CAPSULE, SHAPE_CLUB };
 enum { METHOD_FLOW3D, METHOD_STRIP };
+/* --calibrate: the published body whose St the time axis is scaled to */
+enum { CAL_BY_BODY = -1, CAL_SPHERE, CAL_CYLINDER, CAL_NONE };
+
+/* The subcritical sphere's large-scale wake sheds at St ~0.2, independent
+   of Re over 800 < Re < 2e5 (Kim and Durbin 1988; Sakamoto and Haniu 1990,
+   J. Fluids Eng. 112, 386-392); Achenbach (1974, J. Fluid Mech. 62,
+   209-221) found strong periodic wake fluctuations from Re 6e3 to 3e5.
+   A 3D flow this machine can afford does not reach it (textures/README.md),
+   so the sphere's force history is kept and its time axis scaled. */
+#define SPHERE_ST 0.2
+#define SPHERE_RE_MIN 800.0
+#define SPHERE_RE_MAX 3e5
 
 typedef struct {
     aerotex_job job;
@@ -30,6 +43,7 @@ typedef struct {
     int limiter;
     int method;           /* METHOD_* */
     const char *section;  /* METHOD_STRIP: the section's texture */
+    int calibrate;        /* CAL_* */
     uint32_t seed;
 } object_job;
 
@@ -122,6 +136,13 @@ static const aerotex_option object_options[] = {
     {"--section", AEROTEX_TEXT, "FILE", NAN, 0, 0, AT(section),
      "--method strip: a circle's aeolian texture\n(textures/cylinder.wav)",
      NULL, NULL},
+    {"--calibrate", AEROTEX_CHOICE, "sphere|cylinder|none", CAL_BY_BODY, 0,
+     0, AT(calibrate),
+     "the published body whose St the simulated force's\ntime axis is "
+     "scaled to (the force's shape, level\nand directivity kept): sphere: St 0.2 "
+     "(Re 800-3e5;\nSakamoto and Haniu 1990), cylinder: Roshko's\nSt(Re) "
+     "on d (a body broadside like a rod),\nnone: the flow's own St",
+     "sphere for a sphere at Re 800-3e5, else none", NULL},
     {"--seed", AEROTEX_SEED, "n", 1.0, 0, 0, AT(seed),
      "start-up noise seed (strip: the regions' places)", NULL, NULL},
     AEROTEX_JOB_OPTIONS("directions",
@@ -161,6 +182,12 @@ typedef struct {
     int nd, nr, ch, sphere;
     aero_texture section;       /* METHOD_STRIP */
     aero_strip_layout layout;   /* METHOD_STRIP */
+    double st_ref;              /* --calibrate's St at the body's Re (0:
+                                   none) */
+    double scale;               /* frequencies times scale (1: none) */
+    double rate;                /* the texture's rate after the scaling */
+    double st_loop;             /* loop_st of the broadside direction, as
+                                   simulated */
 } object_plan;
 
 /* --method strip: the section texture and the regions' diameters: 0, or 2
@@ -184,6 +211,105 @@ static int plan_strip(object_job *j, object_plan *o)
         return 2;
     }
     return 0;
+}
+
+/* --calibrate: the reference St at the body's Re: 0, or -1 with a message */
+static int plan_calibration(object_job *j, object_plan *o)
+{
+    const double re = j->speed * o->d / AERO_NU;
+    o->scale = 1.0;
+    o->rate = j->job.rate;
+    o->st_ref = 0.0;
+    /* by default a sphere in the published range is calibrated (outside
+       it, and for other bodies, the flow's own St is kept) */
+    if (j->calibrate == CAL_BY_BODY)
+        j->calibrate = o->sphere && j->method == METHOD_FLOW3D &&
+                               re >= SPHERE_RE_MIN && re <= SPHERE_RE_MAX
+                           ? CAL_SPHERE
+                           : CAL_NONE;
+    if (j->calibrate == CAL_NONE)
+        return 0;
+    if (j->method == METHOD_STRIP) {
+        aerotex_error("object: --method strip takes its St from the section "
+                      "(--calibrate none)");
+        return -1;
+    }
+    if (j->calibrate == CAL_SPHERE &&
+        !(re >= SPHERE_RE_MIN && re <= SPHERE_RE_MAX)) {
+        aerotex_error("object: --calibrate sphere: the published St %g holds "
+                      "for Re %g-%g, this body's is %.3g (--calibrate none)",
+                      SPHERE_ST, SPHERE_RE_MIN, SPHERE_RE_MAX, re);
+        return -1;
+    }
+    if (j->calibrate == CAL_CYLINDER && !(re > AERO_RE_ONSET)) {
+        aerotex_error("object: --calibrate cylinder: Re %.3g is below the "
+                      "shedding onset", re);
+        return -1;
+    }
+    o->st_ref = j->calibrate == CAL_SPHERE ? SPHERE_ST : aero_strouhal(re);
+    return 0;
+}
+
+/* St of the loop as it is heard: the power of the lateral g (y and z,
+   every region) of direction k on the loop's own lines (a seamless loop
+   repeats: its spectrum is lines rate/len apart), a moving average over
+   0.06 in St (a broad band's peak needs it: single lines scatter by
+   several dB), its largest line over St 0.05-1. 0 if none */
+static double loop_st(const object_plan *o, int k, const float *data,
+                      int len, double rate)
+{
+    const double df = rate / len, fmax = o->j->speed / o->d;
+    const int lines = (int)(fmax / df), half = (int)(0.03 * fmax / df);
+    double *pw, best = 0.0, st = 0.0;
+    if (lines < 2 || !(pw = calloc((size_t)lines + 1, sizeof(double))))
+        return 0.0;
+    for (int m = 1; m <= lines; m++)
+        for (int l = 0; l < o->nr; l++)
+            for (int c = 1; c < 3; c++) {
+                const float *x = data + 3 * ((size_t)k * o->nr + l) + c;
+                double re = 0.0, im = 0.0;
+                for (int n = 0; n < len; n++) {
+                    const double ph = 2.0 * AERO_PI * m * n / len;
+                    re += x[(size_t)n * o->ch] * cos(ph);
+                    im += x[(size_t)n * o->ch] * sin(ph);
+                }
+                pw[m] += re * re + im * im;
+            }
+    for (int m = 1; m <= lines; m++) {
+        double sum = 0.0;
+        int cnt = 0;
+        if (m * df < 0.05 * fmax)
+            continue;
+        for (int i = m - half; i <= m + half; i++)
+            if (i >= 1 && i <= lines) {
+                sum += pw[i];
+                cnt++;
+            }
+        if (cnt && sum / cnt > best) {
+            best = sum / cnt;
+            st = m * df / fmax;
+        }
+    }
+    free(pw);
+    return st;
+}
+
+/* the time axis scaled to the reference St: the samples are kept and the
+   rate raised (a whole number of Hz, as a WAV holds it), so the loop stays
+   seamless; g = dF/dt of the same force history grows by the same factor.
+   The direction nearest broadside, which stands for the object, sets it */
+static void apply_calibration(object_plan *o, double st_sim, float *data,
+                              size_t n)
+{
+    const double rate0 = o->j->job.rate;
+    if (!(o->st_ref > 0.0) || !(st_sim > 0.0))
+        return;
+    o->rate = floor(rate0 * o->st_ref / st_sim + 0.5);
+    if (o->rate < 1.0)
+        o->rate = 1.0;
+    o->scale = o->rate / rate0;
+    for (size_t k = 0; k < n; k++)
+        data[k] = (float)(data[k] * o->scale);
 }
 
 /* the body, its directions and regions, the flow: 0, or 2 with a message */
@@ -227,6 +353,8 @@ static int plan_object(object_job *j, object_plan *o)
     o->base.limiter = j->limiter;
     o->base.settle = j->settle * o->d / j->speed;
     aero_body_describe(&o->body, o->desc, sizeof o->desc);
+    if (plan_calibration(j, o))
+        return 2;
     return j->method == METHOD_STRIP ? plan_strip(j, o) : 0;
 }
 
@@ -310,14 +438,103 @@ static int run_directions(void *plan, void *tasks)
     return status;
 }
 
-/* the statistic at offset `at` of every direction's stats, joined */
+/* the statistic at offset `at` of every direction's stats, times factor,
+   joined */
 static void join_stat(char *buf, size_t len, const direction_task *ctx,
-                      int n, size_t at)
+                      int n, size_t at, double factor)
 {
     double list[MAX_DIRECTIONS];
     for (int k = 0; k < n; k++)
-        list[k] = *(const double *)((const char *)&ctx[k].st + at);
+        list[k] = factor * *(const double *)((const char *)&ctx[k].st + at);
     aerotex_join(buf, len, list, n, "%.4g");
+}
+
+/* the direction nearest broadside, which stands for the object */
+static int broadside(const object_plan *o)
+{
+    int kb = 0;
+    for (int k = 1; k < o->nd; k++)
+        if (fabs(o->angles[k] - 90.0) < fabs(o->angles[kb] - 90.0))
+            kb = k;
+    return kb;
+}
+
+static const char *const calibration_names[] = {"sphere", "cylinder",
+                                                "none"};
+
+/* what --calibrate did, in the metadata (textures/README.md) */
+static void describe_calibration(const object_plan *o,
+                                 const direction_task *ctx, int kb,
+                                 aero_texture *tex)
+{
+    const object_job *j = o->j;
+    char buf[16384];
+    aero_texture_set(tex, "calibration", calibration_names[j->calibrate]);
+    if (j->calibrate == CAL_NONE)
+        return;
+    aero_texture_setd(tex, "calibration_st", o->st_ref);
+    aero_texture_set(tex, "calibration_source",
+                     j->calibrate == CAL_SPHERE
+                         ? "sphere, subcritical: St 0.2 of the large-scale "
+                           "wake, Re 800-2e5 (Kim and Durbin 1988; Sakamoto "
+                           "and Haniu 1990, J. Fluids Eng. 112); periodic "
+                           "Re 6e3-3e5 (Achenbach 1974, J. Fluid Mech. 62)"
+                         : "circular cylinder St(Re) (Roshko 1954; "
+                           "Williamson 1996) on the reference size");
+    aero_texture_setd(tex, "frequency_scale", o->scale);
+    aero_texture_setd(tex, "rate_sim", j->job.rate);
+    aero_texture_setd(tex, "st_sim", o->st_loop);
+    aero_texture_setd(tex, "st_sim_welch", ctx[kb].st.st);
+    join_stat(buf, sizeof buf, ctx, o->nd, offsetof(aero_body_flow_stats, st),
+              1.0);
+    aero_texture_set(tex, "st_sim_list", buf);
+}
+
+/* what it matches, for aerotex info (aerotex_matches.c): quantity, the
+   texture's value, the published one, source, test, calibrated or
+   independent */
+static void describe_matches(const object_plan *o,
+                             const aero_body_flow_stats *stb,
+                             aero_texture *tex)
+{
+    const object_job *j = o->j;
+    char buf[1024];
+    int n = 0;
+    if (j->method != METHOD_FLOW3D)
+        return; /* strip theory: aerotex info derives its rows */
+    if (j->calibrate != CAL_NONE) {
+        snprintf(buf, sizeof buf, "St of the lateral force, as heard|%.3f "
+                 "(the flow's %.3f, time x %.3f)|%.3f|%s|%s|calibrated",
+                 o->st_loop * o->scale, o->st_loop, 1.0 / o->scale,
+                 o->st_ref, j->calibrate == CAL_SPHERE
+                     ? "Sakamoto and Haniu 1990; Kim and Durbin 1988"
+                     : "Roshko 1954 (cylinder St(Re))",
+                 o->sphere && j->calibrate == CAL_SPHERE
+                     ? "46-sphere-pitch.sh (whirled in Pd, +-5 %)"
+                     : "(no test for this body)");
+        aero_texture_set(tex, "match1", buf);
+        n = 1;
+    }
+    snprintf(buf, sizeof buf, "mean Cd|%.2f|%s|%s|%s|independent", stb->cd,
+             o->sphere ? "0.4-0.55 (subcritical)" : "(none for this body)",
+             o->sphere ? "Achenbach 1972" : "-",
+             o->sphere ? "45-body.sh 1b" : "-");
+    {
+        char key[16];
+        snprintf(key, sizeof key, "match%d", ++n);
+        aero_texture_set(tex, key, buf);
+        if (o->sphere) {
+            snprintf(key, sizeof key, "match%d", ++n);
+            aero_texture_set(tex, key, "level against speed|U^3|+18.06 dB "
+                             "per doubling|Curle 1955|45-body.sh 1|"
+                             "independent");
+            snprintf(key, sizeof key, "match%d", ++n);
+            aero_texture_set(tex, key, "whirled: coming over going|"
+                             "(c0 + v k)/(c0 - v k)|the Doppler shift|"
+                             "Doppler|46-sphere-pitch.sh; 45-body.sh 2b|"
+                             "independent");
+        }
+    }
 }
 
 /* the texture's metadata */
@@ -328,7 +545,7 @@ static void describe(const object_plan *o, const direction_task *ctx,
     const aero_body_flow_stats *st0 = &ctx[0].st, *stb;
     char buf[16384], shape[300];
     size_t used = 0;
-    int kb = 0;
+    const int kb = broadside(o);
     aero_texture_set(tex, "kind", "object");
     snprintf(shape, sizeof shape, "%s", o->desc);
     if (j->mesh)
@@ -354,25 +571,31 @@ static void describe(const object_plan *o, const direction_task *ctx,
                                  st0->centre[3 * l + 2]);
     aero_texture_set(tex, "centres", buf);
     aerotex_job_loop_meta(&j->job, tex);
+    aero_texture_setd(tex, "rate", o->rate);
     aero_texture_set(tex, "frame", "sample frame: the flow arrives along "
                      "(sin a, 0, cos a) of the body axes, a = angles[k]");
     aero_texture_set(tex, "units", "N/s");
-    /* the direction nearest broadside stands for the object */
-    for (int k = 1; k < o->nd; k++)
-        if (fabs(o->angles[k] - 90.0) < fabs(o->angles[kb] - 90.0))
-            kb = k;
     stb = &ctx[kb].st;
-    aero_texture_setd(tex, "st", stb->st);
-    aero_texture_setd(tex, "f", stb->f_peak);
+    /* st, f as the texture holds them: after --calibrate the loop's
+       heard St (loop_st) times the scale; else the flow's own estimate */
+    aero_texture_setd(tex, "st", o->scale != 1.0 ? o->st_loop * o->scale
+                                                 : stb->st);
+    aero_texture_setd(tex, "f", (o->scale != 1.0 ? o->st_loop * o->scale
+                                                 : stb->st) *
+                                    j->speed / o->d);
     aero_texture_setd(tex, "cd", stb->cd);
     aero_texture_setd(tex, "cl_rms", stb->cl_rms);
-    join_stat(buf, sizeof buf, ctx, o->nd, offsetof(aero_body_flow_stats, st));
+    join_stat(buf, sizeof buf, ctx, o->nd, offsetof(aero_body_flow_stats, st),
+              o->scale);
     aero_texture_set(tex, "st_list", buf);
-    join_stat(buf, sizeof buf, ctx, o->nd, offsetof(aero_body_flow_stats, cd));
+    join_stat(buf, sizeof buf, ctx, o->nd, offsetof(aero_body_flow_stats, cd),
+              1.0);
     aero_texture_set(tex, "cd_list", buf);
     join_stat(buf, sizeof buf, ctx, o->nd,
-              offsetof(aero_body_flow_stats, cl_rms));
+              offsetof(aero_body_flow_stats, cl_rms), 1.0);
     aero_texture_set(tex, "cl_rms_list", buf);
+    describe_calibration(o, ctx, kb, tex);
+    describe_matches(o, stb, tex);
     if (j->method == METHOD_STRIP) {
         aero_texture_set(tex, "method", "strip");
         aero_texture_set(tex, "section", j->section);
@@ -405,7 +628,7 @@ static void describe(const object_plan *o, const direction_task *ctx,
 /* the looped texture, saved and reported: the exit status */
 static int write_texture(void *plan, void *tasks)
 {
-    const object_plan *o = plan;
+    object_plan *o = plan;
     const direction_task *ctx = tasks;
     object_job *j = o->j;
     const int len = aerotex_job_loop(&j->job), nd = o->nd;
@@ -414,6 +637,11 @@ static int write_texture(void *plan, void *tasks)
     if (aero_texture_init_regions(&tex, len, nd, o->nr, j->job.rate))
         return aerotex_job_fail(&j->job, "out of memory");
     aerotex_job_fill(&j->job, &tex, len);
+    o->st_loop = j->method == METHOD_FLOW3D
+                     ? loop_st(o, broadside(o), tex.data, len, j->job.rate)
+                     : 0.0;
+    apply_calibration(o, o->st_loop, tex.data, (size_t)len * o->ch);
+    tex.rate = o->rate;
     memcpy(tex.angles, o->angles, sizeof(double) * nd);
     describe(o, ctx, &tex);
     status = aerotex_job_save(&j->job, &tex);
@@ -421,7 +649,16 @@ static int write_texture(void *plan, void *tasks)
         printf("%s: object %s, d %g m, %d direction%s x %d region%s, %d "
                "frames (%.3f s at %g Hz)\n", j->job.out, o->desc, o->d, nd,
                nd > 1 ? "s" : "", o->nr, o->nr > 1 ? "s" : "", len,
-               len / j->job.rate, j->job.rate);
+               len / o->rate, o->rate);
+        if (o->scale != 1.0 && j->job.rate / len * o->d / j->speed > 0.02)
+            fprintf(stderr, "aerotex: the loop's lines lie %.3f apart in St: "
+                    "its St is coarse (a longer --duration)\n",
+                    j->job.rate / len * o->d / j->speed);
+        if (o->scale != 1.0)
+            printf("  --calibrate %s: St %.3f -> %.3f (the loop's lateral "
+                   "force; time axis x %.4f, rate %g Hz)\n",
+                   calibration_names[j->calibrate], o->st_loop,
+                   o->st_loop * o->scale, 1.0 / o->scale, o->rate);
         for (int k = 0; k < nd && j->method == METHOD_STRIP; k++)
             printf("  %5.1f deg: strip theory, St %.3f (f %.1f Hz), Cl rms "
                    "%.3f\n", o->angles[k], ctx[k].st.st, ctx[k].st.f_peak,

@@ -89,6 +89,15 @@ UNIT_TEST(bad_arguments)
         "vortex: --source takes window or cells");
     bad("object --shape sphere --sources 2.5 -o x.wav",
         "object: --sources takes a whole number");
+    /* --calibrate: the sphere's published St holds for Re 800-3e5; strip
+       theory takes its St from the section */
+    bad("object --shape sphere --speed 0.1 --calibrate sphere -o x.wav",
+        "the published St 0.2 holds for Re 800-300000");
+    bad("object --shape club --method strip --section textures/cylinder.wav "
+        "--calibrate cylinder -o x.wav",
+        "--method strip takes its St from the section");
+    bad("object --shape sphere --calibrate cube -o x.wav",
+        "--calibrate takes sphere, cylinder or none");
     bad("cavity --diameter 0.01 -o x.wav",
         "cavity: unknown option '--diameter'");
     bad("tree --depth 9 -o x.tree", "tree: --depth 9 is out of range");
@@ -137,6 +146,11 @@ UNIT_TEST(cavity_inflow_layer)
         r = run("info build/tests/aerotex_cavity.wav");
         UNIT_CHECK(r == 0 && said("kind=cavity") && said("theta=0.001"),
                    "info prints the cavity's theta");
+        /* and the table of what it matches (textures/README.md) */
+        UNIT_CHECK(r == 0 && said("| quantity | texture | published |") &&
+                       said("| St_L of the shear-layer tone |") &&
+                       said("Rossiter 1964"),
+                   "info prints what the texture matches, with its source");
         remove("build/tests/aerotex_cavity.wav");
     }
     remove(OUT);

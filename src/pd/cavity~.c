@@ -34,47 +34,20 @@ static void cavity_tilde_dsp(t_cavity_tilde *x, t_signal **sp)
     aero_pd_dsp(&x->x_base, sp, 1, cavity_tilde_process);
 }
 
-static void cavity_tilde_length(t_cavity_tilde *x, t_floatarg f)
-{
-    if (aero_cavity_model_set_length(&x->x_model, f))
-        pd_error(x, OBJ ": length %g m out of range (%g..%g)", f,
-                 AERO_CAVITY_SIZE_MIN, AERO_CAVITY_SIZE_MAX);
-}
+/* --- messages: the setters, refusals worded from the table -------------- */
 
-static void cavity_tilde_depth(t_cavity_tilde *x, t_floatarg f)
-{
-    if (aero_cavity_model_set_depth(&x->x_model, f))
-        pd_error(x, OBJ ": depth %g m out of range (%g..%g)", f,
-                 AERO_CAVITY_SIZE_MIN, AERO_CAVITY_SIZE_MAX);
-}
-
-static void cavity_tilde_width(t_cavity_tilde *x, t_floatarg f)
-{
-    if (aero_cavity_model_set_width(&x->x_model, f))
-        pd_error(x, OBJ ": width %g m out of range (%g..%g)", f,
-                 AERO_CAVITY_SIZE_MIN, AERO_CAVITY_SIZE_MAX);
-}
-
-static void cavity_tilde_gain(t_cavity_tilde *x, t_floatarg f)
-{
-    if (aero_cavity_model_set_gain_db(&x->x_model, f))
-        pd_error(x, OBJ ": gain %g dB out of range (%g..%g)", f,
-                 AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX);
-}
-
-static void cavity_tilde_ramp(t_cavity_tilde *x, t_floatarg f)
-{
-    if (aero_cavity_model_set_ramp_ms(&x->x_model, f))
-        pd_error(x, OBJ ": ramp %g ms out of range (0..%g)", f,
-                 AERO_RAMP_MS_MAX);
-}
-
-static void cavity_tilde_exponent(t_cavity_tilde *x, t_floatarg f)
-{
-    if (aero_cavity_model_set_exponent(&x->x_model, f))
-        pd_error(x, OBJ ": exponent %g out of range (0..%g)", f,
-                 AERO_CAVITY_EXPONENT_MAX);
-}
+AERO_PD_SETTER(cavity_tilde, t_cavity_tilde, length, x_model,
+               aero_cavity_model_set_length)
+AERO_PD_SETTER(cavity_tilde, t_cavity_tilde, depth, x_model,
+               aero_cavity_model_set_depth)
+AERO_PD_SETTER(cavity_tilde, t_cavity_tilde, width, x_model,
+               aero_cavity_model_set_width)
+AERO_PD_SETTER(cavity_tilde, t_cavity_tilde, gain, x_model,
+               aero_cavity_model_set_gain_db)
+AERO_PD_SETTER(cavity_tilde, t_cavity_tilde, ramp, x_model,
+               aero_cavity_model_set_ramp_ms)
+AERO_PD_SETTER(cavity_tilde, t_cavity_tilde, exponent, x_model,
+               aero_cavity_model_set_exponent)
 
 static void cavity_tilde_seed(t_cavity_tilde *x, t_floatarg f)
 {
@@ -110,21 +83,26 @@ static void cavity_tilde_model(t_cavity_tilde *x)
     aero_cavity_model_set_texture(&x->x_model, NULL, err, sizeof(err));
 }
 
+#define SIZE AERO_PD_RANGE(AERO_CAVITY_SIZE_MIN, AERO_CAVITY_SIZE_MAX, "m")
+
 static const aero_pd_method cavity_tilde_methods[] = {
-    {"length", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_length, 0},
-    {"L", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_length, 0},
-    {"depth", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_depth, 0},
-    {"D", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_depth, 0},
-    {"width", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_width, 0},
-    {"W", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_width, 0},
-    {"gain", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_gain, 0},
-    {"ramp", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_ramp, 0},
-    {"seed", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_seed, 0},
-    {"exponent", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_exponent, 0},
-    {"listener", AERO_PD_LIST, 3, (t_method)cavity_tilde_listener, 0},
-    {"texture", AERO_PD_SYMBOL, 0, (t_method)cavity_tilde_texture, 0},
+    {"length", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_length, 0, SIZE},
+    {"L", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_length, 0, SIZE},
+    {"depth", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_depth, 0, SIZE},
+    {"D", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_depth, 0, SIZE},
+    {"width", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_width, 0, SIZE},
+    {"W", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_width, 0, SIZE},
+    {"gain", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_gain, 0,
+     AERO_PD_RANGE(AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX, "dB")},
+    {"ramp", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_ramp, 0,
+     AERO_PD_RANGE(0, AERO_RAMP_MS_MAX, "ms")},
+    {"seed", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_seed, 0, AERO_PD_NO_RULE},
+    {"exponent", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_exponent, 0,
+     AERO_PD_RANGE(0, AERO_CAVITY_EXPONENT_MAX, NULL)},
+    {"listener", AERO_PD_LIST, 3, (t_method)cavity_tilde_listener, 0, AERO_PD_NO_RULE},
+    {"texture", AERO_PD_SYMBOL, 0, (t_method)cavity_tilde_texture, 0, AERO_PD_NO_RULE},
     {"model", AERO_PD_BANG, 0, (t_method)cavity_tilde_model,
-     AERO_PD_MESSAGE_ONLY},
+     AERO_PD_MESSAGE_ONLY, AERO_PD_NO_RULE},
 };
 
 static const aero_pd_spec cavity_tilde_spec = {

@@ -224,8 +224,7 @@ static void fieldsound_tilde_demo(t_fieldsound_tilde *x, t_symbol *s,
     if (argc >= 1) {
         if (argv[0].a_type != A_FLOAT ||
             aero_pd_whole(atom_getfloat(argv), 4, 128, &size)) {
-            pd_error(x, OBJ ": demo size must be a whole number 4..128 "
-                     "vertices, using 32");
+            aero_pd_refused(&x->x_base, "demo", atom_getfloat(argv));
             size = 32;
         }
     }
@@ -264,26 +263,12 @@ static void fieldsound_tilde_listener(t_fieldsound_tilde *x, t_symbol *s,
         aero_pd_bad_ears(&x->x_base, e.n);
 }
 
-static void fieldsound_tilde_speed(t_fieldsound_tilde *x, t_floatarg f)
-{
-    if (aero_field_render_set_speed(&x->x_render, f))
-        pd_error(x, OBJ ": speed %g frames/s out of range (0..%g]", f,
-                 AERO_FIELD_SPEED_MAX);
-}
-
-static void fieldsound_tilde_gain(t_fieldsound_tilde *x, t_floatarg f)
-{
-    if (aero_field_render_set_gain_db(&x->x_render, f))
-        pd_error(x, OBJ ": gain %g dB out of range (%g..%g)", f,
-                 AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX);
-}
-
-static void fieldsound_tilde_ramp(t_fieldsound_tilde *x, t_floatarg f)
-{
-    if (aero_field_render_set_ramp_ms(&x->x_render, f))
-        pd_error(x, OBJ ": ramp %g ms out of range (0..%g)", f,
-                 AERO_RAMP_MS_MAX);
-}
+AERO_PD_SETTER(fieldsound_tilde, t_fieldsound_tilde, speed, x_render,
+               aero_field_render_set_speed)
+AERO_PD_SETTER(fieldsound_tilde, t_fieldsound_tilde, gain, x_render,
+               aero_field_render_set_gain_db)
+AERO_PD_SETTER(fieldsound_tilde, t_fieldsound_tilde, ramp, x_render,
+               aero_field_render_set_ramp_ms)
 
 /* a changed parameter: check it, then preprocess again */
 static void fieldsound_tilde_reparam(t_fieldsound_tilde *x,
@@ -354,24 +339,32 @@ static void fieldsound_tilde_velocity(t_fieldsound_tilde *x, t_floatarg f)
 /* --- creation --------------------------------------------------------- */
 
 static const aero_pd_method fieldsound_tilde_methods[] = {
-    {"sync", AERO_PD_SWITCH, 0, NULL, 0},
-    {"listener", AERO_PD_LIST, 3, (t_method)fieldsound_tilde_listener, 0},
-    {"speed", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_speed, 0},
-    {"gain", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_gain, 0},
-    {"ramp", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_ramp, 0},
-    {"threshold", AERO_PD_LIST, 3, (t_method)fieldsound_tilde_threshold, 0},
-    {"map", AERO_PD_LIST, 4, (t_method)fieldsound_tilde_map, 0},
-    {"zero", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_zero, 0},
-    {"vscale", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_vscale, 0},
-    {"log", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_log, 0},
-    {"velocity", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_velocity, 0},
-    {"demo", AERO_PD_LIST, 1, (t_method)fieldsound_tilde_demo, 0},
+    {"sync", AERO_PD_SWITCH, 0, NULL, 0, AERO_PD_NO_RULE},
+    {"listener", AERO_PD_LIST, 3, (t_method)fieldsound_tilde_listener, 0,
+     AERO_PD_NO_RULE},
+    {"speed", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_speed, 0,
+     AERO_PD_RANGE_NOTE(0, AERO_FIELD_SPEED_MAX, "frames/s", "above 0")},
+    {"gain", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_gain, 0,
+     AERO_PD_RANGE(AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX, "dB")},
+    {"ramp", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_ramp, 0,
+     AERO_PD_RANGE(0, AERO_RAMP_MS_MAX, "ms")},
+    /* the volume's parameters: aero_field_params_check words refusals */
+    {"threshold", AERO_PD_LIST, 3, (t_method)fieldsound_tilde_threshold, 0,
+     AERO_PD_NO_RULE},
+    {"map", AERO_PD_LIST, 4, (t_method)fieldsound_tilde_map, 0, AERO_PD_NO_RULE},
+    {"zero", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_zero, 0, AERO_PD_NO_RULE},
+    {"vscale", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_vscale, 0, AERO_PD_NO_RULE},
+    {"log", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_log, 0, AERO_PD_NO_RULE},
+    {"velocity", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_velocity, 0,
+     AERO_PD_NO_RULE},
+    {"demo", AERO_PD_LIST, 1, (t_method)fieldsound_tilde_demo, 0,
+     AERO_PD_RANGE_NOTE(4, 128, "vertices", "a whole number; using 32")},
     {"open", AERO_PD_SYMBOL, 0, (t_method)fieldsound_tilde_open,
-     AERO_PD_MESSAGE_ONLY},
+     AERO_PD_MESSAGE_ONLY, AERO_PD_NO_RULE},
     {"play", AERO_PD_BANG, 0, (t_method)fieldsound_tilde_play,
-     AERO_PD_MESSAGE_ONLY},
+     AERO_PD_MESSAGE_ONLY, AERO_PD_NO_RULE},
     {"stop", AERO_PD_BANG, 0, (t_method)fieldsound_tilde_stop,
-     AERO_PD_MESSAGE_ONLY},
+     AERO_PD_MESSAGE_ONLY, AERO_PD_NO_RULE},
 };
 
 static const aero_pd_spec fieldsound_tilde_spec = {

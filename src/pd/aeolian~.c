@@ -21,7 +21,7 @@ typedef struct _aeolian_tilde {
     t_object x_obj;
     t_float x_f;
     aero_pd_base x_base;
-    aero_aeolian x_engine;
+    aero_aeolian x_core;
     double x_pose_time; /* logical time of the last pose */
 } t_aeolian_tilde;
 
@@ -31,36 +31,36 @@ static int aeolian_tilde_process(void *obj, const float *in,
                                  float *const *out, int n)
 {
     t_aeolian_tilde *x = obj;
-    return aero_aeolian_process(&x->x_engine, in, out, n);
+    return aero_aeolian_process(&x->x_core, in, out, n);
 }
 
 static void aeolian_tilde_dsp(t_aeolian_tilde *x, t_signal **sp)
 {
-    if (aero_aeolian_set_sample_rate(&x->x_engine, sp[0]->s_sr))
+    if (aero_aeolian_set_sample_rate(&x->x_core, sp[0]->s_sr))
         pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
     aero_pd_dsp(&x->x_base, sp, 1, aeolian_tilde_process);
 }
 
 /* --- messages (each also a creation flag of the same name) --------------- */
 
-AERO_PD_SETTER(aeolian_tilde, t_aeolian_tilde, diameter, x_engine,
+AERO_PD_SETTER(aeolian_tilde, t_aeolian_tilde, diameter, x_core,
                aero_aeolian_set_diameter)
-AERO_PD_SETTER(aeolian_tilde, t_aeolian_tilde, length, x_engine,
+AERO_PD_SETTER(aeolian_tilde, t_aeolian_tilde, length, x_core,
                aero_aeolian_set_length)
-AERO_PD_SETTER(aeolian_tilde, t_aeolian_tilde, gain, x_engine,
+AERO_PD_SETTER(aeolian_tilde, t_aeolian_tilde, gain, x_core,
                aero_aeolian_set_gain_db)
-AERO_PD_SETTER(aeolian_tilde, t_aeolian_tilde, ramp, x_engine,
+AERO_PD_SETTER(aeolian_tilde, t_aeolian_tilde, ramp, x_core,
                aero_aeolian_set_ramp_ms)
-AERO_PD_SETTER(aeolian_tilde, t_aeolian_tilde, roll, x_engine,
+AERO_PD_SETTER(aeolian_tilde, t_aeolian_tilde, roll, x_core,
                aero_aeolian_set_roll_deg)
-AERO_PD_SETTER_WHOLE(aeolian_tilde, t_aeolian_tilde, n, x_engine,
+AERO_PD_SETTER_WHOLE(aeolian_tilde, t_aeolian_tilde, n, x_core,
                      aero_aeolian_set_sources)
-AERO_PD_SETTER(aeolian_tilde, t_aeolian_tilde, exponent, x_engine,
+AERO_PD_SETTER(aeolian_tilde, t_aeolian_tilde, exponent, x_core,
                aero_aeolian_set_exponent)
 
 static void aeolian_tilde_seed(t_aeolian_tilde *x, t_floatarg f)
 {
-    aero_aeolian_set_seed(&x->x_engine, aero_pd_seed(f));
+    aero_aeolian_set_seed(&x->x_core, aero_pd_seed(f));
 }
 
 static void aeolian_tilde_listener(t_aeolian_tilde *x, t_symbol *s, int argc,
@@ -68,7 +68,7 @@ static void aeolian_tilde_listener(t_aeolian_tilde *x, t_symbol *s, int argc,
 {
     aero_ears e;
     if (aero_pd_ears(&x->x_base, s, argc, argv, &e) &&
-        aero_aeolian_set_ears(&x->x_engine, &e))
+        aero_aeolian_set_ears(&x->x_core, &e))
         aero_pd_bad_ears(&x->x_base, e.n);
 }
 
@@ -82,14 +82,14 @@ static int aeolian_tilde_set_texture(void *core, aero_texture *t, char *err,
 static void aeolian_tilde_texture(t_aeolian_tilde *x, t_symbol *name)
 {
     aero_pd_load_texture(&x->x_base, aeolian_tilde_class, name,
-                         aeolian_tilde_set_texture, &x->x_engine,
+                         aeolian_tilde_set_texture, &x->x_core,
                          "using the Strouhal/Reynolds model");
 }
 
 static void aeolian_tilde_model(t_aeolian_tilde *x)
 {
     char err[8];
-    aero_aeolian_set_texture(&x->x_engine, NULL, err, sizeof(err));
+    aero_aeolian_set_texture(&x->x_core, NULL, err, sizeof(err));
 }
 
 /* pose|place ax ay az bx by bz [ux uy uz]: the stick's ends, and the
@@ -109,8 +109,8 @@ static void aeolian_tilde_pose(t_aeolian_tilde *x, t_symbol *s, int argc,
     x->x_pose_time = clock_getlogicaltime();
     if (!strcmp(s->s_name, "place")) /* a jump, no motion */
         interval = -1.0;
-    if (aero_aeolian_set_pose(&x->x_engine, v, v + 3, interval) ||
-        (argc == 9 && aero_aeolian_set_reference(&x->x_engine, v + 6)))
+    if (aero_aeolian_set_pose(&x->x_core, v, v + 3, interval) ||
+        (argc == 9 && aero_aeolian_set_reference(&x->x_core, v + 6)))
         aero_pd_refused_list(&x->x_base, s->s_name);
 }
 
@@ -120,7 +120,7 @@ static void aeolian_tilde_wind(t_aeolian_tilde *x, t_symbol *s, int argc,
     double v[3];
     if (aero_pd_floats(x, OBJ, s->s_name, argc, argv, 3, v))
         return;
-    if (aero_aeolian_set_wind(&x->x_engine, v))
+    if (aero_aeolian_set_wind(&x->x_core, v))
         aero_pd_refused_list(&x->x_base, s->s_name);
 }
 
@@ -177,7 +177,7 @@ static void *aeolian_tilde_new(t_symbol *s, int argc, t_atom *argv)
     (void)s;
     t_aeolian_tilde *x = (t_aeolian_tilde *)pd_new(aeolian_tilde_class);
     aero_pd_base_init(&x->x_base, x, &aeolian_tilde_spec, argc, argv);
-    if (aero_aeolian_init(&x->x_engine, sys_getsr(),
+    if (aero_aeolian_init(&x->x_core, sys_getsr(),
                           x->x_base.stereo ? 2 : 1, aero_pd_default_seed()))
         pd_error(x, OBJ ": sample rate %g not usable: 44100 Hz until the "
                  "DSP starts", sys_getsr());
@@ -190,7 +190,7 @@ static void *aeolian_tilde_new(t_symbol *s, int argc, t_atom *argv)
 static void aeolian_tilde_free(t_aeolian_tilde *x)
 {
     aero_pd_base_free(&x->x_base);
-    aero_aeolian_free(&x->x_engine);
+    aero_aeolian_free(&x->x_core);
 }
 
 AERO_PD_EXPORT void aeolian_tilde_setup(void)

@@ -22,7 +22,7 @@ typedef struct _leafwave_tilde {
     t_float x_f;
     aero_pd_base x_base;
     aero_pd_wind x_wind;
-    aero_leafwave x_model;
+    aero_leafwave x_core;
     int x_ok; /* the core is initialised */
 } t_leafwave_tilde;
 
@@ -40,12 +40,12 @@ static int leafwave_tilde_process(void *obj, const float *in,
     }
     /* the inlet is the speed along the wind's direction; the core takes
        the block's mean and reports a clamp */
-    return aero_leafwave_process(&x->x_model, in, out, n);
+    return aero_leafwave_process(&x->x_core, in, out, n);
 }
 
 static void leafwave_tilde_dsp(t_leafwave_tilde *x, t_signal **sp)
 {
-    if (x->x_ok && aero_leafwave_set_sample_rate(&x->x_model, sp[0]->s_sr))
+    if (x->x_ok && aero_leafwave_set_sample_rate(&x->x_core, sp[0]->s_sr))
         pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
     aero_pd_dsp(&x->x_base, sp, 1, leafwave_tilde_process);
 }
@@ -60,11 +60,11 @@ static void leafwave_tilde_open(t_leafwave_tilde *x, t_symbol *name)
     if (!x->x_ok)
         return;
     if (aero_pd_load_tree(&x->x_base, leafwave_tilde_class, name, &t)) {
-        aero_leafwave_clear_tree(&x->x_model);
+        aero_leafwave_clear_tree(&x->x_core);
         return;
     }
     int nleaves = t.nleaves;
-    if (aero_leafwave_set_tree(&x->x_model, &t, err, sizeof(err))) {
+    if (aero_leafwave_set_tree(&x->x_core, &t, err, sizeof(err))) {
         pd_error(x, OBJ ": %s: %s: silent", name->s_name, err);
         return;
     }
@@ -82,7 +82,7 @@ static void leafwave_tilde_open(t_leafwave_tilde *x, t_symbol *name)
         int n = 0;                                                        \
         if (x->x_ok &&                                                    \
             ((whole && aero_pd_whole_of(&x->x_base, #msg, f, &n)) ||      \
-             call(&x->x_model, whole ? n : f)))                           \
+             call(&x->x_core, whole ? n : f)))                           \
             aero_pd_refused(&x->x_base, #msg, f);                         \
     }
 
@@ -108,31 +108,37 @@ static void leafwave_tilde_set_tables(t_leafwave_tilde *x, double fm,
         return;
     if (aero_pd_whole_of(&x->x_base, "tables", per_octave, &per) ||
         aero_pd_whole_of(&x->x_base, "octaves", octaves, &oct) ||
-        aero_leafwave_set_tables(&x->x_model, fm, per, oct))
+        aero_leafwave_set_tables(&x->x_core, fm, per, oct))
         aero_pd_refused(&x->x_base, what, value);
 }
 
 static void leafwave_tilde_fm(t_leafwave_tilde *x, t_floatarg f)
 {
-    leafwave_tilde_set_tables(x, f, x->x_model.tables_per_octave,
-                              x->x_model.octaves, "fm", f);
+    double fm;
+    int per, oct;
+    aero_leafwave_tables(&x->x_core, &fm, &per, &oct);
+    leafwave_tilde_set_tables(x, f, per, oct, "fm", f);
 }
 
 static void leafwave_tilde_tables(t_leafwave_tilde *x, t_floatarg f)
 {
-    leafwave_tilde_set_tables(x, x->x_model.fm, f, x->x_model.octaves,
-                              "tables", f);
+    double fm;
+    int per, oct;
+    aero_leafwave_tables(&x->x_core, &fm, &per, &oct);
+    leafwave_tilde_set_tables(x, fm, f, oct, "tables", f);
 }
 
 static void leafwave_tilde_octaves(t_leafwave_tilde *x, t_floatarg f)
 {
-    leafwave_tilde_set_tables(x, x->x_model.fm, x->x_model.tables_per_octave,
-                              f, "octaves", f);
+    double fm;
+    int per, oct;
+    aero_leafwave_tables(&x->x_core, &fm, &per, &oct);
+    leafwave_tilde_set_tables(x, fm, per, f, "octaves", f);
 }
 
 static void leafwave_tilde_seed(t_leafwave_tilde *x, t_floatarg f)
 {
-    if (x->x_ok && aero_leafwave_set_seed(&x->x_model, aero_pd_seed(f)))
+    if (x->x_ok && aero_leafwave_set_seed(&x->x_core, aero_pd_seed(f)))
         pd_error(x, OBJ ": out of memory restarting from seed %g", f);
 }
 
@@ -148,8 +154,8 @@ static void leafwave_tilde_wind(t_leafwave_tilde *x, t_symbol *s, int argc,
        signal overrides it), as in [treebranch~] */
     x->x_f = (t_float)speed;
     const double *dir = x->x_wind.dir;
-    aero_leafwave_set_direction(&x->x_model, dir[0], dir[1], dir[2]);
-    if (aero_leafwave_set_speed(&x->x_model, speed) == 1)
+    aero_leafwave_set_direction(&x->x_core, dir[0], dir[1], dir[2]);
+    if (aero_leafwave_set_speed(&x->x_core, speed) == 1)
         aero_pd_clamped(&x->x_base);
 }
 
@@ -159,7 +165,7 @@ static void leafwave_tilde_mic(t_leafwave_tilde *x, t_symbol *s, int argc,
     double v[3];
     if (!x->x_ok || aero_pd_floats(x, OBJ, s->s_name, argc, argv, 3, v))
         return;
-    if (aero_leafwave_set_mic(&x->x_model, v[0], v[1], v[2]))
+    if (aero_leafwave_set_mic(&x->x_core, v[0], v[1], v[2]))
         aero_pd_refused_list(&x->x_base, s->s_name);
 }
 
@@ -168,7 +174,7 @@ static void leafwave_tilde_listener(t_leafwave_tilde *x, t_symbol *s,
 {
     aero_ears e;
     if (x->x_ok && aero_pd_ears(&x->x_base, s, argc, argv, &e) &&
-        aero_leafwave_set_ears(&x->x_model, &e))
+        aero_leafwave_set_ears(&x->x_core, &e))
         aero_pd_bad_ears(&x->x_base, e.n);
 }
 
@@ -233,7 +239,7 @@ static void *leafwave_tilde_new(t_symbol *s, int argc, t_atom *argv)
     t_leafwave_tilde *x = (t_leafwave_tilde *)pd_new(leafwave_tilde_class);
     aero_pd_base_init(&x->x_base, x, &leafwave_tilde_spec, argc, argv);
     aero_pd_wind_init(&x->x_wind);
-    x->x_ok = aero_leafwave_init(&x->x_model, sys_getsr(),
+    x->x_ok = aero_leafwave_init(&x->x_core, sys_getsr(),
                                  x->x_base.stereo ? 2 : 1,
                                  aero_pd_default_seed()) == 0;
     if (!x->x_ok)
@@ -254,7 +260,7 @@ static void leafwave_tilde_free(t_leafwave_tilde *x)
 {
     aero_pd_base_free(&x->x_base);
     if (x->x_ok)
-        aero_leafwave_free(&x->x_model);
+        aero_leafwave_free(&x->x_core);
 }
 
 AERO_PD_EXPORT void leafwave_tilde_setup(void)

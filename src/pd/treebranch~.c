@@ -17,7 +17,7 @@ typedef struct _treebranch_tilde {
     t_float x_f;
     aero_pd_base x_base;
     aero_pd_wind x_wind;
-    aero_treebranch x_tb;
+    aero_treebranch x_core;
 } t_treebranch_tilde;
 
 #define OBJ "[treebranch~]"
@@ -28,12 +28,12 @@ static int treebranch_tilde_process(void *obj, const float *in,
     t_treebranch_tilde *x = obj;
     /* the inlet is the speed along the wind's direction; the core takes
        the block's mean and reports a clamp */
-    return aero_treebranch_process_speed(&x->x_tb, in, out[0], out[1], n);
+    return aero_treebranch_process_speed(&x->x_core, in, out[0], out[1], n);
 }
 
 static void treebranch_tilde_dsp(t_treebranch_tilde *x, t_signal **sp)
 {
-    if (aero_treebranch_set_sample_rate(&x->x_tb, sp[0]->s_sr))
+    if (aero_treebranch_set_sample_rate(&x->x_core, sp[0]->s_sr))
         pd_error(x, OBJ ": bad sample rate %g (or out of memory)",
                  sp[0]->s_sr);
     aero_pd_dsp(&x->x_base, sp, 1, treebranch_tilde_process);
@@ -44,10 +44,10 @@ static void treebranch_tilde_open(t_treebranch_tilde *x, t_symbol *name)
 {
     aero_tree t;
     if (aero_pd_load_tree(&x->x_base, treebranch_tilde_class, name, &t)) {
-        aero_treebranch_set_tree(&x->x_tb, NULL);
+        aero_treebranch_set_tree(&x->x_core, NULL);
         return;
     }
-    if (aero_treebranch_set_tree(&x->x_tb, &t))
+    if (aero_treebranch_set_tree(&x->x_core, &t))
         pd_error(x, OBJ ": %s: out of memory: silent", name->s_name);
 }
 
@@ -60,8 +60,8 @@ static void treebranch_tilde_wind(t_treebranch_tilde *x, t_symbol *s,
     /* the inlet's float is the speed along the direction (a connected
        signal overrides it) */
     x->x_f = (t_float)speed;
-    aero_treebranch_set_direction(&x->x_tb, x->x_wind.dir);
-    if (aero_treebranch_set_speed(&x->x_tb, speed) == 1)
+    aero_treebranch_set_direction(&x->x_core, x->x_wind.dir);
+    if (aero_treebranch_set_speed(&x->x_core, speed) == 1)
         aero_pd_clamped(&x->x_base);
 }
 
@@ -70,7 +70,7 @@ static void treebranch_tilde_listener(t_treebranch_tilde *x, t_symbol *s,
 {
     aero_ears e;
     if (aero_pd_ears(&x->x_base, s, argc, argv, &e) &&
-        aero_treebranch_set_ears(&x->x_tb, &e))
+        aero_treebranch_set_ears(&x->x_core, &e))
         aero_pd_bad_ears(&x->x_base, e.n);
 }
 
@@ -80,21 +80,21 @@ static void treebranch_tilde_mic(t_treebranch_tilde *x, t_symbol *s,
     double v[3];
     if (aero_pd_floats(x, OBJ, s->s_name, argc, argv, 3, v))
         return;
-    if (aero_treebranch_set_mic(&x->x_tb, v))
+    if (aero_treebranch_set_mic(&x->x_core, v))
         aero_pd_refused_list(&x->x_base, s->s_name);
 }
 
-AERO_PD_SETTER(treebranch_tilde, t_treebranch_tilde, k, x_tb,
+AERO_PD_SETTER(treebranch_tilde, t_treebranch_tilde, k, x_core,
                aero_treebranch_set_mic_k)
-AERO_PD_SETTER(treebranch_tilde, t_treebranch_tilde, gain, x_tb,
+AERO_PD_SETTER(treebranch_tilde, t_treebranch_tilde, gain, x_core,
                aero_treebranch_set_gain_db)
-AERO_PD_SETTER(treebranch_tilde, t_treebranch_tilde, ramp, x_tb,
+AERO_PD_SETTER(treebranch_tilde, t_treebranch_tilde, ramp, x_core,
                aero_treebranch_set_ramp_ms)
-AERO_PD_SETTER(treebranch_tilde, t_treebranch_tilde, stiffness, x_tb,
+AERO_PD_SETTER(treebranch_tilde, t_treebranch_tilde, stiffness, x_core,
                aero_treebranch_set_stiffness)
-AERO_PD_SETTER(treebranch_tilde, t_treebranch_tilde, beta, x_tb,
+AERO_PD_SETTER(treebranch_tilde, t_treebranch_tilde, beta, x_core,
                aero_treebranch_set_beta)
-AERO_PD_SETTER(treebranch_tilde, t_treebranch_tilde, alpha, x_tb,
+AERO_PD_SETTER(treebranch_tilde, t_treebranch_tilde, alpha, x_core,
                aero_treebranch_set_alpha)
 
 static void treebranch_tilde_seed(t_treebranch_tilde *x, t_floatarg f)
@@ -103,7 +103,7 @@ static void treebranch_tilde_seed(t_treebranch_tilde *x, t_floatarg f)
         aero_pd_refused(&x->x_base, "seed", f);
         return;
     }
-    if (aero_treebranch_set_seed(&x->x_tb, (uint32_t)(int64_t)f))
+    if (aero_treebranch_set_seed(&x->x_core, (uint32_t)(int64_t)f))
         pd_error(x, OBJ ": out of memory restarting the tree: silent");
 }
 
@@ -146,9 +146,9 @@ static void *treebranch_tilde_new(t_symbol *s, int argc, t_atom *argv)
         (t_treebranch_tilde *)pd_new(treebranch_tilde_class);
     aero_pd_base_init(&x->x_base, x, &treebranch_tilde_spec, argc, argv);
     aero_pd_wind_init(&x->x_wind);
-    if (aero_treebranch_init(&x->x_tb, sys_getsr(), aero_pd_default_seed()))
+    if (aero_treebranch_init(&x->x_core, sys_getsr(), aero_pd_default_seed()))
         pd_error(x, OBJ ": out of memory: silent");
-    aero_treebranch_set_stereo(&x->x_tb, x->x_base.stereo);
+    aero_treebranch_set_stereo(&x->x_core, x->x_base.stereo);
     /* the tree file: the first argument, when it is not a flag */
     t_symbol *file = aero_pd_first_symbol(&argc, &argv);
     if (file)
@@ -161,7 +161,7 @@ static void *treebranch_tilde_new(t_symbol *s, int argc, t_atom *argv)
 static void treebranch_tilde_free(t_treebranch_tilde *x)
 {
     aero_pd_base_free(&x->x_base);
-    aero_treebranch_free(&x->x_tb);
+    aero_treebranch_free(&x->x_core);
 }
 
 AERO_PD_EXPORT void treebranch_tilde_setup(void)

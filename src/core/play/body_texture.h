@@ -118,6 +118,13 @@ void aero_body_texture_set_seed(aero_body_texture *s, uint32_t seed);
  * pose, one after a 0.5 s pause and interval_s < 0 jump without motion */
 int aero_body_texture_set_pose(aero_body_texture *s, const double pos[3],
                                const double quat[4], double interval_s);
+/* the orientation of the last pose (w x y z), for a pose that moves alone */
+static inline void aero_body_texture_orientation(const aero_body_texture *s,
+                                                 double quat[4])
+{
+    for (int k = 0; k < 4; k++)
+        quat[k] = s->pose_to[3 + k];
+}
 int aero_body_texture_set_wind(aero_body_texture *s, const double w[3]);
 /* ears 0..e->n-1 (e->n at most the ears the player was made with) */
 int aero_body_texture_set_ears(aero_body_texture *s, const aero_ears *e);

@@ -43,6 +43,21 @@ int aero_field_render_set_speed(aero_field_render *r, double fps);
 int aero_field_render_set_ears(aero_field_render *r, const aero_ears *e);
 /* the same, there at once (offline paths start here) */
 int aero_field_render_place_ears(aero_field_render *r, const aero_ears *e);
+/* what a host reads: a volume to play, the listener clamped at Mach 0.3,
+   where the listener is going */
+static inline int aero_field_render_has_sources(const aero_field_render *r)
+{
+    return r->src != 0;
+}
+static inline int aero_field_render_clamped(const aero_field_render *r)
+{
+    return r->clamped;
+}
+static inline const double *aero_field_render_target(
+    const aero_field_render *r)
+{
+    return r->target;
+}
 int aero_field_render_set_ramp_ms(aero_field_render *r, double ms);
 int aero_field_render_set_gain_db(aero_field_render *r, double db);
 void aero_field_render_play(aero_field_render *r);

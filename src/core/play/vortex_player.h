@@ -91,6 +91,10 @@ int aero_vortex_player_set_sample_rate(aero_vortex_player *m, double sr);
 /* number of source volumes 1..AERO_VORTEX_MAX_SOURCES (allocates; new
    sources start at the origin, speed 0, with fresh random offsets) */
 int aero_vortex_player_set_count(aero_vortex_player *m, int n);
+static inline int aero_vortex_player_count(const aero_vortex_player *m)
+{
+    return m->n;
+}
 /* per-source speeds (m/s, >= 0), count values for sources 0..count-1 */
 int aero_vortex_player_set_speeds(aero_vortex_player *m, const double *u,
                                   int count);

@@ -95,13 +95,11 @@ static int parse_sizes(const char *p, int n, double *out)
    its regions' diameters and nu), the diameters and nu into s */
 static int strip_re_law(aero_body_texture *s, const aero_texture *t)
 {
-    char method[16], list[8192];
-    double nu = aero_texture_getd(t, "nu", 0.0);
+    double nu = t->head.nu;
     s->tex_nu = nu;
-    return aero_texture_get(t, "method", method, sizeof method) &&
-           !strcmp(method, "strip") && nu > 0.0 && nu < 1.0 &&
-           aero_texture_get(t, "diameters", list, sizeof list) &&
-           parse_sizes(list, t->regions, s->region_d) == 0;
+    return !strcmp(t->head.method, "strip") && nu > 0.0 && nu < 1.0 &&
+           t->head.diameters &&
+           parse_sizes(t->head.diameters, t->regions, s->region_d) == 0;
 }
 
 /* "x,y,z;x,y,z;..." into centre, n triples: 0 or -1 */
@@ -127,21 +125,18 @@ int aero_body_texture_set_texture(aero_body_texture *s, aero_texture *t,
                                   char *err, size_t errlen)
 {
     if (t) {
-        char kind[32], sym[32], list[8192];
+        const char *kind = t->head.kind, *sym = t->head.symmetry;
         double centre[3 * AERO_BODY_MAX_SOURCES];
-        double v0 = aero_texture_getd(t, "v0", 0.0);
-        double d = aero_texture_getd(t, "diameter", 0.0);
+        double v0 = t->head.v0;
+        double d = t->head.diameter;
         int sphere;
-        if (!aero_texture_get(t, "kind", kind, sizeof(kind)) ||
-            strcmp(kind, "object")) {
+        if (strcmp(kind, "object")) {
             snprintf(err, errlen, "not an object texture (kind=%s; aeolian "
                      "textures are for [aeolian~])",
-                     aero_texture_get(t, "kind", kind, sizeof(kind))
-                         ? kind : "missing");
+                     kind[0] ? kind : "missing");
             return -1;
         }
-        if (!aero_texture_get(t, "symmetry", sym, sizeof(sym)) ||
-            (strcmp(sym, "sphere") && strcmp(sym, "axis"))) {
+        if (strcmp(sym, "sphere") && strcmp(sym, "axis")) {
             snprintf(err, errlen, "symmetry must be sphere or axis");
             return -1;
         }
@@ -161,8 +156,8 @@ int aero_body_texture_set_texture(aero_body_texture *s, aero_texture *t,
                 snprintf(err, errlen, "angles must increase within 0..180");
                 return -1;
             }
-        if (!aero_texture_get(t, "centres", list, sizeof(list)) ||
-            parse_centres(list, t->regions, centre)) {
+        if (!t->head.centres ||
+            parse_centres(t->head.centres, t->regions, centre)) {
             snprintf(err, errlen, "centres= must list %d x,y,z triples "
                      "separated by ';'", t->regions);
             return -1;
@@ -172,7 +167,7 @@ int aero_body_texture_set_texture(aero_body_texture *s, aero_texture *t,
         s->tex_rate = t->rate;
         s->regions = t->regions;
         s->sphere = sphere;
-        s->mirror = fabs(aero_texture_getd(t, "mirror", 0.0)) >= 1.0;
+        s->mirror = fabs(t->head.mirror) >= 1.0;
         memcpy(s->centre, centre, sizeof(double) * 3 * t->regions);
         s->re_law = !sphere && strip_re_law(s, t);
     }

@@ -233,9 +233,8 @@ int aero_cavity_model_set_texture(aero_cavity_model *m, aero_texture *t,
                                   char *err, size_t errlen)
 {
     if (t) {
-        char kind[32] = "";
-        aero_texture_get(t, "kind", kind, sizeof(kind));
-        double v0 = aero_texture_getd(t, "v0", 0.0);
+        const char *kind = t->head.kind;
+        double v0 = t->head.v0;
         if (strcmp(kind, "cavity")) {
             snprintf(err, errlen, "not a cavity texture (kind=%s)",
                      kind[0] ? kind : "?");
@@ -246,7 +245,7 @@ int aero_cavity_model_set_texture(aero_cavity_model *m, aero_texture *t,
             return -1;
         }
         m->texture_v0 = v0;
-        double l0 = aero_texture_getd(t, "length", 0.0);
+        double l0 = t->head.length;
         m->texture_length = l0 > 0.0 && l0 < 100.0 ? l0 : 0.0;
         m->texture_pos = fmod(fabs(m->texture_pos) * t->frames, t->frames);
     }

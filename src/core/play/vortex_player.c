@@ -221,13 +221,11 @@ int aero_vortex_player_set_texture(aero_vortex_player *m, aero_texture *t,
 {
     float *tab = NULL;
     if (t) {
-        char kind[32];
+        const char *kind = t->head.kind;
         int F = t->frames, ns = t->channels;
-        if (!aero_texture_get(t, "kind", kind, sizeof kind) ||
-            strcmp(kind, "vortex") || !t->speeds) {
+        if (strcmp(kind, "vortex") || !t->speeds) {
             snprintf(err, errlen, "not a vortex texture (kind=%s)",
-                     aero_texture_get(t, "kind", kind, sizeof kind) ? kind
-                                                                    : "?");
+                     kind[0] ? kind : "?");
             return -1;
         }
         if (F < 4 || ns < 1 || !(t->rate > 0.0)) {

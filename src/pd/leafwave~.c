@@ -99,41 +99,37 @@ SETTER(rub, aero_leafwave_set_rub, 0)
 SETTER(reach, aero_leafwave_set_reach, 0)
 SETTER(voices, aero_leafwave_set_voices, 1)
 
-static void leafwave_tilde_set_tables(t_leafwave_tilde *x, double fm,
-                                      double per_octave, double octaves,
-                                      const char *what, t_float value)
+/* fm (which 0), tables per octave (1) or octaves (2): the other two stay */
+static void leafwave_tilde_set_tables(t_leafwave_tilde *x, int which,
+                                      t_float f, const char *what)
 {
+    double v[3];
     int per, oct;
     if (!x->x_ok)
         return;
-    if (aero_pd_whole_of(&x->x_base, "tables", per_octave, &per) ||
-        aero_pd_whole_of(&x->x_base, "octaves", octaves, &oct) ||
-        aero_leafwave_set_tables(&x->x_core, fm, per, oct))
-        aero_pd_refused(&x->x_base, what, value);
+    aero_leafwave_tables(&x->x_core, &v[0], &per, &oct);
+    v[1] = per;
+    v[2] = oct;
+    v[which] = f;
+    if (aero_pd_whole_of(&x->x_base, "tables", v[1], &per) ||
+        aero_pd_whole_of(&x->x_base, "octaves", v[2], &oct) ||
+        aero_leafwave_set_tables(&x->x_core, v[0], per, oct))
+        aero_pd_refused(&x->x_base, what, f);
 }
 
 static void leafwave_tilde_fm(t_leafwave_tilde *x, t_floatarg f)
 {
-    double fm;
-    int per, oct;
-    aero_leafwave_tables(&x->x_core, &fm, &per, &oct);
-    leafwave_tilde_set_tables(x, f, per, oct, "fm", f);
+    leafwave_tilde_set_tables(x, 0, f, "fm");
 }
 
 static void leafwave_tilde_tables(t_leafwave_tilde *x, t_floatarg f)
 {
-    double fm;
-    int per, oct;
-    aero_leafwave_tables(&x->x_core, &fm, &per, &oct);
-    leafwave_tilde_set_tables(x, fm, f, oct, "tables", f);
+    leafwave_tilde_set_tables(x, 1, f, "tables");
 }
 
 static void leafwave_tilde_octaves(t_leafwave_tilde *x, t_floatarg f)
 {
-    double fm;
-    int per, oct;
-    aero_leafwave_tables(&x->x_core, &fm, &per, &oct);
-    leafwave_tilde_set_tables(x, fm, per, f, "octaves", f);
+    leafwave_tilde_set_tables(x, 2, f, "octaves");
 }
 
 static void leafwave_tilde_seed(t_leafwave_tilde *x, t_floatarg f)

@@ -13,7 +13,11 @@ rm -rf "$NEW"
 mkdir -p "$NEW"
 # the tree as git tracks it, with the times kept (so the built core, copied
 # too, is not rebuilt), and the built core objects
-git ls-files -z | xargs -0 cp -p --parents -t "$NEW"
+if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
+    git ls-files -z | xargs -0 cp -p --parents -t "$NEW"
+else # an unpacked source archive: all of it but the build
+    tar -cf - --exclude=./build --exclude='./*.pd_linux' . | tar -xpf - -C "$NEW"
+fi
 mkdir -p "$NEW/build"
 cp -pR build/core "$NEW/build/"
 cp -p build/libaero_core.a "$NEW/build/"

@@ -21,7 +21,7 @@ typedef struct _body_tilde {
     t_object x_obj;
     t_float x_f;
     aero_pd_base x_base;
-    aero_body_texture x_core;
+    aero_body x_core;
     double x_pose_time; /* logical time of the last pose */
 } t_body_tilde;
 
@@ -31,12 +31,12 @@ static int body_tilde_process(void *obj, const float *in, float *const *out,
                               int n)
 {
     t_body_tilde *x = obj;
-    return aero_body_texture_process(&x->x_core, in, out, n);
+    return aero_body_process(&x->x_core, in, out, n);
 }
 
 static void body_tilde_dsp(t_body_tilde *x, t_signal **sp)
 {
-    if (aero_body_texture_set_sample_rate(&x->x_core, sp[0]->s_sr))
+    if (aero_body_set_sample_rate(&x->x_core, sp[0]->s_sr))
         pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
     aero_pd_dsp(&x->x_base, sp, 1, body_tilde_process);
 }
@@ -46,7 +46,7 @@ static void body_tilde_dsp(t_body_tilde *x, t_signal **sp)
 static int body_tilde_set_texture(void *core, aero_texture *t, char *err,
                                   size_t len)
 {
-    return aero_body_texture_set_texture(core, t, err, len);
+    return aero_body_set_texture(core, t, err, len);
 }
 
 /* file I/O here, in the message domain, never in perform */
@@ -73,7 +73,7 @@ static void body_tilde_pose(t_body_tilde *x, t_symbol *s, int argc,
     if (aero_pd_floats(x, OBJ, s->s_name, argc, argv, argc, v))
         return;
     if (argc == 3)
-        aero_body_texture_orientation(&x->x_core, q);
+        aero_body_orientation(&x->x_core, q);
     else if (argc == 6) {
         if (!(fabs(v[3]) < 1e9 && fabs(v[4]) < 1e9 && fabs(v[5]) < 1e9)) {
             aero_pd_refused_list(&x->x_base, s->s_name);
@@ -86,7 +86,7 @@ static void body_tilde_pose(t_body_tilde *x, t_symbol *s, int argc,
     x->x_pose_time = now;
     if (!strcmp(s->s_name, "place")) /* a jump, no motion */
         interval = -1.0;
-    if (aero_body_texture_set_pose(&x->x_core, v, q, interval))
+    if (aero_body_set_pose(&x->x_core, v, q, interval))
         aero_pd_refused_list(&x->x_base, s->s_name);
 }
 
@@ -96,7 +96,7 @@ static void body_tilde_wind(t_body_tilde *x, t_symbol *s, int argc,
     double v[3];
     if (aero_pd_floats(x, OBJ, s->s_name, argc, argv, 3, v))
         return;
-    if (aero_body_texture_set_wind(&x->x_core, v))
+    if (aero_body_set_wind(&x->x_core, v))
         aero_pd_refused_list(&x->x_base, s->s_name);
 }
 
@@ -105,22 +105,22 @@ static void body_tilde_listener(t_body_tilde *x, t_symbol *s, int argc,
 {
     aero_ears e;
     if (aero_pd_ears(&x->x_base, s, argc, argv, &e) &&
-        aero_body_texture_set_ears(&x->x_core, &e))
+        aero_body_set_ears(&x->x_core, &e))
         aero_pd_bad_ears(&x->x_base, e.n);
 }
 
 AERO_PD_SETTER(body_tilde, t_body_tilde, scale, x_core,
-               aero_body_texture_set_scale)
+               aero_body_set_scale)
 AERO_PD_SETTER(body_tilde, t_body_tilde, exponent, x_core,
-               aero_body_texture_set_exponent)
+               aero_body_set_exponent)
 AERO_PD_SETTER(body_tilde, t_body_tilde, gain, x_core,
-               aero_body_texture_set_gain_db)
+               aero_body_set_gain_db)
 AERO_PD_SETTER(body_tilde, t_body_tilde, ramp, x_core,
-               aero_body_texture_set_ramp_ms)
+               aero_body_set_ramp_ms)
 
 static void body_tilde_seed(t_body_tilde *x, t_floatarg f)
 {
-    aero_body_texture_set_seed(&x->x_core, aero_pd_seed(f));
+    aero_body_set_seed(&x->x_core, aero_pd_seed(f));
 }
 
 /* --- creation -------------------------------------------------------------- */
@@ -162,7 +162,7 @@ static void *body_tilde_new(t_symbol *s, int argc, t_atom *argv)
     (void)s;
     t_body_tilde *x = (t_body_tilde *)pd_new(body_tilde_class);
     aero_pd_base_init(&x->x_base, x, &body_tilde_spec, argc, argv);
-    if (aero_body_texture_init(&x->x_core, sys_getsr(),
+    if (aero_body_init(&x->x_core, sys_getsr(),
                                x->x_base.stereo ? 2 : 1,
                                aero_pd_default_seed()))
         pd_error(x, OBJ ": out of memory for the delay lines: silent");
@@ -175,7 +175,7 @@ static void *body_tilde_new(t_symbol *s, int argc, t_atom *argv)
 static void body_tilde_free(t_body_tilde *x)
 {
     aero_pd_base_free(&x->x_base);
-    aero_body_texture_free(&x->x_core);
+    aero_body_free(&x->x_core);
 }
 
 AERO_PD_EXPORT void body_tilde_setup(void)

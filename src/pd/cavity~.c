@@ -15,7 +15,7 @@ typedef struct _cavity_tilde {
     t_object x_obj;
     t_float x_f;
     aero_pd_base x_base;
-    aero_cavity_model x_core;
+    aero_cavity x_core;
 } t_cavity_tilde;
 
 #define OBJ "[cavity~]"
@@ -24,12 +24,12 @@ static int cavity_tilde_process(void *obj, const float *in,
                                 float *const *out, int n)
 {
     t_cavity_tilde *x = obj;
-    return aero_cavity_model_process(&x->x_core, in, out, n);
+    return aero_cavity_process(&x->x_core, in, out, n);
 }
 
 static void cavity_tilde_dsp(t_cavity_tilde *x, t_signal **sp)
 {
-    if (aero_cavity_model_set_sample_rate(&x->x_core, sp[0]->s_sr))
+    if (aero_cavity_set_sample_rate(&x->x_core, sp[0]->s_sr))
         pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
     aero_pd_dsp(&x->x_base, sp, 1, cavity_tilde_process);
 }
@@ -37,21 +37,21 @@ static void cavity_tilde_dsp(t_cavity_tilde *x, t_signal **sp)
 /* --- messages: the setters, refusals worded from the table -------------- */
 
 AERO_PD_SETTER(cavity_tilde, t_cavity_tilde, length, x_core,
-               aero_cavity_model_set_length)
+               aero_cavity_set_length)
 AERO_PD_SETTER(cavity_tilde, t_cavity_tilde, depth, x_core,
-               aero_cavity_model_set_depth)
+               aero_cavity_set_depth)
 AERO_PD_SETTER(cavity_tilde, t_cavity_tilde, width, x_core,
-               aero_cavity_model_set_width)
+               aero_cavity_set_width)
 AERO_PD_SETTER(cavity_tilde, t_cavity_tilde, gain, x_core,
-               aero_cavity_model_set_gain_db)
+               aero_cavity_set_gain_db)
 AERO_PD_SETTER(cavity_tilde, t_cavity_tilde, ramp, x_core,
-               aero_cavity_model_set_ramp_ms)
+               aero_cavity_set_ramp_ms)
 AERO_PD_SETTER(cavity_tilde, t_cavity_tilde, exponent, x_core,
-               aero_cavity_model_set_exponent)
+               aero_cavity_set_exponent)
 
 static void cavity_tilde_seed(t_cavity_tilde *x, t_floatarg f)
 {
-    aero_cavity_model_set_seed(&x->x_core, aero_pd_seed(f));
+    aero_cavity_set_seed(&x->x_core, aero_pd_seed(f));
 }
 
 static void cavity_tilde_listener(t_cavity_tilde *x, t_symbol *s, int argc,
@@ -59,14 +59,14 @@ static void cavity_tilde_listener(t_cavity_tilde *x, t_symbol *s, int argc,
 {
     aero_ears e;
     if (aero_pd_ears(&x->x_base, s, argc, argv, &e) &&
-        aero_cavity_model_set_ears(&x->x_core, &e))
+        aero_cavity_set_ears(&x->x_core, &e))
         aero_pd_bad_ears(&x->x_base, e.n);
 }
 
 static int cavity_tilde_set_texture(void *core, aero_texture *t, char *err,
                                     size_t len)
 {
-    return aero_cavity_model_set_texture(core, t, err, len);
+    return aero_cavity_set_texture(core, t, err, len);
 }
 
 /* file I/O here, in the message domain, never in perform */
@@ -80,7 +80,7 @@ static void cavity_tilde_texture(t_cavity_tilde *x, t_symbol *name)
 static void cavity_tilde_model(t_cavity_tilde *x)
 {
     char err[8];
-    aero_cavity_model_set_texture(&x->x_core, NULL, err, sizeof(err));
+    aero_cavity_set_texture(&x->x_core, NULL, err, sizeof(err));
 }
 
 #define SIZE AERO_PD_RANGE(AERO_CAVITY_SIZE_MIN, AERO_CAVITY_SIZE_MAX, "m")
@@ -114,7 +114,7 @@ static void *cavity_tilde_new(t_symbol *s, int argc, t_atom *argv)
     (void)s;
     t_cavity_tilde *x = (t_cavity_tilde *)pd_new(cavity_tilde_class);
     aero_pd_base_init(&x->x_base, x, &cavity_tilde_spec, argc, argv);
-    if (aero_cavity_model_init(&x->x_core, sys_getsr(),
+    if (aero_cavity_init(&x->x_core, sys_getsr(),
                                aero_pd_default_seed()))
         pd_error(x, OBJ ": sample rate %g not usable: 44100 Hz until the "
                  "DSP starts", sys_getsr());
@@ -126,7 +126,7 @@ static void *cavity_tilde_new(t_symbol *s, int argc, t_atom *argv)
 static void cavity_tilde_free(t_cavity_tilde *x)
 {
     aero_pd_base_free(&x->x_base);
-    aero_cavity_model_free(&x->x_core);
+    aero_cavity_free(&x->x_core);
 }
 
 AERO_PD_EXPORT void cavity_tilde_setup(void)

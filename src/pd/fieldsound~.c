@@ -19,7 +19,7 @@ static t_class *fieldsound_tilde_class;
 typedef struct _fieldsound_tilde {
     t_object x_obj;
     aero_pd_base x_base;           /* canvas and table; own outlets */
-    aero_field_render x_core;
+    aero_fieldsound x_core;
     aero_field_sources x_sources;  /* what x_core plays */
     aero_field_params x_par;
     int x_creating;                /* flags read: preprocess once, after */
@@ -69,10 +69,10 @@ static void fieldsound_tilde_install(t_fieldsound_tilde *x)
     }
     aero_field_sources old = x->x_sources;
     x->x_sources = fresh;
-    if (aero_field_render_set_sources(&x->x_core, &x->x_sources)) {
+    if (aero_fieldsound_set_sources(&x->x_core, &x->x_sources)) {
         pd_error(x, OBJ ": out of memory");
         aero_field_sources_free(&x->x_sources);
-        aero_field_render_set_sources(&x->x_core, NULL);
+        aero_fieldsound_set_sources(&x->x_core, NULL);
     }
     aero_field_sources_free(&old);
     const aero_field_sources *s = &x->x_sources;
@@ -86,7 +86,7 @@ static void fieldsound_tilde_install(t_fieldsound_tilde *x)
     SETFLOAT(a + 1, (t_float)seconds);
     outlet_anything(x->x_info, gensym("ready"), 2, a);
     if (x->x_pending_play) {
-        aero_field_render_play(&x->x_core);
+        aero_fieldsound_play(&x->x_core);
         x->x_done = 0;
     }
     x->x_pending_play = 0;
@@ -188,13 +188,13 @@ static int fieldsound_tilde_process(void *obj, const float *in,
 {
     t_fieldsound_tilde *x = obj;
     (void)in;
-    int playing = aero_field_render_process(&x->x_core, out[0], n);
+    int playing = aero_fieldsound_process(&x->x_core, out[0], n);
     if ((x->x_was_playing && !playing &&
-         aero_field_render_has_sources(&x->x_core)) ||
-        (aero_field_render_clamped(&x->x_core) && !x->x_clamped)) {
+         aero_fieldsound_has_sources(&x->x_core)) ||
+        (aero_fieldsound_clamped(&x->x_core) && !x->x_clamped)) {
         if (x->x_was_playing && !playing)
             x->x_done = 1;
-        x->x_clamped = aero_field_render_clamped(&x->x_core);
+        x->x_clamped = aero_fieldsound_clamped(&x->x_core);
         clock_delay(x->x_report, 0);
     }
     x->x_was_playing = playing;
@@ -203,7 +203,7 @@ static int fieldsound_tilde_process(void *obj, const float *in,
 
 static void fieldsound_tilde_dsp(t_fieldsound_tilde *x, t_signal **sp)
 {
-    if (aero_field_render_set_sample_rate(&x->x_core, sp[0]->s_sr))
+    if (aero_fieldsound_set_sample_rate(&x->x_core, sp[0]->s_sr))
         pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
     aero_pd_dsp(&x->x_base, sp, 0, fieldsound_tilde_process);
 }
@@ -242,17 +242,17 @@ static void fieldsound_tilde_play(t_fieldsound_tilde *x)
         x->x_pending_play = 1; /* as soon as it is ready */
         return;
     }
-    if (!aero_field_render_has_sources(&x->x_core)) {
+    if (!aero_fieldsound_has_sources(&x->x_core)) {
         pd_error(x, OBJ ": nothing to play (open a volume or 'demo')");
         return;
     }
-    aero_field_render_play(&x->x_core);
+    aero_fieldsound_play(&x->x_core);
 }
 
 static void fieldsound_tilde_stop(t_fieldsound_tilde *x)
 {
     x->x_pending_play = 0;
-    aero_field_render_stop(&x->x_core);
+    aero_fieldsound_stop(&x->x_core);
 }
 
 static void fieldsound_tilde_listener(t_fieldsound_tilde *x, t_symbol *s,
@@ -260,16 +260,16 @@ static void fieldsound_tilde_listener(t_fieldsound_tilde *x, t_symbol *s,
 {
     aero_ears e;
     if (aero_pd_ears(&x->x_base, s, argc, argv, &e) &&
-        aero_field_render_set_ears(&x->x_core, &e))
+        aero_fieldsound_set_ears(&x->x_core, &e))
         aero_pd_bad_ears(&x->x_base, e.n);
 }
 
 AERO_PD_SETTER(fieldsound_tilde, t_fieldsound_tilde, speed, x_core,
-               aero_field_render_set_speed)
+               aero_fieldsound_set_speed)
 AERO_PD_SETTER(fieldsound_tilde, t_fieldsound_tilde, gain, x_core,
-               aero_field_render_set_gain_db)
+               aero_fieldsound_set_gain_db)
 AERO_PD_SETTER(fieldsound_tilde, t_fieldsound_tilde, ramp, x_core,
-               aero_field_render_set_ramp_ms)
+               aero_fieldsound_set_ramp_ms)
 
 /* a changed parameter: check it, then preprocess again */
 static void fieldsound_tilde_reparam(t_fieldsound_tilde *x,
@@ -383,11 +383,11 @@ static void *fieldsound_tilde_new(t_symbol *s, int argc, t_atom *argv)
     clock_free(x->x_base.clock);
     x->x_base.clock = NULL;
     aero_field_params_default(&x->x_par);
-    if (aero_field_render_init(&x->x_core, sys_getsr()))
+    if (aero_fieldsound_init(&x->x_core, sys_getsr()))
         pd_error(x, OBJ ": sample rate %g not usable: 44100 Hz until the "
                  "DSP starts", sys_getsr());
     aero_ears start = aero_ears_at(1, 0, 0);
-    aero_field_render_place_ears(&x->x_core, &start);
+    aero_fieldsound_place_ears(&x->x_core, &start);
     x->x_poll = clock_new(x, (t_method)fieldsound_tilde_poll);
     x->x_report = clock_new(x, (t_method)fieldsound_tilde_report);
     x->x_out = outlet_new(&x->x_obj, &s_signal);
@@ -399,9 +399,9 @@ static void *fieldsound_tilde_new(t_symbol *s, int argc, t_atom *argv)
     aero_pd_parse_flags(x, &fieldsound_tilde_spec, argc, argv);
     x->x_creating = 0;
     /* the listener starts where it was put, not ramped from (1, 0, 0) */
-    memcpy(start.pos[0], aero_field_render_target(&x->x_core),
+    memcpy(start.pos[0], aero_fieldsound_target(&x->x_core),
            sizeof start.pos[0]);
-    aero_field_render_place_ears(&x->x_core, &start);
+    aero_fieldsound_place_ears(&x->x_core, &start);
     if (x->x_dir)
         x->x_demo_size = 0;
     fieldsound_tilde_prepare(x);
@@ -414,7 +414,7 @@ static void fieldsound_tilde_free(t_fieldsound_tilde *x)
     aero_pd_base_free(&x->x_base);
     clock_free(x->x_poll);
     clock_free(x->x_report);
-    aero_field_render_free(&x->x_core);
+    aero_fieldsound_free(&x->x_core);
     aero_field_sources_free(&x->x_sources);
     outlet_free(x->x_out);
     outlet_free(x->x_info);

@@ -21,7 +21,7 @@ typedef struct _vortex_tilde {
     t_object x_obj;
     t_float x_f;
     aero_pd_base x_base;
-    aero_vortex_player x_core;
+    aero_vortex x_core;
 } t_vortex_tilde;
 
 #define OBJ "[vortex~]"
@@ -30,12 +30,12 @@ static int vortex_tilde_process(void *obj, const float *in,
                                 float *const *out, int n)
 {
     t_vortex_tilde *x = obj;
-    return aero_vortex_player_process(&x->x_core, in, out, n);
+    return aero_vortex_process(&x->x_core, in, out, n);
 }
 
 static void vortex_tilde_dsp(t_vortex_tilde *x, t_signal **sp)
 {
-    if (aero_vortex_player_set_sample_rate(&x->x_core, sp[0]->s_sr))
+    if (aero_vortex_set_sample_rate(&x->x_core, sp[0]->s_sr))
         pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
     aero_pd_dsp(&x->x_base, sp, 1, vortex_tilde_process);
 }
@@ -43,7 +43,7 @@ static void vortex_tilde_dsp(t_vortex_tilde *x, t_signal **sp)
 static int vortex_tilde_set_texture(void *core, aero_texture *t, char *err,
                                     size_t len)
 {
-    return aero_vortex_player_set_texture(core, t, err, len);
+    return aero_vortex_set_texture(core, t, err, len);
 }
 
 /* file I/O here, in the message domain, never in perform */
@@ -54,7 +54,7 @@ static void vortex_tilde_texture(t_vortex_tilde *x, t_symbol *name)
 }
 
 AERO_PD_SETTER_WHOLE(vortex_tilde, t_vortex_tilde, n, x_core,
-                     aero_vortex_player_set_count)
+                     aero_vortex_set_count)
 
 /* a list of floats of at most max entries; the count or -1 */
 static int float_list(t_vortex_tilde *x, const char *what, int argc,
@@ -79,10 +79,10 @@ static int float_list(t_vortex_tilde *x, const char *what, int argc,
 static void vortex_tilde_speeds(t_vortex_tilde *x, t_symbol *s, int argc,
                                 t_atom *argv)
 {
-    int n = aero_vortex_player_count(&x->x_core), count;
+    int n = aero_vortex_count(&x->x_core), count;
     double *v = getbytes(sizeof(double) * (size_t)(argc > 0 ? argc : 1));
     count = float_list(x, s->s_name, argc, argv, 1, v, n);
-    if (count > 0 && aero_vortex_player_set_speeds(&x->x_core, v, count))
+    if (count > 0 && aero_vortex_set_speeds(&x->x_core, v, count))
         aero_pd_refused_list(&x->x_base, s->s_name);
     freebytes(v, sizeof(double) * (size_t)(argc > 0 ? argc : 1));
 }
@@ -90,11 +90,11 @@ static void vortex_tilde_speeds(t_vortex_tilde *x, t_symbol *s, int argc,
 static void vortex_tilde_positions(t_vortex_tilde *x, t_symbol *s, int argc,
                                    t_atom *argv)
 {
-    int n = aero_vortex_player_count(&x->x_core), count;
+    int n = aero_vortex_count(&x->x_core), count;
     double *v = getbytes(sizeof(double) * (size_t)(argc > 0 ? argc : 1));
     count = float_list(x, s->s_name, argc, argv, 3, v, n);
     if (count > 0 &&
-        aero_vortex_player_set_positions(&x->x_core, v, count))
+        aero_vortex_set_positions(&x->x_core, v, count))
         aero_pd_refused_list(&x->x_base, s->s_name);
     freebytes(v, sizeof(double) * (size_t)(argc > 0 ? argc : 1));
 }
@@ -104,36 +104,36 @@ static void vortex_tilde_listener(t_vortex_tilde *x, t_symbol *s, int argc,
 {
     aero_ears e;
     if (aero_pd_ears(&x->x_base, s, argc, argv, &e) &&
-        aero_vortex_player_set_ears(&x->x_core, &e))
+        aero_vortex_set_ears(&x->x_core, &e))
         aero_pd_bad_ears(&x->x_base, e.n);
 }
 
 AERO_PD_SETTER(vortex_tilde, t_vortex_tilde, gain, x_core,
-               aero_vortex_player_set_gain_db)
+               aero_vortex_set_gain_db)
 AERO_PD_SETTER(vortex_tilde, t_vortex_tilde, clip, x_core,
-               aero_vortex_player_set_clip)
+               aero_vortex_set_clip)
 AERO_PD_SETTER(vortex_tilde, t_vortex_tilde, ramp, x_core,
-               aero_vortex_player_set_ramp_ms)
+               aero_vortex_set_ramp_ms)
 /* combustion noise (combustion_noise.h): the flame's mean heat release */
 AERO_PD_SETTER(vortex_tilde, t_vortex_tilde, power, x_core,
-               aero_vortex_player_set_power_kw)
+               aero_vortex_set_power_kw)
 AERO_PD_SETTER(vortex_tilde, t_vortex_tilde, length, x_core,
-               aero_vortex_player_set_flame_length)
+               aero_vortex_set_flame_length)
 AERO_PD_SETTER(vortex_tilde, t_vortex_tilde, strouhal, x_core,
-               aero_vortex_player_set_strouhal)
+               aero_vortex_set_strouhal)
 AERO_PD_SETTER(vortex_tilde, t_vortex_tilde, fluctuation, x_core,
-               aero_vortex_player_set_fluctuation)
+               aero_vortex_set_fluctuation)
 
 static void vortex_tilde_falloff(t_vortex_tilde *x, t_floatarg f)
 {
     if ((f != 1 && f != 3) ||
-        aero_vortex_player_set_falloff(&x->x_core, (int)f))
+        aero_vortex_set_falloff(&x->x_core, (int)f))
         aero_pd_refused(&x->x_base, "falloff", f);
 }
 
 static void vortex_tilde_seed(t_vortex_tilde *x, t_floatarg f)
 {
-    aero_vortex_player_set_seed(&x->x_core, aero_pd_seed(f));
+    aero_vortex_set_seed(&x->x_core, aero_pd_seed(f));
 }
 
 static const aero_pd_method vortex_tilde_methods[] = {
@@ -183,7 +183,7 @@ static void *vortex_tilde_new(t_symbol *s, int argc, t_atom *argv)
     (void)s;
     t_vortex_tilde *x = (t_vortex_tilde *)pd_new(vortex_tilde_class);
     aero_pd_base_init(&x->x_base, x, &vortex_tilde_spec, argc, argv);
-    if (aero_vortex_player_init(&x->x_core, sys_getsr(), x->x_base.stereo,
+    if (aero_vortex_init(&x->x_core, sys_getsr(), x->x_base.stereo,
                                 aero_pd_default_seed()))
         pd_error(x, OBJ ": out of memory for the sources: silent");
     aero_pd_parse_flags(x, &vortex_tilde_spec, argc, argv);
@@ -194,7 +194,7 @@ static void *vortex_tilde_new(t_symbol *s, int argc, t_atom *argv)
 static void vortex_tilde_free(t_vortex_tilde *x)
 {
     aero_pd_base_free(&x->x_base);
-    aero_vortex_player_free(&x->x_core);
+    aero_vortex_free(&x->x_core);
 }
 
 AERO_PD_EXPORT void vortex_tilde_setup(void)

@@ -29,10 +29,10 @@ int main(int argc, char **argv)
 {
     char mode = argc > 1 ? argv[1][0] : 'c';
     double seconds = argc > 2 ? atof(argv[2]) : 10.0;
-    static aero_cavity_model cavity[N];
+    static aero_cavity cavity[N];
     static aero_aeolian_model aeolian[N];
     for (int k = 0; k < N; k++) {
-        aero_cavity_model_init(&cavity[k], 48000, k + 1);
+        aero_cavity_init(&cavity[k], 48000, k + 1);
         aero_aeolian_model_init(&aeolian[k], 48000, 1, k + 1);
     }
     float in[64], out[64];
@@ -45,7 +45,7 @@ int main(int argc, char **argv)
             if (mode == 'a')
                 aero_aeolian_model_process(&aeolian[k], in, (float *[]){out}, 64);
             else
-                aero_cavity_model_process(&cavity[k], in, (float *[]){out}, 64);
+                aero_cavity_process(&cavity[k], in, (float *[]){out}, 64);
             check += out[7];
         }
     }
@@ -54,6 +54,6 @@ int main(int argc, char **argv)
            mode == 'a' ? "[aeolian~]" : "[cavity~]",
            1e9 * t / (blocks * 64.0 * N), N, seconds, check);
     for (int k = 0; k < N; k++)
-        aero_cavity_model_free(&cavity[k]);
+        aero_cavity_free(&cavity[k]);
     return 0;
 }

@@ -49,8 +49,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     float *out[2] = {l, r};
     double v[7];
     char err[256];
-    aero_body_texture s;
-    if (aero_body_texture_init(&s, 44100.0, stereo ? 2 : 1, 1))
+    aero_body s;
+    if (aero_body_init(&s, 44100.0, stereo ? 2 : 1, 1))
         return 0;
     while (in.left) {
         unsigned op = fuzz_byte(&in) % 13;
@@ -64,33 +64,33 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                 double q[4];
                 if (fabs(v[3]) < 1e9 && fabs(v[4]) < 1e9 && fabs(v[5]) < 1e9) {
                     aero_body_quaternion_from_rotvec(v + 3, q);
-                    aero_body_texture_set_pose(&s, v, q, op ? -1.0 : a);
+                    aero_body_set_pose(&s, v, q, op ? -1.0 : a);
                 }
             } else
-                aero_body_texture_set_pose(&s, v, v + 3, op ? -1.0 : a);
+                aero_body_set_pose(&s, v, v + 3, op ? -1.0 : a);
             break;
         }
         case 2:
             v[0] = a, v[1] = fuzz_number(&in), v[2] = fuzz_number(&in);
-            aero_body_texture_set_wind(&s, v);
+            aero_body_set_wind(&s, v);
             break;
         case 3: {
             aero_ears e = {1 + (int)(fuzz_byte(&in) % 3), {{a}}};
             e.pos[0][1] = fuzz_number(&in), e.pos[0][2] = fuzz_number(&in);
             memcpy(e.pos[1], e.pos[0], sizeof e.pos[1]);
-            aero_body_texture_set_ears(&s, &e);
+            aero_body_set_ears(&s, &e);
             break;
         }
-        case 4: aero_body_texture_set_scale(&s, a); break;
-        case 5: aero_body_texture_set_exponent(&s, a); break;
-        case 6: aero_body_texture_set_gain_db(&s, a); break;
-        case 7: aero_body_texture_set_ramp_ms(&s, a); break;
-        case 8: aero_body_texture_set_seed(&s, (uint32_t)fuzz_byte(&in) * 2654435761u); break;
-        case 9: aero_body_texture_set_sample_rate(&s, a); break;
+        case 4: aero_body_set_scale(&s, a); break;
+        case 5: aero_body_set_exponent(&s, a); break;
+        case 6: aero_body_set_gain_db(&s, a); break;
+        case 7: aero_body_set_ramp_ms(&s, a); break;
+        case 8: aero_body_set_seed(&s, (uint32_t)fuzz_byte(&in) * 2654435761u); break;
+        case 9: aero_body_set_sample_rate(&s, a); break;
         case 10: { /* texture: a new one, or none */
             aero_texture *t = (fuzz_byte(&in) & 1) ? synthetic_texture(&in)
                                                    : NULL;
-            if (aero_body_texture_set_texture(&s, t, err, sizeof(err)) && t) {
+            if (aero_body_set_texture(&s, t, err, sizeof(err)) && t) {
                 aero_texture_free(t);
                 free(t);
             }
@@ -100,7 +100,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             int n = 1 + (int)((fuzz_byte(&in) << 2 | fuzz_byte(&in)) % MAXN);
             for (int i = 0; i < n; i++)
                 speed[i] = (float)a;
-            aero_body_texture_process(&s, (fuzz_byte(&in) & 1) ? speed : NULL,
+            aero_body_process(&s, (fuzz_byte(&in) & 1) ? speed : NULL,
                                       out, n);
             FUZZ_REQUIRE(fuzz_finite(l, n) && (!stereo || fuzz_finite(r, n)),
                          "non-finite output");
@@ -108,6 +108,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         }
         }
     }
-    aero_body_texture_free(&s);
+    aero_body_free(&s);
     return 0;
 }

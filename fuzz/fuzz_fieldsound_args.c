@@ -20,12 +20,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     char err[512];
     aero_field_params par;
     aero_field_sources src;
-    aero_field_render r;
+    aero_fieldsound r;
     memset(&src, 0, sizeof(src));
     aero_field_params_default(&par);
-    aero_field_render_init(&r, 44100.0);
+    aero_fieldsound_init(&r, 44100.0);
     aero_ears start = aero_ears_at(1, 0, 0);
-    aero_field_render_place_ears(&r, &start);
+    aero_fieldsound_place_ears(&r, &start);
     while (in.left) {
         unsigned op = fuzz_byte(&in) % 16;
         double v[4];
@@ -42,15 +42,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         case 5: p.use_velocity = fuzz_byte(&in) & 1; break;
         case 6: {
             aero_ears e = aero_ears_at(v[0], v[1], v[2]);
-            aero_field_render_set_ears(&r, &e);
+            aero_fieldsound_set_ears(&r, &e);
             break;
         }
-        case 7: aero_field_render_set_speed(&r, v[0]); break;
-        case 8: aero_field_render_set_gain_db(&r, v[0]); break;
-        case 9: aero_field_render_set_ramp_ms(&r, v[0]); break;
-        case 10: aero_field_render_play(&r); break;
-        case 11: aero_field_render_stop(&r); break;
-        case 12: aero_field_render_set_sample_rate(&r, v[0]); break;
+        case 7: aero_fieldsound_set_speed(&r, v[0]); break;
+        case 8: aero_fieldsound_set_gain_db(&r, v[0]); break;
+        case 9: aero_fieldsound_set_ramp_ms(&r, v[0]); break;
+        case 10: aero_fieldsound_play(&r); break;
+        case 11: aero_fieldsound_stop(&r); break;
+        case 12: aero_fieldsound_set_sample_rate(&r, v[0]); break;
         case 13: { /* demo N: preprocess and swap in, as the wrapper does */
             aero_field_demo d;
             aero_volume_info info;
@@ -69,16 +69,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                into `src` first, as the wrapper does into x_sources */
             aero_field_sources old = src;
             src = fresh;
-            if (aero_field_render_set_sources(&r, &src)) {
+            if (aero_fieldsound_set_sources(&r, &src)) {
                 aero_field_sources_free(&src);
-                aero_field_render_set_sources(&r, NULL);
+                aero_fieldsound_set_sources(&r, NULL);
             }
             aero_field_sources_free(&old);
             break;
         }
         default: { /* a block of any size */
             int n = 1 + (int)((fuzz_byte(&in) << 2 | fuzz_byte(&in)) % MAXN);
-            aero_field_render_process(&r, out, n);
+            aero_fieldsound_process(&r, out, n);
             FUZZ_REQUIRE(fuzz_finite(out, n), "non-finite output");
         }
         }
@@ -86,7 +86,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if (op <= 5 && !aero_field_params_check(&p, err, sizeof(err)))
             par = p;
     }
-    aero_field_render_free(&r);
+    aero_fieldsound_free(&r);
     aero_field_sources_free(&src);
     return 0;
 }

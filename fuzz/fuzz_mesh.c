@@ -37,6 +37,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         int r = aero_body_region(&b, p, 7);
         FUZZ_REQUIRE(r >= 0 && r < 7, "region %d of 7", r);
     }
-    aero_body_free(&b);
+    aero_body_shape_free(&b);
     return 0;
 }

@@ -36,7 +36,7 @@ static void render(const aero_volume_info *v)
 {
     aero_field_params par;
     aero_field_sources src;
-    aero_field_render r;
+    aero_fieldsound r;
     static float out[N];
     char err[512];
     aero_field_params_default(&par);
@@ -45,18 +45,18 @@ static void render(const aero_volume_info *v)
         FUZZ_REQUIRE(err[0] != 0, "prepare refused without a message");
         return;
     }
-    aero_field_render_init(&r, 22050.0);
+    aero_fieldsound_init(&r, 22050.0);
     aero_ears start = aero_ears_at(v->origin[0] + 0.3, v->origin[1] + 0.1,
                                    v->origin[2]);
-    aero_field_render_place_ears(&r, &start);
-    if (!aero_field_render_set_sources(&r, &src)) {
-        aero_field_render_play(&r);
+    aero_fieldsound_place_ears(&r, &start);
+    if (!aero_fieldsound_set_sources(&r, &src)) {
+        aero_fieldsound_play(&r);
         for (int b = 0; b < 16; b++) {
-            aero_field_render_process(&r, out, N);
+            aero_fieldsound_process(&r, out, N);
             FUZZ_REQUIRE(fuzz_finite(out, N), "non-finite output");
         }
     }
-    aero_field_render_free(&r);
+    aero_fieldsound_free(&r);
     aero_field_sources_free(&src);
 }
 

@@ -81,25 +81,25 @@ static int fuzz_texture_check(const char *path)
     /* the moving 3D body */
     t = calloc(1, sizeof(*t));
     if (t && !aero_texture_load(path, t, err, sizeof(err))) {
-        aero_body_texture *body = calloc(1, sizeof(*body));
-        if (body && !aero_body_texture_init(body, 44100.0, 2, 1)) {
-            if (!aero_body_texture_set_texture(body, t, err, sizeof(err)))
+        aero_body *body = calloc(1, sizeof(*body));
+        if (body && !aero_body_init(body, 44100.0, 2, 1)) {
+            if (!aero_body_set_texture(body, t, err, sizeof(err)))
                 t = NULL; /* the player frees it */
             double wind[3] = {12.0, 3.0, 1.0}, q[4] = {0.9, 0.1, 0.3, 0.2};
             double p[3] = {0.0, 0.0, 0.0};
-            aero_body_texture_set_wind(body, wind);
+            aero_body_set_wind(body, wind);
             float speed[256], l[256], r[256];
             float *out[2] = {l, r};
             for (int i = 0; i < 256; i++)
                 speed[i] = (float)(i % 64);
             for (int b = 0; b < 4; b++) {
                 p[0] = 0.05 * b;
-                aero_body_texture_set_pose(body, p, q, 256 / 44100.0);
-                aero_body_texture_process(body, speed, out, 256);
+                aero_body_set_pose(body, p, q, 256 / 44100.0);
+                aero_body_process(body, speed, out, 256);
                 FUZZ_REQUIRE(fuzz_finite(l, 256) && fuzz_finite(r, 256),
                              "body texture player output not finite");
             }
-            aero_body_texture_free(body);
+            aero_body_free(body);
         }
         free(body);
     }
@@ -111,9 +111,9 @@ static int fuzz_texture_check(const char *path)
     /* the cavity */
     t = calloc(1, sizeof(*t));
     if (t && !aero_texture_load(path, t, err, sizeof(err))) {
-        aero_cavity_model cav;
-        aero_cavity_model_init(&cav, 48000.0, 1);
-        if (aero_cavity_model_set_texture(&cav, t, err, sizeof(err)))
+        aero_cavity cav;
+        aero_cavity_init(&cav, 48000.0, 1);
+        if (aero_cavity_set_texture(&cav, t, err, sizeof(err)))
             aero_texture_free(t); /* refused: still ours */
         else
             t = NULL;             /* the model frees it */
@@ -121,11 +121,11 @@ static int fuzz_texture_check(const char *path)
         for (int i = 0; i < 256; i++)
             speed[i] = (float)(i % 50);
         for (int b = 0; b < 4; b++) {
-            aero_cavity_model_process(&cav, speed, (float *[]){out}, 256);
+            aero_cavity_process(&cav, speed, (float *[]){out}, 256);
             FUZZ_REQUIRE(fuzz_finite(out, 256),
                          "cavity texture player output not finite");
         }
-        aero_cavity_model_free(&cav);
+        aero_cavity_free(&cav);
     } else if (t) {
         aero_texture_free(t);
     }

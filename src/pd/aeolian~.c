@@ -21,7 +21,7 @@ typedef struct _aeolian_tilde {
     t_object x_obj;
     t_float x_f;
     aero_pd_base x_base;
-    aero_aeolian x_engine;
+    aero_aeolian x_core;
     double x_pose_time; /* logical time of the last pose */
 } t_aeolian_tilde;
 
@@ -31,51 +31,36 @@ static int aeolian_tilde_process(void *obj, const float *in,
                                  float *const *out, int n)
 {
     t_aeolian_tilde *x = obj;
-    return aero_aeolian_process(&x->x_engine, in, out, n);
+    return aero_aeolian_process(&x->x_core, in, out, n);
 }
 
 static void aeolian_tilde_dsp(t_aeolian_tilde *x, t_signal **sp)
 {
-    if (aero_aeolian_set_sample_rate(&x->x_engine, sp[0]->s_sr))
+    if (aero_aeolian_set_sample_rate(&x->x_core, sp[0]->s_sr))
         pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
     aero_pd_dsp(&x->x_base, sp, 1, aeolian_tilde_process);
 }
 
 /* --- messages (each also a creation flag of the same name) --------------- */
 
-static void aeolian_tilde_diameter(t_aeolian_tilde *x, t_floatarg f)
-{
-    if (aero_aeolian_set_diameter(&x->x_engine, f))
-        pd_error(x, OBJ ": diameter %g m out of range (%g..%g), kept %g",
-                 f, AERO_AEOLIAN_D_MIN, AERO_AEOLIAN_D_MAX,
-                 x->x_engine.model.ctl_target[AERO_CTL_DIAMETER]);
-}
-
-static void aeolian_tilde_length(t_aeolian_tilde *x, t_floatarg f)
-{
-    if (aero_aeolian_set_length(&x->x_engine, f))
-        pd_error(x, OBJ ": length %g m out of range (%g..%g), kept %g",
-                 f, AERO_AEOLIAN_L_MIN, AERO_AEOLIAN_L_MAX,
-                 x->x_engine.model.ctl_target[AERO_CTL_LENGTH]);
-}
-
-static void aeolian_tilde_gain(t_aeolian_tilde *x, t_floatarg f)
-{
-    if (aero_aeolian_set_gain_db(&x->x_engine, f))
-        pd_error(x, OBJ ": gain %g dB out of range (%g..%g)", f,
-                 AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX);
-}
-
-static void aeolian_tilde_ramp(t_aeolian_tilde *x, t_floatarg f)
-{
-    if (aero_aeolian_set_ramp_ms(&x->x_engine, f))
-        pd_error(x, OBJ ": ramp %g ms out of range (0..%g)", f,
-                 AERO_RAMP_MS_MAX);
-}
+AERO_PD_SETTER(aeolian_tilde, t_aeolian_tilde, diameter, x_core,
+               aero_aeolian_set_diameter)
+AERO_PD_SETTER(aeolian_tilde, t_aeolian_tilde, length, x_core,
+               aero_aeolian_set_length)
+AERO_PD_SETTER(aeolian_tilde, t_aeolian_tilde, gain, x_core,
+               aero_aeolian_set_gain_db)
+AERO_PD_SETTER(aeolian_tilde, t_aeolian_tilde, ramp, x_core,
+               aero_aeolian_set_ramp_ms)
+AERO_PD_SETTER(aeolian_tilde, t_aeolian_tilde, roll, x_core,
+               aero_aeolian_set_roll_deg)
+AERO_PD_SETTER_WHOLE(aeolian_tilde, t_aeolian_tilde, n, x_core,
+                     aero_aeolian_set_sources)
+AERO_PD_SETTER(aeolian_tilde, t_aeolian_tilde, exponent, x_core,
+               aero_aeolian_set_exponent)
 
 static void aeolian_tilde_seed(t_aeolian_tilde *x, t_floatarg f)
 {
-    aero_aeolian_set_seed(&x->x_engine, aero_pd_seed(f));
+    aero_aeolian_set_seed(&x->x_core, aero_pd_seed(f));
 }
 
 static void aeolian_tilde_listener(t_aeolian_tilde *x, t_symbol *s, int argc,
@@ -83,7 +68,7 @@ static void aeolian_tilde_listener(t_aeolian_tilde *x, t_symbol *s, int argc,
 {
     aero_ears e;
     if (aero_pd_ears(&x->x_base, s, argc, argv, &e) &&
-        aero_aeolian_set_ears(&x->x_engine, &e))
+        aero_aeolian_set_ears(&x->x_core, &e))
         aero_pd_bad_ears(&x->x_base, e.n);
 }
 
@@ -97,14 +82,14 @@ static int aeolian_tilde_set_texture(void *core, aero_texture *t, char *err,
 static void aeolian_tilde_texture(t_aeolian_tilde *x, t_symbol *name)
 {
     aero_pd_load_texture(&x->x_base, aeolian_tilde_class, name,
-                         aeolian_tilde_set_texture, &x->x_engine,
+                         aeolian_tilde_set_texture, &x->x_core,
                          "using the Strouhal/Reynolds model");
 }
 
 static void aeolian_tilde_model(t_aeolian_tilde *x)
 {
     char err[8];
-    aero_aeolian_set_texture(&x->x_engine, NULL, err, sizeof(err));
+    aero_aeolian_set_texture(&x->x_core, NULL, err, sizeof(err));
 }
 
 /* pose|place ax ay az bx by bz [ux uy uz]: the stick's ends, and the
@@ -124,11 +109,9 @@ static void aeolian_tilde_pose(t_aeolian_tilde *x, t_symbol *s, int argc,
     x->x_pose_time = clock_getlogicaltime();
     if (!strcmp(s->s_name, "place")) /* a jump, no motion */
         interval = -1.0;
-    if (aero_aeolian_set_pose(&x->x_engine, v, v + 3, interval))
-        pd_error(x, OBJ ": pose needs two distinct finite ends within %g m",
-                 AERO_POSITION_LIMIT);
-    else if (argc == 9 && aero_aeolian_set_reference(&x->x_engine, v + 6))
-        pd_error(x, OBJ ": pose reference axis must be finite and non-zero");
+    if (aero_aeolian_set_pose(&x->x_core, v, v + 3, interval) ||
+        (argc == 9 && aero_aeolian_set_reference(&x->x_core, v + 6)))
+        aero_pd_refused_list(&x->x_base, s->s_name);
 }
 
 static void aeolian_tilde_wind(t_aeolian_tilde *x, t_symbol *s, int argc,
@@ -137,60 +120,52 @@ static void aeolian_tilde_wind(t_aeolian_tilde *x, t_symbol *s, int argc,
     double v[3];
     if (aero_pd_floats(x, OBJ, s->s_name, argc, argv, 3, v))
         return;
-    if (aero_aeolian_set_wind(&x->x_engine, v))
-        pd_error(x, OBJ ": wind must be finite, below %g m/s",
-                 AERO_MOVING_WIND_MAX);
-}
-
-static void aeolian_tilde_roll(t_aeolian_tilde *x, t_floatarg f)
-{
-    if (aero_aeolian_set_roll_deg(&x->x_engine, f))
-        pd_error(x, OBJ ": roll %g deg must be finite", f);
-}
-
-static void aeolian_tilde_sources(t_aeolian_tilde *x, t_floatarg f)
-{
-    int n;
-    if (aero_pd_whole(f, 0, AERO_STICK_MAX_SOURCES, &n) ||
-        aero_aeolian_set_sources(&x->x_engine, n))
-        pd_error(x, OBJ ": n %g: point sources must be 0 (auto: length / "
-                 "3 d) to %d", f, AERO_STICK_MAX_SOURCES);
-}
-
-static void aeolian_tilde_exponent(t_aeolian_tilde *x, t_floatarg f)
-{
-    if (aero_aeolian_set_exponent(&x->x_engine, f))
-        pd_error(x, OBJ ": exponent %g out of range (%g..%g; 3 is physical, "
-                 "6 the paper's)", f, AERO_MOVING_EXPONENT_MIN,
-                 AERO_MOVING_EXPONENT_MAX);
+    if (aero_aeolian_set_wind(&x->x_core, v))
+        aero_pd_refused_list(&x->x_base, s->s_name);
 }
 
 /* --- creation -------------------------------------------------------------- */
 
+#define DIAMETER                                                          \
+    AERO_PD_RANGE(AERO_AEOLIAN_D_MIN, AERO_AEOLIAN_D_MAX, "m")
+#define LENGTH AERO_PD_RANGE(AERO_AEOLIAN_L_MIN, AERO_AEOLIAN_L_MAX, "m")
+#define POSE                                                              \
+    AERO_PD_RANGE_NOTE(-AERO_POSITION_LIMIT, AERO_POSITION_LIMIT, "m",   \
+                       "two distinct finite ends; a finite non-zero axis")
+
 static const aero_pd_method aeolian_tilde_methods[] = {
-    {"stereo", AERO_PD_SWITCH, 0, NULL, 0},
+    {"stereo", AERO_PD_SWITCH, 0, NULL, 0, AERO_PD_NO_RULE},
     /* the diameter first, so that a texture loaded by -texture sees it */
-    {"d", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_diameter, AERO_PD_EARLY},
+    {"d", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_diameter, AERO_PD_EARLY,
+     DIAMETER},
     {"diameter", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_diameter,
-     AERO_PD_EARLY},
-    {"l", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_length, 0},
-    {"length", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_length, 0},
-    {"gain", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_gain, 0},
-    {"seed", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_seed, 0},
-    {"ramp", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_ramp, 0},
-    {"listener", AERO_PD_LIST, 3, (t_method)aeolian_tilde_listener, 0},
-    {"ears", AERO_PD_LIST, 6, (t_method)aeolian_tilde_listener, 0},
-    {"texture", AERO_PD_SYMBOL, 0, (t_method)aeolian_tilde_texture, 0},
-    {"n", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_sources, 0},
-    {"exponent", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_exponent, 0},
-    {"roll", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_roll, 0},
-    {"wind", AERO_PD_LIST, 3, (t_method)aeolian_tilde_wind, 0},
+     AERO_PD_EARLY, DIAMETER},
+    {"l", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_length, 0, LENGTH},
+    {"length", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_length, 0, LENGTH},
+    {"gain", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_gain, 0,
+     AERO_PD_RANGE(AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX, "dB")},
+    {"seed", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_seed, 0, AERO_PD_NO_RULE},
+    {"ramp", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_ramp, 0,
+     AERO_PD_RANGE(0, AERO_RAMP_MS_MAX, "ms")},
+    {"listener", AERO_PD_LIST, 3, (t_method)aeolian_tilde_listener, 0, AERO_PD_NO_RULE},
+    {"ears", AERO_PD_LIST, 6, (t_method)aeolian_tilde_listener, 0, AERO_PD_NO_RULE},
+    {"texture", AERO_PD_SYMBOL, 0, (t_method)aeolian_tilde_texture, 0, AERO_PD_NO_RULE},
+    {"n", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_n, 0,
+     AERO_PD_RANGE_NOTE(0, AERO_STICK_MAX_SOURCES, NULL,
+                        "point sources, 0: auto, length / 3 d")},
+    {"exponent", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_exponent, 0,
+     AERO_PD_RANGE_NOTE(AERO_MOVING_EXPONENT_MIN, AERO_MOVING_EXPONENT_MAX,
+                        NULL, "3 is physical, 6 the paper's")},
+    {"roll", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_roll, 0,
+     AERO_PD_NOTE("finite degrees")},
+    {"wind", AERO_PD_LIST, 3, (t_method)aeolian_tilde_wind, 0,
+     AERO_PD_RANGE_NOTE(0, AERO_MOVING_WIND_MAX, "m/s", "finite")},
     {"model", AERO_PD_BANG, 0, (t_method)aeolian_tilde_model,
-     AERO_PD_MESSAGE_ONLY},
+     AERO_PD_MESSAGE_ONLY, AERO_PD_NO_RULE},
     {"pose", AERO_PD_LIST, 0, (t_method)aeolian_tilde_pose,
-     AERO_PD_MESSAGE_ONLY},
+     AERO_PD_MESSAGE_ONLY, POSE},
     {"place", AERO_PD_LIST, 0, (t_method)aeolian_tilde_pose,
-     AERO_PD_MESSAGE_ONLY},
+     AERO_PD_MESSAGE_ONLY, POSE},
 };
 
 static const aero_pd_spec aeolian_tilde_spec = {
@@ -202,7 +177,7 @@ static void *aeolian_tilde_new(t_symbol *s, int argc, t_atom *argv)
     (void)s;
     t_aeolian_tilde *x = (t_aeolian_tilde *)pd_new(aeolian_tilde_class);
     aero_pd_base_init(&x->x_base, x, &aeolian_tilde_spec, argc, argv);
-    if (aero_aeolian_init(&x->x_engine, sys_getsr(),
+    if (aero_aeolian_init(&x->x_core, sys_getsr(),
                           x->x_base.stereo ? 2 : 1, aero_pd_default_seed()))
         pd_error(x, OBJ ": sample rate %g not usable: 44100 Hz until the "
                  "DSP starts", sys_getsr());
@@ -215,7 +190,7 @@ static void *aeolian_tilde_new(t_symbol *s, int argc, t_atom *argv)
 static void aeolian_tilde_free(t_aeolian_tilde *x)
 {
     aero_pd_base_free(&x->x_base);
-    aero_aeolian_free(&x->x_engine);
+    aero_aeolian_free(&x->x_core);
 }
 
 AERO_PD_EXPORT void aeolian_tilde_setup(void)

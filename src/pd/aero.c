@@ -3,23 +3,20 @@
  * libpd_init() does for the objects it bundles. */
 #include "aero_pd.h"
 
-void aeolian_tilde_setup(void);
-void cavity_tilde_setup(void);
-void treebranch_tilde_setup(void);
-void leafwave_tilde_setup(void);
-void vortex_tilde_setup(void);
-void fieldsound_tilde_setup(void);
-void body_tilde_setup(void);
+/* every object, one line each: a new object joins the library here (the
+ * builds, packages and Pd-side tests find src/pd/NAME~.c by themselves) */
+#define AERO_OBJECTS(X)                                                    \
+    X(aeolian) X(cavity) X(treebranch) X(leafwave) X(vortex) X(fieldsound) \
+    X(body)
+
+#define AERO_DECLARE(name) void name##_tilde_setup(void);
+#define AERO_SETUP(name) name##_tilde_setup();
+#define AERO_NAME(name) " [" #name "~]"
+
+AERO_OBJECTS(AERO_DECLARE)
 
 AERO_PD_EXPORT void aero_setup(void)
 {
-    aeolian_tilde_setup();
-    cavity_tilde_setup();
-    treebranch_tilde_setup();
-    leafwave_tilde_setup();
-    vortex_tilde_setup();
-    fieldsound_tilde_setup();
-    body_tilde_setup();
-    post("aero: aerodynamic sound library loaded ([aeolian~] [cavity~] "
-         "[treebranch~] [leafwave~] [vortex~] [fieldsound~] [body~])");
+    AERO_OBJECTS(AERO_SETUP)
+    post("aero: aerodynamic sound library loaded:" AERO_OBJECTS(AERO_NAME));
 }

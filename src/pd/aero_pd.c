@@ -5,6 +5,8 @@
 
 #include "aero_air.h"
 
+#include <limits.h>
+
 /* --- the table ----------------------------------------------------------- */
 
 t_class *aero_pd_class_new(const aero_pd_spec *spec, t_newmethod new_fn,
@@ -183,6 +185,7 @@ void aero_pd_base_init(aero_pd_base *b, void *owner, const aero_pd_spec *spec,
 {
     memset(b, 0, sizeof(*b));
     b->owner = owner;
+    b->spec = spec;
     b->canvas = canvas_getcurrent();
     for (int k = 0; k < spec->count; k++)
         if (spec->methods[k].args == AERO_PD_SWITCH &&
@@ -264,6 +267,56 @@ void aero_pd_dsp(aero_pd_base *b, t_signal **sp, int inlet,
             outs[0]->s_vec, b->stereo ? outs[1]->s_vec : NULL, (t_int)n);
 }
 
+/* --- refusals ------------------------------------------------------------- */
+
+const aero_pd_rule *aero_pd_rule_of(const aero_pd_base *b, const char *name)
+{
+    for (int k = 0; b->spec && k < b->spec->count; k++)
+        if (!strcmp(b->spec->methods[k].name, name))
+            return &b->spec->methods[k].rule;
+    return NULL;
+}
+
+/* " (0.0001..100 m; note)" from a rule, "" when it states nothing */
+static void rule_text(const aero_pd_rule *r, char *buf, size_t len)
+{
+    int range = r && r->lo != r->hi, note = r && r->note;
+    buf[0] = '\0';
+    if (!range && !note)
+        return;
+    if (range)
+        snprintf(buf, len, " (%g..%g%s%s%s%s)", r->lo, r->hi,
+                 r->unit ? " " : "", r->unit ? r->unit : "",
+                 note ? "; " : "", note ? r->note : "");
+    else
+        snprintf(buf, len, " (%s)", r->note);
+}
+
+void aero_pd_refused(const aero_pd_base *b, const char *name, t_float f)
+{
+    const aero_pd_rule *r = aero_pd_rule_of(b, name);
+    char range[MAXPDSTRING];
+    rule_text(r, range, sizeof(range));
+    pd_error(b->owner, "%s: %s %g%s%s out of range%s", b->obj, name, f,
+             r && r->unit ? " " : "", r && r->unit ? r->unit : "", range);
+}
+
+void aero_pd_refused_list(const aero_pd_base *b, const char *name)
+{
+    char range[MAXPDSTRING];
+    rule_text(aero_pd_rule_of(b, name), range, sizeof(range));
+    pd_error(b->owner, "%s: %s out of range%s", b->obj, name, range);
+}
+
+int aero_pd_whole_of(const aero_pd_base *b, const char *name, t_float f,
+                     int *n)
+{
+    const aero_pd_rule *r = aero_pd_rule_of(b, name);
+    if (!r || !(r->lo >= INT_MIN && r->hi <= INT_MAX))
+        return -1;
+    return aero_pd_whole(f, (int)r->lo, (int)r->hi, n);
+}
+
 int aero_pd_ears(aero_pd_base *b, t_symbol *s, int argc, const t_atom *argv,
                  aero_ears *e)
 {
@@ -286,9 +339,9 @@ int aero_pd_ears(aero_pd_base *b, t_symbol *s, int argc, const t_atom *argv,
 
 void aero_pd_bad_ears(aero_pd_base *b, int ears)
 {
-    pd_error(b->owner, ears == 2 ? "%s: ear positions must be finite, within "
-             "%g m" : "%s: listener position must be finite, within %g m",
-             b->obj, AERO_POSITION_LIMIT);
+    pd_error(b->owner, "%s: %s out of range (-%g..%g m; finite)", b->obj,
+             ears == 2 ? "ears" : "listener", AERO_POSITION_LIMIT,
+             AERO_POSITION_LIMIT);
 }
 
 /* --- wind ----------------------------------------------------------------- */
@@ -306,7 +359,7 @@ double aero_pd_wind_message(aero_pd_base *b, aero_pd_wind *w, t_symbol *s,
     if (aero_pd_floats(b->owner, b->obj, s->s_name, argc, argv, 3, v))
         return -1.0;
     if (!(fabs(v[0]) < 1e30 && fabs(v[1]) < 1e30 && fabs(v[2]) < 1e30)) {
-        pd_error(b->owner, "%s: wind must be finite", b->obj);
+        aero_pd_refused_list(b, s->s_name);
         return -1.0;
     }
     double speed = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
@@ -418,6 +471,44 @@ void aero_pd_load_texture(aero_pd_base *b, t_class *cls, t_symbol *name,
         free(t);
         set(core, NULL, err, sizeof(err));
     }
+}
+
+/* --- trees ------------------------------------------------------------------ */
+
+typedef struct {
+    const aero_pd_base *b;
+    const char *path;
+    int count;
+} tree_lines;
+
+static void tree_bad_line(void *ctx, int line, const char *message)
+{
+    tree_lines *c = ctx;
+    if (++c->count <= AERO_PD_TREE_LINES_SHOWN)
+        pd_error(c->b->owner, "%s: %s:%d: %s (line skipped)", c->b->obj,
+                 c->path, line, message);
+}
+
+int aero_pd_load_tree(aero_pd_base *b, t_class *cls, t_symbol *name,
+                      aero_tree *t)
+{
+    char path[MAXPDSTRING], err[MAXPDSTRING + 100];
+    if (aero_pd_find_tree(b->canvas, cls, name->s_name, path, sizeof(path))) {
+        pd_error(b->owner, "%s: can't find tree '%s' (looked %s): silent",
+                 b->obj, name->s_name, path);
+        return -1;
+    }
+    tree_lines lines = {b, path, 0};
+    int bad = aero_tree_load(path, t, tree_bad_line, &lines, err,
+                             sizeof(err));
+    if (lines.count > AERO_PD_TREE_LINES_SHOWN)
+        pd_error(b->owner, "%s: %s: %d more bad lines not shown", b->obj,
+                 path, lines.count - AERO_PD_TREE_LINES_SHOWN);
+    if (bad) {
+        pd_error(b->owner, "%s: %s: silent", b->obj, err);
+        return -1;
+    }
+    return 0;
 }
 
 /* --- numbers --------------------------------------------------------------- */

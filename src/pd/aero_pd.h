@@ -22,6 +22,7 @@
 #include "aero.h"
 #include "aero_ears.h"
 #include "texture.h"
+#include "tree.h"
 
 /* The only names an external (or the library) exports are Pd's entry
  * points, the *_setup functions: Pd loads externals with RTLD_GLOBAL, so
@@ -54,12 +55,34 @@ enum {
     AERO_PD_MESSAGE_ONLY = 2 /* no creation flag */
 };
 
+/* What a message accepts, stated in the table from the core's constants
+ * (the core's setter checks the same constants): the skeleton words every
+ * refusal from it, the same way for every object (aero_pd_refused). */
+typedef struct {
+    double lo, hi;    /* accepted lo..hi; lo == hi: no range stated */
+    const char *unit; /* "m", "dB", NULL for none */
+    const char *note; /* what else the values mean ("0 = off"), or NULL */
+} aero_pd_rule;
+
+/* a rule in a table line: AERO_PD_RANGE(AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX,
+   "dB"); AERO_PD_RANGE_NOTE adds a note; AERO_PD_NOTE is a note alone (a
+   list that must be finite, a direction); AERO_PD_NO_RULE for a message
+   the core never refuses or words itself */
+#define AERO_PD_RANGE(lo, hi, unit) {(lo), (hi), (unit), NULL}
+#define AERO_PD_RANGE_NOTE(lo, hi, unit, note) {(lo), (hi), (unit), (note)}
+#define AERO_PD_NOTE(note) {0, 0, NULL, (note)}
+#define AERO_PD_NO_RULE {0, 0, NULL, NULL}
+/* a constant as a string, for a note: AERO_PD_STR(AERO_LEAFWAVE_TABLES_MAX) */
+#define AERO_PD_STR_(x) #x
+#define AERO_PD_STR(x) AERO_PD_STR_(x)
+
 typedef struct {
     const char *name; /* the message; "-name" is its creation flag */
     aero_pd_args args;
     int count;        /* AERO_PD_LIST: how many numbers the flag takes */
     t_method fn;
     int options;      /* AERO_PD_EARLY, AERO_PD_MESSAGE_ONLY */
+    aero_pd_rule rule; /* what it accepts (numbers and lists) */
 } aero_pd_method;
 
 /* An object's class and its table. `name` is the Pd name ("cavity~"),
@@ -104,6 +127,7 @@ typedef int (*aero_pd_process)(void *x, const float *in, float *const *out,
 
 typedef struct {
     t_object *owner;
+    const aero_pd_spec *spec; /* the table: the rules of refusals */
     const char *obj;  /* "[cavity~]", for messages */
     t_canvas *canvas; /* where files are looked for first */
     int stereo;       /* created with -stereo: two outlets, `ears` */
@@ -144,6 +168,46 @@ static inline void aero_pd_clamped(aero_pd_base *b)
     }
 }
 
+/* --- refusals, worded from the table ------------------------------------- */
+
+/* The rule of the message `name` in the object's table (the first line of
+ * that name), or NULL. */
+const aero_pd_rule *aero_pd_rule_of(const aero_pd_base *b, const char *name);
+
+/* A number the core refused for the message `name`, worded from its rule:
+ * "[cavity~]: length 500 m out of range (0.0001..100 m)". The old value
+ * stays. */
+void aero_pd_refused(const aero_pd_base *b, const char *name, t_float f);
+
+/* A list message (`wind`, `mic`, `pose`) the core refused:
+ * "[body~]: wind out of range (0..1029 m/s; finite)". */
+void aero_pd_refused_list(const aero_pd_base *b, const char *name);
+
+/* A number from a patch as a whole number within the rule of `name`: 0
+ * with *n set, else -1 (see aero_pd_whole). */
+int aero_pd_whole_of(const aero_pd_base *b, const char *name, t_float f,
+                     int *n);
+
+/* One message per setter: `prefix_msg(x, f)` hands f to
+ * `setter(&x->core, f)` (0 accepted, -1 refused) and reports a refusal
+ * from the rule of `msg`; `type` is the object's struct. */
+#define AERO_PD_SETTER(prefix, type, msg, core, setter)                    \
+    static void prefix##_##msg(type *x, t_floatarg f)                      \
+    {                                                                      \
+        if (setter(&x->core, f))                                           \
+            aero_pd_refused(&x->x_base, #msg, f);                          \
+    }
+
+/* the same for a whole number within the rule's range */
+#define AERO_PD_SETTER_WHOLE(prefix, type, msg, core, setter)              \
+    static void prefix##_##msg(type *x, t_floatarg f)                      \
+    {                                                                      \
+        int n;                                                             \
+        if (aero_pd_whole_of(&x->x_base, #msg, f, &n) ||                   \
+            setter(&x->core, n))                                           \
+            aero_pd_refused(&x->x_base, #msg, f);                          \
+    }
+
 /* `listener x y z` (mono) or `ears lx ly lz rx ry rz` (-stereo): checks the
  * selector against the object's outlets and reads the numbers into e.
  * Returns the number of ears (1 or 2), or 0 after reporting an error. */
@@ -178,6 +242,19 @@ typedef int (*aero_pd_set_texture)(void *core, aero_texture *t, char *err,
 void aero_pd_load_texture(aero_pd_base *b, t_class *cls, t_symbol *name,
                           aero_pd_set_texture set, void *core,
                           const char *fallback);
+
+/* --- trees: one loader, one failure policy ---------------------------------
+ * Finds a tree file (aero_pd_find_tree) and reads it. Each bad line is
+ * reported with its line number and skipped, the first
+ * AERO_PD_TREE_LINES_SHOWN of them, then how many more; a file that can't
+ * be found or read, or holds no branch, is reported once, ending
+ * "silent". Returns 0 with the tree in t, for the caller's core to take,
+ * or -1 after the report: the caller clears its tree (it never keeps one
+ * the user asked to replace). */
+#define AERO_PD_TREE_LINES_SHOWN 20
+
+int aero_pd_load_tree(aero_pd_base *b, t_class *cls, t_symbol *name,
+                      aero_tree *t);
 
 /* --- numbers from a patch ------------------------------------------------- */
 

@@ -21,7 +21,7 @@ typedef struct _body_tilde {
     t_object x_obj;
     t_float x_f;
     aero_pd_base x_base;
-    aero_body_texture x_body;
+    aero_body x_core;
     double x_pose_time; /* logical time of the last pose */
 } t_body_tilde;
 
@@ -31,12 +31,12 @@ static int body_tilde_process(void *obj, const float *in, float *const *out,
                               int n)
 {
     t_body_tilde *x = obj;
-    return aero_body_texture_process(&x->x_body, in, out, n);
+    return aero_body_process(&x->x_core, in, out, n);
 }
 
 static void body_tilde_dsp(t_body_tilde *x, t_signal **sp)
 {
-    if (aero_body_texture_set_sample_rate(&x->x_body, sp[0]->s_sr))
+    if (aero_body_set_sample_rate(&x->x_core, sp[0]->s_sr))
         pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
     aero_pd_dsp(&x->x_base, sp, 1, body_tilde_process);
 }
@@ -46,14 +46,14 @@ static void body_tilde_dsp(t_body_tilde *x, t_signal **sp)
 static int body_tilde_set_texture(void *core, aero_texture *t, char *err,
                                   size_t len)
 {
-    return aero_body_texture_set_texture(core, t, err, len);
+    return aero_body_set_texture(core, t, err, len);
 }
 
 /* file I/O here, in the message domain, never in perform */
 static void body_tilde_texture(t_body_tilde *x, t_symbol *name)
 {
     aero_pd_load_texture(&x->x_base, body_tilde_class, name,
-                         body_tilde_set_texture, &x->x_body, "silent");
+                         body_tilde_set_texture, &x->x_core, "silent");
 }
 
 /* pose|place x y z [rx ry rz | qw qx qy qz]: a position alone keeps the
@@ -73,11 +73,10 @@ static void body_tilde_pose(t_body_tilde *x, t_symbol *s, int argc,
     if (aero_pd_floats(x, OBJ, s->s_name, argc, argv, argc, v))
         return;
     if (argc == 3)
-        memcpy(q, x->x_body.pose_to + 3, sizeof(q));
+        aero_body_orientation(&x->x_core, q);
     else if (argc == 6) {
         if (!(fabs(v[3]) < 1e9 && fabs(v[4]) < 1e9 && fabs(v[5]) < 1e9)) {
-            pd_error(x, OBJ ": '%s': the rotation vector must be finite",
-                     s->s_name);
+            aero_pd_refused_list(&x->x_base, s->s_name);
             return;
         }
         aero_body_quaternion_from_rotvec(v + 3, q);
@@ -87,9 +86,8 @@ static void body_tilde_pose(t_body_tilde *x, t_symbol *s, int argc,
     x->x_pose_time = now;
     if (!strcmp(s->s_name, "place")) /* a jump, no motion */
         interval = -1.0;
-    if (aero_body_texture_set_pose(&x->x_body, v, q, interval))
-        pd_error(x, OBJ ": '%s' needs a finite position within %g m and a "
-                 "non-zero finite quaternion", s->s_name, AERO_POSITION_LIMIT);
+    if (aero_body_set_pose(&x->x_core, v, q, interval))
+        aero_pd_refused_list(&x->x_base, s->s_name);
 }
 
 static void body_tilde_wind(t_body_tilde *x, t_symbol *s, int argc,
@@ -98,9 +96,8 @@ static void body_tilde_wind(t_body_tilde *x, t_symbol *s, int argc,
     double v[3];
     if (aero_pd_floats(x, OBJ, s->s_name, argc, argv, 3, v))
         return;
-    if (aero_body_texture_set_wind(&x->x_body, v))
-        pd_error(x, OBJ ": wind must be finite, below %g m/s",
-                 AERO_MOVING_WIND_MAX);
+    if (aero_body_set_wind(&x->x_core, v))
+        aero_pd_refused_list(&x->x_base, s->s_name);
 }
 
 static void body_tilde_listener(t_body_tilde *x, t_symbol *s, int argc,
@@ -108,61 +105,53 @@ static void body_tilde_listener(t_body_tilde *x, t_symbol *s, int argc,
 {
     aero_ears e;
     if (aero_pd_ears(&x->x_base, s, argc, argv, &e) &&
-        aero_body_texture_set_ears(&x->x_body, &e))
+        aero_body_set_ears(&x->x_core, &e))
         aero_pd_bad_ears(&x->x_base, e.n);
 }
 
-static void body_tilde_scale(t_body_tilde *x, t_floatarg f)
-{
-    if (aero_body_texture_set_scale(&x->x_body, f))
-        pd_error(x, OBJ ": scale %g out of range (%g..%g), kept %g", f,
-                 AERO_BODY_SCALE_MIN, AERO_BODY_SCALE_MAX, x->x_body.scale);
-}
-
-static void body_tilde_exponent(t_body_tilde *x, t_floatarg f)
-{
-    if (aero_body_texture_set_exponent(&x->x_body, f))
-        pd_error(x, OBJ ": exponent %g out of range (%g..%g; 3 is physical, "
-                 "6 the paper's)", f, AERO_MOVING_EXPONENT_MIN,
-                 AERO_MOVING_EXPONENT_MAX);
-}
-
-static void body_tilde_gain(t_body_tilde *x, t_floatarg f)
-{
-    if (aero_body_texture_set_gain_db(&x->x_body, f))
-        pd_error(x, OBJ ": gain %g dB out of range (%g..%g)", f,
-                 AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX);
-}
-
-static void body_tilde_ramp(t_body_tilde *x, t_floatarg f)
-{
-    if (aero_body_texture_set_ramp_ms(&x->x_body, f))
-        pd_error(x, OBJ ": ramp %g ms out of range (0..%g)", f,
-                 AERO_RAMP_MS_MAX);
-}
+AERO_PD_SETTER(body_tilde, t_body_tilde, scale, x_core,
+               aero_body_set_scale)
+AERO_PD_SETTER(body_tilde, t_body_tilde, exponent, x_core,
+               aero_body_set_exponent)
+AERO_PD_SETTER(body_tilde, t_body_tilde, gain, x_core,
+               aero_body_set_gain_db)
+AERO_PD_SETTER(body_tilde, t_body_tilde, ramp, x_core,
+               aero_body_set_ramp_ms)
 
 static void body_tilde_seed(t_body_tilde *x, t_floatarg f)
 {
-    aero_body_texture_set_seed(&x->x_body, aero_pd_seed(f));
+    aero_body_set_seed(&x->x_core, aero_pd_seed(f));
 }
 
 /* --- creation -------------------------------------------------------------- */
 
+#define POSE                                                              \
+    AERO_PD_RANGE_NOTE(-AERO_POSITION_LIMIT, AERO_POSITION_LIMIT, "m",   \
+                       "x y z, a finite rotation vector rx ry rz in deg " \
+                       "or a non-zero quaternion qw qx qy qz")
+
 static const aero_pd_method body_tilde_methods[] = {
-    {"stereo", AERO_PD_SWITCH, 0, NULL, 0},
-    {"texture", AERO_PD_SYMBOL, 0, (t_method)body_tilde_texture, 0},
-    {"scale", AERO_PD_FLOAT, 0, (t_method)body_tilde_scale, 0},
-    {"exponent", AERO_PD_FLOAT, 0, (t_method)body_tilde_exponent, 0},
-    {"gain", AERO_PD_FLOAT, 0, (t_method)body_tilde_gain, 0},
-    {"ramp", AERO_PD_FLOAT, 0, (t_method)body_tilde_ramp, 0},
-    {"seed", AERO_PD_FLOAT, 0, (t_method)body_tilde_seed, 0},
-    {"listener", AERO_PD_LIST, 3, (t_method)body_tilde_listener, 0},
-    {"ears", AERO_PD_LIST, 6, (t_method)body_tilde_listener, 0},
-    {"wind", AERO_PD_LIST, 3, (t_method)body_tilde_wind, 0},
+    {"stereo", AERO_PD_SWITCH, 0, NULL, 0, AERO_PD_NO_RULE},
+    {"texture", AERO_PD_SYMBOL, 0, (t_method)body_tilde_texture, 0, AERO_PD_NO_RULE},
+    {"scale", AERO_PD_FLOAT, 0, (t_method)body_tilde_scale, 0,
+     AERO_PD_RANGE_NOTE(AERO_BODY_SCALE_MIN, AERO_BODY_SCALE_MAX, NULL,
+                        "of the texture's body")},
+    {"exponent", AERO_PD_FLOAT, 0, (t_method)body_tilde_exponent, 0,
+     AERO_PD_RANGE_NOTE(AERO_MOVING_EXPONENT_MIN, AERO_MOVING_EXPONENT_MAX,
+                        NULL, "3 is physical, 6 the paper's")},
+    {"gain", AERO_PD_FLOAT, 0, (t_method)body_tilde_gain, 0,
+     AERO_PD_RANGE(AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX, "dB")},
+    {"ramp", AERO_PD_FLOAT, 0, (t_method)body_tilde_ramp, 0,
+     AERO_PD_RANGE(0, AERO_RAMP_MS_MAX, "ms")},
+    {"seed", AERO_PD_FLOAT, 0, (t_method)body_tilde_seed, 0, AERO_PD_NO_RULE},
+    {"listener", AERO_PD_LIST, 3, (t_method)body_tilde_listener, 0, AERO_PD_NO_RULE},
+    {"ears", AERO_PD_LIST, 6, (t_method)body_tilde_listener, 0, AERO_PD_NO_RULE},
+    {"wind", AERO_PD_LIST, 3, (t_method)body_tilde_wind, 0,
+     AERO_PD_RANGE_NOTE(0, AERO_MOVING_WIND_MAX, "m/s", "finite")},
     {"pose", AERO_PD_LIST, 0, (t_method)body_tilde_pose,
-     AERO_PD_MESSAGE_ONLY},
+     AERO_PD_MESSAGE_ONLY, POSE},
     {"place", AERO_PD_LIST, 0, (t_method)body_tilde_pose,
-     AERO_PD_MESSAGE_ONLY},
+     AERO_PD_MESSAGE_ONLY, POSE},
 };
 
 static const aero_pd_spec body_tilde_spec = {
@@ -173,7 +162,7 @@ static void *body_tilde_new(t_symbol *s, int argc, t_atom *argv)
     (void)s;
     t_body_tilde *x = (t_body_tilde *)pd_new(body_tilde_class);
     aero_pd_base_init(&x->x_base, x, &body_tilde_spec, argc, argv);
-    if (aero_body_texture_init(&x->x_body, sys_getsr(),
+    if (aero_body_init(&x->x_core, sys_getsr(),
                                x->x_base.stereo ? 2 : 1,
                                aero_pd_default_seed()))
         pd_error(x, OBJ ": out of memory for the delay lines: silent");
@@ -186,7 +175,7 @@ static void *body_tilde_new(t_symbol *s, int argc, t_atom *argv)
 static void body_tilde_free(t_body_tilde *x)
 {
     aero_pd_base_free(&x->x_base);
-    aero_body_texture_free(&x->x_body);
+    aero_body_free(&x->x_core);
 }
 
 AERO_PD_EXPORT void body_tilde_setup(void)

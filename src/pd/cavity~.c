@@ -15,7 +15,7 @@ typedef struct _cavity_tilde {
     t_object x_obj;
     t_float x_f;
     aero_pd_base x_base;
-    aero_cavity_model x_model;
+    aero_cavity x_core;
 } t_cavity_tilde;
 
 #define OBJ "[cavity~]"
@@ -24,61 +24,34 @@ static int cavity_tilde_process(void *obj, const float *in,
                                 float *const *out, int n)
 {
     t_cavity_tilde *x = obj;
-    return aero_cavity_model_process(&x->x_model, in, out, n);
+    return aero_cavity_process(&x->x_core, in, out, n);
 }
 
 static void cavity_tilde_dsp(t_cavity_tilde *x, t_signal **sp)
 {
-    if (aero_cavity_model_set_sample_rate(&x->x_model, sp[0]->s_sr))
+    if (aero_cavity_set_sample_rate(&x->x_core, sp[0]->s_sr))
         pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
     aero_pd_dsp(&x->x_base, sp, 1, cavity_tilde_process);
 }
 
-static void cavity_tilde_length(t_cavity_tilde *x, t_floatarg f)
-{
-    if (aero_cavity_model_set_length(&x->x_model, f))
-        pd_error(x, OBJ ": length %g m out of range (%g..%g)", f,
-                 AERO_CAVITY_SIZE_MIN, AERO_CAVITY_SIZE_MAX);
-}
+/* --- messages: the setters, refusals worded from the table -------------- */
 
-static void cavity_tilde_depth(t_cavity_tilde *x, t_floatarg f)
-{
-    if (aero_cavity_model_set_depth(&x->x_model, f))
-        pd_error(x, OBJ ": depth %g m out of range (%g..%g)", f,
-                 AERO_CAVITY_SIZE_MIN, AERO_CAVITY_SIZE_MAX);
-}
-
-static void cavity_tilde_width(t_cavity_tilde *x, t_floatarg f)
-{
-    if (aero_cavity_model_set_width(&x->x_model, f))
-        pd_error(x, OBJ ": width %g m out of range (%g..%g)", f,
-                 AERO_CAVITY_SIZE_MIN, AERO_CAVITY_SIZE_MAX);
-}
-
-static void cavity_tilde_gain(t_cavity_tilde *x, t_floatarg f)
-{
-    if (aero_cavity_model_set_gain_db(&x->x_model, f))
-        pd_error(x, OBJ ": gain %g dB out of range (%g..%g)", f,
-                 AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX);
-}
-
-static void cavity_tilde_ramp(t_cavity_tilde *x, t_floatarg f)
-{
-    if (aero_cavity_model_set_ramp_ms(&x->x_model, f))
-        pd_error(x, OBJ ": ramp %g ms out of range (0..%g)", f,
-                 AERO_RAMP_MS_MAX);
-}
-
-static void cavity_tilde_exponent(t_cavity_tilde *x, t_floatarg f)
-{
-    if (aero_cavity_model_set_exponent(&x->x_model, f))
-        pd_error(x, OBJ ": exponent %g out of range (0..%g)", f,
-                 AERO_CAVITY_EXPONENT_MAX);
-}
+AERO_PD_SETTER(cavity_tilde, t_cavity_tilde, length, x_core,
+               aero_cavity_set_length)
+AERO_PD_SETTER(cavity_tilde, t_cavity_tilde, depth, x_core,
+               aero_cavity_set_depth)
+AERO_PD_SETTER(cavity_tilde, t_cavity_tilde, width, x_core,
+               aero_cavity_set_width)
+AERO_PD_SETTER(cavity_tilde, t_cavity_tilde, gain, x_core,
+               aero_cavity_set_gain_db)
+AERO_PD_SETTER(cavity_tilde, t_cavity_tilde, ramp, x_core,
+               aero_cavity_set_ramp_ms)
+AERO_PD_SETTER(cavity_tilde, t_cavity_tilde, exponent, x_core,
+               aero_cavity_set_exponent)
 
 static void cavity_tilde_seed(t_cavity_tilde *x, t_floatarg f)
 {
-    aero_cavity_model_set_seed(&x->x_model, aero_pd_seed(f));
+    aero_cavity_set_seed(&x->x_core, aero_pd_seed(f));
 }
 
 static void cavity_tilde_listener(t_cavity_tilde *x, t_symbol *s, int argc,
@@ -86,45 +59,50 @@ static void cavity_tilde_listener(t_cavity_tilde *x, t_symbol *s, int argc,
 {
     aero_ears e;
     if (aero_pd_ears(&x->x_base, s, argc, argv, &e) &&
-        aero_cavity_model_set_ears(&x->x_model, &e))
+        aero_cavity_set_ears(&x->x_core, &e))
         aero_pd_bad_ears(&x->x_base, e.n);
 }
 
 static int cavity_tilde_set_texture(void *core, aero_texture *t, char *err,
                                     size_t len)
 {
-    return aero_cavity_model_set_texture(core, t, err, len);
+    return aero_cavity_set_texture(core, t, err, len);
 }
 
 /* file I/O here, in the message domain, never in perform */
 static void cavity_tilde_texture(t_cavity_tilde *x, t_symbol *name)
 {
     aero_pd_load_texture(&x->x_base, cavity_tilde_class, name,
-                         cavity_tilde_set_texture, &x->x_model,
+                         cavity_tilde_set_texture, &x->x_core,
                          "using model mode");
 }
 
 static void cavity_tilde_model(t_cavity_tilde *x)
 {
     char err[8];
-    aero_cavity_model_set_texture(&x->x_model, NULL, err, sizeof(err));
+    aero_cavity_set_texture(&x->x_core, NULL, err, sizeof(err));
 }
 
+#define SIZE AERO_PD_RANGE(AERO_CAVITY_SIZE_MIN, AERO_CAVITY_SIZE_MAX, "m")
+
 static const aero_pd_method cavity_tilde_methods[] = {
-    {"length", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_length, 0},
-    {"L", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_length, 0},
-    {"depth", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_depth, 0},
-    {"D", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_depth, 0},
-    {"width", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_width, 0},
-    {"W", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_width, 0},
-    {"gain", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_gain, 0},
-    {"ramp", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_ramp, 0},
-    {"seed", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_seed, 0},
-    {"exponent", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_exponent, 0},
-    {"listener", AERO_PD_LIST, 3, (t_method)cavity_tilde_listener, 0},
-    {"texture", AERO_PD_SYMBOL, 0, (t_method)cavity_tilde_texture, 0},
+    {"length", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_length, 0, SIZE},
+    {"L", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_length, 0, SIZE},
+    {"depth", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_depth, 0, SIZE},
+    {"D", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_depth, 0, SIZE},
+    {"width", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_width, 0, SIZE},
+    {"W", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_width, 0, SIZE},
+    {"gain", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_gain, 0,
+     AERO_PD_RANGE(AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX, "dB")},
+    {"ramp", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_ramp, 0,
+     AERO_PD_RANGE(0, AERO_RAMP_MS_MAX, "ms")},
+    {"seed", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_seed, 0, AERO_PD_NO_RULE},
+    {"exponent", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_exponent, 0,
+     AERO_PD_RANGE(0, AERO_CAVITY_EXPONENT_MAX, NULL)},
+    {"listener", AERO_PD_LIST, 3, (t_method)cavity_tilde_listener, 0, AERO_PD_NO_RULE},
+    {"texture", AERO_PD_SYMBOL, 0, (t_method)cavity_tilde_texture, 0, AERO_PD_NO_RULE},
     {"model", AERO_PD_BANG, 0, (t_method)cavity_tilde_model,
-     AERO_PD_MESSAGE_ONLY},
+     AERO_PD_MESSAGE_ONLY, AERO_PD_NO_RULE},
 };
 
 static const aero_pd_spec cavity_tilde_spec = {
@@ -136,7 +114,7 @@ static void *cavity_tilde_new(t_symbol *s, int argc, t_atom *argv)
     (void)s;
     t_cavity_tilde *x = (t_cavity_tilde *)pd_new(cavity_tilde_class);
     aero_pd_base_init(&x->x_base, x, &cavity_tilde_spec, argc, argv);
-    if (aero_cavity_model_init(&x->x_model, sys_getsr(),
+    if (aero_cavity_init(&x->x_core, sys_getsr(),
                                aero_pd_default_seed()))
         pd_error(x, OBJ ": sample rate %g not usable: 44100 Hz until the "
                  "DSP starts", sys_getsr());
@@ -148,7 +126,7 @@ static void *cavity_tilde_new(t_symbol *s, int argc, t_atom *argv)
 static void cavity_tilde_free(t_cavity_tilde *x)
 {
     aero_pd_base_free(&x->x_base);
-    aero_cavity_model_free(&x->x_model);
+    aero_cavity_free(&x->x_core);
 }
 
 AERO_PD_EXPORT void cavity_tilde_setup(void)

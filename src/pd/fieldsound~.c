@@ -19,8 +19,8 @@ static t_class *fieldsound_tilde_class;
 typedef struct _fieldsound_tilde {
     t_object x_obj;
     aero_pd_base x_base;           /* canvas and table; own outlets */
-    aero_field_render x_render;
-    aero_field_sources x_sources;  /* what x_render plays */
+    aero_fieldsound x_core;
+    aero_field_sources x_sources;  /* what x_core plays */
     aero_field_params x_par;
     int x_creating;                /* flags read: preprocess once, after */
     t_symbol *x_dir;               /* as given, or NULL for the demo */
@@ -69,10 +69,10 @@ static void fieldsound_tilde_install(t_fieldsound_tilde *x)
     }
     aero_field_sources old = x->x_sources;
     x->x_sources = fresh;
-    if (aero_field_render_set_sources(&x->x_render, &x->x_sources)) {
+    if (aero_fieldsound_set_sources(&x->x_core, &x->x_sources)) {
         pd_error(x, OBJ ": out of memory");
         aero_field_sources_free(&x->x_sources);
-        aero_field_render_set_sources(&x->x_render, NULL);
+        aero_fieldsound_set_sources(&x->x_core, NULL);
     }
     aero_field_sources_free(&old);
     const aero_field_sources *s = &x->x_sources;
@@ -86,7 +86,7 @@ static void fieldsound_tilde_install(t_fieldsound_tilde *x)
     SETFLOAT(a + 1, (t_float)seconds);
     outlet_anything(x->x_info, gensym("ready"), 2, a);
     if (x->x_pending_play) {
-        aero_field_render_play(&x->x_render);
+        aero_fieldsound_play(&x->x_core);
         x->x_done = 0;
     }
     x->x_pending_play = 0;
@@ -188,12 +188,13 @@ static int fieldsound_tilde_process(void *obj, const float *in,
 {
     t_fieldsound_tilde *x = obj;
     (void)in;
-    int playing = aero_field_render_process(&x->x_render, out[0], n);
-    if ((x->x_was_playing && !playing && x->x_render.src) ||
-        (x->x_render.clamped && !x->x_clamped)) {
+    int playing = aero_fieldsound_process(&x->x_core, out[0], n);
+    if ((x->x_was_playing && !playing &&
+         aero_fieldsound_has_sources(&x->x_core)) ||
+        (aero_fieldsound_clamped(&x->x_core) && !x->x_clamped)) {
         if (x->x_was_playing && !playing)
             x->x_done = 1;
-        x->x_clamped = x->x_render.clamped;
+        x->x_clamped = aero_fieldsound_clamped(&x->x_core);
         clock_delay(x->x_report, 0);
     }
     x->x_was_playing = playing;
@@ -202,7 +203,7 @@ static int fieldsound_tilde_process(void *obj, const float *in,
 
 static void fieldsound_tilde_dsp(t_fieldsound_tilde *x, t_signal **sp)
 {
-    if (aero_field_render_set_sample_rate(&x->x_render, sp[0]->s_sr))
+    if (aero_fieldsound_set_sample_rate(&x->x_core, sp[0]->s_sr))
         pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
     aero_pd_dsp(&x->x_base, sp, 0, fieldsound_tilde_process);
 }
@@ -224,8 +225,7 @@ static void fieldsound_tilde_demo(t_fieldsound_tilde *x, t_symbol *s,
     if (argc >= 1) {
         if (argv[0].a_type != A_FLOAT ||
             aero_pd_whole(atom_getfloat(argv), 4, 128, &size)) {
-            pd_error(x, OBJ ": demo size must be a whole number 4..128 "
-                     "vertices, using 32");
+            aero_pd_refused(&x->x_base, "demo", atom_getfloat(argv));
             size = 32;
         }
     }
@@ -242,17 +242,17 @@ static void fieldsound_tilde_play(t_fieldsound_tilde *x)
         x->x_pending_play = 1; /* as soon as it is ready */
         return;
     }
-    if (!x->x_render.src) {
+    if (!aero_fieldsound_has_sources(&x->x_core)) {
         pd_error(x, OBJ ": nothing to play (open a volume or 'demo')");
         return;
     }
-    aero_field_render_play(&x->x_render);
+    aero_fieldsound_play(&x->x_core);
 }
 
 static void fieldsound_tilde_stop(t_fieldsound_tilde *x)
 {
     x->x_pending_play = 0;
-    aero_field_render_stop(&x->x_render);
+    aero_fieldsound_stop(&x->x_core);
 }
 
 static void fieldsound_tilde_listener(t_fieldsound_tilde *x, t_symbol *s,
@@ -260,30 +260,16 @@ static void fieldsound_tilde_listener(t_fieldsound_tilde *x, t_symbol *s,
 {
     aero_ears e;
     if (aero_pd_ears(&x->x_base, s, argc, argv, &e) &&
-        aero_field_render_set_ears(&x->x_render, &e))
+        aero_fieldsound_set_ears(&x->x_core, &e))
         aero_pd_bad_ears(&x->x_base, e.n);
 }
 
-static void fieldsound_tilde_speed(t_fieldsound_tilde *x, t_floatarg f)
-{
-    if (aero_field_render_set_speed(&x->x_render, f))
-        pd_error(x, OBJ ": speed %g frames/s out of range (0..%g]", f,
-                 AERO_FIELD_SPEED_MAX);
-}
-
-static void fieldsound_tilde_gain(t_fieldsound_tilde *x, t_floatarg f)
-{
-    if (aero_field_render_set_gain_db(&x->x_render, f))
-        pd_error(x, OBJ ": gain %g dB out of range (%g..%g)", f,
-                 AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX);
-}
-
-static void fieldsound_tilde_ramp(t_fieldsound_tilde *x, t_floatarg f)
-{
-    if (aero_field_render_set_ramp_ms(&x->x_render, f))
-        pd_error(x, OBJ ": ramp %g ms out of range (0..%g)", f,
-                 AERO_RAMP_MS_MAX);
-}
+AERO_PD_SETTER(fieldsound_tilde, t_fieldsound_tilde, speed, x_core,
+               aero_fieldsound_set_speed)
+AERO_PD_SETTER(fieldsound_tilde, t_fieldsound_tilde, gain, x_core,
+               aero_fieldsound_set_gain_db)
+AERO_PD_SETTER(fieldsound_tilde, t_fieldsound_tilde, ramp, x_core,
+               aero_fieldsound_set_ramp_ms)
 
 /* a changed parameter: check it, then preprocess again */
 static void fieldsound_tilde_reparam(t_fieldsound_tilde *x,
@@ -354,24 +340,32 @@ static void fieldsound_tilde_velocity(t_fieldsound_tilde *x, t_floatarg f)
 /* --- creation --------------------------------------------------------- */
 
 static const aero_pd_method fieldsound_tilde_methods[] = {
-    {"sync", AERO_PD_SWITCH, 0, NULL, 0},
-    {"listener", AERO_PD_LIST, 3, (t_method)fieldsound_tilde_listener, 0},
-    {"speed", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_speed, 0},
-    {"gain", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_gain, 0},
-    {"ramp", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_ramp, 0},
-    {"threshold", AERO_PD_LIST, 3, (t_method)fieldsound_tilde_threshold, 0},
-    {"map", AERO_PD_LIST, 4, (t_method)fieldsound_tilde_map, 0},
-    {"zero", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_zero, 0},
-    {"vscale", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_vscale, 0},
-    {"log", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_log, 0},
-    {"velocity", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_velocity, 0},
-    {"demo", AERO_PD_LIST, 1, (t_method)fieldsound_tilde_demo, 0},
+    {"sync", AERO_PD_SWITCH, 0, NULL, 0, AERO_PD_NO_RULE},
+    {"listener", AERO_PD_LIST, 3, (t_method)fieldsound_tilde_listener, 0,
+     AERO_PD_NO_RULE},
+    {"speed", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_speed, 0,
+     AERO_PD_RANGE_NOTE(0, AERO_FIELD_SPEED_MAX, "frames/s", "above 0")},
+    {"gain", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_gain, 0,
+     AERO_PD_RANGE(AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX, "dB")},
+    {"ramp", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_ramp, 0,
+     AERO_PD_RANGE(0, AERO_RAMP_MS_MAX, "ms")},
+    /* the volume's parameters: aero_field_params_check words refusals */
+    {"threshold", AERO_PD_LIST, 3, (t_method)fieldsound_tilde_threshold, 0,
+     AERO_PD_NO_RULE},
+    {"map", AERO_PD_LIST, 4, (t_method)fieldsound_tilde_map, 0, AERO_PD_NO_RULE},
+    {"zero", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_zero, 0, AERO_PD_NO_RULE},
+    {"vscale", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_vscale, 0, AERO_PD_NO_RULE},
+    {"log", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_log, 0, AERO_PD_NO_RULE},
+    {"velocity", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_velocity, 0,
+     AERO_PD_NO_RULE},
+    {"demo", AERO_PD_LIST, 1, (t_method)fieldsound_tilde_demo, 0,
+     AERO_PD_RANGE_NOTE(4, 128, "vertices", "a whole number; using 32")},
     {"open", AERO_PD_SYMBOL, 0, (t_method)fieldsound_tilde_open,
-     AERO_PD_MESSAGE_ONLY},
+     AERO_PD_MESSAGE_ONLY, AERO_PD_NO_RULE},
     {"play", AERO_PD_BANG, 0, (t_method)fieldsound_tilde_play,
-     AERO_PD_MESSAGE_ONLY},
+     AERO_PD_MESSAGE_ONLY, AERO_PD_NO_RULE},
     {"stop", AERO_PD_BANG, 0, (t_method)fieldsound_tilde_stop,
-     AERO_PD_MESSAGE_ONLY},
+     AERO_PD_MESSAGE_ONLY, AERO_PD_NO_RULE},
 };
 
 static const aero_pd_spec fieldsound_tilde_spec = {
@@ -389,11 +383,11 @@ static void *fieldsound_tilde_new(t_symbol *s, int argc, t_atom *argv)
     clock_free(x->x_base.clock);
     x->x_base.clock = NULL;
     aero_field_params_default(&x->x_par);
-    if (aero_field_render_init(&x->x_render, sys_getsr()))
+    if (aero_fieldsound_init(&x->x_core, sys_getsr()))
         pd_error(x, OBJ ": sample rate %g not usable: 44100 Hz until the "
                  "DSP starts", sys_getsr());
     aero_ears start = aero_ears_at(1, 0, 0);
-    aero_field_render_place_ears(&x->x_render, &start);
+    aero_fieldsound_place_ears(&x->x_core, &start);
     x->x_poll = clock_new(x, (t_method)fieldsound_tilde_poll);
     x->x_report = clock_new(x, (t_method)fieldsound_tilde_report);
     x->x_out = outlet_new(&x->x_obj, &s_signal);
@@ -405,8 +399,9 @@ static void *fieldsound_tilde_new(t_symbol *s, int argc, t_atom *argv)
     aero_pd_parse_flags(x, &fieldsound_tilde_spec, argc, argv);
     x->x_creating = 0;
     /* the listener starts where it was put, not ramped from (1, 0, 0) */
-    memcpy(start.pos[0], x->x_render.target, sizeof start.pos[0]);
-    aero_field_render_place_ears(&x->x_render, &start);
+    memcpy(start.pos[0], aero_fieldsound_target(&x->x_core),
+           sizeof start.pos[0]);
+    aero_fieldsound_place_ears(&x->x_core, &start);
     if (x->x_dir)
         x->x_demo_size = 0;
     fieldsound_tilde_prepare(x);
@@ -419,7 +414,7 @@ static void fieldsound_tilde_free(t_fieldsound_tilde *x)
     aero_pd_base_free(&x->x_base);
     clock_free(x->x_poll);
     clock_free(x->x_report);
-    aero_field_render_free(&x->x_render);
+    aero_fieldsound_free(&x->x_core);
     aero_field_sources_free(&x->x_sources);
     outlet_free(x->x_out);
     outlet_free(x->x_info);

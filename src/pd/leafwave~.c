@@ -22,7 +22,7 @@ typedef struct _leafwave_tilde {
     t_float x_f;
     aero_pd_base x_base;
     aero_pd_wind x_wind;
-    aero_leafwave x_model;
+    aero_leafwave x_core;
     int x_ok; /* the core is initialised */
 } t_leafwave_tilde;
 
@@ -40,136 +40,101 @@ static int leafwave_tilde_process(void *obj, const float *in,
     }
     /* the inlet is the speed along the wind's direction; the core takes
        the block's mean and reports a clamp */
-    return aero_leafwave_process(&x->x_model, in, out, n);
+    return aero_leafwave_process(&x->x_core, in, out, n);
 }
 
 static void leafwave_tilde_dsp(t_leafwave_tilde *x, t_signal **sp)
 {
-    if (x->x_ok && aero_leafwave_set_sample_rate(&x->x_model, sp[0]->s_sr))
+    if (x->x_ok && aero_leafwave_set_sample_rate(&x->x_core, sp[0]->s_sr))
         pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
     aero_pd_dsp(&x->x_base, sp, 1, leafwave_tilde_process);
 }
 
 /* --- the tree file ------------------------------------------------------ */
 
-typedef struct {
-    t_leafwave_tilde *x;
-    const char *path;
-} report_ctx;
-
-static void leafwave_tilde_bad_line(void *ctx, int line, const char *message)
-{
-    report_ctx *c = ctx;
-    pd_error(c->x, OBJ ": %s:%d: %s (line skipped)", c->path, line, message);
-}
-
 /* file I/O and the neighbour search here, in the message domain */
 static void leafwave_tilde_open(t_leafwave_tilde *x, t_symbol *name)
 {
-    char path[MAXPDSTRING], err[256];
+    char err[256];
+    aero_tree t;
     if (!x->x_ok)
         return;
-    if (aero_pd_find_tree(x->x_base.canvas, leafwave_tilde_class, name->s_name,
-                          path, sizeof(path))) {
-        pd_error(x, OBJ ": can't find tree file '%s' (looked %s): silent "
-                 "until 'open'", name->s_name, path);
-        aero_leafwave_clear_tree(&x->x_model);
-        return;
-    }
-    aero_tree t;
-    report_ctx ctx = {x, path};
-    if (aero_tree_load(path, &t, leafwave_tilde_bad_line, &ctx, err,
-                       sizeof(err))) {
-        pd_error(x, OBJ ": tree %s: %s: silent", path, err);
-        aero_leafwave_clear_tree(&x->x_model);
+    if (aero_pd_load_tree(&x->x_base, leafwave_tilde_class, name, &t)) {
+        aero_leafwave_clear_tree(&x->x_core);
         return;
     }
     int nleaves = t.nleaves;
-    if (aero_leafwave_set_tree(&x->x_model, &t, err, sizeof(err))) {
-        pd_error(x, OBJ ": tree %s: %s: silent", path, err);
+    if (aero_leafwave_set_tree(&x->x_core, &t, err, sizeof(err))) {
+        pd_error(x, OBJ ": %s: %s: silent", name->s_name, err);
         return;
     }
     if (nleaves == 0)
-        pd_error(x, OBJ ": tree %s has no leaves: silent", path);
+        pd_error(x, OBJ ": tree %s has no leaves: silent", name->s_name);
 }
 
 /* --- messages (each also a creation flag of the same name) -------------- */
 
-/* a setter whose range the core states (leafwave.h, tree_motion.h,
-   aero_ranges.h): the message quotes it */
-#define SETTER(fn, call, what, lo, hi)                                    \
-    static void leafwave_tilde_##fn(t_leafwave_tilde *x, t_floatarg f)    \
+/* the setters: refusals worded from the table; none before the core is
+   initialised */
+#define SETTER(msg, call, whole)                                          \
+    static void leafwave_tilde_##msg(t_leafwave_tilde *x, t_floatarg f)   \
     {                                                                     \
-        if (x->x_ok && call(&x->x_model, f))                              \
-            pd_error(x, OBJ ": " what " out of range (%g..%g)", f,        \
-                     (double)(lo), (double)(hi));                         \
+        int n = 0;                                                        \
+        if (x->x_ok &&                                                    \
+            ((whole && aero_pd_whole_of(&x->x_base, #msg, f, &n)) ||      \
+             call(&x->x_core, whole ? n : f)))                           \
+            aero_pd_refused(&x->x_base, #msg, f);                         \
     }
 
-SETTER(gain, aero_leafwave_set_gain_db, "gain %g dB", AERO_GAIN_DB_MIN,
-       AERO_GAIN_DB_MAX)
-SETTER(ramp, aero_leafwave_set_ramp_ms, "ramp %g ms", 0, AERO_RAMP_MS_MAX)
-SETTER(stiffness, aero_leafwave_set_stiffness, "stiffness %g",
-       AERO_TREE_STIFFNESS_MIN, AERO_TREE_STIFFNESS_MAX)
-SETTER(beta, aero_leafwave_set_beta, "beta %g", 0, AERO_TREE_BETA_MAX)
-SETTER(k, aero_leafwave_set_mic_k, "k %g", 0, AERO_LEAFWAVE_MIC_K_MAX)
-SETTER(sway, aero_leafwave_set_sway, "sway %g rad", 0,
-       AERO_LEAFWAVE_SWAY_MAX)
-SETTER(coupling, aero_leafwave_set_coupling, "coupling %g",
-       -AERO_LEAFWAVE_COUPLING_MAX, AERO_LEAFWAVE_COUPLING_MAX)
-SETTER(flutter, aero_leafwave_set_flutter, "flutter %g Hz",
-       AERO_LEAFWAVE_FLUTTER_MIN, AERO_LEAFWAVE_FLUTTER_MAX)
-SETTER(hit, aero_leafwave_set_hit, "hit %g Pa", 0, AERO_LEAFWAVE_PA_MAX)
-SETTER(rub, aero_leafwave_set_rub, "rub %g Pa", 0, AERO_LEAFWAVE_PA_MAX)
-SETTER(reach, aero_leafwave_set_reach, "reach %g", AERO_LEAFWAVE_REACH_MIN,
-       AERO_LEAFWAVE_REACH_MAX)
+SETTER(gain, aero_leafwave_set_gain_db, 0)
+SETTER(ramp, aero_leafwave_set_ramp_ms, 0)
+SETTER(stiffness, aero_leafwave_set_stiffness, 0)
+SETTER(beta, aero_leafwave_set_beta, 0)
+SETTER(k, aero_leafwave_set_mic_k, 0)
+SETTER(sway, aero_leafwave_set_sway, 0)
+SETTER(coupling, aero_leafwave_set_coupling, 0)
+SETTER(flutter, aero_leafwave_set_flutter, 0)
+SETTER(hit, aero_leafwave_set_hit, 0)
+SETTER(rub, aero_leafwave_set_rub, 0)
+SETTER(reach, aero_leafwave_set_reach, 0)
+SETTER(voices, aero_leafwave_set_voices, 1)
 
-static void leafwave_tilde_voices(t_leafwave_tilde *x, t_floatarg f)
+/* fm (which 0), tables per octave (1) or octaves (2): the other two stay */
+static void leafwave_tilde_set_tables(t_leafwave_tilde *x, int which,
+                                      t_float f, const char *what)
 {
-    int n;
-    if (x->x_ok && (aero_pd_whole(f, 1, AERO_LEAFWAVE_VOICES_MAX, &n) ||
-                    aero_leafwave_set_voices(&x->x_model, n)))
-        pd_error(x, OBJ ": voices %g out of range (1..%d)", f,
-                 AERO_LEAFWAVE_VOICES_MAX);
-}
-
-static void leafwave_tilde_set_tables(t_leafwave_tilde *x, double fm,
-                                      double per_octave, double octaves,
-                                      const char *what, double value)
-{
+    double v[3];
     int per, oct;
     if (!x->x_ok)
         return;
-    if (aero_pd_whole(per_octave, 1, AERO_LEAFWAVE_PER_OCTAVE_MAX, &per) ||
-        aero_pd_whole(octaves, 1, AERO_LEAFWAVE_OCTAVES_MAX, &oct) ||
-        aero_leafwave_set_tables(&x->x_model, fm, per, oct))
-        pd_error(x, OBJ ": %s %g out of range (fm %g..%g Hz, tables "
-                 "1..%d per octave, octaves 1..%d, at most %d tables)",
-                 what, value, AERO_LEAFWAVE_FM_MIN, AERO_LEAFWAVE_FM_MAX,
-                 AERO_LEAFWAVE_PER_OCTAVE_MAX, AERO_LEAFWAVE_OCTAVES_MAX,
-                 AERO_LEAFWAVE_TABLES_MAX);
+    aero_leafwave_tables(&x->x_core, &v[0], &per, &oct);
+    v[1] = per;
+    v[2] = oct;
+    v[which] = f;
+    if (aero_pd_whole_of(&x->x_base, "tables", v[1], &per) ||
+        aero_pd_whole_of(&x->x_base, "octaves", v[2], &oct) ||
+        aero_leafwave_set_tables(&x->x_core, v[0], per, oct))
+        aero_pd_refused(&x->x_base, what, f);
 }
 
 static void leafwave_tilde_fm(t_leafwave_tilde *x, t_floatarg f)
 {
-    leafwave_tilde_set_tables(x, f, x->x_model.tables_per_octave,
-                              x->x_model.octaves, "fm", f);
+    leafwave_tilde_set_tables(x, 0, f, "fm");
 }
 
 static void leafwave_tilde_tables(t_leafwave_tilde *x, t_floatarg f)
 {
-    leafwave_tilde_set_tables(x, x->x_model.fm, f, x->x_model.octaves,
-                              "tables", f);
+    leafwave_tilde_set_tables(x, 1, f, "tables");
 }
 
 static void leafwave_tilde_octaves(t_leafwave_tilde *x, t_floatarg f)
 {
-    leafwave_tilde_set_tables(x, x->x_model.fm, x->x_model.tables_per_octave,
-                              f, "octaves", f);
+    leafwave_tilde_set_tables(x, 2, f, "octaves");
 }
 
 static void leafwave_tilde_seed(t_leafwave_tilde *x, t_floatarg f)
 {
-    if (x->x_ok && aero_leafwave_set_seed(&x->x_model, aero_pd_seed(f)))
+    if (x->x_ok && aero_leafwave_set_seed(&x->x_core, aero_pd_seed(f)))
         pd_error(x, OBJ ": out of memory restarting from seed %g", f);
 }
 
@@ -185,8 +150,8 @@ static void leafwave_tilde_wind(t_leafwave_tilde *x, t_symbol *s, int argc,
        signal overrides it), as in [treebranch~] */
     x->x_f = (t_float)speed;
     const double *dir = x->x_wind.dir;
-    aero_leafwave_set_direction(&x->x_model, dir[0], dir[1], dir[2]);
-    if (aero_leafwave_set_speed(&x->x_model, speed) == 1)
+    aero_leafwave_set_direction(&x->x_core, dir[0], dir[1], dir[2]);
+    if (aero_leafwave_set_speed(&x->x_core, speed) == 1)
         aero_pd_clamped(&x->x_base);
 }
 
@@ -196,8 +161,8 @@ static void leafwave_tilde_mic(t_leafwave_tilde *x, t_symbol *s, int argc,
     double v[3];
     if (!x->x_ok || aero_pd_floats(x, OBJ, s->s_name, argc, argv, 3, v))
         return;
-    if (aero_leafwave_set_mic(&x->x_model, v[0], v[1], v[2]))
-        pd_error(x, OBJ ": mic direction must be finite");
+    if (aero_leafwave_set_mic(&x->x_core, v[0], v[1], v[2]))
+        aero_pd_refused_list(&x->x_base, s->s_name);
 }
 
 static void leafwave_tilde_listener(t_leafwave_tilde *x, t_symbol *s,
@@ -205,36 +170,59 @@ static void leafwave_tilde_listener(t_leafwave_tilde *x, t_symbol *s,
 {
     aero_ears e;
     if (x->x_ok && aero_pd_ears(&x->x_base, s, argc, argv, &e) &&
-        aero_leafwave_set_ears(&x->x_model, &e))
+        aero_leafwave_set_ears(&x->x_core, &e))
         aero_pd_bad_ears(&x->x_base, e.n);
 }
 
 /* --- creation ------------------------------------------------------------- */
 
+#define TABLES_NOTE "at most " AERO_PD_STR(AERO_LEAFWAVE_TABLES_MAX) \
+    " tables in all"
+
 static const aero_pd_method leafwave_tilde_methods[] = {
-    {"stereo", AERO_PD_SWITCH, 0, NULL, 0},
-    {"open", AERO_PD_SYMBOL, 0, (t_method)leafwave_tilde_open, 0},
-    {"tree", AERO_PD_SYMBOL, 0, (t_method)leafwave_tilde_open, 0},
-    {"wind", AERO_PD_LIST, 3, (t_method)leafwave_tilde_wind, 0},
-    {"listener", AERO_PD_LIST, 3, (t_method)leafwave_tilde_listener, 0},
-    {"ears", AERO_PD_LIST, 6, (t_method)leafwave_tilde_listener, 0},
-    {"mic", AERO_PD_LIST, 3, (t_method)leafwave_tilde_mic, 0},
-    {"k", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_k, 0},
-    {"gain", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_gain, 0},
-    {"seed", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_seed, 0},
-    {"ramp", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_ramp, 0},
-    {"stiffness", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_stiffness, 0},
-    {"beta", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_beta, 0},
-    {"sway", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_sway, 0},
-    {"coupling", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_coupling, 0},
-    {"flutter", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_flutter, 0},
-    {"hit", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_hit, 0},
-    {"rub", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_rub, 0},
-    {"reach", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_reach, 0},
-    {"voices", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_voices, 0},
-    {"fm", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_fm, 0},
-    {"tables", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_tables, 0},
-    {"octaves", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_octaves, 0},
+    {"stereo", AERO_PD_SWITCH, 0, NULL, 0, AERO_PD_NO_RULE},
+    {"open", AERO_PD_SYMBOL, 0, (t_method)leafwave_tilde_open, 0, AERO_PD_NO_RULE},
+    {"tree", AERO_PD_SYMBOL, 0, (t_method)leafwave_tilde_open, 0, AERO_PD_NO_RULE},
+    {"wind", AERO_PD_LIST, 3, (t_method)leafwave_tilde_wind, 0,
+     AERO_PD_NOTE("finite")},
+    {"listener", AERO_PD_LIST, 3, (t_method)leafwave_tilde_listener, 0, AERO_PD_NO_RULE},
+    {"ears", AERO_PD_LIST, 6, (t_method)leafwave_tilde_listener, 0, AERO_PD_NO_RULE},
+    {"mic", AERO_PD_LIST, 3, (t_method)leafwave_tilde_mic, 0,
+     AERO_PD_NOTE("a finite direction")},
+    {"k", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_k, 0,
+     AERO_PD_RANGE(0, AERO_LEAFWAVE_MIC_K_MAX, NULL)},
+    {"gain", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_gain, 0,
+     AERO_PD_RANGE(AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX, "dB")},
+    {"seed", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_seed, 0, AERO_PD_NO_RULE},
+    {"ramp", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_ramp, 0,
+     AERO_PD_RANGE(0, AERO_RAMP_MS_MAX, "ms")},
+    {"stiffness", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_stiffness, 0,
+     AERO_PD_RANGE(AERO_TREE_STIFFNESS_MIN, AERO_TREE_STIFFNESS_MAX, NULL)},
+    {"beta", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_beta, 0,
+     AERO_PD_RANGE(0, AERO_TREE_BETA_MAX, NULL)},
+    {"sway", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_sway, 0,
+     AERO_PD_RANGE(0, AERO_LEAFWAVE_SWAY_MAX, "rad")},
+    {"coupling", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_coupling, 0,
+     AERO_PD_RANGE(-AERO_LEAFWAVE_COUPLING_MAX, AERO_LEAFWAVE_COUPLING_MAX,
+                   NULL)},
+    {"flutter", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_flutter, 0,
+     AERO_PD_RANGE(AERO_LEAFWAVE_FLUTTER_MIN, AERO_LEAFWAVE_FLUTTER_MAX,
+                   "Hz")},
+    {"hit", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_hit, 0,
+     AERO_PD_RANGE(0, AERO_LEAFWAVE_PA_MAX, "Pa")},
+    {"rub", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_rub, 0,
+     AERO_PD_RANGE(0, AERO_LEAFWAVE_PA_MAX, "Pa")},
+    {"reach", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_reach, 0,
+     AERO_PD_RANGE(AERO_LEAFWAVE_REACH_MIN, AERO_LEAFWAVE_REACH_MAX, NULL)},
+    {"voices", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_voices, 0,
+     AERO_PD_RANGE(1, AERO_LEAFWAVE_VOICES_MAX, NULL)},
+    {"fm", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_fm, 0,
+     AERO_PD_RANGE(AERO_LEAFWAVE_FM_MIN, AERO_LEAFWAVE_FM_MAX, "Hz")},
+    {"tables", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_tables, 0,
+     AERO_PD_RANGE_NOTE(1, AERO_LEAFWAVE_PER_OCTAVE_MAX, "per octave",
+                        TABLES_NOTE)},
+    {"octaves", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_octaves, 0,
+     AERO_PD_RANGE_NOTE(1, AERO_LEAFWAVE_OCTAVES_MAX, NULL, TABLES_NOTE)},
 };
 
 static const aero_pd_spec leafwave_tilde_spec = {
@@ -247,7 +235,7 @@ static void *leafwave_tilde_new(t_symbol *s, int argc, t_atom *argv)
     t_leafwave_tilde *x = (t_leafwave_tilde *)pd_new(leafwave_tilde_class);
     aero_pd_base_init(&x->x_base, x, &leafwave_tilde_spec, argc, argv);
     aero_pd_wind_init(&x->x_wind);
-    x->x_ok = aero_leafwave_init(&x->x_model, sys_getsr(),
+    x->x_ok = aero_leafwave_init(&x->x_core, sys_getsr(),
                                  x->x_base.stereo ? 2 : 1,
                                  aero_pd_default_seed()) == 0;
     if (!x->x_ok)
@@ -268,7 +256,7 @@ static void leafwave_tilde_free(t_leafwave_tilde *x)
 {
     aero_pd_base_free(&x->x_base);
     if (x->x_ok)
-        aero_leafwave_free(&x->x_model);
+        aero_leafwave_free(&x->x_core);
 }
 
 AERO_PD_EXPORT void leafwave_tilde_setup(void)

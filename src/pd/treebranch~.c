@@ -10,8 +10,6 @@
 
 #include "treebranch.h"
 
-#include <math.h>
-
 static t_class *treebranch_tilde_class;
 
 typedef struct _treebranch_tilde {
@@ -19,7 +17,7 @@ typedef struct _treebranch_tilde {
     t_float x_f;
     aero_pd_base x_base;
     aero_pd_wind x_wind;
-    aero_treebranch x_tb;
+    aero_treebranch x_core;
 } t_treebranch_tilde;
 
 #define OBJ "[treebranch~]"
@@ -30,58 +28,27 @@ static int treebranch_tilde_process(void *obj, const float *in,
     t_treebranch_tilde *x = obj;
     /* the inlet is the speed along the wind's direction; the core takes
        the block's mean and reports a clamp */
-    return aero_treebranch_process_speed(&x->x_tb, in, out[0], out[1], n);
+    return aero_treebranch_process_speed(&x->x_core, in, out[0], out[1], n);
 }
 
 static void treebranch_tilde_dsp(t_treebranch_tilde *x, t_signal **sp)
 {
-    if (aero_treebranch_set_sample_rate(&x->x_tb, sp[0]->s_sr))
+    if (aero_treebranch_set_sample_rate(&x->x_core, sp[0]->s_sr))
         pd_error(x, OBJ ": bad sample rate %g (or out of memory)",
                  sp[0]->s_sr);
     aero_pd_dsp(&x->x_base, sp, 1, treebranch_tilde_process);
 }
 
-/* bad lines of a tree file, with their line numbers */
-typedef struct {
-    t_treebranch_tilde *x;
-    const char *path;
-    int count;
-} tree_report_ctx;
-
-static void treebranch_tilde_line(void *ctx, int line, const char *message)
-{
-    tree_report_ctx *c = ctx;
-    if (++c->count <= 20)
-        pd_error(c->x, OBJ ": %s:%d: %s (line skipped)", c->path, line,
-                 message);
-    else if (c->count == 21)
-        pd_error(c->x, OBJ ": %s: more bad lines not shown", c->path);
-}
-
 /* file I/O here, in the message domain, never in perform */
 static void treebranch_tilde_open(t_treebranch_tilde *x, t_symbol *name)
 {
-    char path[MAXPDSTRING], err[MAXPDSTRING + 100];
     aero_tree t;
-    tree_report_ctx ctx;
-    if (aero_pd_find_tree(x->x_base.canvas, treebranch_tilde_class, name->s_name,
-                          path, sizeof(path))) {
-        pd_error(x, OBJ ": can't find tree '%s' (looked %s): silent",
-                 name->s_name, path);
-        aero_treebranch_set_tree(&x->x_tb, NULL);
+    if (aero_pd_load_tree(&x->x_base, treebranch_tilde_class, name, &t)) {
+        aero_treebranch_set_tree(&x->x_core, NULL);
         return;
     }
-    ctx.x = x;
-    ctx.path = path;
-    ctx.count = 0;
-    if (aero_tree_load(path, &t, treebranch_tilde_line, &ctx, err,
-                       sizeof(err))) {
-        pd_error(x, OBJ ": %s: silent", err);
-        aero_treebranch_set_tree(&x->x_tb, NULL);
-        return;
-    }
-    if (aero_treebranch_set_tree(&x->x_tb, &t))
-        pd_error(x, OBJ ": %s: out of memory: silent", path);
+    if (aero_treebranch_set_tree(&x->x_core, &t))
+        pd_error(x, OBJ ": %s: out of memory: silent", name->s_name);
 }
 
 static void treebranch_tilde_wind(t_treebranch_tilde *x, t_symbol *s,
@@ -93,33 +60,18 @@ static void treebranch_tilde_wind(t_treebranch_tilde *x, t_symbol *s,
     /* the inlet's float is the speed along the direction (a connected
        signal overrides it) */
     x->x_f = (t_float)speed;
-    aero_treebranch_set_direction(&x->x_tb, x->x_wind.dir);
-    if (aero_treebranch_set_speed(&x->x_tb, speed) == 1)
+    aero_treebranch_set_direction(&x->x_core, x->x_wind.dir);
+    if (aero_treebranch_set_speed(&x->x_core, speed) == 1)
         aero_pd_clamped(&x->x_base);
 }
 
 static void treebranch_tilde_listener(t_treebranch_tilde *x, t_symbol *s,
                                       int argc, t_atom *argv)
 {
-    double v[3];
-    if (aero_pd_floats(x, OBJ, s->s_name, argc, argv, 3, v))
-        return;
-    aero_ears e = aero_ears_at(v[0], v[1], v[2]);
-    if (aero_treebranch_set_ears(&x->x_tb, &e))
-        pd_error(x, OBJ ": listener position must be finite, within 1e5 m");
-}
-
-static void treebranch_tilde_ears(t_treebranch_tilde *x, t_symbol *s,
-                                  int argc, t_atom *argv)
-{
-    double v[6];
-    if (aero_pd_floats(x, OBJ, s->s_name, argc, argv, 6, v))
-        return;
-    if (!x->x_base.stereo)
-        pd_error(x, OBJ ": 'ears' needs -stereo (the left ear is used)");
-    aero_ears e = {2, {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}}};
-    if (aero_treebranch_set_ears(&x->x_tb, &e))
-        pd_error(x, OBJ ": ear positions must be finite, within 1e5 m");
+    aero_ears e;
+    if (aero_pd_ears(&x->x_base, s, argc, argv, &e) &&
+        aero_treebranch_set_ears(&x->x_core, &e))
+        aero_pd_bad_ears(&x->x_base, e.n);
 }
 
 static void treebranch_tilde_mic(t_treebranch_tilde *x, t_symbol *s,
@@ -128,77 +80,59 @@ static void treebranch_tilde_mic(t_treebranch_tilde *x, t_symbol *s,
     double v[3];
     if (aero_pd_floats(x, OBJ, s->s_name, argc, argv, 3, v))
         return;
-    if (aero_treebranch_set_mic(&x->x_tb, v))
-        pd_error(x, OBJ ": mic direction must be finite");
+    if (aero_treebranch_set_mic(&x->x_core, v))
+        aero_pd_refused_list(&x->x_base, s->s_name);
 }
 
-static void treebranch_tilde_k(t_treebranch_tilde *x, t_floatarg f)
-{
-    if (aero_treebranch_set_mic_k(&x->x_tb, f))
-        pd_error(x, OBJ ": k %g out of range (0..%g)", f,
-                 AERO_TREEBRANCH_MIC_K_MAX);
-}
-
-static void treebranch_tilde_gain(t_treebranch_tilde *x, t_floatarg f)
-{
-    if (aero_treebranch_set_gain_db(&x->x_tb, f))
-        pd_error(x, OBJ ": gain %g dB out of range (%g..%g)", f,
-                 AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX);
-}
-
-static void treebranch_tilde_ramp(t_treebranch_tilde *x, t_floatarg f)
-{
-    if (aero_treebranch_set_ramp_ms(&x->x_tb, f))
-        pd_error(x, OBJ ": ramp %g ms out of range (0..%g)", f,
-                 AERO_RAMP_MS_MAX);
-}
-
-static void treebranch_tilde_stiffness(t_treebranch_tilde *x, t_floatarg f)
-{
-    if (aero_treebranch_set_stiffness(&x->x_tb, f))
-        pd_error(x, OBJ ": stiffness %g out of range (%g..%g)", f,
-                 AERO_TREE_STIFFNESS_MIN, AERO_TREE_STIFFNESS_MAX);
-}
-
-static void treebranch_tilde_beta(t_treebranch_tilde *x, t_floatarg f)
-{
-    if (aero_treebranch_set_beta(&x->x_tb, f))
-        pd_error(x, OBJ ": beta %g out of range (0..%g)", f,
-                 AERO_TREE_BETA_MAX);
-}
-
-static void treebranch_tilde_alpha(t_treebranch_tilde *x, t_floatarg f)
-{
-    if (aero_treebranch_set_alpha(&x->x_tb, f))
-        pd_error(x, OBJ ": alpha %g out of range (%g..%g)", f,
-                 AERO_TREEBRANCH_ALPHA_MIN, AERO_TREEBRANCH_ALPHA_MAX);
-}
+AERO_PD_SETTER(treebranch_tilde, t_treebranch_tilde, k, x_core,
+               aero_treebranch_set_mic_k)
+AERO_PD_SETTER(treebranch_tilde, t_treebranch_tilde, gain, x_core,
+               aero_treebranch_set_gain_db)
+AERO_PD_SETTER(treebranch_tilde, t_treebranch_tilde, ramp, x_core,
+               aero_treebranch_set_ramp_ms)
+AERO_PD_SETTER(treebranch_tilde, t_treebranch_tilde, stiffness, x_core,
+               aero_treebranch_set_stiffness)
+AERO_PD_SETTER(treebranch_tilde, t_treebranch_tilde, beta, x_core,
+               aero_treebranch_set_beta)
+AERO_PD_SETTER(treebranch_tilde, t_treebranch_tilde, alpha, x_core,
+               aero_treebranch_set_alpha)
 
 static void treebranch_tilde_seed(t_treebranch_tilde *x, t_floatarg f)
 {
     if (!(f == f) || f < 0 || f > 4294967295.0) {
-        pd_error(x, OBJ ": seed %g out of range (0..2^32-1)", f);
+        aero_pd_refused(&x->x_base, "seed", f);
         return;
     }
-    if (aero_treebranch_set_seed(&x->x_tb, (uint32_t)(int64_t)f))
+    if (aero_treebranch_set_seed(&x->x_core, (uint32_t)(int64_t)f))
         pd_error(x, OBJ ": out of memory restarting the tree: silent");
 }
 
 static const aero_pd_method treebranch_tilde_methods[] = {
-    {"stereo", AERO_PD_SWITCH, 0, NULL, 0},
-    {"seed", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_seed, 0},
-    {"gain", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_gain, 0},
-    {"stiffness", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_stiffness, 0},
-    {"beta", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_beta, 0},
-    {"alpha", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_alpha, 0},
-    {"k", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_k, 0},
-    {"ramp", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_ramp, 0},
-    {"mic", AERO_PD_LIST, 3, (t_method)treebranch_tilde_mic, 0},
-    {"listener", AERO_PD_LIST, 3, (t_method)treebranch_tilde_listener, 0},
-    {"ears", AERO_PD_LIST, 6, (t_method)treebranch_tilde_ears, 0},
-    {"wind", AERO_PD_LIST, 3, (t_method)treebranch_tilde_wind, 0},
+    {"stereo", AERO_PD_SWITCH, 0, NULL, 0, AERO_PD_NO_RULE},
+    {"seed", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_seed, 0,
+     AERO_PD_RANGE_NOTE(0, 4294967295.0, NULL, "2^32-1")},
+    {"gain", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_gain, 0,
+     AERO_PD_RANGE(AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX, "dB")},
+    {"stiffness", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_stiffness, 0,
+     AERO_PD_RANGE(AERO_TREE_STIFFNESS_MIN, AERO_TREE_STIFFNESS_MAX, NULL)},
+    {"beta", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_beta, 0,
+     AERO_PD_RANGE(0, AERO_TREE_BETA_MAX, NULL)},
+    {"alpha", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_alpha, 0,
+     AERO_PD_RANGE(AERO_TREEBRANCH_ALPHA_MIN, AERO_TREEBRANCH_ALPHA_MAX,
+                   NULL)},
+    {"k", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_k, 0,
+     AERO_PD_RANGE(0, AERO_TREEBRANCH_MIC_K_MAX, NULL)},
+    {"ramp", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_ramp, 0,
+     AERO_PD_RANGE(0, AERO_RAMP_MS_MAX, "ms")},
+    {"mic", AERO_PD_LIST, 3, (t_method)treebranch_tilde_mic, 0,
+     AERO_PD_NOTE("a finite direction")},
+    {"listener", AERO_PD_LIST, 3, (t_method)treebranch_tilde_listener, 0,
+     AERO_PD_NO_RULE},
+    {"ears", AERO_PD_LIST, 6, (t_method)treebranch_tilde_listener, 0, AERO_PD_NO_RULE},
+    {"wind", AERO_PD_LIST, 3, (t_method)treebranch_tilde_wind, 0,
+     AERO_PD_NOTE("finite")},
     {"open", AERO_PD_SYMBOL, 0, (t_method)treebranch_tilde_open,
-     AERO_PD_MESSAGE_ONLY},
+     AERO_PD_MESSAGE_ONLY, AERO_PD_NO_RULE},
 };
 
 static const aero_pd_spec treebranch_tilde_spec = {
@@ -212,9 +146,9 @@ static void *treebranch_tilde_new(t_symbol *s, int argc, t_atom *argv)
         (t_treebranch_tilde *)pd_new(treebranch_tilde_class);
     aero_pd_base_init(&x->x_base, x, &treebranch_tilde_spec, argc, argv);
     aero_pd_wind_init(&x->x_wind);
-    if (aero_treebranch_init(&x->x_tb, sys_getsr(), aero_pd_default_seed()))
+    if (aero_treebranch_init(&x->x_core, sys_getsr(), aero_pd_default_seed()))
         pd_error(x, OBJ ": out of memory: silent");
-    aero_treebranch_set_stereo(&x->x_tb, x->x_base.stereo);
+    aero_treebranch_set_stereo(&x->x_core, x->x_base.stereo);
     /* the tree file: the first argument, when it is not a flag */
     t_symbol *file = aero_pd_first_symbol(&argc, &argv);
     if (file)
@@ -227,7 +161,7 @@ static void *treebranch_tilde_new(t_symbol *s, int argc, t_atom *argv)
 static void treebranch_tilde_free(t_treebranch_tilde *x)
 {
     aero_pd_base_free(&x->x_base);
-    aero_treebranch_free(&x->x_tb);
+    aero_treebranch_free(&x->x_core);
 }
 
 AERO_PD_EXPORT void treebranch_tilde_setup(void)

@@ -21,7 +21,7 @@ typedef struct _vortex_tilde {
     t_object x_obj;
     t_float x_f;
     aero_pd_base x_base;
-    aero_vortex_player x_player;
+    aero_vortex x_core;
 } t_vortex_tilde;
 
 #define OBJ "[vortex~]"
@@ -30,12 +30,12 @@ static int vortex_tilde_process(void *obj, const float *in,
                                 float *const *out, int n)
 {
     t_vortex_tilde *x = obj;
-    return aero_vortex_player_process(&x->x_player, in, out, n);
+    return aero_vortex_process(&x->x_core, in, out, n);
 }
 
 static void vortex_tilde_dsp(t_vortex_tilde *x, t_signal **sp)
 {
-    if (aero_vortex_player_set_sample_rate(&x->x_player, sp[0]->s_sr))
+    if (aero_vortex_set_sample_rate(&x->x_core, sp[0]->s_sr))
         pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
     aero_pd_dsp(&x->x_base, sp, 1, vortex_tilde_process);
 }
@@ -43,24 +43,18 @@ static void vortex_tilde_dsp(t_vortex_tilde *x, t_signal **sp)
 static int vortex_tilde_set_texture(void *core, aero_texture *t, char *err,
                                     size_t len)
 {
-    return aero_vortex_player_set_texture(core, t, err, len);
+    return aero_vortex_set_texture(core, t, err, len);
 }
 
 /* file I/O here, in the message domain, never in perform */
 static void vortex_tilde_texture(t_vortex_tilde *x, t_symbol *name)
 {
     aero_pd_load_texture(&x->x_base, vortex_tilde_class, name,
-                         vortex_tilde_set_texture, &x->x_player, "silent");
+                         vortex_tilde_set_texture, &x->x_core, "silent");
 }
 
-static void vortex_tilde_n(t_vortex_tilde *x, t_floatarg f)
-{
-    int n;
-    if (aero_pd_whole(f, 1, AERO_VORTEX_MAX_SOURCES, &n) ||
-        aero_vortex_player_set_count(&x->x_player, n))
-        pd_error(x, OBJ ": n %g: the number of source volumes is a whole "
-                 "number 1..%d", f, AERO_VORTEX_MAX_SOURCES);
-}
+AERO_PD_SETTER_WHOLE(vortex_tilde, t_vortex_tilde, n, x_core,
+                     aero_vortex_set_count)
 
 /* a list of floats of at most max entries; the count or -1 */
 static int float_list(t_vortex_tilde *x, const char *what, int argc,
@@ -85,25 +79,23 @@ static int float_list(t_vortex_tilde *x, const char *what, int argc,
 static void vortex_tilde_speeds(t_vortex_tilde *x, t_symbol *s, int argc,
                                 t_atom *argv)
 {
-    int n = x->x_player.n, count;
+    int n = aero_vortex_count(&x->x_core), count;
     double *v = getbytes(sizeof(double) * (size_t)(argc > 0 ? argc : 1));
     count = float_list(x, s->s_name, argc, argv, 1, v, n);
-    if (count > 0 && aero_vortex_player_set_speeds(&x->x_player, v, count))
-        pd_error(x, OBJ ": speeds must be 0..%g m/s (Mach 0.3)",
-                 AERO_MACH_LIMIT * AERO_C0);
+    if (count > 0 && aero_vortex_set_speeds(&x->x_core, v, count))
+        aero_pd_refused_list(&x->x_base, s->s_name);
     freebytes(v, sizeof(double) * (size_t)(argc > 0 ? argc : 1));
 }
 
 static void vortex_tilde_positions(t_vortex_tilde *x, t_symbol *s, int argc,
                                    t_atom *argv)
 {
-    int n = x->x_player.n, count;
+    int n = aero_vortex_count(&x->x_core), count;
     double *v = getbytes(sizeof(double) * (size_t)(argc > 0 ? argc : 1));
     count = float_list(x, s->s_name, argc, argv, 3, v, n);
     if (count > 0 &&
-        aero_vortex_player_set_positions(&x->x_player, v, count))
-        pd_error(x, OBJ ": positions must be finite, within %g m",
-                 AERO_POSITION_LIMIT);
+        aero_vortex_set_positions(&x->x_core, v, count))
+        aero_pd_refused_list(&x->x_base, s->s_name);
     freebytes(v, sizeof(double) * (size_t)(argc > 0 ? argc : 1));
 }
 
@@ -112,92 +104,74 @@ static void vortex_tilde_listener(t_vortex_tilde *x, t_symbol *s, int argc,
 {
     aero_ears e;
     if (aero_pd_ears(&x->x_base, s, argc, argv, &e) &&
-        aero_vortex_player_set_ears(&x->x_player, &e))
+        aero_vortex_set_ears(&x->x_core, &e))
         aero_pd_bad_ears(&x->x_base, e.n);
 }
 
-static void vortex_tilde_gain(t_vortex_tilde *x, t_floatarg f)
-{
-    if (aero_vortex_player_set_gain_db(&x->x_player, f))
-        pd_error(x, OBJ ": gain %g dB out of range (%g..%g)", f,
-                 AERO_GAIN_DB_MIN, AERO_VORTEX_GAIN_DB_MAX);
-}
-
-static void vortex_tilde_clip(t_vortex_tilde *x, t_floatarg f)
-{
-    if (aero_vortex_player_set_clip(&x->x_player, f))
-        pd_error(x, OBJ ": clip %g Pa out of range (0 = off, up to %g)", f,
-                 AERO_VORTEX_CLIP_MAX);
-}
-
-static void vortex_tilde_ramp(t_vortex_tilde *x, t_floatarg f)
-{
-    if (aero_vortex_player_set_ramp_ms(&x->x_player, f))
-        pd_error(x, OBJ ": ramp %g ms out of range (0..%g)", f,
-                 AERO_RAMP_MS_MAX);
-}
-
+AERO_PD_SETTER(vortex_tilde, t_vortex_tilde, gain, x_core,
+               aero_vortex_set_gain_db)
+AERO_PD_SETTER(vortex_tilde, t_vortex_tilde, clip, x_core,
+               aero_vortex_set_clip)
+AERO_PD_SETTER(vortex_tilde, t_vortex_tilde, ramp, x_core,
+               aero_vortex_set_ramp_ms)
 /* combustion noise (combustion_noise.h): the flame's mean heat release */
-static void vortex_tilde_power(t_vortex_tilde *x, t_floatarg f)
-{
-    if (aero_vortex_player_set_power_kw(&x->x_player, f))
-        pd_error(x, OBJ ": power %g kW out of range (0 = no combustion "
-                 "noise, up to %g)", f, AERO_COMBUSTION_POWER_KW_MAX);
-}
-
-static void vortex_tilde_length(t_vortex_tilde *x, t_floatarg f)
-{
-    if (aero_vortex_player_set_flame_length(&x->x_player, f))
-        pd_error(x, OBJ ": length %g m out of range (%g..%g)", f,
-                 AERO_COMBUSTION_LENGTH_MIN, AERO_COMBUSTION_LENGTH_MAX);
-}
-
-static void vortex_tilde_strouhal(t_vortex_tilde *x, t_floatarg f)
-{
-    if (aero_vortex_player_set_strouhal(&x->x_player, f))
-        pd_error(x, OBJ ": strouhal %g out of range (%g..%g)", f,
-                 AERO_COMBUSTION_ST_MIN, AERO_COMBUSTION_ST_MAX);
-}
-
-static void vortex_tilde_fluctuation(t_vortex_tilde *x, t_floatarg f)
-{
-    if (aero_vortex_player_set_fluctuation(&x->x_player, f))
-        pd_error(x, OBJ ": fluctuation %g out of range (0..1)", f);
-}
+AERO_PD_SETTER(vortex_tilde, t_vortex_tilde, power, x_core,
+               aero_vortex_set_power_kw)
+AERO_PD_SETTER(vortex_tilde, t_vortex_tilde, length, x_core,
+               aero_vortex_set_flame_length)
+AERO_PD_SETTER(vortex_tilde, t_vortex_tilde, strouhal, x_core,
+               aero_vortex_set_strouhal)
+AERO_PD_SETTER(vortex_tilde, t_vortex_tilde, fluctuation, x_core,
+               aero_vortex_set_fluctuation)
 
 static void vortex_tilde_falloff(t_vortex_tilde *x, t_floatarg f)
 {
     if ((f != 1 && f != 3) ||
-        aero_vortex_player_set_falloff(&x->x_player, (int)f))
-        pd_error(x, OBJ ": falloff %g: 1 (p ~ 1/r, the far field) or 3 "
-                 "(the paper's 1/r^3)", f);
+        aero_vortex_set_falloff(&x->x_core, (int)f))
+        aero_pd_refused(&x->x_base, "falloff", f);
 }
 
 static void vortex_tilde_seed(t_vortex_tilde *x, t_floatarg f)
 {
-    aero_vortex_player_set_seed(&x->x_player, aero_pd_seed(f));
+    aero_vortex_set_seed(&x->x_core, aero_pd_seed(f));
 }
 
 static const aero_pd_method vortex_tilde_methods[] = {
-    {"stereo", AERO_PD_SWITCH, 0, NULL, 0},
+    {"stereo", AERO_PD_SWITCH, 0, NULL, 0, AERO_PD_NO_RULE},
     /* -n first, so -texture and the rest see every source */
-    {"n", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_n, AERO_PD_EARLY},
-    {"texture", AERO_PD_SYMBOL, 0, (t_method)vortex_tilde_texture, 0},
-    {"gain", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_gain, 0},
-    {"clip", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_clip, 0},
-    {"ramp", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_ramp, 0},
-    {"seed", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_seed, 0},
-    {"power", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_power, 0},
-    {"length", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_length, 0},
-    {"strouhal", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_strouhal, 0},
-    {"fluctuation", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_fluctuation, 0},
-    {"falloff", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_falloff, 0},
-    {"listener", AERO_PD_LIST, 3, (t_method)vortex_tilde_listener, 0},
-    {"ears", AERO_PD_LIST, 6, (t_method)vortex_tilde_listener, 0},
+    {"n", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_n, AERO_PD_EARLY,
+     AERO_PD_RANGE_NOTE(1, AERO_VORTEX_MAX_SOURCES, NULL,
+                        "source volumes, a whole number")},
+    {"texture", AERO_PD_SYMBOL, 0, (t_method)vortex_tilde_texture, 0, AERO_PD_NO_RULE},
+    {"gain", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_gain, 0,
+     AERO_PD_RANGE(AERO_GAIN_DB_MIN, AERO_VORTEX_GAIN_DB_MAX, "dB")},
+    {"clip", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_clip, 0,
+     AERO_PD_RANGE_NOTE(0, AERO_VORTEX_CLIP_MAX, "Pa", "0 = off")},
+    {"ramp", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_ramp, 0,
+     AERO_PD_RANGE(0, AERO_RAMP_MS_MAX, "ms")},
+    {"seed", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_seed, 0, AERO_PD_NO_RULE},
+    {"power", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_power, 0,
+     AERO_PD_RANGE_NOTE(0, AERO_COMBUSTION_POWER_KW_MAX, "kW",
+                        "0 = no combustion noise")},
+    {"length", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_length, 0,
+     AERO_PD_RANGE(AERO_COMBUSTION_LENGTH_MIN, AERO_COMBUSTION_LENGTH_MAX,
+                   "m")},
+    {"strouhal", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_strouhal, 0,
+     AERO_PD_RANGE(AERO_COMBUSTION_ST_MIN, AERO_COMBUSTION_ST_MAX, NULL)},
+    {"fluctuation", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_fluctuation, 0,
+     AERO_PD_RANGE(0, 1, NULL)},
+    {"falloff", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_falloff, 0,
+     AERO_PD_RANGE_NOTE(1, 3, NULL, "1: p ~ 1/r, the far field, or 3: the "
+                        "paper's 1/r^3")},
+    {"listener", AERO_PD_LIST, 3, (t_method)vortex_tilde_listener, 0, AERO_PD_NO_RULE},
+    {"ears", AERO_PD_LIST, 6, (t_method)vortex_tilde_listener, 0, AERO_PD_NO_RULE},
     {"speeds", AERO_PD_LIST, 0, (t_method)vortex_tilde_speeds,
-     AERO_PD_MESSAGE_ONLY},
+     AERO_PD_MESSAGE_ONLY,
+     AERO_PD_RANGE_NOTE(0, AERO_MACH_LIMIT * AERO_C0, "m/s", "Mach 0.3")},
     {"positions", AERO_PD_LIST, 0, (t_method)vortex_tilde_positions,
-     AERO_PD_MESSAGE_ONLY},
+     AERO_PD_MESSAGE_ONLY,
+     AERO_PD_RANGE_NOTE(-AERO_POSITION_LIMIT, AERO_POSITION_LIMIT, "m",
+                        "finite")},
 };
 
 static const aero_pd_spec vortex_tilde_spec = {
@@ -209,7 +183,7 @@ static void *vortex_tilde_new(t_symbol *s, int argc, t_atom *argv)
     (void)s;
     t_vortex_tilde *x = (t_vortex_tilde *)pd_new(vortex_tilde_class);
     aero_pd_base_init(&x->x_base, x, &vortex_tilde_spec, argc, argv);
-    if (aero_vortex_player_init(&x->x_player, sys_getsr(), x->x_base.stereo,
+    if (aero_vortex_init(&x->x_core, sys_getsr(), x->x_base.stereo,
                                 aero_pd_default_seed()))
         pd_error(x, OBJ ": out of memory for the sources: silent");
     aero_pd_parse_flags(x, &vortex_tilde_spec, argc, argv);
@@ -220,7 +194,7 @@ static void *vortex_tilde_new(t_symbol *s, int argc, t_atom *argv)
 static void vortex_tilde_free(t_vortex_tilde *x)
 {
     aero_pd_base_free(&x->x_base);
-    aero_vortex_player_free(&x->x_player);
+    aero_vortex_free(&x->x_core);
 }
 
 AERO_PD_EXPORT void vortex_tilde_setup(void)

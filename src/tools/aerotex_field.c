@@ -412,12 +412,12 @@ static double sound_length(const auralize_job *j,
         if (d > far)
             far = d;
     }
-    duration = aero_field_render_length(src, speed, far);
+    duration = aero_fieldsound_length(src, speed, far);
     return path[npath - 1].t > duration ? path[npath - 1].t : duration;
 }
 
 /* total samples heard along the path into pcm */
-static void render(const auralize_job *j, aero_field_render *r,
+static void render(const auralize_job *j, aero_fieldsound *r,
                    const path_point *path, int npath, float *pcm, long total,
                    timing *tm)
 {
@@ -426,8 +426,8 @@ static void render(const auralize_job *j, aero_field_render *r,
     long done = 0;
     path_at(path, npath, 0, p);
     aero_ears start = aero_ears_at(p[0], p[1], p[2]);
-    aero_field_render_place_ears(r, &start);
-    aero_field_render_play(r);
+    aero_fieldsound_place_ears(r, &start);
+    aero_fieldsound_play(r);
     aerotex_progress_start(&prog, "rendering", total, j->quiet);
     while (done < total) {
         int c = total - done < AERO_FIELD_CHUNK ? (int)(total - done)
@@ -438,7 +438,7 @@ static void render(const auralize_job *j, aero_field_render *r,
         memcpy(r->target, p, sizeof p);
         r->ramp_left = c;
         t0 = aerotex_cpu_now();
-        aero_field_render_process(r, pcm + done, c);
+        aero_fieldsound_process(r, pcm + done, c);
         tm->render += aerotex_cpu_now() - t0;
         done += c;
         aerotex_progress_add(&prog, c);
@@ -469,7 +469,7 @@ static int write_wav(const char *file, const float *pcm, long total,
 }
 
 static void report(const auralize_job *j, const aero_volume_info *info,
-                   const aero_field_sources *src, const aero_field_render *r,
+                   const aero_field_sources *src, const aero_fieldsound *r,
                    const float *pcm, long total, const timing *tm)
 {
     double peak = 0;
@@ -497,20 +497,20 @@ static int sound(const auralize_job *j, const aero_volume_info *info,
                  const aero_field_sources *src, const path_point *path,
                  int npath, const timing *pre)
 {
-    aero_field_render r;
+    aero_fieldsound r;
     timing tm = *pre;
     float *pcm = NULL;
     long total;
     int rc = 1;
-    aero_field_render_init(&r, j->rate);
+    aero_fieldsound_init(&r, j->rate);
     r.direct = j->direct;
-    if (aero_field_render_set_sources(&r, src)) {
+    if (aero_fieldsound_set_sources(&r, src)) {
         aerotex_error("out of memory");
         goto done;
     }
     if (j->speed > 0)
-        aero_field_render_set_speed(&r, j->speed);
-    aero_field_render_set_gain_db(&r, j->gain_db);
+        aero_fieldsound_set_speed(&r, j->speed);
+    aero_fieldsound_set_gain_db(&r, j->gain_db);
     total = (long)ceil(sound_length(j, src, r.speed_target, path, npath) *
                        j->rate);
     pcm = malloc(sizeof(float) * (total > 0 ? total : 1));
@@ -524,7 +524,7 @@ static int sound(const auralize_job *j, const aero_volume_info *info,
         report(j, info, src, &r, pcm, total, &tm);
 done:
     free(pcm);
-    aero_field_render_free(&r);
+    aero_fieldsound_free(&r);
     return rc;
 }
 

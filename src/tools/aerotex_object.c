@@ -690,7 +690,7 @@ static int object_run(int argc, char **argv)
         status = aerotex_job_run(&j.job, argc, argv, o.ch, o.nd,
                                  sizeof(direction_task), &o, run_directions,
                                  write_texture);
-    aero_body_free(&o.body);
+    aero_body_shape_free(&o.body);
     if (o.section.data)
         aero_texture_free(&o.section);
     return status;

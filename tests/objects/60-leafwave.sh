@@ -49,7 +49,7 @@ judge $ANALYZE level "$OUT/lw-away.wav" --max 0
 
 # 6. a missing tree file: a clear error, the object is created and silent
 pd_render lw-missing "leafwave~ no-such.tree" 1 500 "; aero-speed 8"
-if grep -q "can't find tree file 'no-such.tree'" "$OUT/lw-missing.log" &&
+if grep -q "can't find tree 'no-such.tree'" "$OUT/lw-missing.log" &&
     ! grep -q "couldn't create" "$OUT/lw-missing.log"; then
     pass "missing tree reported, object created: $(grep -o "can't find.*" "$OUT/lw-missing.log" | head -1)"
 else

@@ -93,7 +93,7 @@ UNIT_TEST(shapes)
                    "inside and outside of the cube");
         UNIT_NEAR_REL(sampled_volume(&b, 40), 1e-3, 0.01, "cube volume");
     }
-    aero_body_free(&b);
+    aero_body_shape_free(&b);
     free(text);
 
     /* bad meshes: clear errors */

@@ -47,21 +47,21 @@ static aero_texture *sphere(int comp)
     return make_texture(1, 1, &angle, &amp, comp, "sphere", 0, "0,0,0");
 }
 
-static void setup(aero_body_texture *s, aero_texture *t, uint32_t seed)
+static void setup(aero_body *s, aero_texture *t, uint32_t seed)
 {
     char err[256];
-    aero_body_texture_init(s, SR, 1, seed);
-    if (aero_body_texture_set_texture(s, t, err, sizeof(err)))
+    aero_body_init(s, SR, 1, seed);
+    if (aero_body_set_texture(s, t, err, sizeof(err)))
         printf("  set_texture: %s\n", err);
-    aero_body_texture_set_ramp_ms(s, 0);
+    aero_body_set_ramp_ms(s, 0);
 }
 
-static void render(aero_body_texture *s, float *out, int n, int block)
+static void render(aero_body *s, float *out, int n, int block)
 {
     for (int i = 0; i < n; i += block) {
         int m = n - i < block ? n - i : block;
         float *o[1] = {out + i};
-        aero_body_texture_process(s, NULL, o, m);
+        aero_body_process(s, NULL, o, m);
     }
 }
 
@@ -77,14 +77,14 @@ static double static_rms(aero_texture *t, const double *wind,
                          const double *ear, double scale, float *buf, int n,
                          double *hz)
 {
-    aero_body_texture s;
+    aero_body s;
     setup(&s, t, 5);
-    aero_body_texture_set_wind(&s, wind);
-    aero_body_texture_set_ears(&s,
+    aero_body_set_wind(&s, wind);
+    aero_body_set_ears(&s,
                                &(aero_ears){1, {{ear[0], ear[1], ear[2]}}});
-    aero_body_texture_set_scale(&s, scale);
+    aero_body_set_scale(&s, scale);
     render(&s, buf, n, 64);
-    aero_body_texture_free(&s);
+    aero_body_free(&s);
     if (hz)
         *hz = zero_crossing_hz(buf + n / 4, n - n / 4);
     return rms(buf + n / 4, n - n / 4);
@@ -130,16 +130,16 @@ UNIT_TEST(block_sizes)
     float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
     /* 2. any block size gives the same sound */
     {
-        aero_body_texture s;
+        aero_body s;
         double diff = 0.0;
         setup(&s, sphere(1), 9);
-        aero_body_texture_set_wind(&s, w10);
+        aero_body_set_wind(&s, w10);
         render(&s, a, n, 64);
-        aero_body_texture_free(&s);
+        aero_body_free(&s);
         setup(&s, sphere(1), 9);
-        aero_body_texture_set_wind(&s, w10);
+        aero_body_set_wind(&s, w10);
         render(&s, b, n, 1);
-        aero_body_texture_free(&s);
+        aero_body_free(&s);
         for (int i = 4800; i < n; i++)
             diff = fmax(diff, fabs(a[i] - b[i]));
         UNIT_CHECK(diff <= 1e-3 * rms(a, n) && rms(a, n) > 0,
@@ -157,18 +157,18 @@ UNIT_TEST(doppler_approach)
      *    carried by a wind of that velocity plus 10 m/s across, so the air
      *    it meets is the static case's: the tone rises by c0 / (c0 - v) */
     {
-        aero_body_texture s;
+        aero_body s;
         const double wind[3] = {10, 40, 0}, q[4] = {1, 0, 0, 0};
         setup(&s, sphere(0), 3); /* the drag component: along the flow */
-        aero_body_texture_set_wind(&s, wind);
-        aero_body_texture_set_ears(&s, &(aero_ears){1, {{0.5, 100, 0}}});
+        aero_body_set_wind(&s, wind);
+        aero_body_set_ears(&s, &(aero_ears){1, {{0.5, 100, 0}}});
         for (int i = 0; i < n; i += 48) { /* a pose every 1 ms */
             double p[3] = {0, -20 + 40 * i / SR, 0};
             float *o[1] = {a + i};
-            aero_body_texture_set_pose(&s, p, q, i ? 0.001 : -1.0);
-            aero_body_texture_process(&s, NULL, o, 48);
+            aero_body_set_pose(&s, p, q, i ? 0.001 : -1.0);
+            aero_body_process(&s, NULL, o, 48);
         }
-        aero_body_texture_free(&s);
+        aero_body_free(&s);
         /* from 0.5 s: the first sound (emitted while the body's velocity
            rose from 0, in a faster relative air flow) has arrived */
         UNIT_NEAR_REL(zero_crossing_hz(a + 24000, n - 24000),
@@ -188,21 +188,21 @@ UNIT_TEST(whirled_sphere)
      *    30 m/s) rises to c0/(c0 - v) as it comes at the listener and
      *    falls to c0/(c0 + v) as it goes away, once per revolution */
     {
-        aero_body_texture s;
+        aero_body s;
         const double R = 2.0, v = 30.0, w = v / R, q[4] = {1, 0, 0, 0};
         const int len = 2 * 48000;
         float *x = calloc(len, sizeof(float));
         double up, down, t_rev = 2 * PI / w, delay = 50.0 / 343.0;
         setup(&s, sphere(0), 4);
-        aero_body_texture_set_ears(&s, &(aero_ears){1, {{0, -50, 0}}});
+        aero_body_set_ears(&s, &(aero_ears){1, {{0, -50, 0}}});
         for (int i = 0; i < len; i += 48) {
             double t = i / SR;
             double p[3] = {R * cos(w * t), R * sin(w * t), 0};
             float *o[1] = {x + i};
-            aero_body_texture_set_pose(&s, p, q, i ? 0.001 : -1.0);
-            aero_body_texture_process(&s, NULL, o, 48);
+            aero_body_set_pose(&s, p, q, i ? 0.001 : -1.0);
+            aero_body_process(&s, NULL, o, 48);
         }
-        aero_body_texture_free(&s);
+        aero_body_free(&s);
         /* towards the listener (-y) fastest at phase pi, away at 2 pi:
            1/16 revolution either side, heard `delay` later */
         up = zero_crossing_hz(x + (int)((t_rev * (0.5 - 1.0 / 16) + t_rev +
@@ -264,7 +264,7 @@ UNIT_TEST(regions_centres)
     {
         const double angle = 90.0;
         double amp = 1.0;
-        aero_body_texture s;
+        aero_body s;
         const double q_flip[4] = {0, 1, 0, 0}, q0[4] = {1, 0, 0, 0};
         const double p0[3] = {0, 0, 0};
         double onset[2];
@@ -278,11 +278,11 @@ UNIT_TEST(regions_centres)
                 row[0] = 0.0f;
             }
             setup(&s, t, 6);
-            aero_body_texture_set_wind(&s, w10);
-            aero_body_texture_set_ears(&s, &(aero_ears){1, {{0.1, 0, 20}}});
-            aero_body_texture_set_pose(&s, p0, pass ? q_flip : q0, -1.0);
+            aero_body_set_wind(&s, w10);
+            aero_body_set_ears(&s, &(aero_ears){1, {{0.1, 0, 20}}});
+            aero_body_set_pose(&s, p0, pass ? q_flip : q0, -1.0);
             render(&s, a, 4800, 32);
-            aero_body_texture_free(&s);
+            aero_body_free(&s);
             onset[pass] = -1;
             for (int i = 0; i < 4800 && onset[pass] < 0; i++)
                 if (fabs(a[i]) > 1e-9)
@@ -302,57 +302,57 @@ UNIT_TEST(bad_input)
     float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
     /* 7. bad input */
     {
-        aero_body_texture s;
+        aero_body s;
         char err[256];
         const double nanv[3] = {NAN, 0, 0}, p[3] = {0, 0, 0};
         const double qz[4] = {0, 0, 0, 0}, qi[4] = {1, 0, 0, 0};
         aero_texture *t = sphere(1), *bad;
         double angle = 90.0, amp = 1.0;
         float speed[64];
-        aero_body_texture_init(&s, SR, 1, 1);
-        UNIT_CHECK(aero_body_texture_set_pose(&s, nanv, qi, 0.01) == -1,
+        aero_body_init(&s, SR, 1, 1);
+        UNIT_CHECK(aero_body_set_pose(&s, nanv, qi, 0.01) == -1,
                    "a NaN position is refused");
-        UNIT_CHECK(aero_body_texture_set_pose(&s, p, qz, 0.01) == -1,
+        UNIT_CHECK(aero_body_set_pose(&s, p, qz, 0.01) == -1,
                    "a zero quaternion is refused");
-        UNIT_CHECK(aero_body_texture_set_wind(&s, nanv) == -1 &&
-                       aero_body_texture_set_scale(&s, 0) == -1 &&
-                       aero_body_texture_set_scale(&s, NAN) == -1 &&
-                       aero_body_texture_set_exponent(&s, -1) == -1,
+        UNIT_CHECK(aero_body_set_wind(&s, nanv) == -1 &&
+                       aero_body_set_scale(&s, 0) == -1 &&
+                       aero_body_set_scale(&s, NAN) == -1 &&
+                       aero_body_set_exponent(&s, -1) == -1,
                    "NaN wind, zero/NaN scale, negative exponent refused");
         aero_texture_set(t, "kind", "aeolian");
-        UNIT_CHECK(aero_body_texture_set_texture(&s, t, err, sizeof err) ==
+        UNIT_CHECK(aero_body_set_texture(&s, t, err, sizeof err) ==
                            -1 && strstr(err, "object"),
                    "an aeolian texture is refused: %s", err);
         aero_texture_free(t);
         free(t);
         bad = make_texture(1, 2, &angle, &amp, 0, "axis", 0, "0,0,1");
-        UNIT_CHECK(aero_body_texture_set_texture(&s, bad, err, sizeof err) ==
+        UNIT_CHECK(aero_body_set_texture(&s, bad, err, sizeof err) ==
                            -1 && strstr(err, "centres"),
                    "too few centres are refused: %s", err);
         aero_texture_free(bad);
         free(bad);
         bad = make_texture(1, 1, &angle, &amp, 0, "cube", 0, "0,0,1");
-        UNIT_CHECK(aero_body_texture_set_texture(&s, bad, err, sizeof err) ==
+        UNIT_CHECK(aero_body_set_texture(&s, bad, err, sizeof err) ==
                        -1, "an unknown symmetry is refused: %s", err);
         aero_texture_free(bad);
         free(bad);
-        aero_body_texture_set_texture(&s, sphere(1), err, sizeof err);
+        aero_body_set_texture(&s, sphere(1), err, sizeof err);
         for (int i = 0; i < 64; i++)
             speed[i] = i % 2 ? NAN : 1e30f;
         {
             float *o[1] = {a};
-            int clamped = aero_body_texture_process(&s, speed, o, 64);
+            int clamped = aero_body_process(&s, speed, o, 64);
             const double fast[3] = {500, 0, 0};
             int finite = 1;
-            aero_body_texture_set_wind(&s, fast);
+            aero_body_set_wind(&s, fast);
             for (int k = 0; k < 20; k++)
-                clamped |= aero_body_texture_process(&s, NULL, o, 64);
+                clamped |= aero_body_process(&s, NULL, o, 64);
             for (int i = 0; i < 64; i++)
                 finite &= a[i] == a[i] && fabs(a[i]) < 1e6;
             UNIT_CHECK(finite && clamped, "NaN/huge speeds: finite output, "
                        "Mach 0.3 clamp reported");
         }
-        aero_body_texture_free(&s);
+        aero_body_free(&s);
     }
     free(a);
     free(b);

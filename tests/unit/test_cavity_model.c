@@ -8,7 +8,7 @@
 
 #define SR 48000.0
 
-static double rms_of(aero_cavity_model *m, float speed, double seconds,
+static double rms_of(aero_cavity *m, float speed, double seconds,
                      int *bad)
 {
     float in[64], out[64];
@@ -17,7 +17,7 @@ static double rms_of(aero_cavity_model *m, float speed, double seconds,
     for (long done = 0; done < total; done += 64) {
         for (int i = 0; i < 64; i++)
             in[i] = speed;
-        aero_cavity_model_process(m, in, (float *[]){out}, 64);
+        aero_cavity_process(m, in, (float *[]){out}, 64);
         for (int i = 0; i < 64; i++) {
             if (!isfinite(out[i]))
                 (*bad)++;
@@ -48,13 +48,13 @@ UNIT_TEST(lock_in)
 {
     double a = sqrt(0.02 * 0.05 / 3.141592653589793);
     int bad = 0;
-    aero_cavity_model m;
-    aero_cavity_model_init(&m, SR, 1);
+    aero_cavity m;
+    aero_cavity_init(&m, SR, 1);
     double shallow = rms_of(&m, 10.0f, 1.0, &bad);
     /* tune the depth onto mode 2 at 10 m/s: it locks in and grows */
     double f2 = aero_cavity_rossiter_hz(10, 0.02, 2);
-    aero_cavity_model_set_depth(&m, 343.0 / (4 * f2) - 0.82 * a);
-    aero_cavity_model_set_ramp_ms(&m, 0);
+    aero_cavity_set_depth(&m, 343.0 / (4 * f2) - 0.82 * a);
+    aero_cavity_set_ramp_ms(&m, 0);
     double locked = rms_of(&m, 10.0f, 1.0, &bad);
     UNIT_CHECK(20 * log10(locked / shallow) > 10,
                "lock-in: +%.1f dB when the depth mode meets mode 2",
@@ -77,19 +77,19 @@ UNIT_TEST(lock_in)
         UNIT_NEAR_REL(aero_cavity_locked_hz(far, depth, 0.02, 0.05), far, 0.002,
                       "unlocked at 7 m/s: Rossiter's mode 2");
     }
-    aero_cavity_model_free(&m);
+    aero_cavity_free(&m);
 }
 
 UNIT_TEST(bad_input)
 {
     int bad = 0;
-    aero_cavity_model m;
-    aero_cavity_model_init(&m, SR, 2);
-    UNIT_CHECK(aero_cavity_model_set_length(&m, 0) < 0 &&
-                   aero_cavity_model_set_depth(&m, NAN) < 0 &&
-                   aero_cavity_model_set_width(&m, -1) < 0 &&
-                   aero_cavity_model_set_exponent(&m, INFINITY) < 0 &&
-                   aero_cavity_model_set_ears(&m,
+    aero_cavity m;
+    aero_cavity_init(&m, SR, 2);
+    UNIT_CHECK(aero_cavity_set_length(&m, 0) < 0 &&
+                   aero_cavity_set_depth(&m, NAN) < 0 &&
+                   aero_cavity_set_width(&m, -1) < 0 &&
+                   aero_cavity_set_exponent(&m, INFINITY) < 0 &&
+                   aero_cavity_set_ears(&m,
                            &(aero_ears){1, {{0, NAN, 0}}}) < 0,
                "bad length, depth, width, exponent, listener rejected");
     double silent = rms_of(&m, 0.0f, 0.2, &bad);
@@ -105,15 +105,15 @@ UNIT_TEST(bad_input)
     {
         float in[64], out[64];
         int nonfinite = 0;
-        aero_cavity_model_set_width(&m, 2.78);
+        aero_cavity_set_width(&m, 2.78);
         for (int b = 0; b < 40; b++) {
             for (int i = 0; i < 64; i++)
                 in[i] = (b % 3 == 1) ? (i == 63 ? 1e-30f : 102.9f) : 20.0f;
             if (b == 20)
-                aero_cavity_model_set_ears(&m, &(aero_ears){1, {{4e9, 0, 0}}});
+                aero_cavity_set_ears(&m, &(aero_ears){1, {{4e9, 0, 0}}});
             if (b == 21)
-                aero_cavity_model_set_ears(&m, &(aero_ears){1, {{1, 0, 0}}});
-            aero_cavity_model_process(&m, in, (float *[]){out}, 64);
+                aero_cavity_set_ears(&m, &(aero_ears){1, {{1, 0, 0}}});
+            aero_cavity_process(&m, in, (float *[]){out}, 64);
             for (int i = 0; i < 64; i++)
                 nonfinite += !isfinite(out[i]);
         }
@@ -125,10 +125,10 @@ UNIT_TEST(bad_input)
     char err[128];
     aero_texture_init(&t, 16, 1, 16000);
     aero_texture_set(&t, "kind", "aeolian");
-    UNIT_CHECK(aero_cavity_model_set_texture(&m, &t, err, sizeof(err)) < 0,
+    UNIT_CHECK(aero_cavity_set_texture(&m, &t, err, sizeof(err)) < 0,
                "an aeolian texture is refused: %s", err);
     aero_texture_free(&t);
-    aero_cavity_model_free(&m);
+    aero_cavity_free(&m);
 }
 
 UNIT_MAIN(UNIT_CASE(rossiter_and_depth_modes), UNIT_CASE(lock_in),

@@ -180,16 +180,16 @@ static void pulsating_point(memvol *m, int x, int y, int z, double f,
 static float *render(const aero_field_sources *s, double x, double y,
                      double z, double seconds, int direct, long *len)
 {
-    aero_field_render r;
+    aero_fieldsound r;
     long n = (long)(seconds * SR);
     float *out = calloc(n, sizeof(float));
-    aero_field_render_init(&r, SR);
-    aero_field_render_set_sources(&r, s);
-    aero_field_render_place_ears(&r, &(aero_ears){1, {{x, y, z}}});
+    aero_fieldsound_init(&r, SR);
+    aero_fieldsound_set_sources(&r, s);
+    aero_fieldsound_place_ears(&r, &(aero_ears){1, {{x, y, z}}});
     r.direct = direct;
-    aero_field_render_play(&r);
-    aero_field_render_process(&r, out, (int)n);
-    aero_field_render_free(&r);
+    aero_fieldsound_play(&r);
+    aero_fieldsound_process(&r, out, (int)n);
+    aero_fieldsound_free(&r);
     *len = n;
     return out;
 }
@@ -449,19 +449,19 @@ UNIT_TEST(demo)
     UNIT_CHECK(!rc && s.points[1] > 0 && s.points[2] + s.points[3] > 0,
                "demo burst: %ld monopole, %ld dipole, %ld quadrupole points",
                s.points[1], s.points[2], s.points[3]);
-    aero_field_render r[2];
+    aero_fieldsound r[2];
     float out[2][4096];
     double worst = 0, peak = 0;
     int bad = 0;
     for (int k = 0; k < 2; k++) {
-        aero_field_render_init(&r[k], SR);
-        aero_field_render_set_sources(&r[k], &s);
+        aero_fieldsound_init(&r[k], SR);
+        aero_fieldsound_set_sources(&r[k], &s);
         r[k].direct = k;
-        aero_field_render_place_ears(&r[k], &(aero_ears){1, {{1, 0, 0}}});
-        aero_field_render_set_ramp_ms(&r[k], 50);
-        aero_field_render_set_ears(&r[k], &(aero_ears){1, {{-1, 0.5, 0.2}}});
-        aero_field_render_play(&r[k]);
-        aero_field_render_process(&r[k], out[k], 4096);
+        aero_fieldsound_place_ears(&r[k], &(aero_ears){1, {{1, 0, 0}}});
+        aero_fieldsound_set_ramp_ms(&r[k], 50);
+        aero_fieldsound_set_ears(&r[k], &(aero_ears){1, {{-1, 0.5, 0.2}}});
+        aero_fieldsound_play(&r[k]);
+        aero_fieldsound_process(&r[k], out[k], 4096);
     }
     for (int i = 0; i < 4096; i++) {
         worst = fmax(worst, fabs(out[0][i] - out[1][i]));
@@ -472,7 +472,7 @@ UNIT_TEST(demo)
                "moving listener: chunk polynomials within %.2g of the "
                "per-sample sum (peak %.3g Pa)", worst, peak);
     for (int k = 0; k < 2; k++)
-        aero_field_render_free(&r[k]);
+        aero_fieldsound_free(&r[k]);
     aero_field_sources_free(&s);
     /* NaN and Inf in the data, absurd listener, speed and ramp */
     memvol m;
@@ -480,24 +480,24 @@ UNIT_TEST(demo)
     for (size_t i = 0; i < 6 * 4 * 512; i++)
         m.data[i] = i % 7 == 0 ? NAN : i % 11 == 0 ? INFINITY : 1.0f;
     rc = memvol_sources(&m, &par, &s);
-    aero_field_render_init(&r[0], SR);
-    aero_field_render_set_sources(&r[0], &s);
-    int refused = aero_field_render_set_ears(&r[0],
+    aero_fieldsound_init(&r[0], SR);
+    aero_fieldsound_set_sources(&r[0], &s);
+    int refused = aero_fieldsound_set_ears(&r[0],
                                              &(aero_ears){1, {{NAN, 0, 0}}}) &&
-                  aero_field_render_set_speed(&r[0], -1) &&
-                  aero_field_render_set_ramp_ms(&r[0], -5) &&
-                  aero_field_render_set_gain_db(&r[0], 1e9);
-    aero_field_render_set_ears(&r[0],
+                  aero_fieldsound_set_speed(&r[0], -1) &&
+                  aero_fieldsound_set_ramp_ms(&r[0], -5) &&
+                  aero_fieldsound_set_gain_db(&r[0], 1e9);
+    aero_fieldsound_set_ears(&r[0],
                                &(aero_ears){1, {{1e5, 0, 0}}}); /* far, fast */
-    aero_field_render_play(&r[0]);
-    aero_field_render_process(&r[0], out[0], 4096);
+    aero_fieldsound_play(&r[0]);
+    aero_fieldsound_process(&r[0], out[0], 4096);
     bad = 0;
     for (int i = 0; i < 4096; i++)
         bad += !isfinite(out[0][i]);
     UNIT_CHECK(!rc && refused && !bad && r[0].clamped,
                "NaN/Inf data and bad settings: refused, output finite, "
                "listener clamped at Mach 0.3");
-    aero_field_render_free(&r[0]);
+    aero_fieldsound_free(&r[0]);
     aero_field_sources_free(&s);
     free(m.data);
     aero_field_params_default(&par);

@@ -65,11 +65,11 @@ static aero_texture *synthetic_texture(const char *kind, int dirs)
 static void *cavity_make_mode(int variant, int textured)
 {
     char err[128];
-    aero_cavity_model *m = calloc(1, sizeof(*m));
-    aero_cavity_model_init(m, 44100.0, 5u + variant);
-    aero_cavity_model_set_length(m, variant ? 0.05 : 0.02);
+    aero_cavity *m = calloc(1, sizeof(*m));
+    aero_cavity_init(m, 44100.0, 5u + variant);
+    aero_cavity_set_length(m, variant ? 0.05 : 0.02);
     if (textured)
-        aero_cavity_model_set_texture(m, synthetic_texture("cavity", 1), err,
+        aero_cavity_set_texture(m, synthetic_texture("cavity", 1), err,
                                       sizeof(err));
     return m;
 }
@@ -77,11 +77,11 @@ static void *cavity_make(int variant) { return cavity_make_mode(variant, 0); }
 static void *cavity_tex_make(int variant) { return cavity_make_mode(variant, 1); }
 static void cavity_run(void *s, const float *speed, float *out, int n)
 {
-    aero_cavity_model_process(s, speed, (float *[]){out}, n);
+    aero_cavity_process(s, speed, (float *[]){out}, n);
 }
 static void cavity_drop(void *s)
 {
-    aero_cavity_model_free(s);
+    aero_cavity_free(s);
     free(s);
 }
 
@@ -113,7 +113,7 @@ static void stick_drop(void *s)
 static void *body_make(int variant)
 {
     char err[128];
-    aero_body_texture *s = calloc(1, sizeof(*s));
+    aero_body *s = calloc(1, sizeof(*s));
     aero_texture *t = calloc(1, sizeof(*t));
     double wind[3] = {variant ? 7.0 : 12.0, 1.0, 0.5};
     double pos[3] = {0.1 * variant, 0.0, 0.0}, q[4] = {0.9, 0.1, 0.2, 0.3};
@@ -127,20 +127,20 @@ static void *body_make(int variant)
     aero_texture_set(t, "centres", "0,0,0;0,0,0.2;0,0,0.4");
     t->angles[0] = 0.0;
     t->angles[1] = 90.0;
-    aero_body_texture_init(s, 44100.0, 1, 5u + variant);
-    aero_body_texture_set_texture(s, t, err, sizeof(err));
-    aero_body_texture_set_wind(s, wind);
-    aero_body_texture_set_pose(s, pos, q, -1.0);
+    aero_body_init(s, 44100.0, 1, 5u + variant);
+    aero_body_set_texture(s, t, err, sizeof(err));
+    aero_body_set_wind(s, wind);
+    aero_body_set_pose(s, pos, q, -1.0);
     return s;
 }
 static void body_run(void *s, const float *speed, float *out, int n)
 {
     float *outs[1] = {out};
-    aero_body_texture_process(s, speed, outs, n);
+    aero_body_process(s, speed, outs, n);
 }
 static void body_drop(void *s)
 {
-    aero_body_texture_free(s);
+    aero_body_free(s);
     free(s);
 }
 
@@ -149,27 +149,27 @@ static void *vortex_make(int variant)
 {
     char err[128];
     double speeds[3] = {5.0, 10.0, 20.0}, pos[12];
-    aero_vortex_player *m = calloc(1, sizeof(*m));
+    aero_vortex *m = calloc(1, sizeof(*m));
     aero_texture *t = calloc(1, sizeof(*t));
-    aero_vortex_player_init(m, 44100.0, 0, 7u + variant);
+    aero_vortex_init(m, 44100.0, 0, 7u + variant);
     aero_texture_init_speeds(t, 2048, 3, speeds, 8000.0);
     for (int n = 0; n < 2048 * 3; n++)
         t->data[n] = (float)sin(0.05 * n) * (float)cos(0.0031 * n);
-    aero_vortex_player_set_texture(m, t, err, sizeof(err));
-    aero_vortex_player_set_count(m, 4);
+    aero_vortex_set_texture(m, t, err, sizeof(err));
+    aero_vortex_set_count(m, 4);
     for (int i = 0; i < 12; i++)
         pos[i] = 0.1 * i * (variant ? -1 : 1);
-    aero_vortex_player_set_positions(m, pos, 4);
+    aero_vortex_set_positions(m, pos, 4);
     return m;
 }
 static void vortex_run(void *s, const float *speed, float *out, int n)
 {
     float *outs[1] = {out};
-    aero_vortex_player_process(s, speed, outs, n);
+    aero_vortex_process(s, speed, outs, n);
 }
 static void vortex_drop(void *s)
 {
-    aero_vortex_player_free(s);
+    aero_vortex_free(s);
     free(s);
 }
 
@@ -242,7 +242,7 @@ static void leafwave_drop(void *s)
 /* --- [fieldsound~]: the demo burst, preprocessed, played slowly --- */
 typedef struct {
     aero_field_sources src;
-    aero_field_render r;
+    aero_fieldsound r;
 } field_state;
 static void *field_make(int variant)
 {
@@ -258,23 +258,23 @@ static void *field_make(int variant)
     aero_field_demo_info(&d, &info);
     aero_field_params_default(&par);
     aero_field_prepare(&info, &d, &par, &f->src, NULL, NULL, err, sizeof(err));
-    aero_field_render_init(&f->r, 44100.0);
-    aero_field_render_set_sources(&f->r, &f->src);
-    aero_field_render_place_ears(&f->r,
+    aero_fieldsound_init(&f->r, 44100.0);
+    aero_fieldsound_set_sources(&f->r, &f->src);
+    aero_fieldsound_place_ears(&f->r,
             &(aero_ears){1, {{variant ? 0.5 : 0.8, 0.1, 0.0}}});
-    aero_field_render_set_speed(&f->r, 100.0);
-    aero_field_render_play(&f->r);
+    aero_fieldsound_set_speed(&f->r, 100.0);
+    aero_fieldsound_play(&f->r);
     return f;
 }
 static void field_run(void *s, const float *speed, float *out, int n)
 {
     (void)speed;
-    aero_field_render_process(&((field_state *)s)->r, out, n);
+    aero_fieldsound_process(&((field_state *)s)->r, out, n);
 }
 static void field_drop(void *s)
 {
     field_state *f = s;
-    aero_field_render_free(&f->r);
+    aero_fieldsound_free(&f->r);
     aero_field_sources_free(&f->src);
     free(f);
 }

@@ -93,9 +93,9 @@ UNIT_TEST(layout)
                "a sphere is refused: %s", err);
     UNIT_CHECK(aero_strip_layout_measure(&club, 0, &L, err, sizeof err),
                "0 regions are refused: %s", err);
-    aero_body_free(&club);
-    aero_body_free(&capsule);
-    aero_body_free(&sphere);
+    aero_body_shape_free(&club);
+    aero_body_shape_free(&capsule);
+    aero_body_shape_free(&sphere);
 }
 
 /* region l's tone and level at the flow angle a against Roshko's St and
@@ -163,7 +163,7 @@ UNIT_TEST(render)
     UNIT_CHECK(aero_strip_check_section(&sec, err, sizeof err) != 0,
                "a section without st is refused: %s", err);
     aero_texture_free(&sec);
-    aero_body_free(&club);
+    aero_body_shape_free(&club);
 }
 
 UNIT_MAIN(UNIT_CASE(layout), UNIT_CASE(render))

@@ -80,7 +80,7 @@ int aero_body_club(aero_body_shape *b, double r_handle, double r_tip,
     return 0;
 }
 
-void aero_body_free(aero_body_shape *b)
+void aero_body_shape_free(aero_body_shape *b)
 {
     free(b->vertices);
     free(b->triangles);
@@ -311,7 +311,7 @@ static int take_mesh(aero_body_shape *b, const mesh_build *m, char *err,
         if (!(b->hi[k] - b->lo[k] > 1e-6)) {
             snprintf(err, errlen, "the mesh is flat (extent %g m along %c)",
                      b->hi[k] - b->lo[k], "xyz"[k]);
-            aero_body_free(b);
+            aero_body_shape_free(b);
             return -1;
         }
     return 0;

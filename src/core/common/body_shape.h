@@ -67,7 +67,7 @@ int aero_body_mesh_parse(aero_body_shape *b, const char *text, char *err,
 /* the same from a file */
 int aero_body_mesh_load(aero_body_shape *b, const char *path, char *err,
                         size_t errlen);
-void aero_body_free(aero_body_shape *b);
+void aero_body_shape_free(aero_body_shape *b);
 
 /* 1 if the body-frame point p lies inside */
 int aero_body_inside(const aero_body_shape *b, const double p[3]);

@@ -102,6 +102,30 @@ static const char *find_key(const char *meta, const char *key)
     return NULL;
 }
 
+static const char *value_of(const aero_texture *t, const char *key);
+
+/* t->head from t->meta: once per change of the metadata */
+static void parse_head(aero_texture *t)
+{
+    aero_texture_header *h = &t->head;
+    memset(h, 0, sizeof *h);
+    aero_texture_get(t, "kind", h->kind, sizeof h->kind);
+    aero_texture_get(t, "method", h->method, sizeof h->method);
+    aero_texture_get(t, "shape", h->shape, sizeof h->shape);
+    aero_texture_get(t, "span3d", h->span3d, sizeof h->span3d);
+    aero_texture_get(t, "symmetry", h->symmetry, sizeof h->symmetry);
+    h->symmetry_deg = aero_texture_getd(t, "symmetry", 0.0);
+    h->v0 = aero_texture_getd(t, "v0", 0.0);
+    h->diameter = aero_texture_getd(t, "diameter", 0.0);
+    h->length = aero_texture_getd(t, "length", 0.0);
+    h->st = aero_texture_getd(t, "st", 0.0);
+    h->re = aero_texture_getd(t, "re", 0.0);
+    h->nu = aero_texture_getd(t, "nu", 0.0);
+    h->mirror = aero_texture_getd(t, "mirror", 0.0);
+    h->diameters = value_of(t, "diameters");
+    h->centres = value_of(t, "centres");
+}
+
 int aero_texture_set(aero_texture *t, const char *key, const char *value)
 {
     const char *old = find_key(t->meta ? t->meta : "", key);
@@ -129,6 +153,7 @@ int aero_texture_set(aero_texture *t, const char *key, const char *value)
     strcat(m, "\n");
     free(t->meta);
     t->meta = m;
+    parse_head(t);
     return 0;
 }
 
@@ -391,6 +416,7 @@ static SNDFILE *open_texture(const char *path, aero_texture *t,
     strcpy(t->meta, c);
     if (t->meta[0] && t->meta[strlen(t->meta) - 1] != '\n')
         strcat(t->meta, "\n");
+    parse_head(t);
     return f;
 }
 

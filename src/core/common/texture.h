@@ -16,6 +16,25 @@
 
 #include <stddef.h>
 
+/* The metadata the players read, parsed once: when a file is loaded and
+ * whenever aero_texture_set changes it. A player takes a texture without
+ * looking keys up by name. A missing number reads 0, a missing string "",
+ * a missing list NULL. */
+typedef struct {
+    char kind[32];      /* aeolian, object, vortex, cavity; "" missing */
+    char method[16];    /* how an object texture was made ("strip") */
+    char shape[32];     /* an aeolian texture's section ("circle") */
+    char span3d[32];    /* its spanwise model ("circle-calibrated") */
+    char symmetry[32];  /* object textures: "sphere" or "axis" */
+    double symmetry_deg; /* aeolian textures: the section's symmetry */
+    double v0;          /* the speed it was made at, m/s */
+    double diameter, length; /* m */
+    double st, re, nu;  /* Strouhal and Reynolds numbers, viscosity m^2/s */
+    double mirror;      /* 1: the flow angle's sign mirrors the lift */
+    const char *diameters, *centres; /* object textures' lists, in meta
+                                        (each ends at '\n'), or NULL */
+} aero_texture_header;
+
 typedef struct {
     int frames;       /* samples per channel */
     int channels;     /* 3 * directions */
@@ -28,6 +47,7 @@ typedef struct {
     char *meta;       /* "key=value\n" lines */
     double *speeds;   /* vortex textures: the speed of each channel, m/s
                          (NULL otherwise) */
+    aero_texture_header head; /* meta, parsed */
 } aero_texture;
 
 /* an empty texture of frames x (3 * directions) zeros; 0 or -1 */

@@ -37,7 +37,7 @@ void aero_body_quaternion_from_rotvec(const double r[3], double q[4])
 
 /* --- life cycle ----------------------------------------------------------- */
 
-static void restart_sources(aero_body_texture *s)
+static void restart_sources(aero_body *s)
 {
     for (int i = 0; i < AERO_BODY_MAX_SOURCES; i++) {
         memset(&s->src[i], 0, sizeof(s->src[i]));
@@ -47,7 +47,7 @@ static void restart_sources(aero_body_texture *s)
     }
 }
 
-int aero_body_texture_init(aero_body_texture *s, double sample_rate,
+int aero_body_init(aero_body *s, double sample_rate,
                            int n_ears, uint32_t seed)
 {
     static const double unturned[7] = {0, 0, 0, 1, 0, 0, 0};
@@ -63,7 +63,7 @@ int aero_body_texture_init(aero_body_texture *s, double sample_rate,
         n_ears, seed, AERO_BODY_CHUNK, AERO_BODY_MAX_DELAY_S);
 }
 
-void aero_body_texture_free(aero_body_texture *s)
+void aero_body_free(aero_body *s)
 {
     aero_moving_player_free(&s->base);
     if (s->texture) {
@@ -93,15 +93,13 @@ static int parse_sizes(const char *p, int n, double *out)
 /* a strip-theory texture's regions follow Roshko's St(Re) and Norberg's
    C_L'(Re) away from the texture's Re: 1 if t is one (method=strip with
    its regions' diameters and nu), the diameters and nu into s */
-static int strip_re_law(aero_body_texture *s, const aero_texture *t)
+static int strip_re_law(aero_body *s, const aero_texture *t)
 {
-    char method[16], list[8192];
-    double nu = aero_texture_getd(t, "nu", 0.0);
+    double nu = t->head.nu;
     s->tex_nu = nu;
-    return aero_texture_get(t, "method", method, sizeof method) &&
-           !strcmp(method, "strip") && nu > 0.0 && nu < 1.0 &&
-           aero_texture_get(t, "diameters", list, sizeof list) &&
-           parse_sizes(list, t->regions, s->region_d) == 0;
+    return !strcmp(t->head.method, "strip") && nu > 0.0 && nu < 1.0 &&
+           t->head.diameters &&
+           parse_sizes(t->head.diameters, t->regions, s->region_d) == 0;
 }
 
 /* "x,y,z;x,y,z;..." into centre, n triples: 0 or -1 */
@@ -123,25 +121,22 @@ static int parse_centres(const char *p, int n, double *centre)
     return *p == 0 || *p == '\n' ? 0 : -1;
 }
 
-int aero_body_texture_set_texture(aero_body_texture *s, aero_texture *t,
+int aero_body_set_texture(aero_body *s, aero_texture *t,
                                   char *err, size_t errlen)
 {
     if (t) {
-        char kind[32], sym[32], list[8192];
+        const char *kind = t->head.kind, *sym = t->head.symmetry;
         double centre[3 * AERO_BODY_MAX_SOURCES];
-        double v0 = aero_texture_getd(t, "v0", 0.0);
-        double d = aero_texture_getd(t, "diameter", 0.0);
+        double v0 = t->head.v0;
+        double d = t->head.diameter;
         int sphere;
-        if (!aero_texture_get(t, "kind", kind, sizeof(kind)) ||
-            strcmp(kind, "object")) {
+        if (strcmp(kind, "object")) {
             snprintf(err, errlen, "not an object texture (kind=%s; aeolian "
                      "textures are for [aeolian~])",
-                     aero_texture_get(t, "kind", kind, sizeof(kind))
-                         ? kind : "missing");
+                     kind[0] ? kind : "missing");
             return -1;
         }
-        if (!aero_texture_get(t, "symmetry", sym, sizeof(sym)) ||
-            (strcmp(sym, "sphere") && strcmp(sym, "axis"))) {
+        if (strcmp(sym, "sphere") && strcmp(sym, "axis")) {
             snprintf(err, errlen, "symmetry must be sphere or axis");
             return -1;
         }
@@ -161,8 +156,8 @@ int aero_body_texture_set_texture(aero_body_texture *s, aero_texture *t,
                 snprintf(err, errlen, "angles must increase within 0..180");
                 return -1;
             }
-        if (!aero_texture_get(t, "centres", list, sizeof(list)) ||
-            parse_centres(list, t->regions, centre)) {
+        if (!t->head.centres ||
+            parse_centres(t->head.centres, t->regions, centre)) {
             snprintf(err, errlen, "centres= must list %d x,y,z triples "
                      "separated by ';'", t->regions);
             return -1;
@@ -172,7 +167,7 @@ int aero_body_texture_set_texture(aero_body_texture *s, aero_texture *t,
         s->tex_rate = t->rate;
         s->regions = t->regions;
         s->sphere = sphere;
-        s->mirror = fabs(aero_texture_getd(t, "mirror", 0.0)) >= 1.0;
+        s->mirror = fabs(t->head.mirror) >= 1.0;
         memcpy(s->centre, centre, sizeof(double) * 3 * t->regions);
         s->re_law = !sphere && strip_re_law(s, t);
     }
@@ -189,7 +184,7 @@ int aero_body_texture_set_texture(aero_body_texture *s, aero_texture *t,
 
 /* --- setters --------------------------------------------------------------- */
 
-int aero_body_texture_set_sample_rate(aero_body_texture *s, double sr)
+int aero_body_set_sample_rate(aero_body *s, double sr)
 {
     int rc = aero_moving_player_set_sample_rate(&s->base, sr);
     if (rc > 0)
@@ -198,7 +193,7 @@ int aero_body_texture_set_sample_rate(aero_body_texture *s, double sr)
     return rc < 0 ? -1 : 0;
 }
 
-int aero_body_texture_set_scale(aero_body_texture *s, double scale)
+int aero_body_set_scale(aero_body *s, double scale)
 {
     if (!(scale >= AERO_BODY_SCALE_MIN && scale <= AERO_BODY_SCALE_MAX))
         return -1;
@@ -206,29 +201,29 @@ int aero_body_texture_set_scale(aero_body_texture *s, double scale)
     return 0;
 }
 
-int aero_body_texture_set_exponent(aero_body_texture *s, double e)
+int aero_body_set_exponent(aero_body *s, double e)
 {
     return aero_moving_player_set_exponent(&s->base, e);
 }
 
-int aero_body_texture_set_gain_db(aero_body_texture *s, double db)
+int aero_body_set_gain_db(aero_body *s, double db)
 {
     return aero_moving_player_set_gain_db(&s->base, db);
 }
 
-int aero_body_texture_set_ramp_ms(aero_body_texture *s, double ms)
+int aero_body_set_ramp_ms(aero_body *s, double ms)
 {
     return aero_moving_player_set_ramp_ms(&s->base, ms);
 }
 
-void aero_body_texture_set_seed(aero_body_texture *s, uint32_t seed)
+void aero_body_set_seed(aero_body *s, uint32_t seed)
 {
     s->base.rng = seed ? seed : 1;
     restart_sources(s);
 }
 
 /* where region l's body-frame centre is for a pose */
-static void region_point(const aero_body_texture *s, const double *pose,
+static void region_point(const aero_body *s, const double *pose,
                          int l, double *x)
 {
     double c[3] = {s->scale * s->centre[3 * l], s->scale * s->centre[3 * l + 1],
@@ -238,7 +233,7 @@ static void region_point(const aero_body_texture *s, const double *pose,
         x[i] += pose[i];
 }
 
-int aero_body_texture_set_pose(aero_body_texture *s, const double pos[3],
+int aero_body_set_pose(aero_body *s, const double pos[3],
                                const double quat[4], double interval_s)
 {
     double p[7] = {pos[0], pos[1], pos[2], quat[0], quat[1], quat[2], quat[3]};
@@ -280,12 +275,12 @@ int aero_body_texture_set_pose(aero_body_texture *s, const double pos[3],
     return 0;
 }
 
-int aero_body_texture_set_wind(aero_body_texture *s, const double w[3])
+int aero_body_set_wind(aero_body *s, const double w[3])
 {
     return aero_moving_player_set_wind(&s->base, w);
 }
 
-int aero_body_texture_set_ears(aero_body_texture *s, const aero_ears *e)
+int aero_body_set_ears(aero_body *s, const aero_ears *e)
 {
     return aero_moving_player_set_ears(&s->base, e);
 }
@@ -294,7 +289,7 @@ int aero_body_texture_set_ears(aero_body_texture *s, const aero_ears *e)
 
 /* the pose at the chunk's end: position linear, orientation normalised
    linear (nlerp), both over the pose interval */
-static void advance_pose(aero_body_texture *s, int m)
+static void advance_pose(aero_body *s, int m)
 {
     double frac, n = 0.0;
     s->pose_elapsed += m;
@@ -333,7 +328,7 @@ static void direction_pair(const aero_texture *t, double theta, int *k0,
 }
 
 /* the body's x axis in the world */
-static void body_x_axis(const aero_body_texture *s, double *out)
+static void body_x_axis(const aero_body *s, double *out)
 {
     const double xb[3] = {1.0, 0.0, 0.0};
     rotate(s->pose + 3, xb, out);
@@ -341,7 +336,7 @@ static void body_x_axis(const aero_body_texture *s, double *out)
 
 /* the unit part of v normal to the unit n (c = v.n); the body's x axis
    when v lies along n */
-static void normal_part(const aero_body_texture *s, const double *v,
+static void normal_part(const aero_body *s, const double *v,
                         const double *n, double c, double *out)
 {
     for (int i = 0; i < 3; i++)
@@ -351,7 +346,7 @@ static void normal_part(const aero_body_texture *s, const double *v,
 }
 
 /* geometry of region l at the chunk's end; returns 1 if clamped */
-static int geometry(aero_body_texture *s, int l, const double *wind,
+static int geometry(aero_body *s, int l, const double *wind,
                     const double (*ears)[3], double gain,
                     aero_body_geometry *g)
 {
@@ -436,7 +431,7 @@ static int geometry(aero_body_texture *s, int l, const double *wind,
 }
 
 /* one source over a chunk of m samples */
-static void render(aero_body_texture *s, int l, const aero_body_geometry *g,
+static void render(aero_body *s, int l, const aero_body_geometry *g,
                    int m)
 {
     aero_body_source *src = &s->src[l];
@@ -518,7 +513,7 @@ static void render(aero_body_texture *s, int l, const aero_body_geometry *g,
     src->then = *g;
 }
 
-int aero_body_texture_process(aero_body_texture *s, const float *speed,
+int aero_body_process(aero_body *s, const float *speed,
                               float *const *out, int n)
 {
     s->base.clamped = 0;

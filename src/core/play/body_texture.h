@@ -71,7 +71,7 @@ typedef struct {
     int primed;
 } aero_body_source;
 
-typedef struct aero_body_texture {
+typedef struct aero_body {
     /* sample rate, rings, ears, wind, gain, ramp, exponent, clamp */
     aero_moving_player base;
 
@@ -92,39 +92,46 @@ typedef struct aero_body_texture {
     int pose_set;
 
     aero_body_source src[AERO_BODY_MAX_SOURCES];
-} aero_body_texture;
+} aero_body;
 
 /* 0, or -1 when out of memory. Defaults: no texture (silent), the body at
  * the origin unturned, still air, one listener 1 m away along +y (stereo:
  * ears at x = -+0.1), exponent 3, scale 1, gain 0 dB, ramp 20 ms. */
-int aero_body_texture_init(aero_body_texture *s, double sample_rate,
+int aero_body_init(aero_body *s, double sample_rate,
                            int n_ears, uint32_t seed);
-void aero_body_texture_free(aero_body_texture *s);
+void aero_body_free(aero_body *s);
 
 /* Takes ownership of a loaded texture of kind object (NULL removes it):
  * 0, or -1 with a message in err (then the texture is NOT taken). */
-int aero_body_texture_set_texture(aero_body_texture *s, aero_texture *t,
+int aero_body_set_texture(aero_body *s, aero_texture *t,
                                   char *err, size_t errlen);
 
 /* setters: 0 accepted, -1 invalid (the previous value stays) */
-int aero_body_texture_set_sample_rate(aero_body_texture *s, double sr);
-int aero_body_texture_set_scale(aero_body_texture *s, double scale);
-int aero_body_texture_set_exponent(aero_body_texture *s, double e);
-int aero_body_texture_set_gain_db(aero_body_texture *s, double db);
-int aero_body_texture_set_ramp_ms(aero_body_texture *s, double ms);
-void aero_body_texture_set_seed(aero_body_texture *s, uint32_t seed);
+int aero_body_set_sample_rate(aero_body *s, double sr);
+int aero_body_set_scale(aero_body *s, double scale);
+int aero_body_set_exponent(aero_body *s, double e);
+int aero_body_set_gain_db(aero_body *s, double db);
+int aero_body_set_ramp_ms(aero_body *s, double ms);
+void aero_body_set_seed(aero_body *s, uint32_t seed);
 /* position and orientation (unit quaternion w x y z; normalised here);
  * interval_s as for sticks: the motion is interpolated over it; the first
  * pose, one after a 0.5 s pause and interval_s < 0 jump without motion */
-int aero_body_texture_set_pose(aero_body_texture *s, const double pos[3],
+int aero_body_set_pose(aero_body *s, const double pos[3],
                                const double quat[4], double interval_s);
-int aero_body_texture_set_wind(aero_body_texture *s, const double w[3]);
+/* the orientation of the last pose (w x y z), for a pose that moves alone */
+static inline void aero_body_orientation(const aero_body *s,
+                                                 double quat[4])
+{
+    for (int k = 0; k < 4; k++)
+        quat[k] = s->pose_to[3 + k];
+}
+int aero_body_set_wind(aero_body *s, const double w[3]);
 /* ears 0..e->n-1 (e->n at most the ears the player was made with) */
-int aero_body_texture_set_ears(aero_body_texture *s, const aero_ears *e);
+int aero_body_set_ears(aero_body *s, const aero_ears *e);
 
 /* n samples; speed[i] (may be NULL) adds a wind along +x; out[e][i] is the
  * sound pressure at ear e in Pa. Returns 1 if a speed was clamped. */
-int aero_body_texture_process(aero_body_texture *s, const float *speed,
+int aero_body_process(aero_body *s, const float *speed,
                               float *const *out, int n);
 
 /* a rotation vector (axis times angle in degrees) as a unit quaternion */

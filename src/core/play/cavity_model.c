@@ -102,7 +102,7 @@ double aero_cavity_depth_hz(double depth, double length, double width, int n)
     return (2 * n - 1) * AERO_C0 / (4.0 * (depth + END_CORRECTION * radius));
 }
 
-int aero_cavity_model_init(aero_cavity_model *m, double sample_rate,
+int aero_cavity_init(aero_cavity *m, double sample_rate,
                            uint32_t seed)
 {
     memset(m, 0, sizeof(*m));
@@ -116,12 +116,12 @@ int aero_cavity_model_init(aero_cavity_model *m, double sample_rate,
     m->ctl_target[AERO_CAV_EAR + 1] = 1.0;
     memcpy(m->ctl, m->ctl_target, sizeof(m->ctl));
     m->laws_dirty = 1;
-    aero_cavity_model_set_ramp_ms(m, 20.0);
-    aero_cavity_model_set_seed(m, seed);
+    aero_cavity_set_ramp_ms(m, 20.0);
+    aero_cavity_set_seed(m, seed);
     return sr_ok ? 0 : -1;
 }
 
-void aero_cavity_model_free(aero_cavity_model *m)
+void aero_cavity_free(aero_cavity *m)
 {
     if (m->texture) {
         aero_texture_free(m->texture);
@@ -130,7 +130,7 @@ void aero_cavity_model_free(aero_cavity_model *m)
     }
 }
 
-void aero_cavity_model_set_seed(aero_cavity_model *m, uint32_t seed)
+void aero_cavity_set_seed(aero_cavity *m, uint32_t seed)
 {
     uint32_t s = seed * 2654435761u + 0x7f4a7c15u;
     s ^= s >> 16;
@@ -155,7 +155,7 @@ static int size_ok(double v)
            v <= AERO_CAVITY_SIZE_MAX;
 }
 
-static int set_ctl(aero_cavity_model *m, int k, double v)
+static int set_ctl(aero_cavity *m, int k, double v)
 {
     m->laws_dirty = 1;
     m->ctl_target[k] = v;
@@ -166,44 +166,44 @@ static int set_ctl(aero_cavity_model *m, int k, double v)
     return 0;
 }
 
-int aero_cavity_model_set_sample_rate(aero_cavity_model *m, double sr)
+int aero_cavity_set_sample_rate(aero_cavity *m, double sr)
 {
     if (!aero_is_finite(sr) || sr < 1.0 || sr > 1e7)
         return -1;
     double ms = 1000.0 * m->ramp_samples / m->sample_rate;
     m->sample_rate = sr;
-    return aero_cavity_model_set_ramp_ms(m, ms);
+    return aero_cavity_set_ramp_ms(m, ms);
 }
 
-int aero_cavity_model_set_length(aero_cavity_model *m, double l)
+int aero_cavity_set_length(aero_cavity *m, double l)
 {
     if (!size_ok(l))
         return -1;
     return set_ctl(m, AERO_CAV_LENGTH, l);
 }
 
-int aero_cavity_model_set_depth(aero_cavity_model *m, double d)
+int aero_cavity_set_depth(aero_cavity *m, double d)
 {
     if (!size_ok(d))
         return -1;
     return set_ctl(m, AERO_CAV_DEPTH, d);
 }
 
-int aero_cavity_model_set_width(aero_cavity_model *m, double w)
+int aero_cavity_set_width(aero_cavity *m, double w)
 {
     if (!size_ok(w))
         return -1;
     return set_ctl(m, AERO_CAV_WIDTH, w);
 }
 
-int aero_cavity_model_set_gain_db(aero_cavity_model *m, double db)
+int aero_cavity_set_gain_db(aero_cavity *m, double db)
 {
     if (!aero_is_finite(db) || db < AERO_GAIN_DB_MIN || db > AERO_GAIN_DB_MAX)
         return -1;
     return set_ctl(m, AERO_CAV_GAIN, pow(10.0, db / 20.0));
 }
 
-int aero_cavity_model_set_ramp_ms(aero_cavity_model *m, double ms)
+int aero_cavity_set_ramp_ms(aero_cavity *m, double ms)
 {
     if (!aero_is_finite(ms) || ms < 0.0 || ms > AERO_RAMP_MS_MAX)
         return -1;
@@ -211,7 +211,7 @@ int aero_cavity_model_set_ramp_ms(aero_cavity_model *m, double ms)
     return 0;
 }
 
-int aero_cavity_model_set_exponent(aero_cavity_model *m, double n)
+int aero_cavity_set_exponent(aero_cavity *m, double n)
 {
     if (!aero_is_finite(n) || n < 0.0 || n > AERO_CAVITY_EXPONENT_MAX)
         return -1;
@@ -220,7 +220,7 @@ int aero_cavity_model_set_exponent(aero_cavity_model *m, double n)
     return 0;
 }
 
-int aero_cavity_model_set_ears(aero_cavity_model *m, const aero_ears *e)
+int aero_cavity_set_ears(aero_cavity *m, const aero_ears *e)
 {
     if (!aero_ears_ok(e, 1))
         return -1;
@@ -229,13 +229,12 @@ int aero_cavity_model_set_ears(aero_cavity_model *m, const aero_ears *e)
     return 0;
 }
 
-int aero_cavity_model_set_texture(aero_cavity_model *m, aero_texture *t,
+int aero_cavity_set_texture(aero_cavity *m, aero_texture *t,
                                   char *err, size_t errlen)
 {
     if (t) {
-        char kind[32] = "";
-        aero_texture_get(t, "kind", kind, sizeof(kind));
-        double v0 = aero_texture_getd(t, "v0", 0.0);
+        const char *kind = t->head.kind;
+        double v0 = t->head.v0;
         if (strcmp(kind, "cavity")) {
             snprintf(err, errlen, "not a cavity texture (kind=%s)",
                      kind[0] ? kind : "?");
@@ -246,17 +245,17 @@ int aero_cavity_model_set_texture(aero_cavity_model *m, aero_texture *t,
             return -1;
         }
         m->texture_v0 = v0;
-        double l0 = aero_texture_getd(t, "length", 0.0);
+        double l0 = t->head.length;
         m->texture_length = l0 > 0.0 && l0 < 100.0 ? l0 : 0.0;
         m->texture_pos = fmod(fabs(m->texture_pos) * t->frames, t->frames);
     }
-    aero_cavity_model_free(m);
+    aero_cavity_free(m);
     m->texture = t;
     return 0;
 }
 
 /* 1 when the controls moved */
-static int advance_ramps(aero_cavity_model *m, int n)
+static int advance_ramps(aero_cavity *m, int n)
 {
     if (m->ramp_left <= 0)
         return 0;
@@ -265,7 +264,7 @@ static int advance_ramps(aero_cavity_model *m, int n)
     return 1;
 }
 
-static double listener_distance(const aero_cavity_model *m, double r_min)
+static double listener_distance(const aero_cavity *m, double r_min)
 {
     const double *e = m->ctl + AERO_CAV_EAR;
     return fmax(sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]), r_min);
@@ -274,7 +273,7 @@ static double listener_distance(const aero_cavity_model *m, double r_min)
 /* Geometry, listener and level laws, when a control or the exponent has
  * moved: the depth modes and, per Rossiter mode, the unlocked tone
  * amplitude per U^n. */
-static void update_laws(aero_cavity_model *m)
+static void update_laws(aero_cavity *m)
 {
     double l = m->ctl[AERO_CAV_LENGTH], d = m->ctl[AERO_CAV_DEPTH];
     double w = m->ctl[AERO_CAV_WIDTH];
@@ -390,7 +389,7 @@ static inline void l4_cis(lane4 p, lane4 *c, lane4 *s)
  * sum of four uniforms, as the per-sample steps it replaces add up to);
  * per sample the four recurrences, the white noise and its two filters, in
  * float. */
-static void process_model(aero_cavity_model *m, const float *u, float *out,
+static void process_model(aero_cavity *m, const float *u, float *out,
                           int n, double u_mean, double u_end)
 {
     enum { K = AERO_CAVITY_MODES };
@@ -620,7 +619,7 @@ static void process_model(aero_cavity_model *m, const float *u, float *out,
  * follows the cavity's length as an aeolian texture's follows d0/d), amplitude
  * (v/v0)^n (g = dF/dt per unit width: F ~ v^2 L, f ~ v/L), Curle dipole
  * p = (x . g) W / (4 pi c0 r^2). */
-static void process_texture(aero_cavity_model *m, const float *u, float *out,
+static void process_texture(aero_cavity *m, const float *u, float *out,
                             int n, double u_end)
 {
     const aero_texture *t = m->texture;
@@ -665,7 +664,7 @@ static void process_texture(aero_cavity_model *m, const float *u, float *out,
     m->texture_pos = pos;
 }
 
-int aero_cavity_model_process(aero_cavity_model *m, const float *speed,
+int aero_cavity_process(aero_cavity *m, const float *speed,
                               float *const *outs, int n)
 {
     float *out = outs[0];

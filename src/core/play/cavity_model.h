@@ -54,7 +54,7 @@ enum {
     AERO_CAV_COUNT = AERO_CAV_EAR + 3
 };
 
-typedef struct aero_cavity_model {
+typedef struct aero_cavity {
     double sample_rate;
     uint32_t rng;
     double exponent;         /* amplitude ~ U^exponent */
@@ -85,31 +85,31 @@ typedef struct aero_cavity_model {
     double texture_v0;
     double texture_length; /* L0 the texture was made for, m (0: unknown) */
     double texture_pos;      /* frames */
-} aero_cavity_model;
+} aero_cavity;
 
 /* Defaults: L 2 cm, D 1 cm, W 5 cm, listener 1 m above the opening (+y),
  * gain 0 dB, ramp 20 ms, exponent 2. 0, or -1 when the sample rate is not
  * usable (44.1 kHz is taken). */
-int aero_cavity_model_init(aero_cavity_model *m, double sample_rate,
+int aero_cavity_init(aero_cavity *m, double sample_rate,
                            uint32_t seed);
-void aero_cavity_model_free(aero_cavity_model *m);
+void aero_cavity_free(aero_cavity *m);
 
 /* Setters: 0 when accepted, -1 when invalid (the old value stays). */
-int aero_cavity_model_set_sample_rate(aero_cavity_model *m, double sr);
-int aero_cavity_model_set_length(aero_cavity_model *m, double l);
-int aero_cavity_model_set_depth(aero_cavity_model *m, double d);
-int aero_cavity_model_set_width(aero_cavity_model *m, double w);
-int aero_cavity_model_set_gain_db(aero_cavity_model *m, double db);
-int aero_cavity_model_set_ramp_ms(aero_cavity_model *m, double ms);
-int aero_cavity_model_set_exponent(aero_cavity_model *m, double n);
+int aero_cavity_set_sample_rate(aero_cavity *m, double sr);
+int aero_cavity_set_length(aero_cavity *m, double l);
+int aero_cavity_set_depth(aero_cavity *m, double d);
+int aero_cavity_set_width(aero_cavity *m, double w);
+int aero_cavity_set_gain_db(aero_cavity *m, double db);
+int aero_cavity_set_ramp_ms(aero_cavity *m, double ms);
+int aero_cavity_set_exponent(aero_cavity *m, double n);
 /* one listener (mono: e->n must be 1) */
-int aero_cavity_model_set_ears(aero_cavity_model *m, const aero_ears *e);
-void aero_cavity_model_set_seed(aero_cavity_model *m, uint32_t seed);
+int aero_cavity_set_ears(aero_cavity *m, const aero_ears *e);
+void aero_cavity_set_seed(aero_cavity *m, uint32_t seed);
 
 /* Texture mode: takes ownership of a loaded texture (kind=cavity, at least
  * one direction, v0 > 0); returns -1 (and frees nothing) if it is not
  * usable. NULL returns to model mode. */
-int aero_cavity_model_set_texture(aero_cavity_model *m, aero_texture *t,
+int aero_cavity_set_texture(aero_cavity *m, aero_texture *t,
                                   char *err, size_t errlen);
 
 /* Rossiter frequency of mode m (1..4) at speed U, Hz. */
@@ -127,7 +127,7 @@ double aero_cavity_depth_hz(double depth, double length, double width,
 /* n samples; speed in m/s (NaN -> 0, |U| clamped at Mach 0.3); out[0] in
  * Pa (one listener: out has one channel).
  * Returns 1 if a speed was clamped. */
-int aero_cavity_model_process(aero_cavity_model *m, const float *speed,
+int aero_cavity_process(aero_cavity *m, const float *speed,
                               float *const *out, int n);
 
 #endif

@@ -15,7 +15,7 @@
 
 /* --- rendering ------------------------------------------------------------ */
 
-int aero_field_render_init(aero_field_render *r, double sample_rate)
+int aero_fieldsound_init(aero_fieldsound *r, double sample_rate)
 {
     memset(r, 0, sizeof *r);
     int sr_ok = sample_rate > 0 && sample_rate < 1e7;
@@ -27,14 +27,14 @@ int aero_field_render_init(aero_field_render *r, double sample_rate)
     return sr_ok ? 0 : -1;
 }
 
-void aero_field_render_free(aero_field_render *r)
+void aero_fieldsound_free(aero_fieldsound *r)
 {
     free(r->dist);
     r->dist = NULL;
     r->src = NULL;
 }
 
-int aero_field_render_set_sources(aero_field_render *r,
+int aero_fieldsound_set_sources(aero_fieldsound *r,
                                   const aero_field_sources *s)
 {
     free(r->dist);
@@ -54,7 +54,7 @@ int aero_field_render_set_sources(aero_field_render *r,
     return 0;
 }
 
-int aero_field_render_set_sample_rate(aero_field_render *r, double sr)
+int aero_fieldsound_set_sample_rate(aero_fieldsound *r, double sr)
 {
     if (!(sr > 0 && sr < 1e7))
         return -1;
@@ -62,7 +62,7 @@ int aero_field_render_set_sample_rate(aero_field_render *r, double sr)
     return 0;
 }
 
-int aero_field_render_set_speed(aero_field_render *r, double fps)
+int aero_fieldsound_set_speed(aero_fieldsound *r, double fps)
 {
     if (!(fps > 0 && fps <= AERO_FIELD_SPEED_MAX))
         return -1;
@@ -72,7 +72,7 @@ int aero_field_render_set_speed(aero_field_render *r, double fps)
     return 0;
 }
 
-int aero_field_render_set_ears(aero_field_render *r, const aero_ears *e)
+int aero_fieldsound_set_ears(aero_fieldsound *r, const aero_ears *e)
 {
     if (!aero_ears_ok(e, 1))
         return -1;
@@ -83,7 +83,7 @@ int aero_field_render_set_ears(aero_field_render *r, const aero_ears *e)
     return 0;
 }
 
-int aero_field_render_place_ears(aero_field_render *r, const aero_ears *e)
+int aero_fieldsound_place_ears(aero_fieldsound *r, const aero_ears *e)
 {
     if (!aero_ears_ok(e, 1))
         return -1;
@@ -94,7 +94,7 @@ int aero_field_render_place_ears(aero_field_render *r, const aero_ears *e)
     return 0;
 }
 
-int aero_field_render_set_ramp_ms(aero_field_render *r, double ms)
+int aero_fieldsound_set_ramp_ms(aero_fieldsound *r, double ms)
 {
     if (!(ms >= 0 && ms <= AERO_RAMP_MS_MAX))
         return -1;
@@ -102,7 +102,7 @@ int aero_field_render_set_ramp_ms(aero_field_render *r, double ms)
     return 0;
 }
 
-int aero_field_render_set_gain_db(aero_field_render *r, double db)
+int aero_fieldsound_set_gain_db(aero_fieldsound *r, double db)
 {
     if (!(db >= AERO_GAIN_DB_MIN && db <= AERO_GAIN_DB_MAX))
         return -1;
@@ -110,7 +110,7 @@ int aero_field_render_set_gain_db(aero_field_render *r, double db)
     return 0;
 }
 
-void aero_field_render_play(aero_field_render *r)
+void aero_fieldsound_play(aero_fieldsound *r)
 {
     if (!r->src)
         return;
@@ -124,12 +124,12 @@ void aero_field_render_play(aero_field_render *r)
     r->envelope = 1;
 }
 
-void aero_field_render_stop(aero_field_render *r)
+void aero_fieldsound_stop(aero_fieldsound *r)
 {
     r->playing = 0;
 }
 
-double aero_field_render_length(const aero_field_sources *s, double speed,
+double aero_fieldsound_length(const aero_field_sources *s, double speed,
                                 double distance)
 {
     if (!s || !(speed > 0))
@@ -155,7 +155,7 @@ static void piece(const float *g, const unsigned char *type, int frames,
 
 /* the listener over a chunk of c samples: l0 where it is, l1 where it
  * goes (a linear ramp toward the target, at most Mach 0.3) */
-static void move_listener(aero_field_render *r, int c, double l0[3],
+static void move_listener(aero_fieldsound *r, int c, double l0[3],
                           double l1[3])
 {
     memcpy(l0, r->listener, sizeof(double) * 3);
@@ -189,7 +189,7 @@ typedef struct {
 
 /* adds the Catmull-Rom piece cf, read at x = al + b i, times 1/D =
  * w0 + wd i, over samples is..ie-1 into acc */
-static void add_piece(aero_field_render *r, const double cf[4],
+static void add_piece(aero_fieldsound *r, const double cf[4],
                       double al, double b, double w0, double wd, int is,
                       int ie)
 {
@@ -220,7 +220,7 @@ static void add_piece(aero_field_render *r, const double cf[4],
 
 /* source k over the chunk, at the retarded time; 1 while some of it is
  * still to be heard */
-static int add_source(aero_field_render *r, const chunk *ch, int k)
+static int add_source(aero_fieldsound *r, const chunk *ch, int k)
 {
     const aero_field_sources *s = r->src;
     const double inv_c0 = 1.0 / AERO_C0;
@@ -276,7 +276,7 @@ static int add_source(aero_field_render *r, const chunk *ch, int k)
 }
 
 /* the accumulated chunk into out, faded from env0 to env1 */
-static void sum_chunk(const aero_field_render *r, float *out, int c,
+static void sum_chunk(const aero_fieldsound *r, float *out, int c,
                       double env0, double env1)
 {
     const double *acc = r->acc;
@@ -302,7 +302,7 @@ static void sum_chunk(const aero_field_render *r, float *out, int c,
 }
 
 /* one chunk of c <= AERO_FIELD_CHUNK samples */
-static int render_chunk(aero_field_render *r, float *out, int c)
+static int render_chunk(aero_fieldsound *r, float *out, int c)
 {
     const aero_field_sources *s = r->src;
     const double sr = r->sample_rate;
@@ -348,7 +348,7 @@ static int render_chunk(aero_field_render *r, float *out, int c)
     return r->playing;
 }
 
-int aero_field_render_process(aero_field_render *r, float *out, int n)
+int aero_fieldsound_process(aero_fieldsound *r, float *out, int n)
 {
     int playing = 0;
     while (n > 0) {

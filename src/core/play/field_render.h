@@ -12,7 +12,7 @@
 #define AERO_FIELD_CHUNK 64
 #define AERO_FIELD_SPEED_MAX 1e6 /* playback, frames per second */
 
-typedef struct aero_field_render {
+typedef struct aero_fieldsound {
     const aero_field_sources *src; /* not owned */
     double sample_rate;
     double speed, speed_target;    /* playback, frames per second */
@@ -27,31 +27,46 @@ typedef struct aero_field_render {
     int direct;                    /* per-sample reference sum */
     int clamped;                   /* listener faster than Mach 0.3 */
     double acc[5 * (AERO_FIELD_CHUNK + 1)];
-} aero_field_render;
+} aero_fieldsound;
 
 /* Defaults: listener at (0, 0, 0) ... set it; speed = the data's rate
  * once sources are set; ramp 20 ms; gain 0 dB; stopped. */
 /* 0, or -1 when the sample rate is not usable (44.1 kHz is taken) */
-int aero_field_render_init(aero_field_render *r, double sample_rate);
-void aero_field_render_free(aero_field_render *r);
+int aero_fieldsound_init(aero_fieldsound *r, double sample_rate);
+void aero_fieldsound_free(aero_fieldsound *r);
 /* new sources (NULL: silence); 0, or -1 when out of memory. Stops. */
-int aero_field_render_set_sources(aero_field_render *r,
+int aero_fieldsound_set_sources(aero_fieldsound *r,
                                   const aero_field_sources *s);
-int aero_field_render_set_sample_rate(aero_field_render *r, double sr);
-int aero_field_render_set_speed(aero_field_render *r, double fps);
+int aero_fieldsound_set_sample_rate(aero_fieldsound *r, double sr);
+int aero_fieldsound_set_speed(aero_fieldsound *r, double fps);
 /* one listener (mono: e->n must be 1), reached over the ramp time */
-int aero_field_render_set_ears(aero_field_render *r, const aero_ears *e);
+int aero_fieldsound_set_ears(aero_fieldsound *r, const aero_ears *e);
 /* the same, there at once (offline paths start here) */
-int aero_field_render_place_ears(aero_field_render *r, const aero_ears *e);
-int aero_field_render_set_ramp_ms(aero_field_render *r, double ms);
-int aero_field_render_set_gain_db(aero_field_render *r, double db);
-void aero_field_render_play(aero_field_render *r);
-void aero_field_render_stop(aero_field_render *r);
+int aero_fieldsound_place_ears(aero_fieldsound *r, const aero_ears *e);
+/* what a host reads: a volume to play, the listener clamped at Mach 0.3,
+   where the listener is going */
+static inline int aero_fieldsound_has_sources(const aero_fieldsound *r)
+{
+    return r->src != 0;
+}
+static inline int aero_fieldsound_clamped(const aero_fieldsound *r)
+{
+    return r->clamped;
+}
+static inline const double *aero_fieldsound_target(
+    const aero_fieldsound *r)
+{
+    return r->target;
+}
+int aero_fieldsound_set_ramp_ms(aero_fieldsound *r, double ms);
+int aero_fieldsound_set_gain_db(aero_fieldsound *r, double db);
+void aero_fieldsound_play(aero_fieldsound *r);
+void aero_fieldsound_stop(aero_fieldsound *r);
 /* n samples of pressure (Pa) into out. Returns 1 while playing. */
-int aero_field_render_process(aero_field_render *r, float *out, int n);
+int aero_fieldsound_process(aero_fieldsound *r, float *out, int n);
 /* seconds until every source has been heard, from play, at the current
  * speed, for a listener at most `distance` m from the origin */
-double aero_field_render_length(const aero_field_sources *s, double speed,
+double aero_fieldsound_length(const aero_field_sources *s, double speed,
                                 double distance);
 
 #endif

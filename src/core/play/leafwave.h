@@ -241,6 +241,14 @@ int aero_leafwave_set_rub(aero_leafwave *lw, double pa);
 int aero_leafwave_set_reach(aero_leafwave *lw, double factor);
 int aero_leafwave_set_tables(aero_leafwave *lw, double fm, int per_octave,
                              int octaves);
+/* the tables' settings, for a host that changes one of the three */
+static inline void aero_leafwave_tables(const aero_leafwave *lw, double *fm,
+                                        int *per_octave, int *octaves)
+{
+    *fm = lw->fm;
+    *per_octave = lw->tables_per_octave;
+    *octaves = lw->octaves;
+}
 int aero_leafwave_set_voices(aero_leafwave *lw, int n);
 /* restarts motion, leaf noises and tables from the seed (time back to 0) */
 int aero_leafwave_set_seed(aero_leafwave *lw, uint32_t seed);

@@ -57,12 +57,9 @@ static double current_diameter(const aero_stick_texture *s)
 static void set_re_law(aero_stick_texture *s, const aero_texture *t,
                        double v0, double d)
 {
-    char shape[32], span3d[32];
-    double re = aero_texture_getd(t, "re", 0.0);
-    s->re_law = aero_texture_get(t, "shape", shape, sizeof shape) &&
-                !strcmp(shape, "circle") &&
-                aero_texture_get(t, "span3d", span3d, sizeof span3d) &&
-                !strcmp(span3d, "circle-calibrated") &&
+    double re = t->head.re;
+    s->re_law = !strcmp(t->head.shape, "circle") &&
+                !strcmp(t->head.span3d, "circle-calibrated") &&
                 re > AERO_RE_ONSET && re < 1e7;
     if (!s->re_law)
         return;
@@ -182,18 +179,16 @@ int aero_stick_texture_set_texture(aero_stick_texture *s, aero_texture *t,
                                    char *err, size_t errlen)
 {
     if (t) {
-        char kind[32];
-        if (!aero_texture_get(t, "kind", kind, sizeof(kind)) ||
-            strcmp(kind, "aeolian")) {
+        const char *kind = t->head.kind;
+        if (strcmp(kind, "aeolian")) {
             snprintf(err, errlen, "not an aeolian texture (kind=%s)",
-                     aero_texture_get(t, "kind", kind, sizeof(kind))
-                         ? kind : "missing");
+                     kind[0] ? kind : "missing");
             return -1;
         }
-        double v0 = aero_texture_getd(t, "v0", 0.0);
-        double d = aero_texture_getd(t, "diameter", 0.0);
+        double v0 = t->head.v0;
+        double d = t->head.diameter;
         /* range before the cast (a file may say symmetry=1e300) */
-        double symmetry_value = aero_texture_getd(t, "symmetry", 0.0);
+        double symmetry_value = t->head.symmetry_deg;
         int symmetry = symmetry_value >= 0.0 && symmetry_value <= 360.0
                            ? (int)symmetry_value : -1;
         if (!(v0 > 0.0 && v0 < 1e3) || !(d > 0.0 && d < 100.0) ||
@@ -211,10 +206,10 @@ int aero_stick_texture_set_texture(aero_stick_texture *s, aero_texture *t,
         s->v0 = v0;
         s->tex_diameter = d;
         s->tex_rate = t->rate;
-        s->st = aero_texture_getd(t, "st", 0.0);
+        s->st = t->head.st;
         s->period = symmetry > 0 && t->directions > 1 ? 360.0 / symmetry
                                                        : 0.0;
-        s->mirror = fabs(aero_texture_getd(t, "mirror", 0.0)) >= 1.0;
+        s->mirror = fabs(t->head.mirror) >= 1.0;
         s->frames_per_cycle = s->st > 0.0 && v0 > 0.0 && d > 0.0
                                   ? t->rate * d / (s->st * v0)
                                   : 0.0;

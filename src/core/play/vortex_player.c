@@ -14,7 +14,7 @@
 #define PAD_BEFORE 1
 #define PAD_AFTER 3
 
-static void randomise_offsets(aero_vortex_player *m, int from)
+static void randomise_offsets(aero_vortex *m, int from)
 {
     for (int i = from; i < m->n; i++)
         /* uniform over the loop; scaled to frames when a texture arrives */
@@ -24,7 +24,7 @@ static void randomise_offsets(aero_vortex_player *m, int from)
             m->pos[i] *= m->frames;
 }
 
-int aero_vortex_player_init(aero_vortex_player *m, double sample_rate,
+int aero_vortex_init(aero_vortex *m, double sample_rate,
                             int stereo, uint32_t seed)
 {
     memset(m, 0, sizeof *m);
@@ -38,15 +38,15 @@ int aero_vortex_player_init(aero_vortex_player *m, double sample_rate,
     if (aero_combustion_init(&m->combustion, m->sample_rate,
                              m->rng ^ 0x9e3779b9u))
         return -1;
-    aero_vortex_player_set_ramp_ms(m, 20.0);
+    aero_vortex_set_ramp_ms(m, 20.0);
     m->ear[0] = m->ear_target[0] = stereo ? -0.1 : 0.0;
     m->ear[1] = m->ear_target[1] = 1.0;
     m->ear[3] = m->ear_target[3] = 0.1;
     m->ear[4] = m->ear_target[4] = 1.0;
-    return aero_vortex_player_set_count(m, 1);
+    return aero_vortex_set_count(m, 1);
 }
 
-void aero_vortex_player_free(aero_vortex_player *m)
+void aero_vortex_free(aero_vortex *m)
 {
     if (m->texture) {
         aero_texture_free(m->texture);
@@ -64,7 +64,7 @@ void aero_vortex_player_free(aero_vortex_player *m)
     memset(m, 0, sizeof *m);
 }
 
-int aero_vortex_player_set_sample_rate(aero_vortex_player *m, double sr)
+int aero_vortex_set_sample_rate(aero_vortex *m, double sr)
 {
     if (!(sr >= 1000.0 && sr <= 1e6))
         return -1;
@@ -73,7 +73,7 @@ int aero_vortex_player_set_sample_rate(aero_vortex_player *m, double sr)
     if (sr != m->sample_rate) {
         double ms = m->ramp_samples / m->sample_rate * 1000.0;
         m->sample_rate = sr;
-        aero_vortex_player_set_ramp_ms(m, ms);
+        aero_vortex_set_ramp_ms(m, ms);
     }
     return 0;
 }
@@ -90,7 +90,7 @@ static int grow(double **a, int old, int n, double fill)
     return 0;
 }
 
-int aero_vortex_player_set_count(aero_vortex_player *m, int n)
+int aero_vortex_set_count(aero_vortex *m, int n)
 {
     int old = m->n;
     if (n < 1 || n > AERO_VORTEX_MAX_SOURCES)
@@ -111,12 +111,12 @@ int aero_vortex_player_set_count(aero_vortex_player *m, int n)
     return 0;
 }
 
-static void start_ramp(aero_vortex_player *m)
+static void start_ramp(aero_vortex *m)
 {
     m->ramp_left = m->ramp_samples;
 }
 
-int aero_vortex_player_set_speeds(aero_vortex_player *m, const double *u,
+int aero_vortex_set_speeds(aero_vortex *m, const double *u,
                                   int count)
 {
     if (count < 1 || count > m->n)
@@ -130,7 +130,7 @@ int aero_vortex_player_set_speeds(aero_vortex_player *m, const double *u,
     return 0;
 }
 
-int aero_vortex_player_set_positions(aero_vortex_player *m,
+int aero_vortex_set_positions(aero_vortex *m,
                                      const double *xyz, int count)
 {
     if (count < 1 || count > m->n ||
@@ -141,7 +141,7 @@ int aero_vortex_player_set_positions(aero_vortex_player *m,
     return 0;
 }
 
-int aero_vortex_player_set_ears(aero_vortex_player *m, const aero_ears *e)
+int aero_vortex_set_ears(aero_vortex *m, const aero_ears *e)
 {
     if (!aero_ears_ok(e, 2))
         return -1;
@@ -152,7 +152,7 @@ int aero_vortex_player_set_ears(aero_vortex_player *m, const aero_ears *e)
     return 0;
 }
 
-int aero_vortex_player_set_gain_db(aero_vortex_player *m, double db)
+int aero_vortex_set_gain_db(aero_vortex *m, double db)
 {
     if (!(db >= AERO_GAIN_DB_MIN && db <= AERO_VORTEX_GAIN_DB_MAX))
         return -1;
@@ -161,7 +161,7 @@ int aero_vortex_player_set_gain_db(aero_vortex_player *m, double db)
     return 0;
 }
 
-int aero_vortex_player_set_clip(aero_vortex_player *m, double pa)
+int aero_vortex_set_clip(aero_vortex *m, double pa)
 {
     if (!(pa >= 0.0 && pa <= AERO_VORTEX_CLIP_MAX))
         return -1;
@@ -169,7 +169,7 @@ int aero_vortex_player_set_clip(aero_vortex_player *m, double pa)
     return 0;
 }
 
-int aero_vortex_player_set_ramp_ms(aero_vortex_player *m, double ms)
+int aero_vortex_set_ramp_ms(aero_vortex *m, double ms)
 {
     if (!(ms >= 0.0 && ms <= AERO_RAMP_MS_MAX))
         return -1;
@@ -179,7 +179,7 @@ int aero_vortex_player_set_ramp_ms(aero_vortex_player *m, double ms)
     return 0;
 }
 
-int aero_vortex_player_set_falloff(aero_vortex_player *m, int exponent)
+int aero_vortex_set_falloff(aero_vortex *m, int exponent)
 {
     if (exponent != 1 && exponent != 3)
         return -1;
@@ -187,27 +187,27 @@ int aero_vortex_player_set_falloff(aero_vortex_player *m, int exponent)
     return 0;
 }
 
-int aero_vortex_player_set_power_kw(aero_vortex_player *m, double kw)
+int aero_vortex_set_power_kw(aero_vortex *m, double kw)
 {
     return aero_combustion_set_power_kw(&m->combustion, kw);
 }
 
-int aero_vortex_player_set_flame_length(aero_vortex_player *m, double l)
+int aero_vortex_set_flame_length(aero_vortex *m, double l)
 {
     return aero_combustion_set_length(&m->combustion, l);
 }
 
-int aero_vortex_player_set_strouhal(aero_vortex_player *m, double st)
+int aero_vortex_set_strouhal(aero_vortex *m, double st)
 {
     return aero_combustion_set_strouhal(&m->combustion, st);
 }
 
-int aero_vortex_player_set_fluctuation(aero_vortex_player *m, double eps)
+int aero_vortex_set_fluctuation(aero_vortex *m, double eps)
 {
     return aero_combustion_set_fluctuation(&m->combustion, eps);
 }
 
-void aero_vortex_player_set_seed(aero_vortex_player *m, uint32_t seed)
+void aero_vortex_set_seed(aero_vortex *m, uint32_t seed)
 {
     m->rng = seed ? seed : 1;
     aero_combustion_set_seed(&m->combustion, m->rng ^ 0x9e3779b9u);
@@ -216,18 +216,16 @@ void aero_vortex_player_set_seed(aero_vortex_player *m, uint32_t seed)
         m->dist[i] = -1.0; /* read positions restart from the offsets */
 }
 
-int aero_vortex_player_set_texture(aero_vortex_player *m, aero_texture *t,
+int aero_vortex_set_texture(aero_vortex *m, aero_texture *t,
                                    char *err, size_t errlen)
 {
     float *tab = NULL;
     if (t) {
-        char kind[32];
+        const char *kind = t->head.kind;
         int F = t->frames, ns = t->channels;
-        if (!aero_texture_get(t, "kind", kind, sizeof kind) ||
-            strcmp(kind, "vortex") || !t->speeds) {
+        if (strcmp(kind, "vortex") || !t->speeds) {
             snprintf(err, errlen, "not a vortex texture (kind=%s)",
-                     aero_texture_get(t, "kind", kind, sizeof kind) ? kind
-                                                                    : "?");
+                     kind[0] ? kind : "?");
             return -1;
         }
         if (F < 4 || ns < 1 || !(t->rate > 0.0)) {
@@ -277,7 +275,7 @@ int aero_vortex_player_set_texture(aero_vortex_player *m, aero_texture *t,
 }
 
 /* the channel pair and weights of speed u: value = wa Q_c + wb Q_c+1 */
-static void speed_weights(const aero_vortex_player *m, double u, int c,
+static void speed_weights(const aero_vortex *m, double u, int c,
                           double *wa, double *wb)
 {
     const double *s = m->speeds;
@@ -304,7 +302,7 @@ static void speed_weights(const aero_vortex_player *m, double u, int c,
 }
 
 /* index c of the pair (c, c+1) holding u (0 below, ns-2 above) */
-static int speed_pair(const aero_vortex_player *m, double u)
+static int speed_pair(const aero_vortex *m, double u)
 {
     int c = 0;
     if (m->nspeeds < 2)
@@ -395,7 +393,7 @@ static void add_texture(const block *b, const float *qa, const float *qb,
 
 /* source i heard at ear e: the retarded read position moves at the
    Doppler rate of both motions; adds the block into o */
-static void render_ear(aero_vortex_player *m, const block *b, int i, int e,
+static void render_ear(aero_vortex *m, const block *b, int i, int e,
                        int c, const double w[4], float *o)
 {
     const int F = b->frames;
@@ -442,7 +440,7 @@ static void render_ear(aero_vortex_player *m, const block *b, int i, int e,
 
 /* source i over the block: its speed's channel pair and weights at both
    ends, its position, then each ear */
-static void render_source(aero_vortex_player *m, const block *b, int i,
+static void render_source(aero_vortex *m, const block *b, int i,
                           double u_in0, double u_in1, float *const *out)
 {
     double u0 = u_in0 + m->speed[i], u1, w[4];
@@ -464,7 +462,7 @@ static void render_source(aero_vortex_player *m, const block *b, int i,
 
 /* the flame's roar: a monopole at the volumes' centre, at their mean
    speed */
-static void add_combustion(aero_vortex_player *m, double u_in, int nout,
+static void add_combustion(aero_vortex *m, double u_in, int nout,
                            float *const *out, int n)
 {
     double c[3] = {0.0, 0.0, 0.0}, u = 0.0;
@@ -479,7 +477,7 @@ static void add_combustion(aero_vortex_player *m, double u_in, int nout,
 }
 
 /* microphone limit (on the pressure), then the gain; no NaN leaves */
-static void limit_and_gain(aero_vortex_player *m, double frac, int nout,
+static void limit_and_gain(aero_vortex *m, double frac, int nout,
                            float *const *out, int n)
 {
     double g1 = m->gain + (m->gain_target - m->gain) * frac;
@@ -504,7 +502,7 @@ static void limit_and_gain(aero_vortex_player *m, double frac, int nout,
     m->gain = g1;
 }
 
-int aero_vortex_player_process(aero_vortex_player *m, const float *speed,
+int aero_vortex_process(aero_vortex *m, const float *speed,
                                float *const *out, int n)
 {
     const int nout = m->stereo ? 2 : 1;

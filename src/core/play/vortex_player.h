@@ -49,7 +49,7 @@
 #define AERO_VORTEX_GAIN_DB_MAX 200.0
 #define AERO_VORTEX_CLIP_MAX 1e6
 
-typedef struct aero_vortex_player {
+typedef struct aero_vortex {
     double sample_rate;
     int stereo;
     uint32_t rng;
@@ -77,52 +77,56 @@ typedef struct aero_vortex_player {
                                    the last block (<0: not yet known) */
     double *rd;                 /* 2 n: read position for each ear, frames */
     double ear[6], ear_target[6]; /* mono uses ear 0 */
-} aero_vortex_player;
+} aero_vortex;
 
 /* Defaults: 1 source at the origin, listener at (0, 1, 0), ears at
    (-0.1, 1, 0) and (0.1, 1, 0), gain 1, no clip, ramp 20 ms, no texture
    (silence). 0, or -1 when out of memory. */
-int aero_vortex_player_init(aero_vortex_player *m, double sample_rate,
+int aero_vortex_init(aero_vortex *m, double sample_rate,
                             int stereo, uint32_t seed);
-void aero_vortex_player_free(aero_vortex_player *m);
+void aero_vortex_free(aero_vortex *m);
 
 /* Setters: 0 when accepted, -1 when invalid (the old value stays). */
-int aero_vortex_player_set_sample_rate(aero_vortex_player *m, double sr);
+int aero_vortex_set_sample_rate(aero_vortex *m, double sr);
 /* number of source volumes 1..AERO_VORTEX_MAX_SOURCES (allocates; new
    sources start at the origin, speed 0, with fresh random offsets) */
-int aero_vortex_player_set_count(aero_vortex_player *m, int n);
+int aero_vortex_set_count(aero_vortex *m, int n);
+static inline int aero_vortex_count(const aero_vortex *m)
+{
+    return m->n;
+}
 /* per-source speeds (m/s, >= 0), count values for sources 0..count-1 */
-int aero_vortex_player_set_speeds(aero_vortex_player *m, const double *u,
+int aero_vortex_set_speeds(aero_vortex *m, const double *u,
                                   int count);
 /* per-source positions x y z (m), count sources */
-int aero_vortex_player_set_positions(aero_vortex_player *m,
+int aero_vortex_set_positions(aero_vortex *m,
                                      const double *xyz, int count);
 /* one listener (both ears there) or two ears */
-int aero_vortex_player_set_ears(aero_vortex_player *m, const aero_ears *e);
-int aero_vortex_player_set_gain_db(aero_vortex_player *m, double db);
+int aero_vortex_set_ears(aero_vortex *m, const aero_ears *e);
+int aero_vortex_set_gain_db(aero_vortex *m, double db);
 /* microphone limit, Pa (0: off) */
-int aero_vortex_player_set_clip(aero_vortex_player *m, double pa);
-int aero_vortex_player_set_ramp_ms(aero_vortex_player *m, double ms);
+int aero_vortex_set_clip(aero_vortex *m, double pa);
+int aero_vortex_set_ramp_ms(aero_vortex *m, double ms);
 /* 1 (1/r, the far field) or 3 (the paper's 1/r^3) */
-int aero_vortex_player_set_falloff(aero_vortex_player *m, int exponent);
+int aero_vortex_set_falloff(aero_vortex *m, int exponent);
 /* the combustion noise (combustion_noise.h, its ranges): the flame's
    mean heat release (kW, 0: off), length (m), Strouhal number and
    fluctuation (0..1); 0, or -1 when out of range */
-int aero_vortex_player_set_power_kw(aero_vortex_player *m, double kw);
-int aero_vortex_player_set_flame_length(aero_vortex_player *m, double l);
-int aero_vortex_player_set_strouhal(aero_vortex_player *m, double st);
-int aero_vortex_player_set_fluctuation(aero_vortex_player *m, double eps);
+int aero_vortex_set_power_kw(aero_vortex *m, double kw);
+int aero_vortex_set_flame_length(aero_vortex *m, double l);
+int aero_vortex_set_strouhal(aero_vortex *m, double st);
+int aero_vortex_set_fluctuation(aero_vortex *m, double eps);
 /* new random texture offsets from this seed */
-void aero_vortex_player_set_seed(aero_vortex_player *m, uint32_t seed);
+void aero_vortex_set_seed(aero_vortex *m, uint32_t seed);
 /* takes ownership of a loaded kind=vortex texture (returns -1 and frees
    nothing when it is not usable); NULL: silence */
-int aero_vortex_player_set_texture(aero_vortex_player *m, aero_texture *t,
+int aero_vortex_set_texture(aero_vortex *m, aero_texture *t,
                                    char *err, size_t errlen);
 
 /* n samples; speed in m/s (NaN -> 0, |u| clamped at Mach 0.3; may be
    NULL: 0); out[0] (and out[1] in stereo) in Pa. Returns 1 if a speed was
    clamped. The outputs may alias the speed input. */
-int aero_vortex_player_process(aero_vortex_player *m, const float *speed,
+int aero_vortex_process(aero_vortex *m, const float *speed,
                                float *const *out, int n);
 
 #endif

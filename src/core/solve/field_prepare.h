@@ -47,7 +47,7 @@
  * reference (`direct`), for tests and the benchmark.
  *
  * Life cycle: aero_field_pre_* turns frames into aero_field_sources
- * (owning arrays), aero_field_render_* plays them. No globals. */
+ * (owning arrays), aero_fieldsound_* plays them. No globals. */
 #ifndef AERO_FIELD_PREPARE_H
 #define AERO_FIELD_PREPARE_H
 

@@ -96,6 +96,9 @@ externals.64 = $(if $(EXT.64),$(patsubst %,$(STAGE)/%.$(EXT.64),$(classes) aero)
 data = $(wildcard help/*.pd) $(wildcard abstractions/*.pd) README.md LICENSE
 staged.data = $(addprefix $(STAGE)/,$(notdir $(data)))
 staged.dirs = $(wildcard textures/*.wav) $(wildcard trees/*.tree)
+# the documents the README links to, at the same relative paths
+staged.dirs += $(wildcard docs/*.md docs/img/*.png) textures/README.md \
+    trees/README.md BENCHMARKS.md CONTRIBUTING.md
 staged.files = $(addprefix $(STAGE)/,$(staged.dirs))
 
 .PHONY: all

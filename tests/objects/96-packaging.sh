@@ -100,12 +100,14 @@ for pkg in $packages Sources; do
         $(for c in $classes $abstractions; do echo "aero/$c-help.pd"; done) \
         $(for a in $abstractions; do echo "aero/$a.pd"; done) \
         $(ls textures/*.wav trees/*.tree | sed 's|^|aero/|') \
+        $(ls docs/*.md docs/img/*.png | sed 's|^|aero/|') \
+        aero/textures/README.md aero/trees/README.md \
         aero/aero-meta.pd aero/LICENSE aero/README.md; do
         echo "$listing" | grep -q -x -F "$f" || missing="$missing $f"
     done
     foreign=$(echo "$listing" | grep -E "$binary_re" | grep -v -F ".$ext" | head -3)
     if [ -z "$missing" ] && [ -z "$foreign" ]; then
-        pass "$(basename "$dek"): *.$ext, help, abstractions, textures, trees, meta, license, no other binary"
+        pass "$(basename "$dek"): *.$ext, help, abstractions, textures, trees, meta, license, the README's documents, no other binary"
     else
         fail "$(basename "$dek") lacks:$missing$(echo "$foreign" | sed 's/^/ has /')"
     fi

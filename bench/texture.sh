@@ -27,11 +27,12 @@ sed 's/^/    /' "$OUT/cylinder.txt"
 
 t0=$(stamp)
 $T aeolian --shape polygon textures/sword.poly --diameter 0.04 --speed 10 \
-    --symmetry 2 --mirror --directions 19 --grid 20 --settle 20 \
-    --span3d none -q -o "$OUT/sword.wav" >"$OUT/sword.txt"
+    --symmetry 2 --mirror --directions 10 --grid 32 --settle 20 \
+    --duration 0.1 --span3d urans --urans-from 30 -q -o "$OUT/sword.wav" \
+    >"$OUT/sword.txt"
 t1=$(stamp)
 sw=$(elapsed "$t0" "$t1")
-echo "sword set, 19 directions (5 deg over 0-90 deg), $(nproc) cores:" \
+echo "sword set, 10 directions (10 deg over 0-90 deg), $(nproc) cores:" \
      "${sw} s (target <= 600 s; paper: hours)"
 head -n 1 "$OUT/sword.txt" | sed 's/^/    /'
 

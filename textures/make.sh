@@ -22,10 +22,14 @@ $T aeolian --shape circle --diameter 0.01 --speed 10 --grid 24 \
 # textures/README.md)
 $T aeolian --shape square --diameter 0.01 --speed 10 --directions 8 \
     --grid 24 --span3d urans --duration 0.1 -o textures/square.wav
-# sword blade (lenticular 40 mm x 5 mm) at 10 m/s, every 5 deg over 0-90 deg
+# sword blade (lenticular 40 mm x 5 mm) at 10 m/s, every 10 deg over 0-90
+# deg, 4 cells across the blade; stalled (30-90 deg) by the k-omega
+# turbulence model, which sheds steadily where the laminar flow bursts
+# (clicks), and nearly edge-on (0-20 deg) laminar, where the model would
+# damp the thin wake's shedding away; 0.1 s (textures/README.md)
 $T aeolian --shape polygon textures/sword.poly --diameter 0.04 --speed 10 \
-    --symmetry 2 --mirror --directions 19 --grid 20 --settle 20 \
-    --span3d none -o textures/sword.wav
+    --symmetry 2 --mirror --directions 10 --grid 32 --settle 20 \
+    --duration 0.1 --span3d urans --urans-from 30 -o textures/sword.wav
 # cavity 2 cm long, 1 cm deep in a wall, flow at 10 m/s
 $T cavity --length 0.02 --depth 0.01 --speed 10 --grid 48 \
     -o textures/cavity.wav

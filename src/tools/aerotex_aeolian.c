@@ -60,6 +60,10 @@ static const aerotex_option aeolian_options[] = {
      "St and Norberg's C_L';\nurans: the turbulence as an eddy viscosity "
      "(Wilcox's\nk-omega, Kato and Launder's production)\n"
      "(textures/README.md)", NULL, NULL},
+    {"--urans-from", AEROTEX_NUMBER, "deg", 0.0, 0.0, 90.0, AT(urans_from),
+     "with --span3d urans: directions at a smaller\nincidence to the x "
+     "axis run laminar (a thin\nedge-on wake the model would damp)", NULL,
+     NULL},
     {"--stretch", AEROTEX_NUMBER, "r", 1.1, 1.0, 1.2, AT(stretch),
      "rows beyond 2 d of the body grow by r each\n(1: a uniform grid)",
      NULL, NULL},

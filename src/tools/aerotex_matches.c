@@ -96,6 +96,37 @@ static int rossiter_stage(double st_l, double mach, double *st_m)
     return best;
 }
 
+/* a thin blade (the sword): its tone's St on the projected width,
+   chord sin(angle) from 20 deg on, and the checks that only Pd measures */
+static void blade_rows(const aero_texture *t)
+{
+    double st[64], ang[64], lo = 1e9, hi = -1e9;
+    int n = meta_list(t, "st_list", st, 64);
+    int na = meta_list(t, "angles", ang, 64);
+    char v[64];
+    for (int k = 0; k < n && k < na; k++)
+        if (ang[k] >= 20.0 - 1e-9 && ang[k] <= 90.0 + 1e-9) {
+            double s = st[k] * sin(ang[k] * 3.14159265358979323846 / 180.0);
+            lo = s < lo ? s : lo;
+            hi = s > hi ? s : hi;
+        }
+    if (hi >= lo)
+        snprintf(v, sizeof v, "%.3f-%.3f", lo, hi);
+    else
+        snprintf(v, sizeof v, "(no directions at 20-90 deg)");
+    row("St on the projected width (chord sin a), 20-90 deg", v,
+        "0.14-0.20 (0.146 broadside)", "Fage and Johansen 1927",
+        "16-sword.sh 3 (metadata and heard)", "independent");
+    row("clicks of the force channels", "(measured by the test)",
+        "at most 3", "issue 39", "16-sword.sh 2", "independent");
+    row("clicks, whirled in Pd, chord at 0-90 deg", "(measured in Pd)",
+        "within the whirled cylinder's + 0.5", "issue 39",
+        "16-sword.sh 1 (60 deg open)", "independent");
+    row("edge-on tone below broadside", "(measured in Pd)",
+        "below broadside, not silent", "issue 39", "16-sword.sh 4",
+        "independent");
+}
+
 static void aeolian_rows(const aero_texture *t)
 {
     char sb[64], hb[256];
@@ -121,6 +152,10 @@ static void aeolian_rows(const aero_texture *t)
             "not asserted (open)", "independent");
         return;
     }
+    if (shape && !strncmp(shape, "polygon", 7)) {
+        blade_rows(t);
+        return;
+    }
     if (span && !strcmp(span, "urans")) {
         double st[64], cd[64], ang[64];
         int n = meta_list(t, "st_list", st, 64);
@@ -142,13 +177,6 @@ static void aeolian_rows(const aero_texture *t)
             "Knisely 1990", "not asserted (open)", "independent");
         return;
     }
-    /* a polygon, uncorrected: the sword (its rows are its helper's) */
-    row("St on the projected width, 20-90 deg", "(to be filled)",
-        "0.14-0.20 (0.146 broadside)", "Fage and Johansen 1927",
-        "(to be filled)", "(to be filled)");
-    row("clicks, whirled in Pd", "(to be filled)",
-        "within the whirled cylinder's + 0.5", "issue 39",
-        "(to be filled)", "(to be filled)");
 }
 
 static void cavity_rows(const aero_texture *t)

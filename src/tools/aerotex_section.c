@@ -23,6 +23,25 @@ static int urans(const aeolian_job *j)
            j->re > AERO_SPAN3D_RE_2D;
 }
 
+/* the flow angle's incidence to the section's x axis, 0..90 deg */
+static double incidence(double alpha)
+{
+    double a = fmod(fabs(alpha), 180.0);
+    return a < 90.0 ? a : 180.0 - a;
+}
+
+/* A thin section nearly edge-on keeps its boundary layers attached and
+   sheds from a thin trailing-edge wake a few cells wide: there the
+   k-omega model's eddy viscosity on the coarse grid damps the shedding
+   away (a silent blade), while the laminar 2D flow sheds a weak tone.
+   Stalled, the laminar shear layers roll up into under-resolved bursts
+   (clicks) that the model smooths (textures/README.md, the sword). So
+   with --urans-from A the directions under A deg run laminar. */
+static int direction_urans(const aeolian_job *j, double alpha)
+{
+    return urans(j) && incidence(alpha) >= j->urans_from - 1e-9;
+}
+
 /* one sampled direction: the first member is its task */
 typedef struct {
     aerotex_task task;
@@ -113,7 +132,8 @@ static aero_aeolian_flow_params flow_params(const aeolian_job *j,
     p.angle = alpha;
     p.span3d = &j->correction;
     p.span3d_self = 0;
-    p.turbulence = urans(j) ? URANS_MODEL : AERO_FLOW2D_LAMINAR;
+    p.turbulence = direction_urans(j, alpha) ? URANS_MODEL
+                                             : AERO_FLOW2D_LAMINAR;
     return p;
 }
 
@@ -382,6 +402,8 @@ static void describe(const aeolian_job *j, const direction *r,
         aero_texture_setd(tex, "turbulence_intensity",
                           fp.turbulence_intensity);
         aero_texture_setd(tex, "turbulence_ratio", fp.turbulence_ratio);
+        if (j->urans_from > 0.0)
+            aero_texture_setd(tex, "urans_from", j->urans_from);
     }
     aero_texture_setd(tex, "span3d_frequency_scale", c->frequency_scale);
     aero_texture_setd(tex, "span3d_force_scale", c->force_scale);
@@ -415,6 +437,8 @@ static void report(const aeolian_job *j, const direction *r, const char *desc,
         printf("  2D-to-3D (urans): %s, free stream Tu %g %%, nu_t/nu %g\n",
                URANS_DESCRIPTION, 100.0 * fp.turbulence_intensity,
                fp.turbulence_ratio);
+        if (j->urans_from > 0.0)
+            printf("  laminar below %g deg of incidence\n", j->urans_from);
     }
     if (c->applied)
         printf("  2D-to-3D (circle-calibrated): the 2D circle at Re %.4g "

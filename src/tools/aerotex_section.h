@@ -23,6 +23,8 @@ typedef struct {
     int span3d;           /* SPAN3D_NONE, _CIRCLE (the circle-calibrated
                              2D-to-3D correction) or _URANS (k-omega) */
     aero_span3d correction; /* what the texture carries (span3d.h) */
+    double urans_from;    /* --span3d urans: directions at a smaller
+                             incidence to the x axis, deg, run laminar */
 } aeolian_job;
 
 enum { SPAN3D_NONE, SPAN3D_CIRCLE, SPAN3D_URANS };

@@ -165,7 +165,7 @@ reports_at_least "$OUT/tx-bad-msgs.log" "[aeolian~]" 8
 #     (textures/README.md), so these check that it was applied. Still open
 #     and not asserted here (textures/README.md, "Open"): the 2D mean drag
 #     (Cd 1.0-1.3, Roshko 1961; the texture's is ~1.76), the square
-#     prism's St and Cd onto a face, the sword's clicks
+#     prism's St and Cd onto a face (the sword: 16-sword.sh)
 tex_meta() { build/aerotex info "textures/$1.wav" | sed -n "s/^$2=//p"; }
 cyl_re=$(tex_meta cylinder re)
 in_range "cylinder St" "$(tex_meta cylinder st)" 0.19 0.21 "Roshko 1954"

@@ -1,0 +1,131 @@
+# --- the sword blade (textures/sword.wav) whirled at every chord angle -------
+section "[aeolian~]: the sword blade, whirled with its chord at 0-90 deg (issue 39)"
+
+# SWORD_TEXTURE=FILE runs these checks on another texture. What the
+# shipped texture does not meet yet (issue 39, textures/README.md sword.wav)
+# is named in SWORD_OPEN: a known failure, printed as "open" and not
+# counted, which fails the test once it passes (so that it is taken off
+# the list); SWORD_OPEN= (empty) counts every check as usual.
+sword=${SWORD_TEXTURE:-sword}
+sword_wav=$sword
+case $sword_wav in */*) ;; *) sword_wav=textures/$sword ;; esac
+sword_wav=${sword_wav%.wav}.wav
+sword_open=${SWORD_OPEN-whirl60}
+verdict() { # KEY OK MESSAGE: pass or fail; KEY in SWORD_OPEN: the reverse
+    case " $sword_open " in
+    *" $1 "*)
+        if [ "$2" -eq 1 ]; then
+            fail "$3: passes now, take $1 off SWORD_OPEN (issue 39)"
+        else
+            echo "  open  $3 (a known failure, issue 39; not counted)"
+        fi ;;
+    *) if [ "$2" -eq 1 ]; then pass "$3"; else fail "$3"; fi ;;
+    esac
+}
+click_of() { # FILE CHANNEL: aero-analyze's click measure
+    $ANALYZE clicks "$1" --ch "$2" | sed -n 's/.*: \([0-9.]*\).*/\1/p'
+}
+holds() { if awk "BEGIN { exit !($1) }"; then echo 1; else echo 0; fi; }
+meta() { build/aerotex info "$sword_wav" | sed -n "s/^$1=//p"; }
+chord=$(meta diameter) step=$(meta angle_step) st_list=$(meta st_list)
+
+# 1. A blade from 0.5 to 1.5 m turning at 2 turns/s (tip 18.8 m/s) past
+#    stereo ears 3 m out, its chord (the body x axis, the optional axis of
+#    pose) held at 0, 30, 45, 60 and 90 deg to its path (tests/pd/
+#    aero-blade), against the cylinder whirled the same way in the same
+#    run (tests/pd/aero-rotor, as test 8 of 15-aeolian-texture.sh): each
+#    ear's click measure (the worst 2 ms window's peak second difference
+#    over its 6 ms neighbourhood) within the cylinder's + 0.5, the
+#    measure's scatter from run to run of the flow (textures/README.md).
+#    A blade held at one angle reads one pair of texture directions all
+#    the time, so this measures the flow's own content. Open: 58-62 deg
+#    (3.0-3.4 here), whose direction's channels measure only 2.2.
+PD_EXTRA="tests/pd/aero-rotor 0.5 1.5 0 720 5" \
+    pd_render sw-cyl "aeolian~ -texture cylinder -stereo" 2 2000 \
+    "; aero-obj ears -0.1 3 0 0.1 3 0"
+cyl0=$(click_of "$OUT/sw-cyl.wav" 0) cyl1=$(click_of "$OUT/sw-cyl.wav" 1)
+for angle in 0 30 45 60 90; do
+    PD_EXTRA="tests/pd/aero-blade 0.5 1.5 0 720 5 $angle" \
+        pd_render "sw-whirl-$angle" "aeolian~ -texture $sword -stereo" 2 2000 \
+        "; aero-obj ears -0.1 3 0 0.1 3 0"
+    judge $ANALYZE finite "$OUT/sw-whirl-$angle.wav" --max 100
+    for ch in 0 1; do
+        eval "ref=\$cyl$ch"
+        c=$(click_of "$OUT/sw-whirl-$angle.wav" "$ch")
+        verdict "whirl$angle" "$(holds "\"$c\" != \"\" && \"$ref\" != \"\" && $c <= $ref + 0.5")" \
+            "whirled blade, chord at $angle deg, ear $ch: click measure ${c:-?} (cylinder ${ref:-?} + 0.5)"
+    done
+done
+
+# 2. every force channel of the texture (drag and lift of each direction)
+#    has a click measure of at most 3
+directions=$(meta directions)
+[ -n "$directions" ] || fail "$sword_wav: no directions in its metadata"
+k=0
+while [ "$k" -lt "${directions:-0}" ]; do
+    x=$(click_of "$sword_wav" $((3 * k))) y=$(click_of "$sword_wav" $((3 * k + 1)))
+    a=$(awk -v k="$k" -v s="$step" 'BEGIN { print k * s }')
+    verdict channels "$(holds "\"$x\" != \"\" && \"$y\" != \"\" && $x <= 3 && $y <= 3")" \
+        "sword texture at $a deg: click measure of the drag ${x:-?}, the lift ${y:-?} (at most 3)"
+    k=$((k + 1))
+done
+
+# 3. the tone's St on the projected width w (the blade's extent across the
+#    flow) from 20 to 90 deg: 0.14-0.20 (issue 39), the inclined flat
+#    plate's (Fage and Johansen 1927: 0.146 broadside, near it on the
+#    projected width when inclined). The texture's own measure (aerotex
+#    info st_list, St on the chord) ...
+projected_width() { # DEG: the blade's extent across a flow at DEG, m
+    awk -v a="$1" -v c="$chord" '
+        !/^#/ && NF >= 2 { gsub(",", " "); n++; x[n] = $1; y[n] = $2 }
+        END { xmin = 1e9; xmax = -1e9
+              for (i = 1; i <= n; i++) { if (x[i] < xmin) xmin = x[i]; if (x[i] > xmax) xmax = x[i] }
+              r = a * 3.14159265358979 / 180; lo = 1e9; hi = -1e9
+              for (i = 1; i <= n; i++) { p = -sin(r) * x[i] + cos(r) * y[i]
+                  if (p < lo) lo = p; if (p > hi) hi = p }
+              printf "%.6g\n", c / (xmax - xmin) * (hi - lo) }' textures/sword.poly
+}
+k=0
+for st in $(echo "$st_list" | tr ',' ' '); do
+    a=$(awk -v k="$k" -v s="$step" 'BEGIN { print k * s }')
+    k=$((k + 1))
+    [ "$(holds "$a >= 20")" -eq 1 ] || continue
+    stw=$(awk -v s="$st" -v w="$(projected_width "$a")" -v c="$chord" \
+        'BEGIN { printf "%.4f", s * w / c }')
+    verdict "st$a" "$(holds "$stw >= 0.14 && $stw <= 0.20")" \
+        "sword St on the projected width at $a deg: $stw (0.14-0.20, Fage and Johansen 1927)"
+done
+[ "$k" -eq "${directions:-0}" ] || fail "$sword_wav: st_list has $k of $directions directions"
+
+#    ... and as heard: a blade at rest in a 15 m/s wind, an ear 3 m across
+#    the flow (the lift) and one 3 m along it (the drag): at 45 and 90 deg
+#    the lift ear's spectral peak (smoothed over 3 Hz) is at St_w 0.14-0.20
+rest() { # DEG: render the blade at rest with its chord at DEG to the wind
+    ux=$(awk -v a="$1" 'BEGIN { printf "%.6f", cos(a * 3.14159265358979 / 180) }')
+    uy=$(awk -v a="$1" 'BEGIN { printf "%.6f", sin(a * 3.14159265358979 / 180) }')
+    pd_render "sw-rest-$1" "aeolian~ -texture $sword -seed 5 -stereo" 2 4000 \
+        "; aero-obj wind 15 0 0; aero-obj place 0 0 -0.5 0 0 0.5 $ux $uy 0; aero-obj ears 3 0 0 0 3 0"
+}
+for angle in 45 90; do
+    rest "$angle"
+    f=$($ANALYZE peak "$OUT/sw-rest-$angle.wav" --ch 1 --fmin 10 --fmax 2000 \
+        --nfft 16384 --smooth 3 | sed -n 's/.*: \([0-9.e+-]*\) Hz.*/\1/p')
+    stw=$(awk -v f="$f" -v w="$(projected_width "$angle")" 'BEGIN { printf "%.4f", f * w / 15 }')
+    verdict heard "$(holds "\"$f\" != \"\" && $stw >= 0.14 && $stw <= 0.20")" \
+        "blade at rest at $angle deg: heard peak ${f:-?} Hz, St on the projected width $stw (0.14-0.20, Fage and Johansen 1927)"
+done
+
+# 4. below 20 deg the blade is not silent: edge-on, a weak tone from its
+#    thin wake, below the broadside level (the power of both ears, drag
+#    and lift) and within 30 dB of it (audible beside it: a choice, not a
+#    published bound)
+rest 0
+level_of() { # FILE: the power sum of both channels, dB SPL
+    a=$($ANALYZE level "$1" --ch 0 | sed -n 's/.*: \([-0-9.]*\) dB SPL.*/\1/p')
+    b=$($ANALYZE level "$1" --ch 1 | sed -n 's/.*: \([-0-9.]*\) dB SPL.*/\1/p')
+    [ -n "$a" ] && [ -n "$b" ] &&
+        awk -v a="$a" -v b="$b" 'BEGIN { printf "%.2f", 10 * log(10^(a / 10) + 10^(b / 10)) / log(10) }'
+}
+edge=$(level_of "$OUT/sw-rest-0.wav") broad=$(level_of "$OUT/sw-rest-90.wav")
+verdict level "$(holds "\"$edge\" != \"\" && \"$broad\" != \"\" && $edge < $broad && $edge > $broad - 30")" \
+    "edge-on blade: ${edge:-?} dB SPL, broadside ${broad:-?} dB (below it by less than 30 dB)"

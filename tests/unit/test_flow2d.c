@@ -199,6 +199,9 @@ int main(void)
         {100.0, 16.0, 45.0, 36.0, -20.0, 24.0, 16.0}, /* stretched rows */
     };
     const int order[5] = {3, 1, 2, 4, 0}; /* longest first */
+    /* under the sanitizers (tests/robust/check-asan.sh) each case runs 2 d/U
+       for the memory checks only; make check judges the physics */
+    const int sanitized = getenv("AERO_TEST_SANITIZED") != NULL;
     test_shapes();
     memset(c, 0, sizeof c);
     c[4].ycore = 2.5; /* aerotex's: 2 d beyond the body, 10 % growth */
@@ -211,6 +214,8 @@ int main(void)
         c[k].xmin = setup[k][4];
         c[k].xmax = setup[k][5];
         c[k].ymax = setup[k][6];
+        if (sanitized)
+            c[k].settle = c[k].record = 1.0;
     }
 
 #pragma omp parallel for schedule(dynamic, 1)
@@ -221,7 +226,7 @@ int main(void)
         UNIT_CHECK(!c[k].failed, "Re %g grid %g ran: %s", c[k].re, c[k].grid,
                    c[k].err);
     if (c[0].failed || c[1].failed || c[2].failed || c[3].failed ||
-        c[4].failed)
+        c[4].failed || sanitized)
         return unit_summary();
 
     printf("Re 30: steady wake, no shedding\n");

@@ -226,8 +226,14 @@ int main(void)
         UNIT_CHECK(!c[k].failed, "Re %g grid %g ran: %s", c[k].re, c[k].grid,
                    c[k].err);
     if (c[0].failed || c[1].failed || c[2].failed || c[3].failed ||
-        c[4].failed || sanitized)
+        c[4].failed || sanitized) {
+        for (int k = 0; k < 5; k++) {
+            free(c[k].t);
+            free(c[k].fx);
+            free(c[k].fy);
+        }
         return unit_summary();
+    }
 
     printf("Re 30: steady wake, no shedding\n");
     UNIT_CHECK(c[0].st.cl_amp < 0.01 && c[0].st.st == 0.0,

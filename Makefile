@@ -358,8 +358,10 @@ ASAN_CC = gcc
 # (UBSan alone at -O1: 33 s; -O1 alone: 9 s). -O2 keeps -g's lines.
 ASAN_FLAGS = -g -O2 -fno-omit-frame-pointer -fsanitize=address,undefined \
     -fsanitize=float-cast-overflow -fno-sanitize-recover=undefined,float-cast-overflow
+# -fvisibility=hidden as in the real build (96-exports.sh checks the
+# instrumented externals too)
 ASAN_CFLAGS = -std=c99 -D_POSIX_C_SOURCE=200809L -fPIC -fopenmp \
-    -Wall -Wextra -Wshadow $(CORE_INCLUDES) $(ASAN_FLAGS)
+    -fvisibility=hidden -Wall -Wextra -Wshadow $(CORE_INCLUDES) $(ASAN_FLAGS)
 ASAN_ROOT = $(ASAN_DIR)/root
 asan.core.objects = $(patsubst src/core/%.c,$(ASAN_DIR)/core/%.o,$(core.sources))
 asan.lib = $(ASAN_DIR)/libaero_core.a

@@ -70,7 +70,8 @@ fi
 # (1e300: the product overflows in double-precision Pd too)
 nan_expr='expr~ \$v1*1e300*1e300 - \$v1*1e300*1e300'
 for object_tests in tests/objects/*.sh; do
-    only "$object_tests" || continue
+    # read for any ONLY: 90-hostile.sh runs the named objects' lines
+    only "$object_tests" || case "$object_tests" in *90-hostile.sh) ;; *) continue ;; esac
     case "$object_tests" in # no Pd in these
         *fuzz-replay.sh | *globals.sh) [ -n "${PD_ONLY:-}" ] && continue ;;
     esac

@@ -18,9 +18,19 @@
 # Pass: every instance was created, Pd quits normally and prints every
 # counter, no NaN/Inf reached an
 # outlet, every instance ran, every "error:" line names the object.
-# HOSTILE_ONLY=class and HOSTILE_RATES="..." narrow it down by hand;
-# HOSTILE_TIMEOUT (300 s of wall time per Pd run: a hang, not a slow
-# shared machine) is raised by check-asan.sh.
+# ONLY=name (tests/run.sh) runs the lines of the classes whose name contains
+# it, unless it names this script; HOSTILE_ONLY=class and
+# HOSTILE_RATES="..." narrow it down by hand; HOSTILE_TIMEOUT (300 s of
+# wall time per Pd run: a hang, not a slow shared machine) is raised by
+# check-asan.sh; HOSTILE_JOBS (default 1) Pd runs go side by side.
+case "tests/objects/90-hostile.sh" in
+    *"${ONLY:-}"*) hostile_only=${HOSTILE_ONLY:-} ;;
+    *) hostile_only=${ONLY:-} ;;
+esac
+if ! grep -v -e '^#' tests/robust/objects.txt | cut -d'|' -f1 |
+    grep -q -F -e "$hostile_only"; then
+    return 0 2>/dev/null || exit 0 # no class of the table in this run
+fi
 section "hostile input: every object of tests/robust/objects.txt in Pd"
 HOSTILE=$OUT/hostile
 mkdir -p "$HOSTILE"
@@ -330,20 +340,29 @@ while IFS='|' read -r h_cls h_args h_nout h_file h_new h_msgs; do
     h_kind=wav
     case "$h_file" in *:*:*) h_kind=${h_file##*:} ;; esac
     case "$h_cls" in *"${HOSTILE_ONLY:-}"*) ;; *) continue ;; esac
+    case "$h_cls" in *"$hostile_only"*) ;; *) continue ;; esac
     # at least one report per hostile message and bad file
     h_min=$(( $(printf '%s' "$h_msgs" | tr -cd ';' | wc -c) + 1 ))
     if [ "$h_file" != "-" ]; then
         "hostile_files_$h_kind"
         h_min=$((h_min + $(echo $hostile_bad | wc -w)))
     fi
+    h_jobs=0
     for h_rate in $hostile_rates; do
         h_name="hostile-$_line_no-$h_rate"
         hostile_patch "$HOSTILE/$h_name.pd" "$h_cls" "$h_args" "$h_nout" \
             "$h_file" "$h_new" "$h_msgs"
         # shellcheck disable=SC2086
         (cd "$HOSTILE" && timeout "${HOSTILE_TIMEOUT:-300}" "$PD" $PD_BASE_FLAGS -nrt -r "$h_rate" -path "$ROOT" \
-            -open "$h_name.pd" </dev/null >"$h_name.log" 2>&1)
-        h_status=$?
+            -open "$h_name.pd" </dev/null >"$h_name.log" 2>&1
+            echo $? >"$h_name.status") &
+        h_jobs=$((h_jobs + 1))
+        [ "$h_jobs" -ge "${HOSTILE_JOBS:-1}" ] && { wait; h_jobs=0; }
+    done
+    wait
+    for h_rate in $hostile_rates; do
+        h_name="hostile-$_line_no-$h_rate"
+        h_status=$(cat "$HOSTILE/$h_name.status")
         [ "$h_status" -ne 0 ] && { fail "[$h_cls $h_args] at $h_rate Hz: Pd exited $h_status"; tail -5 "$HOSTILE/$h_name.log"; }
         hostile_judge "$HOSTILE/$h_name.log" "$h_cls" "[$h_cls $h_args] at $h_rate Hz" "$h_min"
     done

@@ -10,7 +10,10 @@
 # robustness scripts), and `make check-asan` passes it on to
 # check-valgrind; the negative control below always runs. Every unit test
 # runs here, those declared slow for memcheck (tests/robust/slow-tests.sh)
-# included.
+# included, shortened: AERO_TEST_SANITIZED=1 makes test_flow2d and
+# test_urans run their flows a few time units, for the memory checks only
+# (make check judges their physics). The hostile-input test runs its Pd
+# runs two at a time (HOSTILE_JOBS).
 set -u
 ROOT=$(pwd)
 ASAN_ROOT=$ROOT/build-asan/root
@@ -21,8 +24,10 @@ mkdir -p "$REPORTS" "$ROOT/build-asan/bin"
 
 # the suite runs in a mirror of the tree whose build/ and externals are the
 # instrumented ones
+# (platforms/ and .git for `make deken`: the package build and the git
+# archive of the sources)
 for d in tests help textures trees src abstractions fuzz demo examples docs \
-    LICENSE README.md Makefile pd-lib-builder; do
+    platforms .git LICENSE README.md Makefile pd-lib-builder; do
     [ -e "$ROOT/$d" ] && ln -sfn "$ROOT/$d" "$ASAN_ROOT/$d"
 done
 # the writable-globals check reads the normal build's objects (the
@@ -54,7 +59,11 @@ FUZZ_REPLAY_FLAGS="-fsanitize=address,undefined,float-cast-overflow -fno-sanitiz
 # Pd runs 3-10x slower instrumented ([fieldsound~]'s hostile run
 # preprocesses its 32^3 fallback burst ~60 times)
 HOSTILE_TIMEOUT=${HOSTILE_TIMEOUT:-900}
-export HOSTILE_TIMEOUT PATH ASAN_OPTIONS LSAN_OPTIONS UBSAN_OPTIONS OMP_NUM_THREADS FUZZ_REPLAY_FLAGS
+HOSTILE_JOBS=${HOSTILE_JOBS:-2}
+AERO_TEST_SANITIZED=1
+# the vendor archives the package build reads, from the real tree's place
+AERO_VENDOR=${AERO_VENDOR:-$ROOT/../shared/vendor}
+export HOSTILE_TIMEOUT HOSTILE_JOBS AERO_TEST_SANITIZED AERO_VENDOR PATH ASAN_OPTIONS LSAN_OPTIONS UBSAN_OPTIONS OMP_NUM_THREADS FUZZ_REPLAY_FLAGS
 
 echo "== check-asan: tests/run.sh with ASan+UBSan ($LIBASAN preloaded into Pd)"
 slow=$(sh tests/robust/slow-tests.sh | while read -r n; do

@@ -107,6 +107,19 @@ static inline double aero_normalise3(double *a)
     return n;
 }
 
+/* Catmull-Rom cubic through p0..p3, read between p1 and p2 at f in [0, 1):
+   a continuous slope at every sample, so a texture read between its
+   samples has no corners (linear reads have one at each sample: heard
+   as a sharp second difference, a click, where the content nears the
+   texture's Nyquist frequency) */
+static inline float aero_catmull_rom(float p0, float p1, float p2, float p3,
+                                     float f)
+{
+    return p1 + 0.5f * f * (p2 - p0 +
+                f * (2.0f * p0 - 5.0f * p1 + 4.0f * p2 - p3 +
+                f * (3.0f * (p1 - p2) + p3 - p0)));
+}
+
 /* out = m v, m a row-major 3x3 matrix */
 static inline void aero_mat3_apply(const double *m, const double *v,
                                    double *out)

@@ -465,13 +465,19 @@ static void render(aero_body *s, int l, const aero_body_geometry *g,
         double pos = src->pos, inc = then.inc;
         const double dinc = (g->inc - then.inc) * inv_m;
         for (int j = 0; j < m; j++) {
-            long i0 = (long)pos;
-            float fr = (float)(pos - (double)i0);
-            long i1 = i0 + 1 == frames ? 0 : i0 + 1;
-            const float *r0 = t->data + i0 * ch, *r1 = t->data + i1 * ch;
+            long i1 = (long)pos;
+            float fr = (float)(pos - (double)i1);
+            /* the loop's neighbours of frame i1 (it wraps seamlessly) */
+            long i0 = i1 == 0 ? frames - 1 : i1 - 1;
+            long i2 = i1 + 1 >= frames ? i1 + 1 - frames : i1 + 1;
+            long i3 = i2 + 1 >= frames ? i2 + 1 - frames : i2 + 1;
+            const float *r0 = t->data + i0 * ch, *r1 = t->data + i1 * ch,
+                        *r2 = t->data + i2 * ch, *r3 = t->data + i3 * ch;
             for (int c = 0; c < 3; c++) {
-                tex[c][j] = r0[c0 + c] + fr * (r1[c0 + c] - r0[c0 + c]);
-                tex[3 + c][j] = r0[c1 + c] + fr * (r1[c1 + c] - r0[c1 + c]);
+                tex[c][j] = aero_catmull_rom(r0[c0 + c], r1[c0 + c],
+                                             r2[c0 + c], r3[c0 + c], fr);
+                tex[3 + c][j] = aero_catmull_rom(r0[c1 + c], r1[c1 + c],
+                                                 r2[c1 + c], r3[c1 + c], fr);
             }
             inc += dinc;
             pos += inc;

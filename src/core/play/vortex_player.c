@@ -332,9 +332,7 @@ static double distance(const double *a, const double *b)
 /* Catmull-Rom through p[0..3], between p[1] and p[2] */
 static inline float cubic(const float *p, float f)
 {
-    return p[1] + 0.5f * f * (p[2] - p[0] +
-                  f * (2.0f * p[0] - 5.0f * p[1] + 4.0f * p[2] - p[3] +
-                  f * (3.0f * (p[1] - p[2]) + p[3] - p[0])));
+    return aero_catmull_rom(p[0], p[1], p[2], p[3], f);
 }
 
 /* the speed inlet at the block's ends (read before any output is

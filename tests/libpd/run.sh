@@ -303,9 +303,12 @@ else
     fail "threads host"
 fi
 unserialised=
-for core in treebranch leafwave; do
+# every file of the two FFT players (leafwave's core is split by role; its
+# tables reach the planner from leafwave_tables.c)
+for src in src/core/play/treebranch.c src/core/play/leafwave*.c; do
+    core=$(basename "$src" .c)
     $CC -std=c99 -D_POSIX_C_SOURCE=200809L -O3 -fPIC -Isrc/core/common -Isrc/core/solve -Isrc/core/play -DAERO_FFTW_UNSERIALISED \
-        -c src/core/play/$core.c -o "$OUT/$core-unserialised.o"
+        -c "$src" -o "$OUT/$core-unserialised.o"
     unserialised="$unserialised $OUT/$core-unserialised.o"
 done
 # shellcheck disable=SC2086

@@ -16,7 +16,7 @@ mkdir -p "$NEW"
 if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
     git ls-files -z | xargs -0 cp -p --parents -t "$NEW"
 else # an unpacked source archive: all of it but the build
-    tar -cf - --exclude=./build --exclude='./*.pd_linux' . | tar -xpf - -C "$NEW"
+    tar -cf - --exclude=./build --exclude='./*.pd_linux' --exclude='./*-64.so' . | tar -xpf - -C "$NEW"
 fi
 mkdir -p "$NEW/build"
 cp -pR build/core "$NEW/build/"
@@ -184,8 +184,14 @@ fi
 # objects depend on every core header: the new ones get an old time, so
 # that only gust.c is compiled)
 touch -d 2000-01-01 "$NEW/src/core/play/gust.h" "$NEW/src/core/play/gust.c"
-if (cd "$NEW" && nice -n 10 make -j2 gust~.pd_linux >"$NEW/build.log" 2>&1 &&
-    nice -n 10 make -j2 make-lib-executable=yes aero.pd_linux \
+# the binaries of the Pd under test: a double-precision Pd (check-pd056's
+# second pass) loads *.OS-ARCH-64.so, which `make double` names so
+ext=pd_linux
+if [ "${PD_FLOATSIZE:-32}" = 64 ]; then
+    ext=$(uname -s | tr A-Z a-z)-$(uname -m | sed 's/x86_64/amd64/; s/aarch64/arm64/')-64.so
+fi
+if (cd "$NEW" && nice -n 10 make -j2 "gust~.$ext" >"$NEW/build.log" 2>&1 &&
+    nice -n 10 make -j2 make-lib-executable=yes "aero.$ext" \
         >>"$NEW/build.log" 2>&1); then
     if grep -q -e 'warning:' "$NEW/build.log"; then
         fail "the copy with [gust~] builds with warnings"; grep 'warning:' "$NEW/build.log" | head -5
@@ -196,11 +202,11 @@ else
     fail "the copy with [gust~] does not build"; tail -20 "$NEW/build.log"
 fi
 
-# load it: as an external (gust~.pd_linux in the copy), then from the
+# load it: as an external (gust~.$ext in the copy), then from the
 # single binary alone (-lib with its full path: Pd would find the tree's
-# own aero.pd_linux in the current folder first)
+# own aero binary in the current folder first)
 mkdir -p "$NEW/lib-only"
-cp "$NEW/aero.pd_linux" "$NEW/lib-only/"
+cp "$NEW/aero.$ext" "$NEW/lib-only/"
 PD_SEARCH="$NEW" pd_render new-gust-ext "gust~ -gain 900" 1 1000 "; aero-speed 10"
 PD_SEARCH="$NEW/lib-only" PD_FLAGS="$PD_FLAGS -lib $NEW/lib-only/aero" \
     pd_render new-gust-lib "gust~" 1 1000 "; aero-speed 10"

@@ -185,11 +185,10 @@ fi
 # that only gust.c is compiled)
 touch -d 2000-01-01 "$NEW/src/core/play/gust.h" "$NEW/src/core/play/gust.c"
 # the binaries of the Pd under test: a double-precision Pd (check-pd056's
-# second pass) loads *.OS-ARCH-64.so, which `make double` names so
+# second pass) loads *.linux-amd64-64.so, made by `make double` (the
+# same names 97-install.sh checks)
 ext=pd_linux
-if [ "${PD_FLOATSIZE:-32}" = 64 ]; then
-    ext=$(uname -s | tr A-Z a-z)-$(uname -m | sed 's/x86_64/amd64/; s/aarch64/arm64/')-64.so
-fi
+[ "${PD_FLOATSIZE:-32}" = 64 ] && ext=linux-amd64-64.so
 if (cd "$NEW" && nice -n 10 make -j2 "gust~.$ext" >"$NEW/build.log" 2>&1 &&
     nice -n 10 make -j2 make-lib-executable=yes "aero.$ext" \
         >>"$NEW/build.log" 2>&1); then

@@ -184,22 +184,15 @@ UNIT_TEST(shapes)
     }
 }
 
-/* under the sanitizers (tests/robust/check-asan.sh sets
-   AERO_TEST_SANITIZED) each flow runs 2 d/U for the memory checks only:
-   make check judges the physics, so the cases after the run skip it */
-static int sanitized(void)
-{
-    return getenv("AERO_TEST_SANITIZED") != NULL;
-}
-
 /* the five flows, run once (side by side) for whichever cases ask; NULL
-   if one did not run, or under the sanitizers */
+   if one did not run, or under the sanitizers (unit_sanitized: each flow
+   runs 2 d/U for the memory checks, and the cases skip its physics) */
 static flowcase *flows(void)
 {
     static flowcase c[5];
     static int ran, failed;
     if (ran)
-        return failed || sanitized() ? NULL : c;
+        return failed || unit_sanitized() ? NULL : c;
     ran = 1;
     /* 0: Re 30 (no shedding), 1: Re 100, 2: Re 200, 3: Re 100 finer grid
        (30 cells: the lift amplitude converges from below, 0.283 at 16
@@ -224,7 +217,7 @@ static flowcase *flows(void)
         c[k].xmin = setup[k][4];
         c[k].xmax = setup[k][5];
         c[k].ymax = setup[k][6];
-        if (sanitized())
+        if (unit_sanitized())
             c[k].settle = c[k].record = 1.0;
     }
 
@@ -237,13 +230,13 @@ static flowcase *flows(void)
                    c[k].err);
     failed = c[0].failed || c[1].failed || c[2].failed || c[3].failed ||
              c[4].failed;
-    return failed || sanitized() ? NULL : c;
+    return failed || unit_sanitized() ? NULL : c;
 }
 
 #define FLOWS_OR_RETURN(c)                                                 \
     flowcase *c = flows();                                                 \
     if (!c) {                                                              \
-        if (sanitized())                                                   \
+        if (unit_sanitized())                                              \
             UNIT_SKIP("AERO_TEST_SANITIZED: the flows ran 2 d/U for the "  \
                       "memory checks; make check judges their physics");   \
         return;                                                            \

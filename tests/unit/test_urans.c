@@ -27,7 +27,6 @@
 
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 typedef struct {
@@ -49,7 +48,7 @@ UNIT_TEST(square)
     /* under the sanitizers (tests/robust/check-asan.sh) the k-omega steps
        of the case `fields` are the memory check; make check judges the
        two 80 d/v0 square runs' physics */
-    if (getenv("AERO_TEST_SANITIZED"))
+    if (unit_sanitized())
         UNIT_SKIP("AERO_TEST_SANITIZED: the square prism's long runs are "
                   "make check's");
     square_case c[2];

@@ -30,6 +30,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static int unit_passed, unit_failed, unit_skipped;
@@ -114,6 +115,14 @@ typedef struct {
         printf("\n");                                                      \
         return;                                                            \
     } while (0)
+
+/* 1 under the sanitizers (tests/robust/check-asan.sh sets
+   AERO_TEST_SANITIZED): a long solver test then runs shortened, for the
+   memory checks only, and skips the physics that make check judges */
+static inline int unit_sanitized(void)
+{
+    return getenv("AERO_TEST_SANITIZED") != NULL;
+}
 
 /* run one case: its header line, its checks; no check at all fails it.
    1 when it failed */

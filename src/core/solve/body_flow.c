@@ -586,6 +586,10 @@ static int statistics(body_run *b, aero_body_flow_stats *st, char *err,
     return 0;
 }
 
+/* the body on its grid and the solver (open_run), the uniform stream
+   started, every step run with its forces kept (run_flow), then each
+   region's g = rho dF/dt resampled at the texture rate, the 3D case of
+   Dobashi et al. 2003 (radiate), and the force statistics */
 int aero_body_flow_simulate(const aero_body_flow_params *p, double rate,
                             float *out, int stride, int nout,
                             aero_body_flow_stats *st,

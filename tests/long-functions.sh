@@ -8,6 +8,8 @@
 # every .c file under src/), from the repository root.
 LIMIT=${1:-80}
 [ $# -gt 0 ] && shift
+# the file names have no spaces
+# shellcheck disable=SC2046
 [ $# -eq 0 ] && set -- $(find src -name '*.c' | sort)
 awk -v limit="$LIMIT" '
     FNR == 1 { cand = 0; start = 0 }

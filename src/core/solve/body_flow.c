@@ -469,8 +469,8 @@ static void start_flow(body_run *b)
 }
 
 /* the inflow at time t: a lateral gust (one sine period) during the
-   first quarter of the settling time, which starts the shedding of a
-   symmetric body, then a little seeded noise */
+   first quarter of the settling time, breaking the start-up flow's
+   symmetry, then a little seeded noise */
 static void set_inflow(body_run *b, double t)
 {
     const aero_body_flow_params *p = b->p;

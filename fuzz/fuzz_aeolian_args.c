@@ -8,7 +8,7 @@
 #include "fuzz.h"
 
 #include "aeolian_model.h"
-#include "stick_texture.h"
+#include "aeolian_texture.h"
 
 #define MAXN 1024
 

@@ -8,7 +8,7 @@
 
 #include "body_texture.h"
 #include "cavity_model.h"
-#include "stick_texture.h"
+#include "aeolian_texture.h"
 #include "texture.h"
 
 /* loads the texture at path (twice: each player takes ownership of its

@@ -15,7 +15,7 @@
 #include "field_render.h"
 #include "field_volume.h"
 #include "leafwave.h"
-#include "stick_texture.h"
+#include "aeolian_texture.h"
 #include "treebranch.h"
 #include "vortex_player.h"
 

@@ -3,7 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "stick_texture.h"
+#include "aeolian_texture.h"
 #include "unit.h"
 
 #define SR 48000.0

@@ -12,7 +12,7 @@
 #define AERO_AEOLIAN_H
 
 #include "aeolian_model.h"
-#include "stick_texture.h"
+#include "aeolian_texture.h"
 
 typedef struct {
     aero_aeolian_model model;

@@ -1,6 +1,6 @@
 /* aero: a moving stick played from a sound texture (Dobashi et al. 2003); see
  * stick_texture.h for the model. */
-#include "stick_texture.h"
+#include "aeolian_texture.h"
 
 #include <math.h>
 #include <stdio.h>

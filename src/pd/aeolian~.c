@@ -151,7 +151,7 @@ static const aero_pd_method aeolian_tilde_methods[] = {
     {"ears", AERO_PD_LIST, 6, (t_method)aeolian_tilde_listener, 0, AERO_PD_NO_RULE},
     {"texture", AERO_PD_SYMBOL, 0, (t_method)aeolian_tilde_texture, 0, AERO_PD_NO_RULE},
     {"n", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_n, 0,
-     AERO_PD_RANGE_NOTE(0, AERO_STICK_MAX_SOURCES, NULL,
+     AERO_PD_RANGE_NOTE(0, AERO_AEOLIAN_SOURCES_MAX, NULL,
                         "point sources, 0: auto, length / 3 d")},
     {"exponent", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_exponent, 0,
      AERO_PD_RANGE_NOTE(AERO_MOVING_EXPONENT_MIN, AERO_MOVING_EXPONENT_MAX,

@@ -24,12 +24,12 @@ int aero_aeolian_init(aero_aeolian *a, double sample_rate, int n_ears,
     a->seed = seed;
     a->target[AERO_AEO_DIAMETER] = AERO_AEOLIAN_DIAMETER_DEFAULT;
     a->target[AERO_AEO_LENGTH] = AERO_AEOLIAN_LENGTH_DEFAULT;
-    a->target[AERO_AEO_GAIN] = pow(10.0, AERO_AEOLIAN_GAIN_DEFAULT / 20.0);
+    a->target[AERO_AEO_GAIN] = pow(10.0, AERO_GAIN_DB_DEFAULT / 20.0);
     for (int e = 0; e < AERO_AEOLIAN_MAX_EARS; e++)
         for (int k = 0; k < 3; k++)
             a->target[AERO_AEO_EAR + 3 * e + k] =
                 a->n_ears == 1 ? listener[k] : default_ears[e][k];
-    a->ramp_ms = AERO_AEOLIAN_RAMP_DEFAULT;
+    a->ramp_ms = AERO_RAMP_MS_DEFAULT;
     memcpy(a->wind, wind, sizeof(wind));
     a->roll_deg = AERO_AEOLIAN_ROLL_DEFAULT;
     a->sources = AERO_AEOLIAN_SOURCES_DEFAULT;

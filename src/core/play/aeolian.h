@@ -72,14 +72,12 @@
 #define AERO_AEOLIAN_ROLL_MAX 1e6    /* deg, either way */
 #define AERO_AEOLIAN_PHASE_WANDER_MAX 0.1
 
-/* defaults */
+/* defaults (gain and ramp: aero_ranges.h) */
 #define AERO_AEOLIAN_DIAMETER_DEFAULT 0.01 /* m */
 #define AERO_AEOLIAN_LENGTH_DEFAULT 0.5    /* m */
-#define AERO_AEOLIAN_GAIN_DEFAULT 0.0      /* dB */
-#define AERO_AEOLIAN_RAMP_DEFAULT 20.0     /* ms */
 #define AERO_AEOLIAN_LISTENER_DEFAULT {0.0, 1.0, 0.0} /* m, across flow
                                         and axis; stereo: ears at x -+0.1 */
-#define AERO_AEOLIAN_EXPONENT_DEFAULT 3.0  /* amplitude ~ (v/v0)^3 */
+#define AERO_AEOLIAN_EXPONENT_DEFAULT AERO_MOVING_EXPONENT_DEFAULT /* 3 */
 #define AERO_AEOLIAN_SOURCES_DEFAULT 0     /* 0: length / (3 d) */
 #define AERO_AEOLIAN_ROLL_DEFAULT 0.0      /* deg */
 #define AERO_AEOLIAN_WIND_DEFAULT {0.0, 0.0, 0.0} /* m/s */
@@ -175,8 +173,9 @@ typedef struct aero_aeolian {
     aero_aeolian_texture *texture; /* NULL until texture mode is needed */
 } aero_aeolian;
 
-/* The defaults above, n_ears 1 or 2. 0, or -1 when the sample rate is not
- * usable (44.1 kHz is taken). */
+/* The AERO_AEOLIAN_*_DEFAULT above, gain and ramp from aero_ranges.h,
+ * n_ears 1 or 2. 0, or -1 when the sample rate is not usable (44.1 kHz is
+ * taken). */
 int aero_aeolian_init(aero_aeolian *a, double sample_rate, int n_ears,
                       uint32_t seed);
 void aero_aeolian_free(aero_aeolian *a);

@@ -52,7 +52,7 @@ int aero_body_init(aero_body *s, double sample_rate,
 {
     static const double unturned[7] = {0, 0, 0, 1, 0, 0, 0};
     memset(s, 0, sizeof(*s));
-    s->scale = 1.0;
+    s->scale = AERO_BODY_SCALE_DEFAULT;
     memcpy(s->pose, unturned, sizeof(unturned));
     memcpy(s->pose_from, unturned, sizeof(unturned));
     memcpy(s->pose_to, unturned, sizeof(unturned));

@@ -108,15 +108,15 @@ int aero_cavity_init(aero_cavity *m, double sample_rate,
     memset(m, 0, sizeof(*m));
     int sr_ok = sample_rate > 0 && aero_is_finite(sample_rate);
     m->sample_rate = sr_ok ? sample_rate : 44100.0;
-    m->exponent = 2.0;
-    m->ctl_target[AERO_CAV_LENGTH] = 0.02;
-    m->ctl_target[AERO_CAV_DEPTH] = 0.01;
-    m->ctl_target[AERO_CAV_WIDTH] = 0.05;
-    m->ctl_target[AERO_CAV_GAIN] = 1.0;
+    m->exponent = AERO_CAVITY_EXPONENT_DEFAULT;
+    m->ctl_target[AERO_CAV_LENGTH] = AERO_CAVITY_LENGTH_DEFAULT;
+    m->ctl_target[AERO_CAV_DEPTH] = AERO_CAVITY_DEPTH_DEFAULT;
+    m->ctl_target[AERO_CAV_WIDTH] = AERO_CAVITY_WIDTH_DEFAULT;
+    m->ctl_target[AERO_CAV_GAIN] = pow(10.0, AERO_GAIN_DB_DEFAULT / 20.0);
     m->ctl_target[AERO_CAV_EAR + 1] = 1.0;
     memcpy(m->ctl, m->ctl_target, sizeof(m->ctl));
     m->laws_dirty = 1;
-    aero_cavity_set_ramp_ms(m, 20.0);
+    aero_cavity_set_ramp_ms(m, AERO_RAMP_MS_DEFAULT);
     aero_cavity_set_seed(m, seed);
     return sr_ok ? 0 : -1;
 }

@@ -90,10 +90,10 @@ int aero_combustion_init(aero_combustion *m, double sample_rate,
     memset(m, 0, sizeof *m);
     m->sample_rate = sample_rate >= 1000.0 && sample_rate <= 1e6 ? sample_rate
                                                                   : 44100.0;
-    m->power = 0.0;
-    m->length = 0.02;
-    m->strouhal = 1.0;
-    m->fluctuation = 0.03;
+    m->power = AERO_COMBUSTION_POWER_KW_DEFAULT;
+    m->length = AERO_COMBUSTION_LENGTH_DEFAULT;
+    m->strouhal = AERO_COMBUSTION_ST_DEFAULT;
+    m->fluctuation = AERO_COMBUSTION_FLUCTUATION_DEFAULT;
     m->rng = seed ? seed : 1;
     m->dist[0] = m->dist[1] = -1.0;
     m->shape_i0 = prototype_moment(0);

@@ -126,17 +126,6 @@ static void aeolian_tilde_wind(t_aeolian_tilde *x, t_symbol *s, int argc,
 
 /* --- creation -------------------------------------------------------------- */
 
-/* the defaults' names in aeolian.h; until it states them, the values its
-   init starts from (model mode: a 1 cm wire 0.5 m long, sources 0 = auto) */
-#ifndef AERO_AEOLIAN_DIAMETER_DEFAULT
-#define AERO_AEOLIAN_DIAMETER_DEFAULT 0.01
-#endif
-#ifndef AERO_AEOLIAN_LENGTH_DEFAULT
-#define AERO_AEOLIAN_LENGTH_DEFAULT 0.5
-#endif
-#ifndef AERO_AEOLIAN_SOURCES_DEFAULT
-#define AERO_AEOLIAN_SOURCES_DEFAULT 0
-#endif
 #define DIAMETER                                                          \
     AERO_PD_RANGE_DEF(AERO_AEOLIAN_D_MIN, AERO_AEOLIAN_D_MAX,            \
                       AERO_AEOLIAN_DIAMETER_DEFAULT, "m")
@@ -165,7 +154,7 @@ static const aero_pd_method aeolian_tilde_methods[] = {
     {"ears", AERO_PD_LIST, 6, (t_method)aeolian_tilde_listener, 0, AERO_PD_NO_RULE},
     {"texture", AERO_PD_SYMBOL, 0, (t_method)aeolian_tilde_texture, 0, AERO_PD_NO_RULE},
     {"n", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_n, 0,
-     AERO_PD_RANGE_NOTE_DEF(0, AERO_STICK_MAX_SOURCES,
+     AERO_PD_RANGE_NOTE_DEF(0, AERO_AEOLIAN_SOURCES_MAX,
                             AERO_AEOLIAN_SOURCES_DEFAULT, NULL,
                             "point sources, 0: auto, length / 3 d")},
     {"exponent", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_exponent, 0,

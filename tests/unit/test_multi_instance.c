@@ -9,13 +9,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "aeolian_model.h"
+#include "aeolian.h"
 #include "body_texture.h"
 #include "cavity_model.h"
 #include "field_render.h"
 #include "field_volume.h"
 #include "leafwave.h"
-#include "stick_texture.h"
 #include "treebranch.h"
 #include "vortex_player.h"
 
@@ -30,18 +29,23 @@ typedef struct {
     void (*drop)(void *state);
 } core_api;
 
-/* --- [aeolian~] model mode --- */
+/* --- [aeolian~] model and texture mode --- */
 static void *aeolian_make(int variant)
 {
-    aero_aeolian_model *m = calloc(1, sizeof(*m));
-    aero_aeolian_model_init(m, 44100.0, 1, 11u + variant);
-    aero_aeolian_model_set_diameter(m, variant ? 0.004 : 0.01);
+    aero_aeolian *m = calloc(1, sizeof(*m));
+    aero_aeolian_init(m, 44100.0, 1, 11u + variant);
+    aero_aeolian_set_diameter(m, variant ? 0.004 : 0.01);
     return m;
 }
 static void aeolian_run(void *s, const float *speed, float *out, int n)
 {
     float *outs[1] = {out};
-    aero_aeolian_model_process(s, speed, outs, n);
+    aero_aeolian_process(s, speed, outs, n);
+}
+static void aeolian_drop(void *s)
+{
+    aero_aeolian_free(s);
+    free(s);
 }
 static void plain_drop(void *s) { free(s); }
 
@@ -89,24 +93,14 @@ static void cavity_drop(void *s)
 static void *stick_make(int variant)
 {
     char err[128];
-    aero_stick_texture *s = calloc(1, sizeof(*s));
-    aero_stick_texture_init(s, 44100.0, 1, 3u + variant);
-    aero_stick_texture_set_texture(s, synthetic_texture("aeolian", 2), err,
-                                   sizeof(err));
+    aero_aeolian *s = calloc(1, sizeof(*s));
+    aero_aeolian_init(s, 44100.0, 1, 3u + variant);
+    aero_aeolian_set_texture(s, synthetic_texture("aeolian", 2), err,
+                             sizeof(err));
     double wind[3] = {variant ? 7.0 : 12.0, 1.0, 0.0};
-    aero_stick_texture_set_wind(s, wind);
-    aero_stick_texture_set_sources(s, variant ? 3 : 5);
+    aero_aeolian_set_wind(s, wind);
+    aero_aeolian_set_sources(s, variant ? 3 : 5);
     return s;
-}
-static void stick_run(void *s, const float *speed, float *out, int n)
-{
-    float *outs[1] = {out};
-    aero_stick_texture_process(s, speed, outs, n);
-}
-static void stick_drop(void *s)
-{
-    aero_stick_texture_free(s);
-    free(s);
 }
 
 /* --- [body~]: a synthetic object texture, 2 directions x 3 regions --- */
@@ -297,10 +291,10 @@ static void shared_run(void *s, const float *speed, float *out, int n)
 }
 
 static const core_api cores[] = {
-    {"aeolian_model", aeolian_make, aeolian_run, plain_drop},
+    {"aeolian", aeolian_make, aeolian_run, aeolian_drop},
     {"cavity_model", cavity_make, cavity_run, cavity_drop},
     {"cavity_model (texture)", cavity_tex_make, cavity_run, cavity_drop},
-    {"stick_texture", stick_make, stick_run, stick_drop},
+    {"aeolian (texture)", stick_make, aeolian_run, aeolian_drop},
     {"body_texture", body_make, body_run, body_drop},
     {"vortex_player", vortex_make, vortex_run, vortex_drop},
     {"treebranch", treebranch_make, treebranch_run, treebranch_drop},

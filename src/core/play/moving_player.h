@@ -1,8 +1,8 @@
-/* aero: what the players of moving bodies (stick_texture, body_texture)
- * share: sample rate and arrival rings, ears, wind, gain, ramp time,
- * amplitude exponent, and the setters that validate them. Each player
- * embeds one (`base`) and keeps its own pose, texture and sources.
- * No globals. */
+/* aero: what the players of moving bodies share: sample rate and arrival
+ * rings, ears, wind, gain, ramp time, amplitude exponent, and the setters
+ * that validate them. body_texture embeds one (`base`) and keeps its own
+ * pose, texture and sources; [aeolian~]'s object holds these settings
+ * itself and takes the ranges. No globals. */
 #ifndef AERO_MOVING_PLAYER_H
 #define AERO_MOVING_PLAYER_H
 

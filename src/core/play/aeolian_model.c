@@ -192,6 +192,33 @@ static cplx turn_small(double x)
     return c;
 }
 
+/* the state after a chunk of n samples: the phasor at sample n (lane 0's,
+ * or computed for a chunk that ends inside a lane step, its last samples
+ * written from the lanes' values zr, zi), renormalised against drift, and
+ * the increment's turn moved on to w1 */
+static void phasor_next(aero_aeolian_model *m, int i, int n, const float *zr,
+                        const float *zi, double a, double b, double w0,
+                        double w1)
+{
+    cplx z;
+    if (i == n) {
+        /* lane 0 now stands at sample n: the next chunk's start */
+        z.re = zr[0], z.im = zi[0];
+    } else {
+        for (int j = 0; i < n; i++, j++) {
+            m->scratch_sin[i] = zi[j];
+            m->scratch_cos[i] = zr[j];
+        }
+        z = cmul(m->phasor, turn(a * n + b * (double)n * n));
+    }
+    double norm = 1.0 / sqrt(z.re * z.re + z.im * z.im); /* no drift */
+    m->phasor.re = z.re * norm, m->phasor.im = z.im * norm;
+    cplx next = cmul(m->increment_turn, turn_small(w1 - w0));
+    norm = 1.0 / sqrt(next.re * next.re + next.im * next.im);
+    m->increment_turn.re = next.re * norm, m->increment_turn.im = next.im * norm;
+    m->increment = w1;
+}
+
 /* The oscillator for one chunk: sin and cos of the shedding phase into
  * scratch_sin/cos. The phase increment glides linearly from the last
  * chunk's value to w1 (cycles per sample), so frequency never steps: with
@@ -267,47 +294,17 @@ static void render_phasors(aero_aeolian_model *m, double w1, int n)
         }
     }
 #endif
-    if (i == n) {
-        /* lane 0 now stands at sample n: the next chunk's start */
-        z.re = zr[0], z.im = zi[0];
-    } else {
-        for (int j = 0; i < n; i++, j++) {
-            m->scratch_sin[i] = zi[j];
-            m->scratch_cos[i] = zr[j];
-        }
-        z = cmul(m->phasor, turn(a * n + b * (double)n * n));
-    }
-    double norm = 1.0 / sqrt(z.re * z.re + z.im * z.im); /* no drift */
-    m->phasor.re = z.re * norm, m->phasor.im = z.im * norm;
-    cplx next = cmul(m->increment_turn, turn_small(w1 - w0));
-    norm = 1.0 / sqrt(next.re * next.re + next.im * next.im);
-    m->increment_turn.re = next.re * norm, m->increment_turn.im = next.im * norm;
-    m->increment = w1;
+    phasor_next(m, i, n, zr, zi, a, b, w0, w1);
 }
 
-/* One chunk of at most AERO_AEOLIAN_CHUNK samples. */
-static int process_chunk(aero_aeolian *a, const float *speed,
-                         float *const *out, int n)
+/* The chunk's speeds: sanitised |U| (NaN -> 0, clamped at Mach 0.3) into
+ * scratch_amp as U^3, the level law; returns the mean |U|. Branch-free and
+ * summed in lanes so that it vectorises; *clamped is set when a speed
+ * reached the limit. */
+static double speed_law(aero_aeolian_model *m, const float *speed, int n,
+                        int *clamped)
 {
-    aero_aeolian_model *m = &a->model;
     const float speed_limit = (float)(AERO_MACH_LIMIT * AERO_C0);
-    const double sr = a->sample_rate;
-    int clamped = 0;
-
-    advance_ramps(a, n);
-    if (m->geometry_dirty)
-        update_geometry(a);
-
-    /* Doppler of a moving listener: f' = f (1 - (dr/dt) / c0) */
-    double doppler = 1.0;
-    if (m->primed) {
-        double dr_dt = (m->centre_distance - m->prev_distance) * sr / n;
-        doppler = fmin(fmax(1.0 - dr_dt / AERO_C0, 0.5), 1.5);
-    }
-    m->prev_distance = m->centre_distance;
-
-    /* speeds: sanitised |U| (NaN -> 0, clamped at Mach 0.3) and U^3, the
-     * level law; branch-free and summed in lanes so that it vectorises */
     float *restrict amp = m->scratch_amp;
     for (int i = 0; i < n; i++) {
         float x = speed[i];
@@ -326,8 +323,57 @@ static int process_chunk(aero_aeolian *a, const float *speed,
     for (k = 0; k < n; k++)
         amp[k] = amp[k] * amp[k] * amp[k];
     for (k = 0; k < n; k++)
-        clamped |= fabsf(speed[k]) >= speed_limit;
-    double mean_speed = sum / n;
+        *clamped |= fabsf(speed[k]) >= speed_limit;
+    return sum / n;
+}
+
+/* lift at f, drag at 2f (sin 2x = 2 sin x cos x), per ear: the level in
+ * scratch_amp times the phasors, each ear's coefficients gliding to
+ * lift_end and drag_end over the chunk */
+static void write_ears(aero_aeolian *a, const double *lift_end,
+                       const double *drag_end, float *const *out, int n)
+{
+    aero_aeolian_model *m = &a->model;
+    const float inv_n = 1.0f / n;
+    const float *restrict amp = m->scratch_amp;
+    const float *restrict sines = m->scratch_sin, *restrict cosines = m->scratch_cos;
+    for (int e = 0; e < a->n_ears; e++) {
+        const float l0 = (float)m->lift_coef[e];
+        const float dl = (float)(lift_end[e] - m->lift_coef[e]) * inv_n;
+        const float k0 = 2.0f * (float)m->drag_coef[e];
+        const float dk = 2.0f * (float)(drag_end[e] - m->drag_coef[e]) * inv_n;
+        float *restrict o = out[e];
+        for (int i = 0; i < n; i++) {
+            float t = (float)(i + 1);
+            o[i] = amp[i] * sines[i] * ((l0 + dl * t) + (k0 + dk * t) * cosines[i]);
+        }
+        m->lift_coef[e] = lift_end[e];
+        m->drag_coef[e] = drag_end[e];
+    }
+}
+
+/* One chunk of at most AERO_AEOLIAN_CHUNK samples. */
+static int process_chunk(aero_aeolian *a, const float *speed,
+                         float *const *out, int n)
+{
+    aero_aeolian_model *m = &a->model;
+    const double sr = a->sample_rate;
+    int clamped = 0;
+
+    advance_ramps(a, n);
+    if (m->geometry_dirty)
+        update_geometry(a);
+
+    /* Doppler of a moving listener: f' = f (1 - (dr/dt) / c0) */
+    double doppler = 1.0;
+    if (m->primed) {
+        double dr_dt = (m->centre_distance - m->prev_distance) * sr / n;
+        doppler = fmin(fmax(1.0 - dr_dt / AERO_C0, 0.5), 1.5);
+    }
+    m->prev_distance = m->centre_distance;
+
+    float *restrict amp = m->scratch_amp;
+    double mean_speed = speed_law(m, speed, n, &clamped);
     update_chunk_laws(a, mean_speed, n);
     double f = m->st * mean_speed / m->ctl[AERO_AEO_DIAMETER] * doppler;
     double step = f * n / sr + m->phase_jitter * aero_uniform(&m->rng);
@@ -355,21 +401,7 @@ static int process_chunk(aero_aeolian *a, const float *speed,
         amp[i] *= g0 + dg * (float)(i + 1);
 
     render_phasors(m, step / n, n);
-    /* lift at f, drag at 2f (sin 2x = 2 sin x cos x), per ear */
-    const float *restrict sines = m->scratch_sin, *restrict cosines = m->scratch_cos;
-    for (int e = 0; e < a->n_ears; e++) {
-        const float l0 = (float)m->lift_coef[e];
-        const float dl = (float)(lift_end[e] - m->lift_coef[e]) * inv_n;
-        const float k0 = 2.0f * (float)m->drag_coef[e];
-        const float dk = 2.0f * (float)(drag_end[e] - m->drag_coef[e]) * inv_n;
-        float *restrict o = out[e];
-        for (int i = 0; i < n; i++) {
-            float t = (float)(i + 1);
-            o[i] = amp[i] * sines[i] * ((l0 + dl * t) + (k0 + dk * t) * cosines[i]);
-        }
-        m->lift_coef[e] = lift_end[e];
-        m->drag_coef[e] = drag_end[e];
-    }
+    write_ears(a, lift_end, drag_end, out, n);
     m->envelope_gain = gain_end;
     return clamped;
 }

@@ -682,15 +682,96 @@ static double phase_wander(const aero_aeolian *a, aero_aeolian_source *src,
     return sqrt(3.0 * variance) * aero_uniform(&src->rng) / AERO_STICK_CHUNK;
 }
 
+/* the texture read once for all ears over a chunk of m samples: x, y of
+ * both directions of the pair, the rate gliding from inc_then to inc_now
+ * (frames per sample) with the phase's wander */
+static void read_texture(aero_aeolian *a, aero_aeolian_source *src,
+                         const dir_pair *p, double inc_then, double inc_now,
+                         int m, float tex[4][AERO_STICK_CHUNK])
+{
+    const aero_texture *t = a->texture->texture;
+    const int ch = t->channels;
+    const long frames = t->frames;
+    double pos = src->pos, inc = inc_then;
+    const double dinc = (inc_now - inc_then) * (1.0 / m);
+    double wander = src->wander;
+    int left = src->wander_left;
+    const int c0 = 3 * p->k0, c1 = 3 * p->k1;
+    for (int j = 0; j < m; j++) {
+        long i0 = (long)pos;
+        float fr = (float)(pos - (double)i0);
+        long i1 = i0 + 1 == frames ? 0 : i0 + 1;
+        const float *r0 = t->data + i0 * ch, *r1 = t->data + i1 * ch;
+        tex[0][j] = r0[c0] + fr * (r1[c0] - r0[c0]);
+        tex[1][j] = r0[c0 + 1] + fr * (r1[c0 + 1] - r0[c0 + 1]);
+        tex[2][j] = r0[c1] + fr * (r1[c1] - r0[c1]);
+        tex[3][j] = r0[c1 + 1] + fr * (r1[c1 + 1] - r0[c1 + 1]);
+        inc += dinc;
+        if (left <= 0) {
+            wander = phase_wander(a, src, inc);
+            left = AERO_STICK_CHUNK;
+        }
+        left--;
+        pos += inc + wander > 0.0 ? inc + wander : 0.0;
+        /* more than a whole texture per sample (a tiny stick in a fast
+         * flow, a short texture) must still wrap into it: reading past
+         * the end would overflow the texture */
+        if (pos >= frames) {
+            pos -= frames * floor(pos / frames);
+            if (!(pos >= 0.0 && pos < frames))
+                pos = 0.0;
+        }
+    }
+    if (!(pos >= 0.0 && pos < frames))
+        pos = 0.0;
+    src->pos = pos;
+    src->wander = wander;
+    src->wander_left = left;
+}
+
+/* the chunk's texture projected for each ear (Curle's dipole, its
+ * coefficients gliding from `then` to `now`) and added into the ear's ring
+ * at its arrival time */
+static void radiate(aero_aeolian *a, const source_geometry *then,
+                    const source_geometry *now, double w0, double w1,
+                    double sign_then, double sign_now, int m,
+                    float tex[4][AERO_STICK_CHUNK])
+{
+    aero_aeolian_texture *s = a->texture;
+    const double inv_m = 1.0 / m;
+    for (int e = 0; e < a->n_ears; e++) {
+        double c[4], cend[4];
+        float cf[4], dcf[4];
+        pair_coefs(then, e, w0, sign_then, c);
+        pair_coefs(now, e, w1, sign_now, cend);
+        for (int k = 0; k < 4; k++) {
+            cf[k] = (float)c[k];
+            dcf[k] = (float)((cend[k] - c[k]) * inv_m);
+        }
+        const double delay = then->delay[e];
+        const double ddelay = (now->delay[e] - delay) * inv_m;
+        float *ring = s->arrivals.ring[e];
+        const long mask = s->arrivals.mask;
+        double at = (double)s->arrivals.head + delay;
+        for (int j = 0; j < m; j++) {
+            float v = cf[0] * tex[0][j] + cf[1] * tex[1][j] +
+                      cf[2] * tex[2][j] + cf[3] * tex[3][j];
+            aero_arrivals_add_span(ring, mask, at, 1.0 + ddelay, v);
+            cf[0] += dcf[0];
+            cf[1] += dcf[1];
+            cf[2] += dcf[2];
+            cf[3] += dcf[3];
+            at += 1.0 + ddelay;
+        }
+    }
+}
+
 /* one source over a chunk of m samples: texture read, Curle projection,
  * added into each ear's ring at its arrival time */
 static void render_source(aero_aeolian *a, aero_aeolian_source *src,
                           const source_geometry *g, int m)
 {
     aero_aeolian_texture *s = a->texture;
-    const aero_texture *t = s->texture;
-    const int ch = t->channels;
-    const long frames = t->frames;
     double sign_then = src->sign, sign_now = src->sign;
     double folded = fold_angle(s, g->angle, &sign_now);
     dir_pair p = find_pair(s, folded, sign_now);
@@ -713,73 +794,11 @@ static void render_source(aero_aeolian *a, aero_aeolian_source *src,
     double folded_then = fold_angle(s, then.angle, &sign_then);
     src->sign = sign_now;
     double w0 = pair_weight(&p, folded_then, s->mirror ? 0.0 : s->period);
-    const double inv_m = 1.0 / m;
 
     /* the texture once for all ears: x, y of both directions */
     float tex[4][AERO_STICK_CHUNK];
-    {
-        double pos = src->pos, inc = then.inc;
-        const double dinc = (g->inc - then.inc) * inv_m;
-        double wander = src->wander;
-        int left = src->wander_left;
-        const int c0 = 3 * p.k0, c1 = 3 * p.k1;
-        for (int j = 0; j < m; j++) {
-            long i0 = (long)pos;
-            float fr = (float)(pos - (double)i0);
-            long i1 = i0 + 1 == frames ? 0 : i0 + 1;
-            const float *r0 = t->data + i0 * ch, *r1 = t->data + i1 * ch;
-            tex[0][j] = r0[c0] + fr * (r1[c0] - r0[c0]);
-            tex[1][j] = r0[c0 + 1] + fr * (r1[c0 + 1] - r0[c0 + 1]);
-            tex[2][j] = r0[c1] + fr * (r1[c1] - r0[c1]);
-            tex[3][j] = r0[c1 + 1] + fr * (r1[c1 + 1] - r0[c1 + 1]);
-            inc += dinc;
-            if (left <= 0) {
-                wander = phase_wander(a, src, inc);
-                left = AERO_STICK_CHUNK;
-            }
-            left--;
-            pos += inc + wander > 0.0 ? inc + wander : 0.0;
-            /* more than a whole texture per sample (a tiny stick in a fast
-             * flow, a short texture) must still wrap into it: reading past
-             * the end would overflow the texture */
-            if (pos >= frames) {
-                pos -= frames * floor(pos / frames);
-                if (!(pos >= 0.0 && pos < frames))
-                    pos = 0.0;
-            }
-        }
-        if (!(pos >= 0.0 && pos < frames))
-            pos = 0.0;
-        src->pos = pos;
-        src->wander = wander;
-        src->wander_left = left;
-    }
-
-    for (int e = 0; e < a->n_ears; e++) {
-        double c[4], cend[4];
-        float cf[4], dcf[4];
-        pair_coefs(&then, e, w0, sign_then, c);
-        pair_coefs(g, e, w1, sign_now, cend);
-        for (int k = 0; k < 4; k++) {
-            cf[k] = (float)c[k];
-            dcf[k] = (float)((cend[k] - c[k]) * inv_m);
-        }
-        const double delay = then.delay[e];
-        const double ddelay = (g->delay[e] - delay) * inv_m;
-        float *ring = s->arrivals.ring[e];
-        const long mask = s->arrivals.mask;
-        double at = (double)s->arrivals.head + delay;
-        for (int j = 0; j < m; j++) {
-            float v = cf[0] * tex[0][j] + cf[1] * tex[1][j] +
-                      cf[2] * tex[2][j] + cf[3] * tex[3][j];
-            aero_arrivals_add_span(ring, mask, at, 1.0 + ddelay, v);
-            cf[0] += dcf[0];
-            cf[1] += dcf[1];
-            cf[2] += dcf[2];
-            cf[3] += dcf[3];
-            at += 1.0 + ddelay;
-        }
-    }
+    read_texture(a, src, &p, then.inc, g->inc, m, tex);
+    radiate(a, &then, g, w0, w1, sign_then, sign_now, m, tex);
     src->inc = g->inc;
     src->angle = g->angle;
     src->amp = g->amp;

@@ -107,6 +107,17 @@ static inline double aero_normalise3(double *a)
     return n;
 }
 
+/* a looping texture's read position brought back into [0, frames): more
+   than a whole texture per sample (a tiny body in a fast flow, a short
+   texture) must still wrap into it, and a position that is not finite
+   restarts at 0, since reading outside would overflow the texture */
+static inline double aero_texture_wrap(double pos, long frames)
+{
+    if (pos >= frames)
+        pos -= frames * floor(pos / frames);
+    return pos >= 0.0 && pos < frames ? pos : 0.0;
+}
+
 /* Catmull-Rom cubic through p0..p3, read between p1 and p2 at f in [0, 1):
    a continuous slope at every sample, so a texture read between its
    samples has no corners (linear reads have one at each sample: heard

@@ -712,18 +712,9 @@ static void read_texture(aero_aeolian *a, aero_aeolian_source *src,
             left = AERO_STICK_CHUNK;
         }
         left--;
-        pos += inc + wander > 0.0 ? inc + wander : 0.0;
-        /* more than a whole texture per sample (a tiny stick in a fast
-         * flow, a short texture) must still wrap into it: reading past
-         * the end would overflow the texture */
-        if (pos >= frames) {
-            pos -= frames * floor(pos / frames);
-            if (!(pos >= 0.0 && pos < frames))
-                pos = 0.0;
-        }
+        pos = aero_texture_wrap(pos + (inc + wander > 0.0 ? inc + wander : 0.0),
+                                frames);
     }
-    if (!(pos >= 0.0 && pos < frames))
-        pos = 0.0;
     src->pos = pos;
     src->wander = wander;
     src->wander_left = left;

@@ -488,15 +488,8 @@ static void read_texture(aero_body *s, aero_body_source *src,
                                              r2[c1 + c], r3[c1 + c], fr);
         }
         inc += dinc;
-        pos += inc;
-        if (pos >= frames) {
-            pos -= frames * floor(pos / frames);
-            if (!(pos >= 0.0 && pos < frames))
-                pos = 0.0;
-        }
+        pos = aero_texture_wrap(pos + inc, frames);
     }
-    if (!(pos >= 0.0 && pos < frames))
-        pos = 0.0;
     src->pos = pos;
 }
 

@@ -1,10 +1,11 @@
 #!/bin/sh
-# aero: `make check-long`: each line of tests/robust/long.txt
-# renders LONG_SECONDS (default 3600) of audio in one batch-mode Pd run,
-# with varying input. The patch prints every minute of audio: the CPU time
-# that minute took ([cputime], independent of other jobs' wall time) and
-# the count of non-finite output samples so far; the script samples Pd's
-# VmRSS every second. Pass, per line:
+# aero: `make check-long`: each long run of the objects' configurations
+# (the `long` lines of tests/robust/objects/CLASS.txt) renders LONG_SECONDS
+# (default 3600) of audio in one batch-mode Pd run, with varying input.
+# The patch prints every minute of audio: the CPU time that minute took
+# ([cputime], independent of other jobs' wall time) and the count of
+# non-finite output samples so far; the script samples Pd's VmRSS every
+# second. Pass, per line:
 #   - every minute rendered, no NaN/Inf on the outlet;
 #   - no slow-down (denormals would show here): CPU per minute in the
 #     last 5 minutes within 10 % of minutes 2-6 (minute 1 includes
@@ -14,7 +15,7 @@
 #     the first tenth (a leak of one byte per 64-sample block would add
 #     2.5 MB an hour).
 # Results: build/long/NAME.log (minutes), build/long/NAME.rss, and a
-# summary in build/long/summary.txt. LONG_ONLY=name runs one line.
+# summary in build/long/summary.txt. LONG_ONLY=name runs the runs whose name contains it.
 set -u
 SECONDS_TOTAL=${LONG_SECONDS:-3600}
 D=build/long
@@ -24,7 +25,7 @@ passed=0
 failed=0
 minutes=$((SECONDS_TOTAL / 60))
 COPIES=${LONG_COPIES:-16}
-grep -v -e '^#' -e '^[[:space:]]*$' tests/robust/long.txt >"$D/table.txt"
+sh tests/robust/object-table.sh long >"$D/table.txt"
 while IFS='|' read -r name box msg every; do
     name=$(echo $name) box=$(echo $box) msg=$(echo $msg) every=$(echo ${every:--})
     case "$name" in *"${LONG_ONLY:-}"*) ;; *) continue ;; esac

@@ -31,7 +31,7 @@ only() { case "$1" in *"${ONLY:-}"*) return 0 ;; *) return 1 ;; esac; }
 # the fixture the [body~] tests play, written by test_body_texture (which
 # PD_ONLY=1, or an ONLY that does not name it, does not run as a test)
 if [ ! -f build/tests/sine-sphere.wav ] && [ -x build/tests/test_body_texture ]; then
-    build/tests/test_body_texture pd_fixture >"$OUT/test_body_texture.txt" 2>    build/tests/test_body_texture >"$OUT/test_body_texture.txt" 2>&11
+    build/tests/test_body_texture pd_fixture >"$OUT/test_body_texture.txt" 2>&1
 fi
 
 # --- build variants ----------------------------------------------------------

@@ -5,6 +5,7 @@
  * (aeolian_model) and texture mode (stick_texture on a small synthetic
  * texture). Invariant: the output stays finite. No seeds: every byte
  * string is a valid program. */
+/* aero-fuzz: object aeolian~ */
 #include "fuzz.h"
 
 #include "aeolian_model.h"

@@ -137,6 +137,9 @@ PATCH
         -f tests/robust/long-judge.awk "$D/$name.log")
     ok=$?
     [ "$status" -ne 0 ] && { verdict="FAIL Pd exited $status; $verdict"; ok=1; }
+    # an object never created would pass the rest (the counters run on)
+    grep -q -e "couldn't create" -e "can't load" "$D/$name.log" &&
+        { verdict="FAIL [$box] not created; $verdict"; ok=1; }
     echo "  $name: $verdict" | tee -a "$D/summary.txt"
     if [ "$ok" -eq 0 ]; then passed=$((passed + 1)); else failed=$((failed + 1)); grep -v "^long:" "$D/$name.log" | head -10; fi
 done <"$D/table.txt"

@@ -23,20 +23,21 @@ cp fuzz/fuzz_*.c "$REG/fuzz/"
 cp README.md "$REG/"
 reg_first=$(sed -n '/^#define AERO_OBJECTS/,/[^\\]$/p' src/pd/aero.c |
     grep -o 'X([A-Za-z0-9_]*)' | head -1 | sed 's/^X(\(.*\))$/\1/')
+# reg_control NAME EXPECTED WHAT: the check in the copy must fail, with the
+# line EXPECTED
+reg_control() {
+    if (cd "$REG" && sh "$ROOT/tests/robust/registered.sh") >"$REG/$1.log" 2>&1; then
+        fail "negative control: $3 passed the check"
+    elif grep -q -F "$2" "$REG/$1.log"; then
+        pass "negative control: $3 is caught"
+    else
+        fail "negative control: $3 not named"; cat "$REG/$1.log"
+    fi
+}
 mv "$REG/tests/robust/objects/$reg_first~.txt" "$REG/lost.txt"
-if (cd "$REG" && sh "$ROOT/tests/robust/registered.sh") >"$REG/missing.log" 2>&1; then
-    fail "negative control: [$reg_first~] without tests/robust/objects/$reg_first~.txt passed"
-elif grep -q -F "FAIL [$reg_first~] (AERO_OBJECTS) lacks its robustness file" "$REG/missing.log"; then
-    pass "negative control: [$reg_first~] without its robustness file is caught"
-else
-    fail "negative control: a missing robustness file not named"; cat "$REG/missing.log"
-fi
+reg_control missing "FAIL [$reg_first~] (AERO_OBJECTS) lacks its robustness file" \
+    "[$reg_first~] without its robustness file"
 mv "$REG/lost.txt" "$REG/tests/robust/objects/$reg_first~.txt"
 cp "$REG/tests/robust/objects/$reg_first~.txt" "$REG/tests/robust/objects/nosuch~.txt"
-if (cd "$REG" && sh "$ROOT/tests/robust/registered.sh") >"$REG/stray.log" 2>&1; then
-    fail "negative control: a robustness file for an unknown [nosuch~] passed"
-elif grep -q -F "FAIL tests/robust/objects/nosuch~.txt is for [nosuch~]" "$REG/stray.log"; then
-    pass "negative control: a robustness file for an unknown object is caught"
-else
-    fail "negative control: a stray robustness file not named"; cat "$REG/stray.log"
-fi
+reg_control stray "FAIL tests/robust/objects/nosuch~.txt is for [nosuch~]" \
+    "a robustness file for an unknown object"

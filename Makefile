@@ -124,6 +124,12 @@ check-unit:
 	    { cat $(BUILD).log; exit 1; }
 	@ONLY='$(ONLY)' CASE='$(CASE)' sh tests/unit/run.sh
 
+# a maintainer's measure, not a check: the functions of src/ over LIMIT
+# lines (default 80), longest first
+.PHONY: long-functions
+long-functions:
+	@sh tests/long-functions.sh $(LIMIT)
+
 .PHONY: tools lib pdinstance deps check check-only check-pd056 check-gui demo bench textures deken libpd-example
 
 all: tools

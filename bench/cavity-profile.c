@@ -9,7 +9,7 @@
  *   build/cavity-profile c 10          (a for [aeolian~])
  *   valgrind --tool=callgrind --dump-instr=yes build/cavity-profile c 1 */
 #define _POSIX_C_SOURCE 200809L
-#include "aeolian_model.h"
+#include "aeolian.h"
 #include "cavity_model.h"
 
 #include <stdio.h>
@@ -30,10 +30,10 @@ int main(int argc, char **argv)
     char mode = argc > 1 ? argv[1][0] : 'c';
     double seconds = argc > 2 ? atof(argv[2]) : 10.0;
     static aero_cavity cavity[N];
-    static aero_aeolian_model aeolian[N];
+    static aero_aeolian aeolian[N];
     for (int k = 0; k < N; k++) {
         aero_cavity_init(&cavity[k], 48000, k + 1);
-        aero_aeolian_model_init(&aeolian[k], 48000, 1, k + 1);
+        aero_aeolian_init(&aeolian[k], 48000, 1, k + 1);
     }
     float in[64], out[64];
     double check = 0, t0 = cpu_seconds();
@@ -43,7 +43,7 @@ int main(int argc, char **argv)
             in[i] = 10.0f + 2.0f * (float)((b * 64 + i) % 100000) * 1e-5f;
         for (int k = 0; k < N; k++) {
             if (mode == 'a')
-                aero_aeolian_model_process(&aeolian[k], in, (float *[]){out}, 64);
+                aero_aeolian_process(&aeolian[k], in, (float *[]){out}, 64);
             else
                 aero_cavity_process(&cavity[k], in, (float *[]){out}, 64);
             check += out[7];
@@ -53,7 +53,9 @@ int main(int argc, char **argv)
     printf("%s: %.2f ns per source-sample (%d sources, %g s; check %g)\n",
            mode == 'a' ? "[aeolian~]" : "[cavity~]",
            1e9 * t / (blocks * 64.0 * N), N, seconds, check);
-    for (int k = 0; k < N; k++)
+    for (int k = 0; k < N; k++) {
         aero_cavity_free(&cavity[k]);
+        aero_aeolian_free(&aeolian[k]);
+    }
     return 0;
 }

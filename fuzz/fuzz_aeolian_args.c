@@ -1,15 +1,14 @@
 /* fuzz: [aeolian~]'s creation flags and messages, through the core
  * setters they call (src/pd/aeolian~.c routes each flag to one), in any
  * order and with any numbers (NaN, infinities, denormals, huge), between
- * blocks of any size 1..1024 with any speed signal: model mode
- * (aeolian_model) and texture mode (stick_texture on a small synthetic
- * texture). Invariant: the output stays finite. No seeds: every byte
- * string is a valid program. */
+ * blocks of any size 1..1024 with any speed signal, in model mode and in
+ * texture mode (on a small synthetic texture), switching between them.
+ * Invariant: the output stays finite. No seeds: every byte string is a
+ * valid program. */
 /* aero-fuzz: object aeolian~ */
 #include "fuzz.h"
 
-#include "aeolian_model.h"
-#include "stick_texture.h"
+#include "aeolian.h"
 
 #define MAXN 1024
 
@@ -40,15 +39,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     double sr = 44100.0;
     static float speed[MAXN], l[MAXN], r[MAXN];
     float *out[2] = {l, r};
-    aero_aeolian_model m;
-    aero_aeolian_model_init(&m, sr, ears, 1);
-    aero_stick_texture *st = calloc(1, sizeof(*st));
-    if (!st || aero_stick_texture_init(st, sr, ears, 2)) {
-        free(st);
-        return 0;
-    }
+    aero_aeolian x;
+    aero_aeolian_init(&x, sr, ears, 1);
     char err[256];
-    int textured = 0;
     while (in.left) {
         unsigned op = fuzz_byte(&in) % 20;
         double a = fuzz_number(&in), b = fuzz_number(&in),
@@ -56,61 +49,50 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         double v[6] = {a, b, c, fuzz_number(&in), fuzz_number(&in),
                        fuzz_number(&in)};
         switch (op) {
-        case 0: aero_aeolian_model_set_diameter(&m, a);
-                aero_stick_texture_set_diameter(st, a); break;
-        case 1: aero_aeolian_model_set_length(&m, a);
-                aero_stick_texture_set_length(st, a); break;
-        case 2: aero_aeolian_model_set_gain_db(&m, a);
-                aero_stick_texture_set_gain_db(st, a); break;
-        case 3: aero_aeolian_model_set_ramp_ms(&m, a);
-                aero_stick_texture_set_ramp_ms(st, a); break;
+        case 0: aero_aeolian_set_diameter(&x, a); break;
+        case 1: aero_aeolian_set_length(&x, a); break;
+        case 2: aero_aeolian_set_gain_db(&x, a); break;
+        case 3: aero_aeolian_set_ramp_ms(&x, a); break;
         case 4: {
             aero_ears e = {1 + (int)(b > 0), {{a, b, c}, {a, b, c}}};
-            aero_aeolian_model_set_ears(&m, &e);
-            aero_stick_texture_set_ears(st, &e);
+            aero_aeolian_set_ears(&x, &e);
             break;
         }
-        case 5: aero_aeolian_model_set_seed(&m, (uint32_t)fuzz_byte(&in));
-                aero_stick_texture_set_seed(st, (uint32_t)fuzz_byte(&in));
+        case 5: aero_aeolian_set_seed(&x, (uint32_t)fuzz_byte(&in));
+                (void)fuzz_byte(&in);
                 break;
-        case 6: aero_aeolian_model_set_sample_rate(&m, a);
-                aero_stick_texture_set_sample_rate(st, a); break;
-        case 7: aero_stick_texture_set_sources(st, (int)fuzz_byte(&in) - 8);
+        case 6: aero_aeolian_set_sample_rate(&x, a); break;
+        case 7: aero_aeolian_set_sources(&x, (int)fuzz_byte(&in) - 8);
                 break;
-        case 8: aero_stick_texture_set_exponent(st, a); break;
-        case 9: aero_stick_texture_set_roll_deg(st, a); break;
-        case 10: aero_stick_texture_set_wind(st, v); break;
-        case 11: aero_stick_texture_set_pose(st, v, v + 3, fuzz_number(&in));
+        case 8: aero_aeolian_set_exponent(&x, a); break;
+        case 9: aero_aeolian_set_roll_deg(&x, a); break;
+        case 10: aero_aeolian_set_wind(&x, v); break;
+        case 11: aero_aeolian_set_pose(&x, v, v + 3, fuzz_number(&in));
                  break;
-        case 12: aero_stick_texture_set_reference(st, v); break;
+        case 12: aero_aeolian_set_reference(&x, v); break;
         case 13: { /* texture / model messages */
             aero_texture *t = NULL;
             if (fuzz_byte(&in) & 1)
                 t = synthetic_texture(1 + (int)(fuzz_byte(&in) % 5));
-            if (aero_stick_texture_set_texture(st, t, err, sizeof(err)) && t) {
+            if (aero_aeolian_set_texture(&x, t, err, sizeof(err)) && t) {
                 aero_texture_free(t);
                 free(t);
-                t = NULL;
             }
-            textured = t != NULL;
             break;
         }
         default: { /* a block of any size with any speeds */
             int n = 1 + (int)((fuzz_byte(&in) << 2 | fuzz_byte(&in)) % MAXN);
             for (int i = 0; i < n; i++)
                 speed[i] = (float)(i & 1 ? a : b);
-            if (textured)
-                aero_stick_texture_process(st, speed, out, n);
-            else
-                aero_aeolian_model_process(&m, speed, out, n);
+            aero_aeolian_process(&x, speed, out, n);
             for (int e = 0; e < ears; e++)
                 FUZZ_REQUIRE(fuzz_finite(out[e], n),
                              "%s mode: non-finite output",
-                             textured ? "texture" : "model");
+                             aero_aeolian_texture_mode(&x) ? "texture"
+                                                           : "model");
         }
         }
     }
-    aero_stick_texture_free(st);
-    free(st);
+    aero_aeolian_free(&x);
     return 0;
 }

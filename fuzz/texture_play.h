@@ -8,7 +8,7 @@
 
 #include "body_texture.h"
 #include "cavity_model.h"
-#include "stick_texture.h"
+#include "aeolian.h"
 #include "texture.h"
 
 /* loads the texture at path (twice: each player takes ownership of its
@@ -51,28 +51,27 @@ static int fuzz_texture_check(const char *path)
     if (!vortex)
         (void)aero_texture_sample(t, -12345, t->directions - 1, 2);
 
-    /* the moving stick */
-    aero_stick_texture *stick = calloc(1, sizeof(*stick));
-    if (stick && !aero_stick_texture_init(stick, 44100.0, 2, 1)) {
-        if (aero_stick_texture_set_texture(stick, t, err, sizeof(err))) {
+    /* the moving stick ([aeolian~] in texture mode) */
+    aero_aeolian stick;
+    if (!aero_aeolian_init(&stick, 44100.0, 2, 1)) {
+        if (aero_aeolian_set_texture(&stick, t, err, sizeof(err))) {
             aero_texture_free(t);
             free(t);
         }
         t = NULL;
         double wind[3] = {12.0, 3.0, 0.0};
-        aero_stick_texture_set_wind(stick, wind);
+        aero_aeolian_set_wind(&stick, wind);
         float speed[256], l[256], r[256];
         float *out[2] = {l, r};
         for (int i = 0; i < 256; i++)
             speed[i] = (float)(i % 64);
         for (int b = 0; b < 4; b++) {
-            aero_stick_texture_process(stick, speed, out, 256);
+            aero_aeolian_process(&stick, speed, out, 256);
             FUZZ_REQUIRE(fuzz_finite(l, 256) && fuzz_finite(r, 256),
                          "stick texture player output not finite");
         }
-        aero_stick_texture_free(stick);
     }
-    free(stick);
+    aero_aeolian_free(&stick);
     if (t) {
         aero_texture_free(t);
         free(t);

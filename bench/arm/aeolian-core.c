@@ -7,7 +7,7 @@
  * step as [line~] does), and sums them into one buffer as [throw~] would.
  * Prints a checksum of the sum so the work cannot be left out, and so two
  * architectures can be seen to compute the same sound. */
-#include "aeolian_model.h"
+#include "aeolian.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -29,10 +29,10 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: aeolian-core N SECONDS\n");
         return 2;
     }
-    aero_aeolian_model *m = calloc(n > 0 ? (size_t)n : 1, sizeof(*m));
+    aero_aeolian *m = calloc(n > 0 ? (size_t)n : 1, sizeof(*m));
     if (!m) return 1;
     for (int i = 0; i < n; i++)
-        aero_aeolian_model_init(&m[i], RATE, 1, (uint32_t)i + 1);
+        aero_aeolian_init(&m[i], RATE, 1, (uint32_t)i + 1);
 
     long blocks = (long)(seconds * RATE / BLOCK);
     long step_samples = (long)(RATE / 100); /* 10 ms */
@@ -51,13 +51,23 @@ int main(int argc, char **argv)
             sum[i] = 0;
         }
         for (int s = 0; s < n; s++) {
-            aero_aeolian_model_process(&m[s], speed, outs, BLOCK);
+            aero_aeolian_process(&m[s], speed, outs, BLOCK);
             for (int i = 0; i < BLOCK; i++) sum[i] += out[i];
         }
         for (int i = 0; i < BLOCK; i++) check += (double)sum[i] * sum[i];
     }
     printf("aeolian-core: %d sources, %ld samples, sum of squares %.9g\n", n,
            blocks * BLOCK, check);
+    for (int i = 0; i < n; i++)
+        aero_aeolian_free(&m[i]);
     free(m);
     return 0;
+}
+
+/* Model mode never makes the texture part, which would free a texture;
+ * texture.c needs libsndfile, which the cross toolchains lack, so this
+ * stands in for it here (texture.h's contract: NULL or a loaded texture). */
+void aero_texture_free(aero_texture *t)
+{
+    (void)t;
 }

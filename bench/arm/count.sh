@@ -1,8 +1,8 @@
 #!/bin/sh
 # make bench: instructions per source-sample of [aeolian~] (model mode) on
 # linux-arm64 and linux-armv7 against linux-amd64, in one run: the core's
-# player alone (bench/arm/aeolian-core.c, src/core/play/aeolian_model.c and
-# strouhal.c, built with the packages' flags by each architecture's compiler),
+# core alone (bench/arm/aeolian-core.c, src/core/play/aeolian*.c, arrivals.c
+# and strouhal.c, built with the packages' flags by each architecture's compiler),
 # N and 0 sources for 1 s at 48 kHz, the difference over N x 48000.
 # Counters: valgrind's callgrind on amd64 (as bench/run.sh); QEMU's user
 # emulator for all three (bench/arm/qcount.sh), so amd64 is also counted by
@@ -19,7 +19,8 @@ N=${COUNT_SOURCES:-8}
 CFLAGS="-std=c99 -D_POSIX_C_SOURCE=200809L -O3 -funroll-loops -fomit-frame-pointer \
     -fPIC -fopenmp-simd -Wall -Wextra -Wshadow \
     -Isrc/core/common -Isrc/core/play -Isrc/core/solve"
-SRC="bench/arm/aeolian-core.c src/core/play/aeolian_model.c src/core/common/strouhal.c"
+SRC="bench/arm/aeolian-core.c src/core/play/aeolian.c src/core/play/aeolian_model.c \
+    src/core/play/aeolian_texture.c src/core/play/arrivals.c src/core/common/strouhal.c"
 
 # ARCH COMPILER QEMU...: the command prefix to run that architecture's
 # binaries under QEMU

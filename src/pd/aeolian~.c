@@ -127,8 +127,11 @@ static void aeolian_tilde_wind(t_aeolian_tilde *x, t_symbol *s, int argc,
 /* --- creation -------------------------------------------------------------- */
 
 #define DIAMETER                                                          \
-    AERO_PD_RANGE(AERO_AEOLIAN_D_MIN, AERO_AEOLIAN_D_MAX, "m")
-#define LENGTH AERO_PD_RANGE(AERO_AEOLIAN_L_MIN, AERO_AEOLIAN_L_MAX, "m")
+    AERO_PD_RANGE_DEF(AERO_AEOLIAN_D_MIN, AERO_AEOLIAN_D_MAX,            \
+                      AERO_AEOLIAN_DIAMETER_DEFAULT, "m")
+#define LENGTH                                                            \
+    AERO_PD_RANGE_DEF(AERO_AEOLIAN_L_MIN, AERO_AEOLIAN_L_MAX,            \
+                      AERO_AEOLIAN_LENGTH_DEFAULT, "m")
 #define POSE                                                              \
     AERO_PD_RANGE_NOTE(-AERO_POSITION_LIMIT, AERO_POSITION_LIMIT, "m",   \
                        "two distinct finite ends; a finite non-zero axis")
@@ -143,19 +146,22 @@ static const aero_pd_method aeolian_tilde_methods[] = {
     {"l", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_length, 0, LENGTH},
     {"length", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_length, 0, LENGTH},
     {"gain", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_gain, 0,
-     AERO_PD_RANGE(AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX, "dB")},
+     AERO_PD_GAIN},
     {"seed", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_seed, 0, AERO_PD_NO_RULE},
     {"ramp", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_ramp, 0,
-     AERO_PD_RANGE(0, AERO_RAMP_MS_MAX, "ms")},
+     AERO_PD_RAMP},
     {"listener", AERO_PD_LIST, 3, (t_method)aeolian_tilde_listener, 0, AERO_PD_NO_RULE},
     {"ears", AERO_PD_LIST, 6, (t_method)aeolian_tilde_listener, 0, AERO_PD_NO_RULE},
     {"texture", AERO_PD_SYMBOL, 0, (t_method)aeolian_tilde_texture, 0, AERO_PD_NO_RULE},
     {"n", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_n, 0,
-     AERO_PD_RANGE_NOTE(0, AERO_STICK_MAX_SOURCES, NULL,
-                        "point sources, 0: auto, length / 3 d")},
+     AERO_PD_RANGE_NOTE_DEF(0, AERO_AEOLIAN_SOURCES_MAX,
+                            AERO_AEOLIAN_SOURCES_DEFAULT, NULL,
+                            "point sources, 0: auto, length / 3 d")},
     {"exponent", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_exponent, 0,
-     AERO_PD_RANGE_NOTE(AERO_MOVING_EXPONENT_MIN, AERO_MOVING_EXPONENT_MAX,
-                        NULL, "3 is physical, 6 the paper's")},
+     AERO_PD_RANGE_NOTE_DEF(AERO_MOVING_EXPONENT_MIN,
+                            AERO_MOVING_EXPONENT_MAX,
+                            AERO_MOVING_EXPONENT_DEFAULT, NULL,
+                            "3 is physical, 6 the paper's")},
     {"roll", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_roll, 0,
      AERO_PD_NOTE("finite degrees")},
     {"wind", AERO_PD_LIST, 3, (t_method)aeolian_tilde_wind, 0,
@@ -182,7 +188,7 @@ static void *aeolian_tilde_new(t_symbol *s, int argc, t_atom *argv)
         pd_error(x, OBJ ": sample rate %g not usable: 44100 Hz until the "
                  "DSP starts", sys_getsr());
     x->x_pose_time = clock_getlogicaltime();
-    aero_pd_parse_flags(x, &aeolian_tilde_spec, argc, argv);
+    aero_pd_parse_flags(&x->x_base, argc, argv);
     aero_pd_base_outlets(&x->x_base);
     return x;
 }

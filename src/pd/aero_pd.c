@@ -76,9 +76,11 @@ typedef void (*list_fn)(void *x, t_symbol *s, int argc, t_atom *argv);
 
 /* One flag with the atoms after it: calls its method (when `apply`) and
  * returns how many atoms it used, itself included. */
-static int apply_flag(void *x, const char *obj, const aero_pd_method *m,
-                      int argc, t_atom *argv, int apply)
+static int apply_flag(aero_pd_base *b, const aero_pd_method *m, int argc,
+                      t_atom *argv, int apply)
 {
+    void *x = b->owner;
+    const char *obj = b->obj;
     int want = m->args == AERO_PD_FLOAT || m->args == AERO_PD_SYMBOL ? 1
         : m->args == AERO_PD_LIST ? m->count : 0;
     int have = 0;
@@ -95,6 +97,7 @@ static int apply_flag(void *x, const char *obj, const aero_pd_method *m,
     }
     if (!apply)
         return 1 + want;
+    b->flag = m->name; /* a refusal now says what the object keeps */
     switch (m->args) {
     case AERO_PD_BANG:
         ((bang_fn)m->fn)(x);
@@ -111,22 +114,37 @@ static int apply_flag(void *x, const char *obj, const aero_pd_method *m,
     case AERO_PD_SWITCH:
         break;
     }
+    b->flag = NULL;
     return 1 + want;
 }
 
-/* one pass over the flags: the EARLY ones (early = 1) or the others */
-static void flag_pass(void *x, const aero_pd_spec *spec, int argc,
-                      t_atom *argv, int early)
+/* did a flag before `at` set what m sets (the same method: -L, -length)? */
+static int set_before(const aero_pd_spec *spec, const t_atom *argv,
+                      const t_atom *at, const aero_pd_method *m)
 {
-    char name[MAXPDSTRING];
-    snprintf(name, sizeof(name), "[%s]", spec->name);
+    for (; argv < at; argv++) {
+        const aero_pd_method *k = find_flag(spec, argv);
+        if (k && k->fn == m->fn)
+            return 1;
+    }
+    return 0;
+}
+
+/* one pass over the flags: the EARLY ones (early = 1) or the others */
+static void flag_pass(aero_pd_base *b, int argc, t_atom *argv, int early)
+{
+    const aero_pd_spec *spec = b->spec;
+    void *x = b->owner;
+    const char *name = b->obj;
+    t_atom *all = argv;
     while (argc > 0) {
         const aero_pd_method *m = find_flag(spec, argv);
         int used = 1;
-        if (m)
-            used = apply_flag(x, name, m, argc - 1, argv + 1,
+        if (m) {
+            b->flag_again = set_before(spec, all, argv, m);
+            used = apply_flag(b, m, argc - 1, argv + 1,
                               !(m->options & AERO_PD_EARLY) == !early);
-        else if (!early) {
+        } else if (!early) {
             char buf[MAXPDSTRING], flags[MAXPDSTRING];
             atom_string(argv, buf, sizeof(buf));
             flag_list(spec, flags, sizeof(flags));
@@ -140,11 +158,10 @@ static void flag_pass(void *x, const aero_pd_spec *spec, int argc,
     }
 }
 
-void aero_pd_parse_flags(void *x, const aero_pd_spec *spec, int argc,
-                         t_atom *argv)
+void aero_pd_parse_flags(aero_pd_base *b, int argc, t_atom *argv)
 {
-    flag_pass(x, spec, argc, argv, 1);
-    flag_pass(x, spec, argc, argv, 0);
+    flag_pass(b, argc, argv, 1);
+    flag_pass(b, argc, argv, 0);
 }
 
 int aero_pd_has_flag(const char *name, int argc, const t_atom *argv)
@@ -277,35 +294,59 @@ const aero_pd_rule *aero_pd_rule_of(const aero_pd_base *b, const char *name)
     return NULL;
 }
 
-/* " (0.0001..100 m; note)" from a rule, "" when it states nothing */
+/* " (0.0001..100 m; default 0.02 m; note)" from a rule, "" when it
+   states nothing */
 static void rule_text(const aero_pd_rule *r, char *buf, size_t len)
 {
-    int range = r && r->lo != r->hi, note = r && r->note;
+    const char *sp = r && r->unit ? " " : "", *unit = r && r->unit ? r->unit
+                                                                    : "";
+    size_t used = 0;
     buf[0] = '\0';
-    if (!range && !note)
+    if (!r || (r->lo == r->hi && !r->note && !r->has_def))
         return;
-    if (range)
-        snprintf(buf, len, " (%g..%g%s%s%s%s)", r->lo, r->hi,
-                 r->unit ? " " : "", r->unit ? r->unit : "",
-                 note ? "; " : "", note ? r->note : "");
-    else
-        snprintf(buf, len, " (%s)", r->note);
+    used += snprintf(buf + used, len - used, " (");
+    if (r->lo != r->hi && used < len)
+        used += snprintf(buf + used, len - used, "%g..%g%s%s", r->lo, r->hi,
+                         sp, unit);
+    if (r->has_def && used < len)
+        used += snprintf(buf + used, len - used, "%sdefault %g%s%s",
+                         r->lo != r->hi ? "; " : "", r->def, sp, unit);
+    if (r->note && used < len)
+        used += snprintf(buf + used, len - used, "%s%s",
+                         r->lo != r->hi || r->has_def ? "; " : "", r->note);
+    if (used < len)
+        snprintf(buf + used, len - used, ")");
+}
+
+/* after a refusal from a creation flag: what the object keeps instead */
+static void kept_text(const aero_pd_base *b, const aero_pd_rule *r,
+                      char *buf, size_t len)
+{
+    buf[0] = '\0';
+    if (b->flag)
+        snprintf(buf, len, ": flag -%s ignored%s", b->flag,
+                 r && r->has_def && !b->flag_again ? ", the default stays"
+                                                   : "");
 }
 
 void aero_pd_refused(const aero_pd_base *b, const char *name, t_float f)
 {
     const aero_pd_rule *r = aero_pd_rule_of(b, name);
-    char range[MAXPDSTRING];
+    char range[MAXPDSTRING], kept[MAXPDSTRING];
     rule_text(r, range, sizeof(range));
-    pd_error(b->owner, "%s: %s %g%s%s out of range%s", b->obj, name, f,
-             r && r->unit ? " " : "", r && r->unit ? r->unit : "", range);
+    kept_text(b, r, kept, sizeof(kept));
+    pd_error(b->owner, "%s: %s %g%s%s out of range%s%s", b->obj, name, f,
+             r && r->unit ? " " : "", r && r->unit ? r->unit : "", range,
+             kept);
 }
 
 void aero_pd_refused_list(const aero_pd_base *b, const char *name)
 {
-    char range[MAXPDSTRING];
-    rule_text(aero_pd_rule_of(b, name), range, sizeof(range));
-    pd_error(b->owner, "%s: %s out of range%s", b->obj, name, range);
+    const aero_pd_rule *r = aero_pd_rule_of(b, name);
+    char range[MAXPDSTRING], kept[MAXPDSTRING];
+    rule_text(r, range, sizeof(range));
+    kept_text(b, r, kept, sizeof(kept));
+    pd_error(b->owner, "%s: %s out of range%s%s", b->obj, name, range, kept);
 }
 
 int aero_pd_whole_of(const aero_pd_base *b, const char *name, t_float f,

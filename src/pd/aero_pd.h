@@ -21,6 +21,7 @@
 
 #include "aero.h"
 #include "aero_ears.h"
+#include "aero_ranges.h"
 #include "texture.h"
 #include "tree.h"
 
@@ -55,23 +56,41 @@ enum {
     AERO_PD_MESSAGE_ONLY = 2 /* no creation flag */
 };
 
-/* What a message accepts, stated in the table from the core's constants
- * (the core's setter checks the same constants): the skeleton words every
- * refusal from it, the same way for every object (aero_pd_refused). */
+/* What a message accepts and what the object starts with, stated in the
+ * table from the core's constants (the core's setter checks the same
+ * constants, its init starts from the same defaults): the skeleton words
+ * every refusal from it, the same way for every object (aero_pd_refused). */
 typedef struct {
     double lo, hi;    /* accepted lo..hi; lo == hi: no range stated */
     const char *unit; /* "m", "dB", NULL for none */
     const char *note; /* what else the values mean ("0 = off"), or NULL */
+    double def;       /* the default, when has_def */
+    int has_def;
 } aero_pd_rule;
 
-/* a rule in a table line: AERO_PD_RANGE(AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX,
-   "dB"); AERO_PD_RANGE_NOTE adds a note; AERO_PD_NOTE is a note alone (a
-   list that must be finite, a direction); AERO_PD_NO_RULE for a message
-   the core never refuses or words itself */
-#define AERO_PD_RANGE(lo, hi, unit) {(lo), (hi), (unit), NULL}
-#define AERO_PD_RANGE_NOTE(lo, hi, unit, note) {(lo), (hi), (unit), (note)}
-#define AERO_PD_NOTE(note) {0, 0, NULL, (note)}
-#define AERO_PD_NO_RULE {0, 0, NULL, NULL}
+/* a rule in a table line: AERO_PD_RANGE_DEF(AERO_GAIN_DB_MIN,
+   AERO_GAIN_DB_MAX, AERO_GAIN_DB_DEFAULT, "dB") for a number the object
+   starts with (its core's AERO_<OBJECT>_<SETTING>_DEFAULT);
+   AERO_PD_RANGE_NOTE_DEF adds a note; AERO_PD_RANGE and AERO_PD_RANGE_NOTE
+   for values without one default (a list, a count that depends on a
+   file); AERO_PD_NOTE is a note alone (a list that must be finite, a
+   direction); AERO_PD_NO_RULE for a message the core never refuses or
+   words itself */
+#define AERO_PD_RANGE_DEF(lo, hi, def, unit)                               \
+    {(lo), (hi), (unit), NULL, (def), 1}
+#define AERO_PD_RANGE_NOTE_DEF(lo, hi, def, unit, note)                    \
+    {(lo), (hi), (unit), (note), (def), 1}
+#define AERO_PD_RANGE(lo, hi, unit) {(lo), (hi), (unit), NULL, 0, 0}
+#define AERO_PD_RANGE_NOTE(lo, hi, unit, note)                             \
+    {(lo), (hi), (unit), (note), 0, 0}
+#define AERO_PD_NOTE(note) {0, 0, NULL, (note), 0, 0}
+#define AERO_PD_NO_RULE {0, 0, NULL, NULL, 0, 0}
+/* the rules of the settings every player shares (aero_ranges.h) */
+#define AERO_PD_GAIN                                                       \
+    AERO_PD_RANGE_DEF(AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX,                  \
+                      AERO_GAIN_DB_DEFAULT, "dB")
+#define AERO_PD_RAMP                                                       \
+    AERO_PD_RANGE_DEF(0, AERO_RAMP_MS_MAX, AERO_RAMP_MS_DEFAULT, "ms")
 /* a constant as a string, for a note: AERO_PD_STR(AERO_LEAFWAVE_TABLES_MAX) */
 #define AERO_PD_STR_(x) #x
 #define AERO_PD_STR(x) AERO_PD_STR_(x)
@@ -103,12 +122,13 @@ t_class *aero_pd_class_new(const aero_pd_spec *spec, t_newmethod new_fn,
                            t_method free_fn, size_t size, int f_offset,
                            t_method dsp_fn);
 
-/* Applies the creation flags: `-name args` calls the table's method as
- * the message `name args` would (EARLY ones first). Unknown flags and
- * missing or wrong values are reported, naming the object and its flags,
- * and skipped: the object is still created. */
-void aero_pd_parse_flags(void *x, const aero_pd_spec *spec, int argc,
-                         t_atom *argv);
+/* Applies the creation flags of the object of `b` (aero_pd_base_init
+ * first): `-name args` calls the table's method as the message `name
+ * args` would (EARLY ones first). Unknown flags and missing or wrong
+ * values are reported, naming the object and its flags, and skipped: the
+ * object is still created, with the default of a refused value. */
+struct aero_pd_base;
+void aero_pd_parse_flags(struct aero_pd_base *b, int argc, t_atom *argv);
 
 /* is `-name` among the creation arguments (a SWITCH such as -stereo)? */
 int aero_pd_has_flag(const char *name, int argc, const t_atom *argv);
@@ -125,9 +145,11 @@ t_symbol *aero_pd_first_symbol(int *argc, t_atom **argv);
 typedef int (*aero_pd_process)(void *x, const float *in, float *const *out,
                                int n);
 
-typedef struct {
+typedef struct aero_pd_base {
     t_object *owner;
     const aero_pd_spec *spec; /* the table: the rules of refusals */
+    const char *flag; /* the creation flag being applied, or NULL */
+    int flag_again;   /* an earlier flag already set the same thing */
     const char *obj;  /* "[cavity~]", for messages */
     t_canvas *canvas; /* where files are looked for first */
     int stereo;       /* created with -stereo: two outlets, `ears` */
@@ -175,12 +197,14 @@ static inline void aero_pd_clamped(aero_pd_base *b)
 const aero_pd_rule *aero_pd_rule_of(const aero_pd_base *b, const char *name);
 
 /* A number the core refused for the message `name`, worded from its rule:
- * "[cavity~]: length 500 m out of range (0.0001..100 m)". The old value
- * stays. */
+ * "[cavity~]: length 500 m out of range (0.0001..100 m; default 0.02 m)".
+ * The old value stays; from a creation flag, that is the default, and
+ * the message says so: "...: flag -L ignored, the default stays". */
 void aero_pd_refused(const aero_pd_base *b, const char *name, t_float f);
 
 /* A list message (`wind`, `mic`, `pose`) the core refused:
- * "[body~]: wind out of range (0..1029 m/s; finite)". */
+ * "[body~]: wind out of range (0..1029 m/s; finite)" (from a creation
+ * flag: "...: flag -wind ignored"). */
 void aero_pd_refused_list(const aero_pd_base *b, const char *name);
 
 /* A number from a patch as a whole number within the rule of `name`: 0

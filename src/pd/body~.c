@@ -134,15 +134,18 @@ static const aero_pd_method body_tilde_methods[] = {
     {"stereo", AERO_PD_SWITCH, 0, NULL, 0, AERO_PD_NO_RULE},
     {"texture", AERO_PD_SYMBOL, 0, (t_method)body_tilde_texture, 0, AERO_PD_NO_RULE},
     {"scale", AERO_PD_FLOAT, 0, (t_method)body_tilde_scale, 0,
-     AERO_PD_RANGE_NOTE(AERO_BODY_SCALE_MIN, AERO_BODY_SCALE_MAX, NULL,
-                        "of the texture's body")},
+     AERO_PD_RANGE_NOTE_DEF(AERO_BODY_SCALE_MIN, AERO_BODY_SCALE_MAX,
+                            AERO_BODY_SCALE_DEFAULT, NULL,
+                            "of the texture's body")},
     {"exponent", AERO_PD_FLOAT, 0, (t_method)body_tilde_exponent, 0,
-     AERO_PD_RANGE_NOTE(AERO_MOVING_EXPONENT_MIN, AERO_MOVING_EXPONENT_MAX,
-                        NULL, "3 is physical, 6 the paper's")},
+     AERO_PD_RANGE_NOTE_DEF(AERO_MOVING_EXPONENT_MIN,
+                            AERO_MOVING_EXPONENT_MAX,
+                            AERO_MOVING_EXPONENT_DEFAULT, NULL,
+                            "3 is physical, 6 the paper's")},
     {"gain", AERO_PD_FLOAT, 0, (t_method)body_tilde_gain, 0,
-     AERO_PD_RANGE(AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX, "dB")},
+     AERO_PD_GAIN},
     {"ramp", AERO_PD_FLOAT, 0, (t_method)body_tilde_ramp, 0,
-     AERO_PD_RANGE(0, AERO_RAMP_MS_MAX, "ms")},
+     AERO_PD_RAMP},
     {"seed", AERO_PD_FLOAT, 0, (t_method)body_tilde_seed, 0, AERO_PD_NO_RULE},
     {"listener", AERO_PD_LIST, 3, (t_method)body_tilde_listener, 0, AERO_PD_NO_RULE},
     {"ears", AERO_PD_LIST, 6, (t_method)body_tilde_listener, 0, AERO_PD_NO_RULE},
@@ -167,7 +170,7 @@ static void *body_tilde_new(t_symbol *s, int argc, t_atom *argv)
                                aero_pd_default_seed()))
         pd_error(x, OBJ ": out of memory for the delay lines: silent");
     x->x_pose_time = clock_getlogicaltime();
-    aero_pd_parse_flags(x, &body_tilde_spec, argc, argv);
+    aero_pd_parse_flags(&x->x_base, argc, argv);
     aero_pd_base_outlets(&x->x_base);
     return x;
 }

@@ -83,22 +83,27 @@ static void cavity_tilde_model(t_cavity_tilde *x)
     aero_cavity_set_texture(&x->x_core, NULL, err, sizeof(err));
 }
 
-#define SIZE AERO_PD_RANGE(AERO_CAVITY_SIZE_MIN, AERO_CAVITY_SIZE_MAX, "m")
+#define SIZE(def)                                                         \
+    AERO_PD_RANGE_DEF(AERO_CAVITY_SIZE_MIN, AERO_CAVITY_SIZE_MAX, def, "m")
+#define LENGTH SIZE(AERO_CAVITY_LENGTH_DEFAULT)
+#define DEPTH SIZE(AERO_CAVITY_DEPTH_DEFAULT)
+#define WIDTH SIZE(AERO_CAVITY_WIDTH_DEFAULT)
 
 static const aero_pd_method cavity_tilde_methods[] = {
-    {"length", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_length, 0, SIZE},
-    {"L", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_length, 0, SIZE},
-    {"depth", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_depth, 0, SIZE},
-    {"D", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_depth, 0, SIZE},
-    {"width", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_width, 0, SIZE},
-    {"W", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_width, 0, SIZE},
+    {"length", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_length, 0, LENGTH},
+    {"L", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_length, 0, LENGTH},
+    {"depth", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_depth, 0, DEPTH},
+    {"D", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_depth, 0, DEPTH},
+    {"width", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_width, 0, WIDTH},
+    {"W", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_width, 0, WIDTH},
     {"gain", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_gain, 0,
-     AERO_PD_RANGE(AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX, "dB")},
+     AERO_PD_GAIN},
     {"ramp", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_ramp, 0,
-     AERO_PD_RANGE(0, AERO_RAMP_MS_MAX, "ms")},
+     AERO_PD_RAMP},
     {"seed", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_seed, 0, AERO_PD_NO_RULE},
     {"exponent", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_exponent, 0,
-     AERO_PD_RANGE(0, AERO_CAVITY_EXPONENT_MAX, NULL)},
+     AERO_PD_RANGE_DEF(0, AERO_CAVITY_EXPONENT_MAX,
+                       AERO_CAVITY_EXPONENT_DEFAULT, NULL)},
     {"listener", AERO_PD_LIST, 3, (t_method)cavity_tilde_listener, 0, AERO_PD_NO_RULE},
     {"texture", AERO_PD_SYMBOL, 0, (t_method)cavity_tilde_texture, 0, AERO_PD_NO_RULE},
     {"model", AERO_PD_BANG, 0, (t_method)cavity_tilde_model,
@@ -118,7 +123,7 @@ static void *cavity_tilde_new(t_symbol *s, int argc, t_atom *argv)
                                aero_pd_default_seed()))
         pd_error(x, OBJ ": sample rate %g not usable: 44100 Hz until the "
                  "DSP starts", sys_getsr());
-    aero_pd_parse_flags(x, &cavity_tilde_spec, argc, argv);
+    aero_pd_parse_flags(&x->x_base, argc, argv);
     aero_pd_base_outlets(&x->x_base);
     return x;
 }

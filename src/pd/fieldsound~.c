@@ -346,9 +346,9 @@ static const aero_pd_method fieldsound_tilde_methods[] = {
     {"speed", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_speed, 0,
      AERO_PD_RANGE_NOTE(0, AERO_FIELD_SPEED_MAX, "frames/s", "above 0")},
     {"gain", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_gain, 0,
-     AERO_PD_RANGE(AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX, "dB")},
+     AERO_PD_GAIN},
     {"ramp", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_ramp, 0,
-     AERO_PD_RANGE(0, AERO_RAMP_MS_MAX, "ms")},
+     AERO_PD_RAMP},
     /* the volume's parameters: aero_field_params_check words refusals */
     {"threshold", AERO_PD_LIST, 3, (t_method)fieldsound_tilde_threshold, 0,
      AERO_PD_NO_RULE},
@@ -396,7 +396,7 @@ static void *fieldsound_tilde_new(t_symbol *s, int argc, t_atom *argv)
     x->x_dir = aero_pd_first_symbol(&argc, &argv);
     x->x_sync = aero_pd_has_flag("-sync", argc, argv);
     x->x_creating = 1;
-    aero_pd_parse_flags(x, &fieldsound_tilde_spec, argc, argv);
+    aero_pd_parse_flags(&x->x_base, argc, argv);
     x->x_creating = 0;
     /* the listener starts where it was put, not ramped from (1, 0, 0) */
     memcpy(start.pos[0], aero_fieldsound_target(&x->x_core),

@@ -112,18 +112,20 @@ static const aero_pd_method treebranch_tilde_methods[] = {
     {"seed", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_seed, 0,
      AERO_PD_RANGE_NOTE(0, 4294967295.0, NULL, "2^32-1")},
     {"gain", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_gain, 0,
-     AERO_PD_RANGE(AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX, "dB")},
+     AERO_PD_GAIN},
     {"stiffness", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_stiffness, 0,
-     AERO_PD_RANGE(AERO_TREE_STIFFNESS_MIN, AERO_TREE_STIFFNESS_MAX, NULL)},
+     AERO_PD_RANGE_DEF(AERO_TREE_STIFFNESS_MIN, AERO_TREE_STIFFNESS_MAX,
+                       AERO_TREE_STIFFNESS_DEFAULT, NULL)},
     {"beta", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_beta, 0,
-     AERO_PD_RANGE(0, AERO_TREE_BETA_MAX, NULL)},
+     AERO_PD_RANGE_DEF(0, AERO_TREE_BETA_MAX, AERO_TREE_BETA_DEFAULT, NULL)},
     {"alpha", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_alpha, 0,
-     AERO_PD_RANGE(AERO_TREEBRANCH_ALPHA_MIN, AERO_TREEBRANCH_ALPHA_MAX,
-                   NULL)},
+     AERO_PD_RANGE_DEF(AERO_TREEBRANCH_ALPHA_MIN, AERO_TREEBRANCH_ALPHA_MAX,
+                       AERO_TREEBRANCH_ALPHA_DEFAULT, NULL)},
     {"k", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_k, 0,
-     AERO_PD_RANGE(0, AERO_TREEBRANCH_MIC_K_MAX, NULL)},
+     AERO_PD_RANGE_DEF(0, AERO_TREEBRANCH_MIC_K_MAX,
+                       AERO_TREEBRANCH_MIC_K_DEFAULT, NULL)},
     {"ramp", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_ramp, 0,
-     AERO_PD_RANGE(0, AERO_RAMP_MS_MAX, "ms")},
+     AERO_PD_RAMP},
     {"mic", AERO_PD_LIST, 3, (t_method)treebranch_tilde_mic, 0,
      AERO_PD_NOTE("a finite direction")},
     {"listener", AERO_PD_LIST, 3, (t_method)treebranch_tilde_listener, 0,
@@ -153,7 +155,7 @@ static void *treebranch_tilde_new(t_symbol *s, int argc, t_atom *argv)
     t_symbol *file = aero_pd_first_symbol(&argc, &argv);
     if (file)
         treebranch_tilde_open(x, file);
-    aero_pd_parse_flags(x, &treebranch_tilde_spec, argc, argv);
+    aero_pd_parse_flags(&x->x_base, argc, argv);
     aero_pd_base_outlets(&x->x_base);
     return x;
 }

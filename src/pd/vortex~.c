@@ -140,29 +140,35 @@ static const aero_pd_method vortex_tilde_methods[] = {
     {"stereo", AERO_PD_SWITCH, 0, NULL, 0, AERO_PD_NO_RULE},
     /* -n first, so -texture and the rest see every source */
     {"n", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_n, AERO_PD_EARLY,
-     AERO_PD_RANGE_NOTE(1, AERO_VORTEX_MAX_SOURCES, NULL,
-                        "source volumes, a whole number")},
+     AERO_PD_RANGE_NOTE_DEF(1, AERO_VORTEX_MAX_SOURCES,
+                            AERO_VORTEX_SOURCES_DEFAULT, NULL,
+                            "source volumes, a whole number")},
     {"texture", AERO_PD_SYMBOL, 0, (t_method)vortex_tilde_texture, 0, AERO_PD_NO_RULE},
     {"gain", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_gain, 0,
-     AERO_PD_RANGE(AERO_GAIN_DB_MIN, AERO_VORTEX_GAIN_DB_MAX, "dB")},
+     AERO_PD_RANGE_DEF(AERO_GAIN_DB_MIN, AERO_VORTEX_GAIN_DB_MAX,
+                       AERO_GAIN_DB_DEFAULT, "dB")},
     {"clip", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_clip, 0,
-     AERO_PD_RANGE_NOTE(0, AERO_VORTEX_CLIP_MAX, "Pa", "0 = off")},
+     AERO_PD_RANGE_NOTE_DEF(0, AERO_VORTEX_CLIP_MAX, AERO_VORTEX_CLIP_DEFAULT,
+                            "Pa", "0 = off")},
     {"ramp", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_ramp, 0,
-     AERO_PD_RANGE(0, AERO_RAMP_MS_MAX, "ms")},
+     AERO_PD_RAMP},
     {"seed", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_seed, 0, AERO_PD_NO_RULE},
     {"power", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_power, 0,
-     AERO_PD_RANGE_NOTE(0, AERO_COMBUSTION_POWER_KW_MAX, "kW",
-                        "0 = no combustion noise")},
+     AERO_PD_RANGE_NOTE_DEF(0, AERO_COMBUSTION_POWER_KW_MAX,
+                            AERO_COMBUSTION_POWER_KW_DEFAULT, "kW",
+                            "0 = no combustion noise")},
     {"length", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_length, 0,
-     AERO_PD_RANGE(AERO_COMBUSTION_LENGTH_MIN, AERO_COMBUSTION_LENGTH_MAX,
-                   "m")},
+     AERO_PD_RANGE_DEF(AERO_COMBUSTION_LENGTH_MIN, AERO_COMBUSTION_LENGTH_MAX,
+                       AERO_COMBUSTION_LENGTH_DEFAULT, "m")},
     {"strouhal", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_strouhal, 0,
-     AERO_PD_RANGE(AERO_COMBUSTION_ST_MIN, AERO_COMBUSTION_ST_MAX, NULL)},
+     AERO_PD_RANGE_DEF(AERO_COMBUSTION_ST_MIN, AERO_COMBUSTION_ST_MAX,
+                       AERO_COMBUSTION_ST_DEFAULT, NULL)},
     {"fluctuation", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_fluctuation, 0,
-     AERO_PD_RANGE(0, 1, NULL)},
+     AERO_PD_RANGE_DEF(0, 1, AERO_COMBUSTION_FLUCTUATION_DEFAULT, NULL)},
     {"falloff", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_falloff, 0,
-     AERO_PD_RANGE_NOTE(1, 3, NULL, "1: p ~ 1/r, the far field, or 3: the "
-                        "paper's 1/r^3")},
+     AERO_PD_RANGE_NOTE_DEF(1, 3, AERO_VORTEX_FALLOFF_DEFAULT, NULL,
+                            "1: p ~ 1/r, the far field, or 3: the "
+                            "paper's 1/r^3")},
     {"listener", AERO_PD_LIST, 3, (t_method)vortex_tilde_listener, 0, AERO_PD_NO_RULE},
     {"ears", AERO_PD_LIST, 6, (t_method)vortex_tilde_listener, 0, AERO_PD_NO_RULE},
     {"speeds", AERO_PD_LIST, 0, (t_method)vortex_tilde_speeds,
@@ -186,7 +192,7 @@ static void *vortex_tilde_new(t_symbol *s, int argc, t_atom *argv)
     if (aero_vortex_init(&x->x_core, sys_getsr(), x->x_base.stereo,
                                 aero_pd_default_seed()))
         pd_error(x, OBJ ": out of memory for the sources: silent");
-    aero_pd_parse_flags(x, &vortex_tilde_spec, argc, argv);
+    aero_pd_parse_flags(&x->x_base, argc, argv);
     aero_pd_base_outlets(&x->x_base);
     return x;
 }

@@ -538,14 +538,14 @@ static void describe_matches(const object_plan *o,
 }
 
 /* the texture's metadata */
-static void describe(const object_plan *o, const direction_task *ctx,
-                     aero_texture *tex)
+/* the body, the air and the sampled directions and regions */
+static void describe_body(const object_plan *o, const direction_task *ctx,
+                          aero_texture *tex)
 {
     const object_job *j = o->j;
-    const aero_body_flow_stats *st0 = &ctx[0].st, *stb;
+    const aero_body_flow_stats *st0 = &ctx[0].st;
     char buf[16384], shape[300];
     size_t used = 0;
-    const int kb = broadside(o);
     aero_texture_set(tex, "kind", "object");
     snprintf(shape, sizeof shape, "%s", o->desc);
     if (j->mesh)
@@ -570,12 +570,15 @@ static void describe(const object_plan *o, const direction_task *ctx,
                                  st0->centre[3 * l], st0->centre[3 * l + 1],
                                  st0->centre[3 * l + 2]);
     aero_texture_set(tex, "centres", buf);
-    aerotex_job_loop_meta(&j->job, tex);
-    aero_texture_setd(tex, "rate", o->rate);
-    aero_texture_set(tex, "frame", "sample frame: the flow arrives along "
-                     "(sin a, 0, cos a) of the body axes, a = angles[k]");
-    aero_texture_set(tex, "units", "N/s");
-    stb = &ctx[kb].st;
+}
+
+/* the broadside direction's St, f, Cd and C_L', and every direction's */
+static void describe_forces(const object_plan *o, const direction_task *ctx,
+                            const aero_body_flow_stats *stb,
+                            aero_texture *tex)
+{
+    const object_job *j = o->j;
+    char buf[16384];
     /* st, f as the texture holds them: after --calibrate the loop's
        heard St (loop_st) times the scale; else the flow's own estimate */
     aero_texture_setd(tex, "st", o->scale != 1.0 ? o->st_loop * o->scale
@@ -594,15 +597,22 @@ static void describe(const object_plan *o, const direction_task *ctx,
     join_stat(buf, sizeof buf, ctx, o->nd,
               offsetof(aero_body_flow_stats, cl_rms), 1.0);
     aero_texture_set(tex, "cl_rms_list", buf);
-    describe_calibration(o, ctx, kb, tex);
-    describe_matches(o, stb, tex);
+}
+
+/* how the forces were made: strip theory over a section texture, or the
+   3D flow */
+static void describe_method(const object_plan *o, const direction_task *ctx,
+                            aero_texture *tex)
+{
+    const object_job *j = o->j;
+    char buf[16384];
+    size_t used = 0;
     if (j->method == METHOD_STRIP) {
         aero_texture_set(tex, "method", "strip");
         aero_texture_set(tex, "section", j->section);
         aero_texture_setd(tex, "grid",
                           aero_texture_getd(&o->section, "grid", 0.0));
         buf[0] = 0;
-        used = 0;
         for (int l = 0; l < o->nr && used < sizeof buf; l++)
             used += (size_t)snprintf(buf + used, sizeof buf - used, "%s%.4g",
                                      l ? "," : "", o->layout.diameter[l]);
@@ -617,12 +627,28 @@ static void describe(const object_plan *o, const direction_task *ctx,
     aero_texture_setd(tex, "grid", j->grid);
     aero_texture_setd(tex, "cell", o->base.cell);
     aero_texture_setd(tex, "settle", o->base.settle);
-    aero_texture_setd(tex, "dt", st0->dt);
+    aero_texture_setd(tex, "dt", ctx[0].st.dt);
     snprintf(buf, sizeof buf, "3D incompressible, MAC grid, %sMacCormack "
              "advection, FFTW + tridiagonal projection, immersed body by "
              "direct forcing (force = removed momentum)",
              j->limiter ? "limited " : "");
     aero_texture_set(tex, "solver", buf);
+}
+
+static void describe(const object_plan *o, const direction_task *ctx,
+                     aero_texture *tex)
+{
+    const int kb = broadside(o);
+    describe_body(o, ctx, tex);
+    aerotex_job_loop_meta(&o->j->job, tex);
+    aero_texture_setd(tex, "rate", o->rate);
+    aero_texture_set(tex, "frame", "sample frame: the flow arrives along "
+                     "(sin a, 0, cos a) of the body axes, a = angles[k]");
+    aero_texture_set(tex, "units", "N/s");
+    describe_forces(o, ctx, &ctx[kb].st, tex);
+    describe_calibration(o, ctx, kb, tex);
+    describe_matches(o, &ctx[kb].st, tex);
+    describe_method(o, ctx, tex);
 }
 
 /* the looped texture, saved and reported: the exit status */

@@ -16,7 +16,12 @@
  *   aero-analyze centroidratio A B  centroid(B) / centroid(A) (a Doppler
  *                               shift of a broadband sound)
  *   aero-analyze clicks FILE    worst local jump of the 2nd difference
- *                               against its neighbourhood (a ratio)
+ *                               against its neighbourhood (a ratio);
+ *                               with --play INC a texture channel as a
+ *                               source plays it: looped, read at INC
+ *                               frames per sample by linear interpolation
+ *                               (as [aeolian~]), 12 loops at --rate SR
+ *                               (default 48000)
  *   aero-analyze onsetdiff FILE time (ms) at which channel 1 first reaches
  *                               10 % of its own maximum, minus the same for
  *                               channel 0 (an interaural delay)
@@ -63,6 +68,7 @@ typedef struct {
     int nfft, count;
     int has_expect, has_tol, has_min, has_max, has_skip2;
     double expect, tol, min, max;
+    double play, rate; /* clicks --play INC --rate SR */
 } options;
 
 typedef struct {
@@ -295,6 +301,29 @@ static double relative_width(const signal_t *s, const options *o)
     double right = b + (psd[b] - half) / (psd[b] - psd[b + 1] + 1e-300);
     free(psd);
     return (right - left) / best;
+}
+
+/* the looped texture channel s as a source reading it at inc frames per
+   sample at rate sr (linear interpolation, as the player): 12 loops, so
+   that a window at the 2 ms scale of the output sees what an ear would
+   hear from one source; 0, or -1 out of memory */
+static int play_texture(signal_t *s, double inc, double sr)
+{
+    long n = (long)(12.0 * s->n / inc);
+    double *y = malloc(sizeof(double) * (size_t)(n > 0 ? n : 1));
+    if (!y)
+        return -1;
+    for (long k = 0; k < n; k++) {
+        double pos = fmod(k * inc, (double)s->n);
+        long i0 = (long)pos, i1 = i0 + 1 < s->n ? i0 + 1 : 0;
+        double fr = pos - i0;
+        y[k] = s->x[i0] + fr * (s->x[i1] - s->x[i0]);
+    }
+    free(s->x);
+    s->x = y;
+    s->n = n;
+    s->sr = sr;
+    return 0;
 }
 
 static double click_ratio(const signal_t *s)
@@ -575,6 +604,10 @@ int main(int argc, char **argv)
             o.has_min = 1, o.min = atof(argv[++i]);
         else if (!strcmp(a, "--max") && more)
             o.has_max = 1, o.max = atof(argv[++i]);
+        else if (!strcmp(a, "--play") && more)
+            o.play = atof(argv[++i]);
+        else if (!strcmp(a, "--rate") && more)
+            o.rate = atof(argv[++i]);
         else if (a[0] == '-' && a[1] == '-') {
             usage();
             return 2;
@@ -691,7 +724,15 @@ int main(int argc, char **argv)
     } else if (!strcmp(cmd, "same") && npos >= 2) {
         rc = same(pos[0], pos[1], &o);
     } else if (!strcmp(cmd, "clicks")) {
-        snprintf(what, sizeof(what), "click ratio of %s", pos[0]);
+        if (o.play != 0.0) {
+            if (!(o.play > 0.01 && o.play < 100.0) || s.n < 2 ||
+                play_texture(&s, o.play, o.rate > 0.0 ? o.rate : 48000.0)) {
+                usage();
+                return 2;
+            }
+        }
+        snprintf(what, sizeof(what), "click ratio of %s%s", pos[0],
+                 o.play != 0.0 ? " (played)" : "");
         rc = verdict(what, click_ratio(&s), "", &o, 0);
     } else
         usage();

@@ -182,7 +182,7 @@ in_range "cylinder cells per diameter" "$(tex_meta cylinder cells)" 24 1000 \
 #     peak within 5 %, the level within 3 dB, at four speeds (Re 2700 to
 #     16900, where Norberg's C_L' rises tenfold). Model mode's tone follows
 #     Roshko (1954) St(Re) and Norberg (2003) C_L'(Re); the texture, made
-#     at Re 6768, follows them away from its Re (stick_texture.c)
+#     at Re 6768, follows them away from its Re (aeolian_texture.c)
 for u in 4 10 14 25; do
     pd_render "agree-model-u$u" "aeolian~ -d 0.01 -l 0.3 -seed 4" 1 4000 \
         "; aero-speed $u; aero-obj listener 0 3 0"

@@ -38,8 +38,13 @@ chord=$(meta diameter) step=$(meta angle_step) st_list=$(meta st_list)
 #    over its 6 ms neighbourhood) within the cylinder's + 0.5, the
 #    measure's scatter from run to run of the flow (textures/README.md).
 #    A blade held at one angle reads one pair of texture directions all
-#    the time, so this measures the flow's own content. Open: 58-62 deg
-#    (3.0-3.4 here), whose direction's channels measure only 2.2.
+#    the time; these ears, in the plane of the turn, hear only its drag,
+#    and the measure weighs the tip's source most. Open: 60 deg (3.0-3.4
+#    here): its drag played at the tip's rate (aero-analyze clicks --play)
+#    measures 2.8-3.2 (2.2 at the texture's rate), from bursts in the
+#    simulated force once per cycle; a texture clean of them clicks
+#    through the player's Doppler steps at the poses (textures/README.md,
+#    sword.wav).
 PD_EXTRA="tests/pd/aero-rotor 0.5 1.5 0 720 5" \
     pd_render sw-cyl "aeolian~ -texture cylinder -stereo" 2 2000 \
     "; aero-obj ears -0.1 3 0 0.1 3 0"

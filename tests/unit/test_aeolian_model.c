@@ -1,7 +1,8 @@
-/* Unit tests of src/core/common/strouhal and src/core/play/aeolian_model: the
- * published laws (written here again, independently of the core) and the
- * behaviour at the edges: silence below onset, bad input, block-size independence. */
-#include "aeolian_model.h"
+/* Unit tests of src/core/common/strouhal and [aeolian~]'s model mode
+ * (src/core/play/aeolian_model.c, through aeolian.h): the published laws
+ * (written here again, independently of the core) and the behaviour at
+ * the edges: silence below onset, bad input, block-size independence. */
+#include "aeolian.h"
 #include "multi_instance.h"
 #include "strouhal.h"
 #include "unit.h"
@@ -16,7 +17,7 @@
 static double williamson(double re) { return -3.3265 / re + 0.1816 + 1.6e-4 * re; }
 static double roshko(double re) { return 0.198 * (1.0 - 19.7 / re); }
 
-static double render_rms(aero_aeolian_model *m, float speed, double seconds,
+static double render_rms(aero_aeolian *m, float speed, double seconds,
                          int block, int *nonfinite)
 {
     int total = (int)(seconds * SR);
@@ -27,7 +28,7 @@ static double render_rms(aero_aeolian_model *m, float speed, double seconds,
     for (int done = 0; done < total; done += block) {
         for (int i = 0; i < block; i++)
             in[i] = speed;
-        aero_aeolian_model_process(m, in, outs, block);
+        aero_aeolian_process(m, in, outs, block);
         for (int i = 0; i < block; i++) {
             if (!isfinite(out[i]))
                 (*nonfinite)++;
@@ -52,12 +53,12 @@ UNIT_TEST(strouhal)
     UNIT_CHECK(aero_shedding_strength(40) == 0 && aero_shedding_strength(46.9) == 0,
                "no shedding below Re 47");
     UNIT_CHECK(aero_shedding_strength(60) > 0, "shedding at Re 60");
-    aero_aeolian_model tone;
-    aero_aeolian_model_init(&tone, SR, 1, 1);
-    UNIT_NEAR_REL(aero_aeolian_model_tone_hz(&tone, 10.0),
+    aero_aeolian tone;
+    aero_aeolian_init(&tone, SR, 1, 1);
+    UNIT_NEAR_REL(aero_aeolian_tone_hz(&tone, 10.0),
                   roshko(1.225 * 10 * 0.01 / 1.81e-5) * 10.0 / 0.01, 1e-9,
                   "tone f = St U / d for the default 1 cm at 10 m/s");
-    UNIT_CHECK(aero_aeolian_model_tone_hz(&tone, 0.05) == 0.0,
+    UNIT_CHECK(aero_aeolian_tone_hz(&tone, 0.05) == 0.0,
                "no tone below onset (Re 34)");
     double worst_jump = 0, prev = aero_strouhal(150);
     for (double re = 151; re <= 300; re += 1) {
@@ -101,11 +102,11 @@ UNIT_TEST(lift_rms)
 
 UNIT_TEST(onset_and_level)
 {
-    aero_aeolian_model m;
+    aero_aeolian m;
     int bad = 0;
     /* d = 0.5 mm: 1 m/s is Re 34 (below onset), 2 m/s Re 68 */
-    aero_aeolian_model_init(&m, SR, 1, 1);
-    aero_aeolian_model_set_diameter(&m, 0.0005);
+    aero_aeolian_init(&m, SR, 1, 1);
+    aero_aeolian_set_diameter(&m, 0.0005);
     double below = render_rms(&m, 1.0f, 0.5, 64, &bad);
     UNIT_CHECK(below == 0.0, "silent below the shedding onset (rms %g Pa)", below);
     double above = render_rms(&m, 2.0f, 0.5, 64, &bad);
@@ -114,10 +115,10 @@ UNIT_TEST(onset_and_level)
     /* Curle, incoherent segments: p_rms = rho U^3 St C_L' L_c / (4 c0 r)
      * for one segment (l = 3 d) across the flow at r = 3 m, C_L'(6768) =
      * 0.3175 (Norberg 2003) */
-    aero_aeolian_model_init(&m, SR, 1, 2);
-    aero_aeolian_model_set_diameter(&m, 0.01);
-    aero_aeolian_model_set_length(&m, 0.03);
-    aero_aeolian_model_set_ears(&m, &(aero_ears){1, {{0, 3, 0}}});
+    aero_aeolian_init(&m, SR, 1, 2);
+    aero_aeolian_set_diameter(&m, 0.01);
+    aero_aeolian_set_length(&m, 0.03);
+    aero_aeolian_set_ears(&m, &(aero_ears){1, {{0, 3, 0}}});
     double re = aero_reynolds(10, 0.01);
     double want = 1.225 * 1000 * roshko(re) * 0.3175 * 0.03 / (4 * 343 * 3);
     double got = render_rms(&m, 10.0f, 2.0, 64, &bad);
@@ -126,10 +127,10 @@ UNIT_TEST(onset_and_level)
 
     /* 16 incoherent segments radiate 4x (12 dB) the pressure of one when
      * far away: the span powers add */
-    aero_aeolian_model_set_length(&m, 0.48);
-    aero_aeolian_model_set_ears(&m, &(aero_ears){1, {{0, 30, 0}}});
+    aero_aeolian_set_length(&m, 0.48);
+    aero_aeolian_set_ears(&m, &(aero_ears){1, {{0, 30, 0}}});
     double far16 = render_rms(&m, 10.0f, 2.0, 64, &bad);
-    aero_aeolian_model_set_length(&m, 0.03);
+    aero_aeolian_set_length(&m, 0.03);
     double far1 = render_rms(&m, 10.0f, 2.0, 64, &bad);
     UNIT_CHECK(fabs(20 * log10(far16 / far1) - 12.04) < 1.0,
                "16 incoherent segments: +%.2f dB (want +12.04)",
@@ -143,8 +144,8 @@ UNIT_TEST(block_sizes)
     double ref = 0;
     int bad = 0;
     for (size_t k = 0; k < sizeof(blocks) / sizeof(blocks[0]); k++) {
-        aero_aeolian_model m;
-        aero_aeolian_model_init(&m, SR, 1, 3);
+        aero_aeolian m;
+        aero_aeolian_init(&m, SR, 1, 3);
         double rms = render_rms(&m, 12.0f, 2.0, blocks[k], &bad);
         if (k == 0)
             ref = rms;
@@ -157,22 +158,22 @@ UNIT_TEST(block_sizes)
 
 UNIT_TEST(bad_input)
 {
-    aero_aeolian_model m;
-    aero_aeolian_model_init(&m, SR, 2, 4);
-    UNIT_CHECK(aero_aeolian_model_set_diameter(&m, 0) < 0 &&
-                   aero_aeolian_model_set_diameter(&m, -1) < 0 &&
-                   aero_aeolian_model_set_diameter(&m, NAN) < 0 &&
-                   aero_aeolian_model_set_diameter(&m, INFINITY) < 0,
+    aero_aeolian m;
+    aero_aeolian_init(&m, SR, 2, 4);
+    UNIT_CHECK(aero_aeolian_set_diameter(&m, 0) < 0 &&
+                   aero_aeolian_set_diameter(&m, -1) < 0 &&
+                   aero_aeolian_set_diameter(&m, NAN) < 0 &&
+                   aero_aeolian_set_diameter(&m, INFINITY) < 0,
                "diameter 0, negative, NaN, Inf rejected");
-    UNIT_CHECK(m.ctl_target[AERO_CTL_DIAMETER] == 0.01, "default diameter kept");
-    UNIT_CHECK(aero_aeolian_model_set_length(&m, 0) < 0 &&
-                   aero_aeolian_model_set_ears(&m,
+    UNIT_CHECK(m.target[AERO_AEO_DIAMETER] == 0.01, "default diameter kept");
+    UNIT_CHECK(aero_aeolian_set_length(&m, 0) < 0 &&
+                   aero_aeolian_set_ears(&m,
                            &(aero_ears){1, {{NAN, 0, 0}}}) < 0 &&
-                   aero_aeolian_model_set_ears(&m,
+                   aero_aeolian_set_ears(&m,
                            &(aero_ears){3, {{0, 0, 0}, {0, 0, 0}}}) < 0 &&
-                   aero_aeolian_model_set_gain_db(&m, INFINITY) < 0 &&
-                   aero_aeolian_model_set_ramp_ms(&m, -1) < 0 &&
-                   aero_aeolian_model_set_sample_rate(&m, 0) < 0,
+                   aero_aeolian_set_gain_db(&m, INFINITY) < 0 &&
+                   aero_aeolian_set_ramp_ms(&m, -1) < 0 &&
+                   aero_aeolian_set_sample_rate(&m, 0) < 0,
                "bad length, ear, gain, ramp, sample rate rejected");
 
     float in[256], l[256], r[256];
@@ -183,7 +184,7 @@ UNIT_TEST(bad_input)
     for (size_t k = 0; k < sizeof(speeds) / sizeof(speeds[0]); k++) {
         for (int i = 0; i < 256; i++)
             in[i] = speeds[k];
-        clamped |= aero_aeolian_model_process(&m, in, outs, 256);
+        clamped |= aero_aeolian_process(&m, in, outs, 256);
         for (int i = 0; i < 256; i++)
             bad += !isfinite(l[i]) || !isfinite(r[i]) || fabsf(l[i]) > 1e4f;
     }
@@ -194,23 +195,27 @@ UNIT_TEST(bad_input)
     for (int i = 0; i < 256; i++)
         in[i] = 10.0f;
     float *inplace[2] = {in, r};
-    aero_aeolian_model_process(&m, in, inplace, 256);
+    aero_aeolian_process(&m, in, inplace, 256);
     UNIT_CHECK(isfinite(in[255]), "in-place processing works");
 }
 
 /* --- two instances at once (tests/unit/multi_instance.h) --- */
 static void *mi_make(int variant)
 {
-    aero_aeolian_model *m = calloc(1, sizeof(*m));
-    aero_aeolian_model_init(m, 44100.0, 1, 11u + variant);
-    aero_aeolian_model_set_diameter(m, variant ? 0.004 : 0.01);
+    aero_aeolian *m = calloc(1, sizeof(*m));
+    aero_aeolian_init(m, 44100.0, 1, 11u + variant);
+    aero_aeolian_set_diameter(m, variant ? 0.004 : 0.01);
     return m;
 }
 static void mi_run(void *s, const float *speed, float *out, int n)
 {
-    aero_aeolian_model_process(s, speed, (float *[]){out}, n);
+    aero_aeolian_process(s, speed, (float *[]){out}, n);
 }
-static void mi_drop(void *s) { free(s); }
+static void mi_drop(void *s)
+{
+    aero_aeolian_free(s);
+    free(s);
+}
 
 UNIT_TEST(multi_instance)
 {

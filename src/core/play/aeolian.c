@@ -1,177 +1,236 @@
-/* aero: [aeolian~]'s engine, model or texture (see aeolian.h). */
-#include "aeolian.h"
+/* aero: [aeolian~]'s object: its settings, each validated and stored once,
+ * and the choice of mode (see aeolian.h). The modes render in
+ * aeolian_model.c and aeolian_texture.c. */
+#include "aeolian_internal.h"
 
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
+
+#include "aero_util.h"
+
+static const double default_ears[AERO_AEOLIAN_MAX_EARS][3] = {
+    {-0.1, 1.0, 0.0}, {0.1, 1.0, 0.0}};
 
 int aero_aeolian_init(aero_aeolian *a, double sample_rate, int n_ears,
                       uint32_t seed)
 {
-    a->stick = NULL;
-    a->n_ears = n_ears;
-    a->diameter_set = 0;
-    return aero_aeolian_model_init(&a->model, sample_rate, n_ears, seed);
+    static const double listener[3] = AERO_AEOLIAN_LISTENER_DEFAULT;
+    static const double wind[3] = AERO_AEOLIAN_WIND_DEFAULT;
+    memset(a, 0, sizeof(*a));
+    int sr_ok = sample_rate > 0 && aero_is_finite(sample_rate);
+    a->sample_rate = sr_ok ? sample_rate : 44100.0;
+    a->n_ears = n_ears == 2 ? 2 : 1;
+    a->seed = seed;
+    a->target[AERO_AEO_DIAMETER] = AERO_AEOLIAN_DIAMETER_DEFAULT;
+    a->target[AERO_AEO_LENGTH] = AERO_AEOLIAN_LENGTH_DEFAULT;
+    a->target[AERO_AEO_GAIN] = pow(10.0, AERO_GAIN_DB_DEFAULT / 20.0);
+    for (int e = 0; e < AERO_AEOLIAN_MAX_EARS; e++)
+        for (int k = 0; k < 3; k++)
+            a->target[AERO_AEO_EAR + 3 * e + k] =
+                a->n_ears == 1 ? listener[k] : default_ears[e][k];
+    a->ramp_ms = AERO_RAMP_MS_DEFAULT;
+    memcpy(a->wind, wind, sizeof(wind));
+    a->roll_deg = AERO_AEOLIAN_ROLL_DEFAULT;
+    a->sources = AERO_AEOLIAN_SOURCES_DEFAULT;
+    a->exponent = AERO_AEOLIAN_EXPONENT_DEFAULT;
+    a->phase_wander = AERO_AEOLIAN_PHASE_WANDER_DEFAULT;
+    memcpy(a->model.ctl, a->target, sizeof(a->model.ctl));
+    a->model.geometry_dirty = 1;
+    aero_aeolian_model_seed(a);
+    return sr_ok ? 0 : -1;
 }
 
 void aero_aeolian_free(aero_aeolian *a)
 {
-    if (a->stick) {
-        aero_stick_texture_free(a->stick);
-        free(a->stick);
-        a->stick = NULL;
-    }
+    aero_aeolian_texture_free(a);
 }
 
 int aero_aeolian_texture_mode(const aero_aeolian *a)
 {
-    return a->stick && a->stick->texture;
-}
-
-/* the texture engine, made from the model's settings the first time */
-static aero_stick_texture *stick(aero_aeolian *a)
-{
-    if (a->stick)
-        return a->stick;
-    const aero_aeolian_model *m = &a->model;
-    aero_stick_texture *st = calloc(1, sizeof(*st));
-    if (!st || aero_stick_texture_init(st, m->sample_rate, a->n_ears,
-                                       m->rng ^ 0x9e3779b9u)) {
-        if (st)
-            aero_stick_texture_free(st);
-        free(st);
-        return NULL;
-    }
-    if (a->diameter_set)
-        aero_stick_texture_set_diameter(st, m->ctl_target[AERO_CTL_DIAMETER]);
-    aero_stick_texture_set_length(st, m->ctl_target[AERO_CTL_LENGTH]);
-    aero_stick_texture_set_ramp_ms(st,
-                                   m->ramp_samples / m->sample_rate * 1000.0);
-    aero_stick_texture_set_gain_db(
-        st, fmax(-200.0, 20.0 * log10(m->ctl_target[AERO_CTL_GAIN] + 1e-10)));
-    aero_ears ears = {a->n_ears, {{0}}};
-    memcpy(ears.pos, m->ctl_target + AERO_CTL_EAR,
-           sizeof(double) * 3 * a->n_ears);
-    aero_stick_texture_set_ears(st, &ears);
-    a->stick = st;
-    return st;
+    return a->texture && a->texture->texture;
 }
 
 int aero_aeolian_set_texture(aero_aeolian *a, aero_texture *t, char *err,
                              size_t errlen)
 {
-    if (!t && !a->stick)
+    if (!t && !a->texture)
         return 0; /* the model already */
-    aero_stick_texture *st = stick(a);
-    if (!st) {
+    if (aero_aeolian_texture_make(a)) {
         if (err && errlen)
             snprintf(err, errlen, "out of memory for texture mode");
         return -1;
     }
-    return aero_stick_texture_set_texture(st, t, err, errlen);
+    return aero_aeolian_texture_set(a, t, err, errlen);
 }
+
+/* --- the settings both modes read ------------------------------------------- */
 
 int aero_aeolian_set_sample_rate(aero_aeolian *a, double sr)
 {
-    return aero_aeolian_model_set_sample_rate(&a->model, sr) ||
-                   (a->stick &&
-                    aero_stick_texture_set_sample_rate(a->stick, sr))
-               ? -1
-               : 0;
+    if (!aero_is_finite(sr) || sr < AERO_AEOLIAN_SR_MIN ||
+        sr > AERO_AEOLIAN_SR_MAX)
+        return -1;
+    if (a->texture && aero_aeolian_texture_sample_rate(a, sr))
+        return -1;
+    a->sample_rate = sr;
+    aero_aeolian_model_unprime(a);
+    return 0;
+}
+
+/* a gliding setting k takes v, given as `given` within lo..hi */
+static int set_target(aero_aeolian *a, int k, double v, double given,
+                      double lo, double hi)
+{
+    if (!aero_is_finite(given) || given < lo || given > hi)
+        return -1;
+    a->target[k] = v;
+    aero_aeolian_model_retarget(a);
+    return 0;
 }
 
 int aero_aeolian_set_diameter(aero_aeolian *a, double d)
 {
-    if (aero_aeolian_model_set_diameter(&a->model, d) ||
-        (a->stick && aero_stick_texture_set_diameter(a->stick, d)))
+    if (set_target(a, AERO_AEO_DIAMETER, d, d, AERO_AEOLIAN_D_MIN,
+                   AERO_AEOLIAN_D_MAX))
         return -1;
     a->diameter_set = 1;
+    if (a->texture)
+        aero_aeolian_texture_resize(a, AERO_AEO_DIAMETER);
     return 0;
 }
 
 int aero_aeolian_set_length(aero_aeolian *a, double l)
 {
-    return aero_aeolian_model_set_length(&a->model, l) ||
-                   (a->stick && aero_stick_texture_set_length(a->stick, l))
-               ? -1
-               : 0;
+    if (set_target(a, AERO_AEO_LENGTH, l, l, AERO_AEOLIAN_L_MIN,
+                   AERO_AEOLIAN_L_MAX))
+        return -1;
+    if (a->texture)
+        aero_aeolian_texture_resize(a, AERO_AEO_LENGTH);
+    return 0;
 }
 
 int aero_aeolian_set_gain_db(aero_aeolian *a, double db)
 {
-    return aero_aeolian_model_set_gain_db(&a->model, db) ||
-                   (a->stick && aero_stick_texture_set_gain_db(a->stick, db))
-               ? -1
-               : 0;
+    if (set_target(a, AERO_AEO_GAIN, pow(10.0, db / 20.0), db,
+                   AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX))
+        return -1;
+    if (a->texture)
+        aero_aeolian_texture_retarget(a, AERO_AEO_GAIN);
+    return 0;
 }
 
 int aero_aeolian_set_ramp_ms(aero_aeolian *a, double ms)
 {
-    return aero_aeolian_model_set_ramp_ms(&a->model, ms) ||
-                   (a->stick && aero_stick_texture_set_ramp_ms(a->stick, ms))
-               ? -1
-               : 0;
+    if (!aero_is_finite(ms) || ms < 0.0 || ms > AERO_RAMP_MS_MAX)
+        return -1;
+    a->ramp_ms = ms; /* for the glides that start from now on */
+    return 0;
 }
 
 void aero_aeolian_set_seed(aero_aeolian *a, uint32_t seed)
 {
-    aero_aeolian_model_set_seed(&a->model, seed);
-    if (a->stick)
-        aero_stick_texture_set_seed(a->stick, seed);
+    a->seed = seed;
+    aero_aeolian_model_seed(a);
+    if (a->texture)
+        aero_aeolian_texture_seed(a);
 }
 
 int aero_aeolian_set_ears(aero_aeolian *a, const aero_ears *e)
 {
-    return aero_aeolian_model_set_ears(&a->model, e) ||
-                   (a->stick && aero_stick_texture_set_ears(a->stick, e))
-               ? -1
-               : 0;
+    if (!aero_ears_ok(e, a->n_ears))
+        return -1;
+    memcpy(a->target + AERO_AEO_EAR, e->pos, sizeof(double) * 3 * e->n);
+    aero_aeolian_model_retarget(a);
+    for (int k = 0; a->texture && k < 3 * e->n; k++)
+        aero_aeolian_texture_retarget(a, AERO_AEO_EAR + k);
+    return 0;
 }
+
+/* --- texture mode's settings ------------------------------------------------
+ * Each makes the texture part (as a texture does), then validates. */
 
 int aero_aeolian_set_pose(aero_aeolian *a, const double end_a[3],
                           const double end_b[3], double interval_s)
 {
-    aero_stick_texture *st = stick(a);
-    return st ? aero_stick_texture_set_pose(st, end_a, end_b, interval_s) : -1;
+    return aero_aeolian_texture_make(a)
+               ? -1
+               : aero_aeolian_texture_pose(a, end_a, end_b, interval_s);
 }
 
 int aero_aeolian_set_reference(aero_aeolian *a, const double x[3])
 {
-    aero_stick_texture *st = stick(a);
-    return st ? aero_stick_texture_set_reference(st, x) : -1;
+    return aero_aeolian_texture_make(a)
+               ? -1
+               : aero_aeolian_texture_reference(a, x);
 }
 
 int aero_aeolian_set_wind(aero_aeolian *a, const double w[3])
 {
-    aero_stick_texture *st = stick(a);
-    return st ? aero_stick_texture_set_wind(st, w) : -1;
+    if (aero_aeolian_texture_make(a) ||
+        !aero_finite_within(w, 3, AERO_MOVING_WIND_MAX))
+        return -1;
+    for (int i = 0; i < 3; i++) {
+        a->wind[i] = w[i];
+        aero_aeolian_texture_retarget(a, AERO_AEO_WIND + i);
+    }
+    return 0;
 }
 
 int aero_aeolian_set_roll_deg(aero_aeolian *a, double deg)
 {
-    aero_stick_texture *st = stick(a);
-    return st ? aero_stick_texture_set_roll_deg(st, deg) : -1;
+    if (aero_aeolian_texture_make(a) || !aero_is_finite(deg) ||
+        fabs(deg) > AERO_AEOLIAN_ROLL_MAX)
+        return -1;
+    a->roll_deg = deg;
+    aero_aeolian_texture_retarget(a, AERO_AEO_ROLL);
+    return 0;
 }
 
 int aero_aeolian_set_sources(aero_aeolian *a, int n)
 {
-    aero_stick_texture *st = stick(a);
-    return st ? aero_stick_texture_set_sources(st, n) : -1;
+    if (aero_aeolian_texture_make(a) || n < 0 ||
+        n > AERO_AEOLIAN_SOURCES_MAX)
+        return -1;
+    a->sources = n;
+    aero_aeolian_texture_resize(a, AERO_AEO_SOURCES);
+    return 0;
 }
 
 int aero_aeolian_set_exponent(aero_aeolian *a, double e)
 {
-    aero_stick_texture *st = stick(a);
-    return st ? aero_stick_texture_set_exponent(st, e) : -1;
+    if (aero_aeolian_texture_make(a) || !(e >= AERO_MOVING_EXPONENT_MIN &&
+                                          e <= AERO_MOVING_EXPONENT_MAX))
+        return -1;
+    a->exponent = e;
+    return 0;
 }
+
+int aero_aeolian_set_phase_wander(aero_aeolian *a, double width)
+{
+    if (!(width >= 0.0 && width <= AERO_AEOLIAN_PHASE_WANDER_MAX))
+        return -1;
+    a->phase_wander = width;
+    return 0;
+}
+
+/* --- rendering ---------------------------------------------------------------- */
 
 int aero_aeolian_process(aero_aeolian *a, const float *speed,
                          float *const *out, int n)
 {
-    /* both engines read each chunk of speed before writing that chunk of
-     * the outputs: in and out may share a buffer */
     return aero_aeolian_texture_mode(a)
-               ? aero_stick_texture_process(a->stick, speed, out, n)
-               : aero_aeolian_model_process(&a->model, speed, out, n);
+               ? aero_aeolian_texture_process(a, speed, out, n)
+               : aero_aeolian_model_process(a, speed, out, n);
+}
+
+double aero_aeolian_tone_hz(const aero_aeolian *a, double v)
+{
+    return aero_aeolian_texture_mode(a) ? aero_aeolian_texture_tone_hz(a, v)
+                                        : aero_aeolian_model_tone_hz(a, v);
+}
+
+int aero_aeolian_source_count(const aero_aeolian *a)
+{
+    return a->texture ? a->texture->n_sources : 0;
 }

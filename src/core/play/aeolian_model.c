@@ -1,6 +1,7 @@
-/* aero: aeolian tone of a circular cylinder, Strouhal/Reynolds model mode
- * (see aeolian_model.h for the physics). */
-#include "aeolian_model.h"
+/* aero: [aeolian~]'s model mode, the Strouhal/Reynolds model of a
+ * circular cylinder (see aeolian.h for the physics). It reads the object's
+ * settings; its state is a->model. */
+#include "aeolian_internal.h"
 
 #include "aero_air.h"
 #include "aero_util.h"
@@ -18,35 +19,12 @@
 /* Variance of a uniform random number on [-1, 1). */
 #define UNIFORM_VARIANCE (1.0 / 3.0)
 
-static const double default_ears[AERO_AEOLIAN_MAX_EARS][3] = {
-    {-0.1, 1.0, 0.0}, {0.1, 1.0, 0.0}};
-
-int aero_aeolian_model_init(aero_aeolian_model *m, double sample_rate,
-                            int n_ears, uint32_t seed)
+void aero_aeolian_model_seed(aero_aeolian *a)
 {
-    memset(m, 0, sizeof(*m));
-    int sr_ok = sample_rate > 0 && aero_is_finite(sample_rate);
-    m->sample_rate = sr_ok ? sample_rate : 44100.0;
-    m->n_ears = n_ears == 2 ? 2 : 1;
-    m->ctl_target[AERO_CTL_DIAMETER] = 0.01;
-    m->ctl_target[AERO_CTL_LENGTH] = 0.5;
-    m->ctl_target[AERO_CTL_GAIN] = 1.0;
-    for (int e = 0; e < AERO_AEOLIAN_MAX_EARS; e++)
-        for (int k = 0; k < 3; k++)
-            m->ctl_target[AERO_CTL_EAR + 3 * e + k] =
-                m->n_ears == 1 ? (k == 1 ? 1.0 : 0.0) : default_ears[e][k];
-    memcpy(m->ctl, m->ctl_target, sizeof(m->ctl));
-    m->geometry_dirty = 1;
-    aero_aeolian_model_set_ramp_ms(m, 20.0);
-    aero_aeolian_model_set_seed(m, seed);
-    return sr_ok ? 0 : -1;
-}
-
-void aero_aeolian_model_set_seed(aero_aeolian_model *m, uint32_t seed)
-{
+    aero_aeolian_model *m = &a->model;
     /* scramble so that neighbouring seeds give unrelated streams; the state
      * of xorshift must never be 0 */
-    uint32_t s = seed * 2654435761u + 0x9e3779b9u;
+    uint32_t s = a->seed * 2654435761u + 0x9e3779b9u;
     s ^= s >> 16;
     m->rng = s ? s : 0x12345678u;
     double phase = (double)(aero_xorshift32(&m->rng) >> 8) / 16777216.0;
@@ -56,82 +34,32 @@ void aero_aeolian_model_set_seed(aero_aeolian_model *m, uint32_t seed)
     m->levels_dirty = 1; /* no laws cached yet */
 }
 
-/* Start ramping the controls to their (new) targets. Before the first
- * block, values are taken at once: creation arguments do not glide. */
-static void start_ramp(aero_aeolian_model *m)
+/* Start gliding to the (new) targets. Before the first block, values are
+ * taken at once: creation arguments do not glide. */
+void aero_aeolian_model_retarget(aero_aeolian *a)
 {
+    aero_aeolian_model *m = &a->model;
     if (!m->primed) {
-        memcpy(m->ctl, m->ctl_target, sizeof(m->ctl));
+        memcpy(m->ctl, a->target, sizeof(m->ctl));
         m->ramp_left = 0;
-    } else
-        m->ramp_left = m->ramp_samples;
+    } else {
+        /* at least over one block */
+        m->ramp_left = fmax(a->ramp_ms * 0.001 * a->sample_rate, 1.0);
+    }
     m->geometry_dirty = 1;
 }
 
-int aero_aeolian_model_set_sample_rate(aero_aeolian_model *m, double sr)
+void aero_aeolian_model_unprime(aero_aeolian *a)
 {
-    if (!aero_is_finite(sr) || sr < 1.0 || sr > 1e7)
-        return -1;
-    double ramp_ms = 1000.0 * m->ramp_samples / m->sample_rate;
-    m->sample_rate = sr;
-    m->primed = 0; /* coefficients depend on sr: take new ones at once */
-    return aero_aeolian_model_set_ramp_ms(m, ramp_ms);
+    a->model.primed = 0; /* coefficients depend on sr: take new ones at once */
 }
 
-/* control k ramps to v, given as `given` within lo..hi: 0, or -1 (the
-   old target stays) */
-static int set_ctl(aero_aeolian_model *m, int k, double v, double given,
-                   double lo, double hi)
+static void advance_ramps(aero_aeolian *a, int n)
 {
-    if (!aero_is_finite(given) || given < lo || given > hi)
-        return -1;
-    m->ctl_target[k] = v;
-    start_ramp(m);
-    return 0;
-}
-
-int aero_aeolian_model_set_diameter(aero_aeolian_model *m, double d)
-{
-    return set_ctl(m, AERO_CTL_DIAMETER, d, d, AERO_AEOLIAN_D_MIN,
-                   AERO_AEOLIAN_D_MAX);
-}
-
-int aero_aeolian_model_set_length(aero_aeolian_model *m, double l)
-{
-    return set_ctl(m, AERO_CTL_LENGTH, l, l, AERO_AEOLIAN_L_MIN,
-                   AERO_AEOLIAN_L_MAX);
-}
-
-int aero_aeolian_model_set_gain_db(aero_aeolian_model *m, double db)
-{
-    return set_ctl(m, AERO_CTL_GAIN, pow(10.0, db / 20.0), db,
-                   AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX);
-}
-
-int aero_aeolian_model_set_ramp_ms(aero_aeolian_model *m, double ms)
-{
-    if (!aero_is_finite(ms) || ms < 0.0 || ms > AERO_RAMP_MS_MAX)
-        return -1;
-    m->ramp_samples = ms * 0.001 * m->sample_rate;
-    if (m->ramp_samples < 1.0)
-        m->ramp_samples = 1.0; /* at least over one block */
-    return 0;
-}
-
-int aero_aeolian_model_set_ears(aero_aeolian_model *m, const aero_ears *e)
-{
-    if (!aero_ears_ok(e, m->n_ears))
-        return -1;
-    memcpy(m->ctl_target + AERO_CTL_EAR, e->pos, sizeof(double) * 3 * e->n);
-    start_ramp(m);
-    return 0;
-}
-
-static void advance_ramps(aero_aeolian_model *m, int n)
-{
+    aero_aeolian_model *m = &a->model;
     if (m->ramp_left <= 0)
         return;
-    aero_glide_values(m->ctl, m->ctl_target, AERO_CTL_COUNT,
+    aero_glide_values(m->ctl, a->target, AERO_AEO_COUNT,
                       aero_glide_fraction(&m->ramp_left, n));
     m->geometry_dirty = 1;
 }
@@ -139,9 +67,10 @@ static void advance_ramps(aero_aeolian_model *m, int n)
 /* Radiation of the incoherent span segments to each ear. A segment at z_j
  * radiates p ~ (x_i / r^2) dF_i/dt (Curle); the powers of ~l/(3d) segments
  * add, integrated over at most AERO_AEOLIAN_MAX_POINTS points. */
-static void update_geometry(aero_aeolian_model *m)
+static void update_geometry(aero_aeolian *a)
 {
-    double d = m->ctl[AERO_CTL_DIAMETER], l = m->ctl[AERO_CTL_LENGTH];
+    aero_aeolian_model *m = &a->model;
+    double d = m->ctl[AERO_AEO_DIAMETER], l = m->ctl[AERO_AEO_LENGTH];
     double segment = fmin(AERO_CORRELATION_DIAMETERS * d, l);
     double n_segments = l / segment;
     int points = (int)ceil(n_segments);
@@ -151,8 +80,8 @@ static void update_geometry(aero_aeolian_model *m)
         points = 1;
     double r_min = fmax(d, 0.01); /* the compact-source law fails closer */
     double distance_sum = 0;
-    for (int e = 0; e < m->n_ears; e++) {
-        const double *ear = m->ctl + AERO_CTL_EAR + 3 * e;
+    for (int e = 0; e < a->n_ears; e++) {
+        const double *ear = m->ctl + AERO_AEO_EAR + 3 * e;
         double lift = 0, drag = 0;
         for (int j = 0; j < points; j++) {
             double z = ((j + 0.5) / points - 0.5) * l;
@@ -168,7 +97,7 @@ static void update_geometry(aero_aeolian_model *m)
         distance_sum += sqrt(ear[0] * ear[0] + ear[1] * ear[1] +
                              ear[2] * ear[2]);
     }
-    m->centre_distance = distance_sum / m->n_ears;
+    m->centre_distance = distance_sum / a->n_ears;
     m->geometry_dirty = 0;
     m->levels_dirty = 1;
 }
@@ -177,9 +106,10 @@ static void update_geometry(aero_aeolian_model *m)
  * recomputed only when one of them moves (the speed by more than 0.1 %,
  * which shifts St by far less than that): the per-chunk cost stays a few
  * multiplications under a gusting wind. */
-static void update_chunk_laws(aero_aeolian_model *m, double speed, int n)
+static void update_chunk_laws(aero_aeolian *a, double speed, int n)
 {
-    double d = m->ctl[AERO_CTL_DIAMETER], l = m->ctl[AERO_CTL_LENGTH];
+    aero_aeolian_model *m = &a->model;
+    double d = m->ctl[AERO_AEO_DIAMETER], l = m->ctl[AERO_AEO_LENGTH];
     if (!m->levels_dirty && n == m->cached_n && d == m->cached_diameter &&
         fabs(speed - m->cached_speed) <= 1e-3 * m->cached_speed)
         return;
@@ -196,8 +126,8 @@ static void update_chunk_laws(aero_aeolian_model *m, double speed, int n)
      * out. */
     double segment = fmin(AERO_CORRELATION_DIAMETERS * d, l);
     double source = AERO_RHO * m->st * segment / (4.0 * AERO_C0) *
-                    sqrt(2.0) / sqrt(1.0 + depth * depth) * m->ctl[AERO_CTL_GAIN];
-    for (int e = 0; e < m->n_ears; e++) {
+                    sqrt(2.0) / sqrt(1.0 + depth * depth) * m->ctl[AERO_AEO_GAIN];
+    for (int e = 0; e < a->n_ears; e++) {
         m->lift_level[e] = source * lift_rms * m->lift_geometry[e];
         /* drag at 2f: twice the rate, C_D' = 0.1 C_L' */
         m->drag_level[e] = source * 2.0 * DRAG_TO_LIFT * lift_rms *
@@ -207,7 +137,7 @@ static void update_chunk_laws(aero_aeolian_model *m, double speed, int n)
     /* Phase diffusion D (rad^2/s) gives a Lorentzian line of full width
      * B = D / (2 pi) Hz: over n samples the phase wanders by a step of
      * variance B n / (2 pi sr) cycles^2 (uniform on [-1, 1) has var 1/3). */
-    double sr = m->sample_rate;
+    double sr = a->sample_rate;
     double width = aero_shedding_line_width(re) * m->st * speed / d;
     m->phase_jitter = sqrt(3.0 * width * n / (2.0 * AERO_PI * sr));
     /* envelope: noise through two one-pole low-passes (bandwidth ~ the
@@ -227,9 +157,9 @@ static void update_chunk_laws(aero_aeolian_model *m, double speed, int n)
     m->levels_dirty = 0;
 }
 
-double aero_aeolian_model_tone_hz(const aero_aeolian_model *m, double speed)
+double aero_aeolian_model_tone_hz(const aero_aeolian *a, double speed)
 {
-    double d = m->ctl_target[AERO_CTL_DIAMETER];
+    double d = a->target[AERO_AEO_DIAMETER];
     double re = aero_reynolds(speed, d);
     if (aero_shedding_strength(re) <= 0)
         return 0;
@@ -260,6 +190,33 @@ static cplx turn_small(double x)
         return turn(x);
     cplx c = {1.0 - t2 * (0.5 - t2 / 24.0), t * (1.0 - t2 * (1.0 / 6.0 - t2 / 120.0))};
     return c;
+}
+
+/* the state after a chunk of n samples: the phasor at sample n (lane 0's,
+ * or computed for a chunk that ends inside a lane step, its last samples
+ * written from the lanes' values zr, zi), renormalised against drift, and
+ * the increment's turn moved on to w1 */
+static void phasor_next(aero_aeolian_model *m, int i, int n, const float *zr,
+                        const float *zi, double a, double b, double w0,
+                        double w1)
+{
+    cplx z;
+    if (i == n) {
+        /* lane 0 now stands at sample n: the next chunk's start */
+        z.re = zr[0], z.im = zi[0];
+    } else {
+        for (int j = 0; i < n; i++, j++) {
+            m->scratch_sin[i] = zi[j];
+            m->scratch_cos[i] = zr[j];
+        }
+        z = cmul(m->phasor, turn(a * n + b * (double)n * n));
+    }
+    double norm = 1.0 / sqrt(z.re * z.re + z.im * z.im); /* no drift */
+    m->phasor.re = z.re * norm, m->phasor.im = z.im * norm;
+    cplx next = cmul(m->increment_turn, turn_small(w1 - w0));
+    norm = 1.0 / sqrt(next.re * next.re + next.im * next.im);
+    m->increment_turn.re = next.re * norm, m->increment_turn.im = next.im * norm;
+    m->increment = w1;
 }
 
 /* The oscillator for one chunk: sin and cos of the shedding phase into
@@ -337,46 +294,17 @@ static void render_phasors(aero_aeolian_model *m, double w1, int n)
         }
     }
 #endif
-    if (i == n) {
-        /* lane 0 now stands at sample n: the next chunk's start */
-        z.re = zr[0], z.im = zi[0];
-    } else {
-        for (int j = 0; i < n; i++, j++) {
-            m->scratch_sin[i] = zi[j];
-            m->scratch_cos[i] = zr[j];
-        }
-        z = cmul(m->phasor, turn(a * n + b * (double)n * n));
-    }
-    double norm = 1.0 / sqrt(z.re * z.re + z.im * z.im); /* no drift */
-    m->phasor.re = z.re * norm, m->phasor.im = z.im * norm;
-    cplx next = cmul(m->increment_turn, turn_small(w1 - w0));
-    norm = 1.0 / sqrt(next.re * next.re + next.im * next.im);
-    m->increment_turn.re = next.re * norm, m->increment_turn.im = next.im * norm;
-    m->increment = w1;
+    phasor_next(m, i, n, zr, zi, a, b, w0, w1);
 }
 
-/* One chunk of at most AERO_AEOLIAN_CHUNK samples. */
-static int process_chunk(aero_aeolian_model *m, const float *speed,
-                         float *const *out, int n)
+/* The chunk's speeds: sanitised |U| (NaN -> 0, clamped at Mach 0.3) into
+ * scratch_amp as U^3, the level law; returns the mean |U|. Branch-free and
+ * summed in lanes so that it vectorises; *clamped is set when a speed
+ * reached the limit. */
+static double speed_law(aero_aeolian_model *m, const float *speed, int n,
+                        int *clamped)
 {
     const float speed_limit = (float)(AERO_MACH_LIMIT * AERO_C0);
-    const double sr = m->sample_rate;
-    int clamped = 0;
-
-    advance_ramps(m, n);
-    if (m->geometry_dirty)
-        update_geometry(m);
-
-    /* Doppler of a moving listener: f' = f (1 - (dr/dt) / c0) */
-    double doppler = 1.0;
-    if (m->primed) {
-        double dr_dt = (m->centre_distance - m->prev_distance) * sr / n;
-        doppler = fmin(fmax(1.0 - dr_dt / AERO_C0, 0.5), 1.5);
-    }
-    m->prev_distance = m->centre_distance;
-
-    /* speeds: sanitised |U| (NaN -> 0, clamped at Mach 0.3) and U^3, the
-     * level law; branch-free and summed in lanes so that it vectorises */
     float *restrict amp = m->scratch_amp;
     for (int i = 0; i < n; i++) {
         float x = speed[i];
@@ -395,10 +323,59 @@ static int process_chunk(aero_aeolian_model *m, const float *speed,
     for (k = 0; k < n; k++)
         amp[k] = amp[k] * amp[k] * amp[k];
     for (k = 0; k < n; k++)
-        clamped |= fabsf(speed[k]) >= speed_limit;
-    double mean_speed = sum / n;
-    update_chunk_laws(m, mean_speed, n);
-    double f = m->st * mean_speed / m->ctl[AERO_CTL_DIAMETER] * doppler;
+        *clamped |= fabsf(speed[k]) >= speed_limit;
+    return sum / n;
+}
+
+/* lift at f, drag at 2f (sin 2x = 2 sin x cos x), per ear: the level in
+ * scratch_amp times the phasors, each ear's coefficients gliding to
+ * lift_end and drag_end over the chunk */
+static void write_ears(aero_aeolian *a, const double *lift_end,
+                       const double *drag_end, float *const *out, int n)
+{
+    aero_aeolian_model *m = &a->model;
+    const float inv_n = 1.0f / n;
+    const float *restrict amp = m->scratch_amp;
+    const float *restrict sines = m->scratch_sin, *restrict cosines = m->scratch_cos;
+    for (int e = 0; e < a->n_ears; e++) {
+        const float l0 = (float)m->lift_coef[e];
+        const float dl = (float)(lift_end[e] - m->lift_coef[e]) * inv_n;
+        const float k0 = 2.0f * (float)m->drag_coef[e];
+        const float dk = 2.0f * (float)(drag_end[e] - m->drag_coef[e]) * inv_n;
+        float *restrict o = out[e];
+        for (int i = 0; i < n; i++) {
+            float t = (float)(i + 1);
+            o[i] = amp[i] * sines[i] * ((l0 + dl * t) + (k0 + dk * t) * cosines[i]);
+        }
+        m->lift_coef[e] = lift_end[e];
+        m->drag_coef[e] = drag_end[e];
+    }
+}
+
+/* One chunk of at most AERO_AEOLIAN_CHUNK samples. */
+static int process_chunk(aero_aeolian *a, const float *speed,
+                         float *const *out, int n)
+{
+    aero_aeolian_model *m = &a->model;
+    const double sr = a->sample_rate;
+    int clamped = 0;
+
+    advance_ramps(a, n);
+    if (m->geometry_dirty)
+        update_geometry(a);
+
+    /* Doppler of a moving listener: f' = f (1 - (dr/dt) / c0) */
+    double doppler = 1.0;
+    if (m->primed) {
+        double dr_dt = (m->centre_distance - m->prev_distance) * sr / n;
+        doppler = fmin(fmax(1.0 - dr_dt / AERO_C0, 0.5), 1.5);
+    }
+    m->prev_distance = m->centre_distance;
+
+    float *restrict amp = m->scratch_amp;
+    double mean_speed = speed_law(m, speed, n, &clamped);
+    update_chunk_laws(a, mean_speed, n);
+    double f = m->st * mean_speed / m->ctl[AERO_AEO_DIAMETER] * doppler;
     double step = f * n / sr + m->phase_jitter * aero_uniform(&m->rng);
     m->envelope_lp += m->envelope_alpha * (aero_uniform(&m->rng) - m->envelope_lp);
     m->envelope += m->envelope_alpha * (m->envelope_lp - m->envelope);
@@ -408,7 +385,7 @@ static int process_chunk(aero_aeolian_model *m, const float *speed,
 
     const double *lift_end = m->lift_level, *drag_end = m->drag_level;
     if (!m->primed) {
-        for (int e = 0; e < m->n_ears; e++) {
+        for (int e = 0; e < a->n_ears; e++) {
             m->lift_coef[e] = lift_end[e];
             m->drag_coef[e] = drag_end[e];
         }
@@ -424,35 +401,21 @@ static int process_chunk(aero_aeolian_model *m, const float *speed,
         amp[i] *= g0 + dg * (float)(i + 1);
 
     render_phasors(m, step / n, n);
-    /* lift at f, drag at 2f (sin 2x = 2 sin x cos x), per ear */
-    const float *restrict sines = m->scratch_sin, *restrict cosines = m->scratch_cos;
-    for (int e = 0; e < m->n_ears; e++) {
-        const float l0 = (float)m->lift_coef[e];
-        const float dl = (float)(lift_end[e] - m->lift_coef[e]) * inv_n;
-        const float k0 = 2.0f * (float)m->drag_coef[e];
-        const float dk = 2.0f * (float)(drag_end[e] - m->drag_coef[e]) * inv_n;
-        float *restrict o = out[e];
-        for (int i = 0; i < n; i++) {
-            float t = (float)(i + 1);
-            o[i] = amp[i] * sines[i] * ((l0 + dl * t) + (k0 + dk * t) * cosines[i]);
-        }
-        m->lift_coef[e] = lift_end[e];
-        m->drag_coef[e] = drag_end[e];
-    }
+    write_ears(a, lift_end, drag_end, out, n);
     m->envelope_gain = gain_end;
     return clamped;
 }
 
-int aero_aeolian_model_process(aero_aeolian_model *m, const float *speed,
+int aero_aeolian_model_process(aero_aeolian *a, const float *speed,
                                float *const *out, int n)
 {
     int clamped = 0;
     for (int start = 0; start < n; start += AERO_AEOLIAN_CHUNK) {
         int len = n - start < AERO_AEOLIAN_CHUNK ? n - start : AERO_AEOLIAN_CHUNK;
         float *chunk_out[AERO_AEOLIAN_MAX_EARS];
-        for (int e = 0; e < m->n_ears; e++)
+        for (int e = 0; e < a->n_ears; e++)
             chunk_out[e] = out[e] + start;
-        clamped |= process_chunk(m, speed + start, chunk_out, len);
+        clamped |= process_chunk(a, speed + start, chunk_out, len);
     }
     return clamped;
 }

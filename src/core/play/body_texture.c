@@ -52,7 +52,7 @@ int aero_body_init(aero_body *s, double sample_rate,
 {
     static const double unturned[7] = {0, 0, 0, 1, 0, 0, 0};
     memset(s, 0, sizeof(*s));
-    s->scale = 1.0;
+    s->scale = AERO_BODY_SCALE_DEFAULT;
     memcpy(s->pose, unturned, sizeof(unturned));
     memcpy(s->pose_from, unturned, sizeof(unturned));
     memcpy(s->pose_to, unturned, sizeof(unturned));
@@ -345,72 +345,61 @@ static void normal_part(const aero_body *s, const double *v,
         body_x_axis(s, out);
 }
 
-/* geometry of region l at the chunk's end; returns 1 if clamped */
-static int geometry(aero_body *s, int l, const double *wind,
-                    const double (*ears)[3], double gain,
-                    aero_body_geometry *g)
+/* the sample frame (e1, e2, e3) of the flow rel on the body's axis, the
+   angle between them (theta) and whether a mirror-symmetric body reads
+   it mirrored (flip): a sphere's frame follows the flow (e1 along it),
+   any other body's its axis (e3) */
+static void sample_frame(const aero_body *s, const double *rel,
+                         const double *axis, double *e1, double *e2,
+                         double *e3, aero_body_geometry *g)
 {
-    aero_body_source *src = &s->src[l];
-    double rel[3], axis[3], e1[3], e2[3], e3[3], pos[3], v, cth;
-    const double z[3] = {0.0, 0.0, 1.0};
-    int clamped = 0;
-    for (int i = 0; i < 3; i++)
-        rel[i] = wind[i] - src->velocity[i];
-    v = aero_normalise3(rel);
-    if (v > AERO_MACH_LIMIT * AERO_C0) {
-        v = AERO_MACH_LIMIT * AERO_C0;
-        clamped = 1;
-    }
-    rotate(s->pose + 3, z, axis);
-    if (v <= MIN_SPEED) /* still air: silent, any frame */
-        body_x_axis(s, rel);
-    cth = aero_dot3(rel, axis);
+    const double cth = aero_dot3(rel, axis);
     g->flip = 0;
     if (s->sphere) {
-        memcpy(e1, rel, sizeof(e1));
+        memcpy(e1, rel, 3 * sizeof(double));
         normal_part(s, axis, rel, cth, e3);
         aero_cross3(e3, e1, e2);
         g->theta = 90.0;
-    } else {
-        memcpy(e3, axis, sizeof(e3));
-        normal_part(s, rel, axis, cth, e1);
-        aero_cross3(e3, e1, e2);
-        g->theta = acos(cth < -1.0 ? -1.0 : cth > 1.0 ? 1.0 : cth) * 180.0 /
-                   AERO_PI;
-        if (s->mirror && g->theta > 90.0) {
-            g->theta = 180.0 - g->theta;
-            g->flip = 1;
-            for (int i = 0; i < 3; i++) {
-                e2[i] = -e2[i];
-                e3[i] = -e3[i];
-            }
+        return;
+    }
+    memcpy(e3, axis, 3 * sizeof(double));
+    normal_part(s, rel, axis, cth, e1);
+    aero_cross3(e3, e1, e2);
+    g->theta = acos(cth < -1.0 ? -1.0 : cth > 1.0 ? 1.0 : cth) * 180.0 /
+               AERO_PI;
+    if (s->mirror && g->theta > 90.0) {
+        g->theta = 180.0 - g->theta;
+        g->flip = 1;
+        for (int i = 0; i < 3; i++) {
+            e2[i] = -e2[i];
+            e3[i] = -e3[i];
         }
     }
-    /* where it radiates from: a sphere's sectors turn with the flow */
-    if (s->sphere) {
-        const double *c = s->centre + 3 * l;
-        for (int i = 0; i < 3; i++)
-            pos[i] = s->pose[i] + s->scale * (c[0] * e1[i] + c[1] * e2[i] +
-                                              c[2] * e3[i]);
-    } else {
-        region_point(s, s->pose, l, pos); /* the region itself; a flipped
-                                             read takes its mirror image's
-                                             channel (render) */
+}
+
+/* pitch and level at speed v off the texture's Reynolds number: Re on
+   the cross-flow speed, at play and as the texture holds it (Roshko
+   1954's St, Norberg 2003's C_L') */
+static void follow_reynolds(const aero_body *s, int l, double v,
+                            aero_body_geometry *g)
+{
+    double across = sin(g->theta * AERO_PI / 180.0) / s->tex_nu;
+    double re0 = s->v0 * s->region_d[l] * across,
+           re = v * s->scale * s->region_d[l] * across;
+    if (re0 > AERO_RE_ONSET) {
+        double pitch = aero_strouhal(re) / aero_strouhal(re0);
+        g->inc *= pitch;
+        g->amp *= pitch * aero_lift_rms(re) / aero_lift_rms(re0);
     }
-    g->inc = v / s->v0 / s->scale * s->tex_rate / s->base.sample_rate;
-    g->amp = v > MIN_SPEED ? pow(v / s->v0, s->base.exponent) * s->scale * gain
-                           : 0.0;
-    if (s->re_law && v > MIN_SPEED) {
-        /* Re on the cross-flow speed, at play and as the texture holds it */
-        double across = sin(g->theta * AERO_PI / 180.0) / s->tex_nu;
-        double re0 = s->v0 * s->region_d[l] * across,
-               re = v * s->scale * s->region_d[l] * across;
-        if (re0 > AERO_RE_ONSET) {
-            double pitch = aero_strouhal(re) / aero_strouhal(re0);
-            g->inc *= pitch;
-            g->amp *= pitch * aero_lift_rms(re) / aero_lift_rms(re0);
-        }
-    }
+}
+
+/* per ear: the dipole's projection r . e_i / (4 pi c0 r^2) (Curle 1955)
+   and the delay r / c0, from the source at pos */
+static void project_on_ears(const aero_body *s, const double (*ears)[3],
+                            const double *pos, const double *e1,
+                            const double *e2, const double *e3,
+                            aero_body_geometry *g)
+{
     for (int e = 0; e < s->base.n_ears; e++) {
         double r[3] = {ears[e][0] - pos[0], ears[e][1] - pos[1],
                        ears[e][2] - pos[2]};
@@ -427,7 +416,123 @@ static int geometry(aero_body *s, int l, const double *wind,
         if (g->delay[e] > dmax)
             g->delay[e] = dmax;
     }
+}
+
+/* geometry of region l at the chunk's end; returns 1 if clamped */
+static int geometry(aero_body *s, int l, const double *wind,
+                    const double (*ears)[3], double gain,
+                    aero_body_geometry *g)
+{
+    aero_body_source *src = &s->src[l];
+    double rel[3], axis[3], e1[3], e2[3], e3[3], pos[3], v;
+    const double z[3] = {0.0, 0.0, 1.0};
+    int clamped = 0;
+    for (int i = 0; i < 3; i++)
+        rel[i] = wind[i] - src->velocity[i];
+    v = aero_normalise3(rel);
+    if (v > AERO_MACH_LIMIT * AERO_C0) {
+        v = AERO_MACH_LIMIT * AERO_C0;
+        clamped = 1;
+    }
+    rotate(s->pose + 3, z, axis);
+    if (v <= MIN_SPEED) /* still air: silent, any frame */
+        body_x_axis(s, rel);
+    sample_frame(s, rel, axis, e1, e2, e3, g);
+    /* where it radiates from: a sphere's sectors turn with the flow */
+    if (s->sphere) {
+        const double *c = s->centre + 3 * l;
+        for (int i = 0; i < 3; i++)
+            pos[i] = s->pose[i] + s->scale * (c[0] * e1[i] + c[1] * e2[i] +
+                                              c[2] * e3[i]);
+    } else {
+        region_point(s, s->pose, l, pos); /* the region itself; a flipped
+                                             read takes its mirror image's
+                                             channel (render) */
+    }
+    g->inc = v / s->v0 / s->scale * s->tex_rate / s->base.sample_rate;
+    g->amp = v > MIN_SPEED ? pow(v / s->v0, s->base.exponent) * s->scale * gain
+                           : 0.0;
+    if (s->re_law && v > MIN_SPEED)
+        follow_reynolds(s, l, v, g);
+    project_on_ears(s, ears, pos, e1, e2, e3, g);
     return clamped;
+}
+
+/* the texture's two direction channels c0 and c1 (3 components each)
+   of a source read over m samples into tex, the read position gliding
+   from then's increment to g's; Catmull-Rom between frames, around the
+   seamless loop */
+static void read_texture(aero_body *s, aero_body_source *src,
+                         const aero_body_geometry *then,
+                         const aero_body_geometry *g, int c0, int c1,
+                         float (*tex)[AERO_BODY_CHUNK], int m)
+{
+    const aero_texture *t = s->texture;
+    const int ch = t->channels;
+    const long frames = t->frames;
+    double pos = src->pos, inc = then->inc;
+    const double dinc = (g->inc - then->inc) * (1.0 / m);
+    for (int j = 0; j < m; j++) {
+        long i1 = (long)pos;
+        float fr = (float)(pos - (double)i1);
+        /* the loop's neighbours of frame i1 (it wraps seamlessly) */
+        long i0 = i1 == 0 ? frames - 1 : i1 - 1;
+        long i2 = i1 + 1 >= frames ? i1 + 1 - frames : i1 + 1;
+        long i3 = i2 + 1 >= frames ? i2 + 1 - frames : i2 + 1;
+        const float *r0 = t->data + i0 * ch, *r1 = t->data + i1 * ch,
+                    *r2 = t->data + i2 * ch, *r3 = t->data + i3 * ch;
+        for (int c = 0; c < 3; c++) {
+            tex[c][j] = aero_catmull_rom(r0[c0 + c], r1[c0 + c],
+                                         r2[c0 + c], r3[c0 + c], fr);
+            tex[3 + c][j] = aero_catmull_rom(r0[c1 + c], r1[c1 + c],
+                                             r2[c1 + c], r3[c1 + c], fr);
+        }
+        inc += dinc;
+        pos += inc;
+        if (pos >= frames) {
+            pos -= frames * floor(pos / frames);
+            if (!(pos >= 0.0 && pos < frames))
+                pos = 0.0;
+        }
+    }
+    if (!(pos >= 0.0 && pos < frames))
+        pos = 0.0;
+    src->pos = pos;
+}
+
+/* the source's dipole as ear e hears it: the two channels' forces
+   projected on the ear (Curle 1955), weighted between the pair's
+   directions, gliding from then to g, into the ear's arrivals at the
+   gliding delay */
+static void radiate(aero_body *s, const aero_body_geometry *then,
+                    const aero_body_geometry *g, double w_then,
+                    double w_now, float (*tex)[AERO_BODY_CHUNK], int e,
+                    int m)
+{
+    const double inv_m = 1.0 / m;
+    float cf[6], dcf[6];
+    float *ring = s->base.arrivals.ring[e];
+    const long mask = s->base.arrivals.mask;
+    const double ddelay = (g->delay[e] - then->delay[e]) * inv_m;
+    double at = (double)s->base.arrivals.head + then->delay[e];
+    for (int c = 0; c < 3; c++) {
+        double a0 = then->amp * then->proj[e][c], a1 = g->amp * g->proj[e][c];
+        double s0 = (1.0 - w_then) * a0, s1 = (1.0 - w_now) * a1;
+        double t0 = w_then * a0, t1 = w_now * a1;
+        cf[c] = (float)s0;
+        dcf[c] = (float)((s1 - s0) * inv_m);
+        cf[3 + c] = (float)t0;
+        dcf[3 + c] = (float)((t1 - t0) * inv_m);
+    }
+    for (int j = 0; j < m; j++) {
+        float v = 0.0f;
+        for (int q = 0; q < 6; q++) {
+            v += cf[q] * tex[q][j];
+            cf[q] += dcf[q];
+        }
+        aero_arrivals_add_span(ring, mask, at, 1.0 + ddelay, v);
+        at += 1.0 + ddelay;
+    }
 }
 
 /* one source over a chunk of m samples */
@@ -436,12 +541,10 @@ static void render(aero_body *s, int l, const aero_body_geometry *g,
 {
     aero_body_source *src = &s->src[l];
     const aero_texture *t = s->texture;
-    const int ch = t->channels, R = s->regions;
-    const long frames = t->frames;
-    const double inv_m = 1.0 / m;
+    const int R = s->regions;
     aero_body_geometry then = src->primed ? src->then : *g;
     float tex[6][AERO_BODY_CHUNK];
-    int k0, k1, c0, c1, region;
+    int k0, k1, region;
     double w_then, w_now;
     if (!src->primed) { /* first chunk: amplitude from 0 */
         then.amp = 0.0;
@@ -459,63 +562,10 @@ static void render(aero_body *s, int l, const aero_body_geometry *g,
     if (then.flip != g->flip) /* turned through 90 deg: start from 0 */
         then.amp = 0.0;
     region = g->flip ? R - 1 - l : l;
-    c0 = 3 * (k0 * R + region);
-    c1 = 3 * (k1 * R + region);
-    {
-        double pos = src->pos, inc = then.inc;
-        const double dinc = (g->inc - then.inc) * inv_m;
-        for (int j = 0; j < m; j++) {
-            long i1 = (long)pos;
-            float fr = (float)(pos - (double)i1);
-            /* the loop's neighbours of frame i1 (it wraps seamlessly) */
-            long i0 = i1 == 0 ? frames - 1 : i1 - 1;
-            long i2 = i1 + 1 >= frames ? i1 + 1 - frames : i1 + 1;
-            long i3 = i2 + 1 >= frames ? i2 + 1 - frames : i2 + 1;
-            const float *r0 = t->data + i0 * ch, *r1 = t->data + i1 * ch,
-                        *r2 = t->data + i2 * ch, *r3 = t->data + i3 * ch;
-            for (int c = 0; c < 3; c++) {
-                tex[c][j] = aero_catmull_rom(r0[c0 + c], r1[c0 + c],
-                                             r2[c0 + c], r3[c0 + c], fr);
-                tex[3 + c][j] = aero_catmull_rom(r0[c1 + c], r1[c1 + c],
-                                                 r2[c1 + c], r3[c1 + c], fr);
-            }
-            inc += dinc;
-            pos += inc;
-            if (pos >= frames) {
-                pos -= frames * floor(pos / frames);
-                if (!(pos >= 0.0 && pos < frames))
-                    pos = 0.0;
-            }
-        }
-        if (!(pos >= 0.0 && pos < frames))
-            pos = 0.0;
-        src->pos = pos;
-    }
-    for (int e = 0; e < s->base.n_ears; e++) {
-        float cf[6], dcf[6];
-        float *ring = s->base.arrivals.ring[e];
-        const long mask = s->base.arrivals.mask;
-        const double ddelay = (g->delay[e] - then.delay[e]) * inv_m;
-        double at = (double)s->base.arrivals.head + then.delay[e];
-        for (int c = 0; c < 3; c++) {
-            double a0 = then.amp * then.proj[e][c], a1 = g->amp * g->proj[e][c];
-            double s0 = (1.0 - w_then) * a0, s1 = (1.0 - w_now) * a1;
-            double t0 = w_then * a0, t1 = w_now * a1;
-            cf[c] = (float)s0;
-            dcf[c] = (float)((s1 - s0) * inv_m);
-            cf[3 + c] = (float)t0;
-            dcf[3 + c] = (float)((t1 - t0) * inv_m);
-        }
-        for (int j = 0; j < m; j++) {
-            float v = 0.0f;
-            for (int q = 0; q < 6; q++) {
-                v += cf[q] * tex[q][j];
-                cf[q] += dcf[q];
-            }
-            aero_arrivals_add_span(ring, mask, at, 1.0 + ddelay, v);
-            at += 1.0 + ddelay;
-        }
-    }
+    read_texture(s, src, &then, g, 3 * (k0 * R + region),
+                 3 * (k1 * R + region), tex, m);
+    for (int e = 0; e < s->base.n_ears; e++)
+        radiate(s, &then, g, w_then, w_now, tex, e, m);
     src->then = *g;
 }
 

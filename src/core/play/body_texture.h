@@ -52,6 +52,7 @@
 #define AERO_BODY_MAX_DELAY_S 1.0
 #define AERO_BODY_SCALE_MIN 1e-3 /* of the texture's body */
 #define AERO_BODY_SCALE_MAX 1e3
+#define AERO_BODY_SCALE_DEFAULT 1.0
 
 /* one source's geometry at a chunk's end */
 typedef struct {
@@ -96,7 +97,8 @@ typedef struct aero_body {
 
 /* 0, or -1 when out of memory. Defaults: no texture (silent), the body at
  * the origin unturned, still air, one listener 1 m away along +y (stereo:
- * ears at x = -+0.1), exponent 3, scale 1, gain 0 dB, ramp 20 ms. */
+ * ears at x = -+0.1), scale AERO_BODY_SCALE_DEFAULT, exponent, gain and
+ * ramp as moving_player.h's. */
 int aero_body_init(aero_body *s, double sample_rate,
                            int n_ears, uint32_t seed);
 void aero_body_free(aero_body *s);

@@ -44,6 +44,11 @@
 #define AERO_CAVITY_SIZE_MIN 1e-4
 #define AERO_CAVITY_SIZE_MAX 100.0
 #define AERO_CAVITY_EXPONENT_MAX 8.0
+/* defaults (gain and ramp: aero_ranges.h) */
+#define AERO_CAVITY_LENGTH_DEFAULT 0.02 /* m */
+#define AERO_CAVITY_DEPTH_DEFAULT 0.01  /* m */
+#define AERO_CAVITY_WIDTH_DEFAULT 0.05  /* m */
+#define AERO_CAVITY_EXPONENT_DEFAULT 2.0
 
 enum {
     AERO_CAV_LENGTH,
@@ -87,8 +92,9 @@ typedef struct aero_cavity {
     double texture_pos;      /* frames */
 } aero_cavity;
 
-/* Defaults: L 2 cm, D 1 cm, W 5 cm, listener 1 m above the opening (+y),
- * gain 0 dB, ramp 20 ms, exponent 2. 0, or -1 when the sample rate is not
+/* Defaults: the AERO_CAVITY_*_DEFAULT above (L 2 cm, D 1 cm, W 5 cm,
+ * exponent 2), gain and ramp from aero_ranges.h, listener 1 m above the
+ * opening (+y). 0, or -1 when the sample rate is not
  * usable (44.1 kHz is taken). */
 int aero_cavity_init(aero_cavity *m, double sample_rate,
                            uint32_t seed);

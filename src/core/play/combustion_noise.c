@@ -90,10 +90,10 @@ int aero_combustion_init(aero_combustion *m, double sample_rate,
     memset(m, 0, sizeof *m);
     m->sample_rate = sample_rate >= 1000.0 && sample_rate <= 1e6 ? sample_rate
                                                                   : 44100.0;
-    m->power = 0.0;
-    m->length = 0.02;
-    m->strouhal = 1.0;
-    m->fluctuation = 0.03;
+    m->power = AERO_COMBUSTION_POWER_KW_DEFAULT;
+    m->length = AERO_COMBUSTION_LENGTH_DEFAULT;
+    m->strouhal = AERO_COMBUSTION_ST_DEFAULT;
+    m->fluctuation = AERO_COMBUSTION_FLUCTUATION_DEFAULT;
     m->rng = seed ? seed : 1;
     m->dist[0] = m->dist[1] = -1.0;
     m->shape_i0 = prototype_moment(0);
@@ -202,40 +202,25 @@ static double distance(const double *a, const double *b)
     return sqrt(dx * dx + dy * dy + dz * dz);
 }
 
-void aero_combustion_process(aero_combustion *m, double u, const double src[3],
-                             const double *ears, int nears,
-                             float *const *out, int n)
+/* the filter for this block's peak: the flame's time scale glides (3 %
+   per 64 samples, an e-fold in ~50 ms at 44.1 kHz): a filter re-made far
+   from its state rings, and dQ/dt turns the ring into a click */
+static void glide_peak(aero_combustion *m, double u, int n)
 {
-    const double sr = m->sample_rate;
-    int start = m->line_pos;
-    if (n <= 0 || !m->line || n > m->line_len / 2)
-        return;
-    if (nears > 2) nears = 2;
-    {
-        double fp = aero_combustion_peak_hz(m, u);
-        if (m->peak > 0.0) {
-            /* the flame's time scale glides (3 % per 64 samples, an
-               e-fold in ~50 ms at 44.1 kHz): a filter re-made far from
-               its state rings, and dQ/dt turns the ring into a click */
-            double most = pow(1.03, n / 64.0);
-            if (fp > m->peak * most) fp = m->peak * most;
-            if (fp < m->peak / most) fp = m->peak / most;
-        }
-        if (m->peak <= 0.0 || fabs(fp - m->peak) > 0.005 * m->peak)
-            make_filter(m, fp);
+    double fp = aero_combustion_peak_hz(m, u);
+    if (m->peak > 0.0) {
+        double most = pow(1.03, n / 64.0);
+        if (fp > m->peak * most) fp = m->peak * most;
+        if (fp < m->peak / most) fp = m->peak / most;
     }
-    if (m->power <= 0.0 || m->fluctuation <= 0.0) {
-        /* silent: the line holds zeros (the filter rests) */
-        for (int k = 0; k < n; k++) {
-            m->line[m->line_pos] = 0.0f;
-            if (++m->line_pos == m->line_len)
-                m->line_pos = 0;
-        }
-        m->dist[0] = m->dist[1] = -1.0;
-        return;
-    }
-    /* dQ/dt = eps P dxi/dt at the flame, into the line */
-    {
+    if (m->peak <= 0.0 || fabs(fp - m->peak) > 0.005 * m->peak)
+        make_filter(m, fp);
+}
+
+/* n samples of dQ/dt = eps P dxi/dt at the flame into the line: near-
+   Gaussian white noise (three uniforms) through the filter's sections */
+static void write_source(aero_combustion *m, int n)
+{
     const double dq_scale = m->fluctuation * m->power * 2.0 * AERO_PI * m->peak;
     for (int k = 0; k < n; k++) {
         double x = (aero_uniform(&m->rng) + aero_uniform(&m->rng) +
@@ -255,38 +240,60 @@ void aero_combustion_process(aero_combustion *m, double u, const double src[3],
         if (++m->line_pos == m->line_len)
             m->line_pos = 0;
     }
+}
+
+/* the line as ear e hears it, at t - r/c0 and 1/r, the delay and gain
+   gliding over the block from the last block's distance; added to o */
+static void hear(aero_combustion *m, const double src[3], const double *ear,
+                 int e, int start, float *o, int n)
+{
+    const double sr = m->sample_rate;
+    double r1 = distance(src, ear), r0 = m->dist[e];
+    double maxd = m->line_len - n - 4.0;
+    if (!(r1 >= 0.05)) r1 = 0.05; /* also NaN */
+    if (r0 < 0.0) r0 = r1;
+    m->dist[e] = r1;
+    double d0 = r0 / AERO_C0 * sr, d1 = r1 / AERO_C0 * sr;
+    double g0 = aero_combustion_monopole(1.0, r0),
+           g1 = aero_combustion_monopole(1.0, r1);
+    if (d0 > maxd) d0 = maxd;
+    if (d1 > maxd) d1 = maxd;
+    for (int k = 0; k < n; k++) {
+        double f = (k + 1.0) / n;
+        double d = d0 + (d1 - d0) * f, g = g0 + (g1 - g0) * f;
+        double pos = start + k - d;
+        int i0, i1;
+        double fr, v;
+        while (pos < 0.0) pos += m->line_len;
+        i0 = (int)pos;
+        fr = pos - i0;
+        if (i0 >= m->line_len) i0 -= m->line_len;
+        i1 = i0 + 1 == m->line_len ? 0 : i0 + 1;
+        v = m->line[i0] + fr * (m->line[i1] - m->line[i0]);
+        o[k] += (float)(g * v);
     }
-    /* heard at t - r/c0 by each ear, 1/r */
-    for (int e = 0; e < nears; e++) {
-        const double *ear = ears + 3 * e;
-        double r1 = distance(src, ear), r0 = m->dist[e];
-        double maxd = m->line_len - n - 4.0;
-        if (!(r1 >= 0.05)) r1 = 0.05; /* also NaN */
-        if (r0 < 0.0) r0 = r1;
-        m->dist[e] = r1;
-        {
-            double d0 = r0 / AERO_C0 * sr, d1 = r1 / AERO_C0 * sr;
-            double g0 = aero_combustion_monopole(1.0, r0),
-                   g1 = aero_combustion_monopole(1.0, r1);
-            float *o = out[e];
-            if (d0 > maxd) d0 = maxd;
-            if (d1 > maxd) d1 = maxd;
-            for (int k = 0; k < n; k++) {
-                double f = (k + 1.0) / n;
-                double d = d0 + (d1 - d0) * f, g = g0 + (g1 - g0) * f;
-                double pos = start + k - d;
-                int i0;
-                double fr;
-                while (pos < 0.0) pos += m->line_len;
-                i0 = (int)pos;
-                fr = pos - i0;
-                if (i0 >= m->line_len) i0 -= m->line_len;
-                {
-                    int i1 = i0 + 1 == m->line_len ? 0 : i0 + 1;
-                    double v = m->line[i0] + fr * (m->line[i1] - m->line[i0]);
-                    o[k] += (float)(g * v);
-                }
-            }
+}
+
+void aero_combustion_process(aero_combustion *m, double u, const double src[3],
+                             const double *ears, int nears,
+                             float *const *out, int n)
+{
+    int start = m->line_pos;
+    if (n <= 0 || !m->line || n > m->line_len / 2)
+        return;
+    if (nears > 2) nears = 2;
+    glide_peak(m, u, n);
+    if (m->power <= 0.0 || m->fluctuation <= 0.0) {
+        /* silent: the line holds zeros (the filter rests) */
+        for (int k = 0; k < n; k++) {
+            m->line[m->line_pos] = 0.0f;
+            if (++m->line_pos == m->line_len)
+                m->line_pos = 0;
         }
+        m->dist[0] = m->dist[1] = -1.0;
+        return;
     }
+    write_source(m, n);
+    for (int e = 0; e < nears; e++)
+        hear(m, src, ears + 3 * e, e, start, out[e], n);
 }

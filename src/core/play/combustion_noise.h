@@ -44,6 +44,11 @@
 #define AERO_COMBUSTION_LENGTH_MAX 100.0
 #define AERO_COMBUSTION_ST_MIN 0.01
 #define AERO_COMBUSTION_ST_MAX 100.0
+/* defaults: no combustion noise until a power is set */
+#define AERO_COMBUSTION_POWER_KW_DEFAULT 0.0
+#define AERO_COMBUSTION_LENGTH_DEFAULT 0.02 /* m */
+#define AERO_COMBUSTION_ST_DEFAULT 1.0
+#define AERO_COMBUSTION_FLUCTUATION_DEFAULT 0.03 /* rms over the mean */
 
 typedef struct aero_combustion {
     double sample_rate;
@@ -66,7 +71,7 @@ typedef struct aero_combustion {
                             (< 0: not yet known) */
 } aero_combustion;
 
-/* Defaults: power 0 (silent), length 0.02 m, St 1, fluctuation 0.03.
+/* Defaults: the AERO_COMBUSTION_*_DEFAULT above (power 0: silent).
    0, or -1 when out of memory. */
 int aero_combustion_init(aero_combustion *m, double sample_rate,
                          uint32_t seed);

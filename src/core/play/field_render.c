@@ -21,8 +21,8 @@ int aero_fieldsound_init(aero_fieldsound *r, double sample_rate)
     int sr_ok = sample_rate > 0 && sample_rate < 1e7;
     r->sample_rate = sr_ok ? sample_rate : 44100;
     r->speed = r->speed_target = 0;
-    r->ramp_ms = 20;
-    r->gain = 1;
+    r->ramp_ms = AERO_RAMP_MS_DEFAULT;
+    r->gain = pow(10.0, AERO_GAIN_DB_DEFAULT / 20.0);
     r->phase = -2;
     return sr_ok ? 0 : -1;
 }

@@ -30,7 +30,7 @@ typedef struct aero_fieldsound {
 } aero_fieldsound;
 
 /* Defaults: listener at (0, 0, 0) ... set it; speed = the data's rate
- * once sources are set; ramp 20 ms; gain 0 dB; stopped. */
+ * once sources are set; ramp and gain from aero_ranges.h; stopped. */
 /* 0, or -1 when the sample rate is not usable (44.1 kHz is taken) */
 int aero_fieldsound_init(aero_fieldsound *r, double sample_rate);
 void aero_fieldsound_free(aero_fieldsound *r);

@@ -51,20 +51,20 @@ int aero_leafwave_init(aero_leafwave *lw, double sample_rate, int n_ears,
     lw->n_ears = n_ears == 2 ? 2 : 1;
     lw->seed = seed;
     lw->rng = seed ? seed : 1;
-    lw->stiffness = 1.0;
-    lw->beta = 5.0 / 3.0;
-    lw->sway = 0.6;
-    lw->coupling = 0.5;
-    lw->flutter_hz = 2.0;
-    lw->reach = 1.5;
-    lw->hit_pa = 0.01;
-    lw->rub_pa = 0.003;
-    lw->gain = 1.0;
-    lw->mic_k = 1.0;
-    lw->fm = 200.0;
-    lw->tables_per_octave = 12;
-    lw->octaves = 4;
-    lw->nvoices = 256;
+    lw->stiffness = AERO_TREE_STIFFNESS_DEFAULT;
+    lw->beta = AERO_TREE_BETA_DEFAULT;
+    lw->sway = AERO_LEAFWAVE_SWAY_DEFAULT;
+    lw->coupling = AERO_LEAFWAVE_COUPLING_DEFAULT;
+    lw->flutter_hz = AERO_LEAFWAVE_FLUTTER_DEFAULT;
+    lw->reach = AERO_LEAFWAVE_REACH_DEFAULT;
+    lw->hit_pa = AERO_LEAFWAVE_HIT_DEFAULT;
+    lw->rub_pa = AERO_LEAFWAVE_RUB_DEFAULT;
+    lw->gain = pow(10.0, AERO_GAIN_DB_DEFAULT / 20.0);
+    lw->mic_k = AERO_LEAFWAVE_MIC_K_DEFAULT;
+    lw->fm = AERO_LEAFWAVE_FM_DEFAULT;
+    lw->tables_per_octave = AERO_LEAFWAVE_PER_OCTAVE_DEFAULT;
+    lw->octaves = AERO_LEAFWAVE_OCTAVES_DEFAULT;
+    lw->nvoices = AERO_LEAFWAVE_VOICES_DEFAULT;
     lw->frame_samples = floor(sample_rate / AERO_LEAF_FRAME_RATE + 0.5);
     lw->to_next_frame = lw->frame_samples;
     for (int e = 0; e < lw->n_ears; e++) {
@@ -73,7 +73,7 @@ int aero_leafwave_init(aero_leafwave *lw, double sample_rate, int n_ears,
         lw->ear[e][1] = lw->ear_target[e][1] = -10.0;
         lw->ear[e][2] = lw->ear_target[e][2] = 1.7;
     }
-    lw->ramp_samples = 0.02 * sample_rate;
+    lw->ramp_samples = AERO_RAMP_MS_DEFAULT / 1000.0 * sample_rate;
     lw->voices = malloc(sizeof(aero_leaf_voice) * lw->nvoices);
     lw->free_voices = malloc(sizeof(int) * lw->nvoices);
     if (!lw->voices || !lw->free_voices ||

@@ -75,6 +75,19 @@
 #define AERO_LEAFWAVE_PER_OCTAVE_MAX 128   /* tables per octave */
 #define AERO_LEAFWAVE_OCTAVES_MAX 8
 #define AERO_LEAFWAVE_TABLES_MAX 512       /* per octave x octaves */
+/* defaults (stiffness and beta: tree_motion.h; gain and ramp:
+   aero_ranges.h) */
+#define AERO_LEAFWAVE_MIC_K_DEFAULT 1.0     /* a cardioid */
+#define AERO_LEAFWAVE_SWAY_DEFAULT 0.6      /* rad */
+#define AERO_LEAFWAVE_COUPLING_DEFAULT 0.5
+#define AERO_LEAFWAVE_FLUTTER_DEFAULT 2.0   /* Hz */
+#define AERO_LEAFWAVE_HIT_DEFAULT 0.01      /* Pa */
+#define AERO_LEAFWAVE_RUB_DEFAULT 0.003     /* Pa */
+#define AERO_LEAFWAVE_REACH_DEFAULT 1.5
+#define AERO_LEAFWAVE_VOICES_DEFAULT 256
+#define AERO_LEAFWAVE_FM_DEFAULT 200.0      /* Hz */
+#define AERO_LEAFWAVE_PER_OCTAVE_DEFAULT 12
+#define AERO_LEAFWAVE_OCTAVES_DEFAULT 4
 
 #include <stddef.h>
 #include <stdint.h>
@@ -196,10 +209,11 @@ typedef struct aero_leafwave {
 } aero_leafwave;
 
 /* Defaults: no tree (silent), listener at (0, -10, 1.7) (ears at x = -0.1
- * and 0.1 with two), wind 0, stiffness 1, beta 5/3,
- * sway 0.6 rad, coupling 0.5, flutter 2 Hz, reach 1.5, fm 200 Hz, 12
- * tables per octave over 4 octaves, 256 voices, hit 0.01 Pa, rub 0.003
- * Pa, gain 0 dB, microphone facing the trunk, k 1, ramp 20 ms.
+ * and 0.1 with two), wind 0, microphone facing the trunk, the constants
+ * above (sway 0.6 rad, coupling 0.5, flutter 2 Hz, reach 1.5, fm 200 Hz,
+ * 12 tables per octave over 4 octaves, 256 voices, hit 0.01 Pa, rub 0.003
+ * Pa, k 1), stiffness and beta from tree_motion.h, gain and ramp from
+ * aero_ranges.h.
  * 0, or -1 when out of memory. */
 int aero_leafwave_init(aero_leafwave *lw, double sample_rate, int n_ears,
                        uint32_t seed);

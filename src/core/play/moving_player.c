@@ -21,9 +21,9 @@ int aero_moving_player_init(aero_moving_player *p, double sample_rate,
     p->chunk = chunk;
     p->max_delay_s = max_delay_s;
     p->rng = seed ? seed : 1;
-    p->exponent = 3.0;
-    p->ramp_samples = 0.020 * sample_rate;
-    aero_ramp_jump(&p->gain, 1.0);
+    p->exponent = AERO_MOVING_EXPONENT_DEFAULT;
+    p->ramp_samples = AERO_RAMP_MS_DEFAULT / 1000.0 * sample_rate;
+    aero_ramp_jump(&p->gain, pow(10.0, AERO_GAIN_DB_DEFAULT / 20.0));
     for (int e = 0; e < AERO_EARS_MAX; e++) {
         aero_ramp_jump(&p->ear[3 * e + 0],
                        p->n_ears == 2 ? (e ? 0.1 : -0.1) : 0.0);

@@ -1,8 +1,8 @@
-/* aero: what the players of moving bodies (stick_texture, body_texture)
- * share: sample rate and arrival rings, ears, wind, gain, ramp time,
- * amplitude exponent, and the setters that validate them. Each player
- * embeds one (`base`) and keeps its own pose, texture and sources.
- * No globals. */
+/* aero: what the players of moving bodies share: sample rate and arrival
+ * rings, ears, wind, gain, ramp time, amplitude exponent, and the setters
+ * that validate them. body_texture embeds one (`base`) and keeps its own
+ * pose, texture and sources; [aeolian~]'s object holds these settings
+ * itself and takes the ranges. No globals. */
 #ifndef AERO_MOVING_PLAYER_H
 #define AERO_MOVING_PLAYER_H
 
@@ -20,6 +20,7 @@
 #define AERO_MOVING_SR_MAX 1536000.0
 #define AERO_MOVING_EXPONENT_MIN 0.0
 #define AERO_MOVING_EXPONENT_MAX 12.0
+#define AERO_MOVING_EXPONENT_DEFAULT 3.0 /* pressure ~ U^3 */
 /* the fastest wind accepted: ten times the Mach 0.3 clamp, m/s */
 #define AERO_MOVING_WIND_MAX (AERO_MACH_LIMIT * AERO_C0 * 10.0)
 
@@ -39,7 +40,8 @@ typedef struct {
 } aero_moving_player;
 
 /* Defaults: still air, one listener 1 m away along +y (stereo: ears at
- * x = -+0.1), exponent 3, gain 0 dB, ramp 20 ms; n_ears is kept within
+ * x = -+0.1), exponent AERO_MOVING_EXPONENT_DEFAULT, gain and ramp from
+ * aero_ranges.h; n_ears is kept within
  * 1..2. sample_rate is taken as given (the player checks it). 0, or -1
  * when the rings cannot be allocated. */
 int aero_moving_player_init(aero_moving_player *p, double sample_rate,

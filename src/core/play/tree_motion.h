@@ -18,6 +18,10 @@
 #define AERO_TREE_STIFFNESS_MAX 1e3
 /* the tree motion's exponent beta (Matsuyama et al. 2005) */
 #define AERO_TREE_BETA_MAX 2.0
+/* their defaults: every spring as the tree file states it, Kolmogorov's
+   5/3 */
+#define AERO_TREE_STIFFNESS_DEFAULT 1.0
+#define AERO_TREE_BETA_DEFAULT (5.0 / 3.0)
 
 #define AERO_TREE_MOTION_RATE 200.0 /* steps per second */
 

@@ -123,10 +123,10 @@ int aero_treebranch_init(aero_treebranch *tb, double sample_rate,
     tb->seed = seed;
     tb->rng = seed ? seed : 0x2545f491u;
     tb->speed_dir[0] = 1.0;
-    tb->alpha = 2.0;
-    tb->mic_k = 1.0;
-    tb->gain = 1.0;
-    tb->ramp_samples = 0.02 * tb->sample_rate;
+    tb->alpha = AERO_TREEBRANCH_ALPHA_DEFAULT;
+    tb->mic_k = AERO_TREEBRANCH_MIC_K_DEFAULT;
+    tb->gain = pow(10.0, AERO_GAIN_DB_DEFAULT / 20.0);
+    tb->ramp_samples = AERO_RAMP_MS_DEFAULT / 1000.0 * tb->sample_rate;
     tb->ear_target[0][0] = 0.0;
     tb->ear_target[0][1] = -10.0;
     tb->ear_target[0][2] = 1.7;
@@ -134,8 +134,8 @@ int aero_treebranch_init(aero_treebranch *tb, double sample_rate,
     tb->ear_target[0][0] -= 0.09;
     tb->ear_target[1][0] += 0.09;
     memcpy(tb->ear, tb->ear_target, sizeof tb->ear);
-    tb->motion.stiffness = 1.0;
-    tb->motion.beta = 5.0 / 3.0;
+    tb->motion.stiffness = AERO_TREE_STIFFNESS_DEFAULT;
+    tb->motion.beta = AERO_TREE_BETA_DEFAULT;
     return make_buffers(tb);
 }
 

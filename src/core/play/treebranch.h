@@ -46,6 +46,10 @@
 #define AERO_TREEBRANCH_ALPHA_MIN 0.5
 #define AERO_TREEBRANCH_ALPHA_MAX 8.0
 #define AERO_TREEBRANCH_MIC_K_MAX 20.0
+/* defaults (stiffness and beta: tree_motion.h; gain and ramp:
+   aero_ranges.h) */
+#define AERO_TREEBRANCH_ALPHA_DEFAULT 2.0
+#define AERO_TREEBRANCH_MIC_K_DEFAULT 1.0 /* a cardioid */
 
 #include <stdint.h>
 
@@ -90,8 +94,8 @@ typedef struct aero_treebranch {
     double delay[2], level[2]; /* current, per ear: samples and factor */
 } aero_treebranch;
 
-/* Defaults: no tree (silent), wind 0, alpha 2, k 1 with the mic aimed at
- * the tree, gain 0 dB, ramp 20 ms, listener at (0, -10, 1.7), mono.
+/* Defaults: no tree (silent), wind 0, the constants above with the mic
+ * aimed at the tree, listener at (0, -10, 1.7), mono.
  * 0, or -1 when out of memory (then silent). */
 int aero_treebranch_init(aero_treebranch *tb, double sample_rate,
                          uint32_t seed);

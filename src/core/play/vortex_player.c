@@ -31,19 +31,19 @@ int aero_vortex_init(aero_vortex *m, double sample_rate,
     m->sample_rate = sample_rate > 0.0 ? sample_rate : 44100.0;
     m->stereo = stereo ? 1 : 0;
     m->rng = seed ? seed : 1;
-    m->gain = m->gain_target = 1.0;
-    m->clip = 0.0;
+    m->gain = m->gain_target = pow(10.0, AERO_GAIN_DB_DEFAULT / 20.0);
+    m->clip = AERO_VORTEX_CLIP_DEFAULT;
     m->r_min = 0.05;
-    m->falloff = 1;
+    m->falloff = AERO_VORTEX_FALLOFF_DEFAULT;
     if (aero_combustion_init(&m->combustion, m->sample_rate,
                              m->rng ^ 0x9e3779b9u))
         return -1;
-    aero_vortex_set_ramp_ms(m, 20.0);
+    aero_vortex_set_ramp_ms(m, AERO_RAMP_MS_DEFAULT);
     m->ear[0] = m->ear_target[0] = stereo ? -0.1 : 0.0;
     m->ear[1] = m->ear_target[1] = 1.0;
     m->ear[3] = m->ear_target[3] = 0.1;
     m->ear[4] = m->ear_target[4] = 1.0;
-    return aero_vortex_set_count(m, 1);
+    return aero_vortex_set_count(m, AERO_VORTEX_SOURCES_DEFAULT);
 }
 
 void aero_vortex_free(aero_vortex *m)

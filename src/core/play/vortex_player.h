@@ -48,6 +48,11 @@
    the microphone limit, Pa */
 #define AERO_VORTEX_GAIN_DB_MAX 200.0
 #define AERO_VORTEX_CLIP_MAX 1e6
+/* defaults (gain and ramp: aero_ranges.h; combustion noise:
+   combustion_noise.h) */
+#define AERO_VORTEX_SOURCES_DEFAULT 1
+#define AERO_VORTEX_CLIP_DEFAULT 0.0 /* off */
+#define AERO_VORTEX_FALLOFF_DEFAULT 1 /* p ~ 1/r */
 
 typedef struct aero_vortex {
     double sample_rate;
@@ -79,9 +84,9 @@ typedef struct aero_vortex {
     double ear[6], ear_target[6]; /* mono uses ear 0 */
 } aero_vortex;
 
-/* Defaults: 1 source at the origin, listener at (0, 1, 0), ears at
-   (-0.1, 1, 0) and (0.1, 1, 0), gain 1, no clip, ramp 20 ms, no texture
-   (silence). 0, or -1 when out of memory. */
+/* Defaults: the AERO_VORTEX_*_DEFAULT above (1 source, at the origin, no
+   clip, 1/r), gain and ramp from aero_ranges.h, listener at (0, 1, 0),
+   ears at (-0.1, 1, 0) and (0.1, 1, 0), no texture (silence). 0, or -1 when out of memory. */
 int aero_vortex_init(aero_vortex *m, double sample_rate,
                             int stereo, uint32_t seed);
 void aero_vortex_free(aero_vortex *m);

@@ -215,12 +215,49 @@ static int correction(const aero_aeolian_flow_params *p,
     return 0;
 }
 
+/* the run's callbacks, passed through to run() */
+typedef struct {
+    aero_aeolian_flow_hook hook;
+    long every;
+    void *ctx;
+} progress;
+
+/* the force recorded past the body in s: settled and recorded, its
+   statistics and the 2D-to-3D correction, then g resampled into out (if
+   not NULL): 0 or -1 */
+static int record_and_resample(const aero_aeolian_flow_params *p,
+                               aero_flow2d *s, history *h, double rate,
+                               float *out, int stride, int nout,
+                               aero_aeolian_flow_stats *st,
+                               const progress *pr, char *err, size_t errlen)
+{
+    const double t_record = record_time(p, rate);
+    st->dt = s->dt;
+    if (run(p, s, p->settle + t_record, h, pr->hook, pr->every, pr->ctx,
+            err, errlen))
+        return -1;
+    statistics(h, &st->flow, &st->st_peak);
+    if (correction(p, st, err, errlen))
+        return -1;
+    if (!out)
+        return 0;
+    /* a 2D flow that sheds slower than the real body (frequency scale >
+       1, e.g. the circle on a fine grid) is squeezed in time: record on
+       until it fills the texture */
+    if (st->span3d.frequency_scale > 1.0 &&
+        run(p, s, p->settle + t_record * st->span3d.frequency_scale, h,
+            pr->hook, pr->every, pr->ctx, err, errlen))
+        return -1;
+    return resample(p, h, &st->span3d, rate, out, stride, nout, err, errlen);
+}
+
 int aero_aeolian_flow_simulate(const aero_aeolian_flow_params *p,
                                double rate, float *out, int stride, int nout,
                                aero_aeolian_flow_stats *st,
                                aero_aeolian_flow_hook hook, long every,
                                void *ctx, char *err, size_t errlen)
 {
+    const progress pr = {hook, every, ctx};
     aero_flow2d_params fp;
     aero_flow2d s;
     history h = {NULL, NULL, NULL, 0, 0};
@@ -230,24 +267,9 @@ int aero_aeolian_flow_simulate(const aero_aeolian_flow_params *p,
         aero_flow2d_init(&s, &fp, err, errlen))
         return -1;
     if (aero_flow2d_set_body(&s, p->shape, p->angle * AERO_PI / 180.0, err,
-                             errlen) == 0) {
-        st->dt = s.dt;
-        if (run(p, &s, p->settle + record_time(p, rate), &h, hook, every, ctx,
-                err, errlen) == 0) {
-            statistics(&h, &st->flow, &st->st_peak);
-            status = correction(p, st, err, errlen);
-            /* a 2D flow that sheds slower than the real body (frequency
-               scale > 1, e.g. the circle on a fine grid) is squeezed in
-               time: record on until it fills the texture */
-            if (status == 0 && out && st->span3d.frequency_scale > 1.0)
-                status = run(p, &s, p->settle + record_time(p, rate) *
-                                 st->span3d.frequency_scale,
-                             &h, hook, every, ctx, err, errlen);
-            if (status == 0 && out)
-                status = resample(p, &h, &st->span3d, rate, out, stride, nout,
-                                  err, errlen);
-        }
-    }
+                             errlen) == 0)
+        status = record_and_resample(p, &s, &h, rate, out, stride, nout, st,
+                                     &pr, err, errlen);
     free(h.t);
     free(h.fx);
     free(h.fy);

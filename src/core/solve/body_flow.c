@@ -114,7 +114,78 @@ static int make_layout(const aero_body_flow_params *p, const turn *r,
     return 0;
 }
 
-/* solid fraction and region of every cell, region centroids and volume */
+/* the cells that may meet the body: within its reach (half its box's
+   diagonal and two cells) of its box centre, on the grid; lo inclusive,
+   hi exclusive */
+typedef struct {
+    int lo[3], hi[3];
+} cell_range;
+
+static cell_range cells_near_body(const aero_body_flow_params *p,
+                                  const layout *L)
+{
+    const aero_body_shape *b = p->body;
+    const double h = p->cell;
+    const int n[3] = {L->nx, L->ny, L->nz};
+    double reach = 0.0;
+    cell_range c;
+    for (int k = 0; k < 3; k++)
+        reach += 0.25 * (b->hi[k] - b->lo[k]) * (b->hi[k] - b->lo[k]);
+    reach = sqrt(reach) + 2.0 * h;
+    for (int k = 0; k < 3; k++) {
+        c.lo[k] = (int)floor((L->centre_grid[k] - reach) / h);
+        c.hi[k] = (int)ceil((L->centre_grid[k] + reach) / h);
+        if (c.lo[k] < 0) c.lo[k] = 0;
+        if (c.hi[k] > n[k]) c.hi[k] = n[k];
+    }
+    return c;
+}
+
+/* SUB^3 samples of cell (i, j, k): how many fall inside the body, and
+   the sum of their positions in body coordinates (acc) */
+static int sample_cell(const aero_body_flow_params *p, const turn *r,
+                       const layout *L, int i, int j, int k, double *acc)
+{
+    const double h = p->cell;
+    int inside = 0;
+    for (int q = 0; q < SUB * SUB * SUB; q++) {
+        double g[3], s[3];
+        g[0] = (i + (q % SUB + 0.5) / SUB) * h - L->centre_grid[0];
+        g[1] = (j + (q / SUB % SUB + 0.5) / SUB) * h - L->centre_grid[1];
+        g[2] = (k + (q / (SUB * SUB) + 0.5) / SUB) * h - L->centre_grid[2];
+        to_sample(r, g, s);
+        for (int a = 0; a < 3; a++)
+            s[a] += L->centre_body[a];
+        if (aero_body_inside(p->body, s)) {
+            inside++;
+            for (int a = 0; a < 3; a++)
+                acc[a] += s[a];
+        }
+    }
+    return inside;
+}
+
+/* frontal area: the columns along the flow that meet the body, each by
+   its most solid cell */
+static double frontal_area(const aero_body_flow_params *p, const layout *L,
+                           const cell_range *c, const float *chi)
+{
+    const double h = p->cell;
+    double area = 0.0;
+    for (int j = 0; j < L->ny; j++)
+        for (int i = 0; i < L->nx; i++) {
+            float m = 0.0f;
+            for (int k = c->lo[2]; k < c->hi[2]; k++) {
+                float v = chi[((size_t)k * L->ny + j) * L->nx + i];
+                if (v > m) m = v;
+            }
+            area += m * h * h;
+        }
+    return area;
+}
+
+/* solid fraction and region of every cell (by its solid samples'
+   centroid), region centroids and volume, frontal area */
 static void voxelise(const aero_body_flow_params *p, const turn *r,
                      const layout *L, float *chi, int *region,
                      aero_body_flow_stats *st)
@@ -123,59 +194,25 @@ static void voxelise(const aero_body_flow_params *p, const turn *r,
     const int nr = p->regions;
     double wsum[AERO_BODY_MAX_REGIONS] = {0};
     double csum[3 * AERO_BODY_MAX_REGIONS] = {0};
-    const aero_body_shape *b = p->body;
-    /* the body's reach from its box centre bounds the cells to test */
-    double reach = 0.0;
-    int i0, i1, j0, j1, k0, k1;
-    for (int k = 0; k < 3; k++)
-        reach += 0.25 * (b->hi[k] - b->lo[k]) * (b->hi[k] - b->lo[k]);
-    reach = sqrt(reach) + 2.0 * h;
-    i0 = (int)floor((L->centre_grid[0] - reach) / h);
-    i1 = (int)ceil((L->centre_grid[0] + reach) / h);
-    j0 = (int)floor((L->centre_grid[1] - reach) / h);
-    j1 = (int)ceil((L->centre_grid[1] + reach) / h);
-    k0 = (int)floor((L->centre_grid[2] - reach) / h);
-    k1 = (int)ceil((L->centre_grid[2] + reach) / h);
-    if (i0 < 0) i0 = 0;
-    if (j0 < 0) j0 = 0;
-    if (k0 < 0) k0 = 0;
-    if (i1 > L->nx) i1 = L->nx;
-    if (j1 > L->ny) j1 = L->ny;
-    if (k1 > L->nz) k1 = L->nz;
-    for (long c = 0; c < (long)L->nx * L->ny * L->nz; c++) {
-        chi[c] = 0.0f;
-        region[c] = -1;
+    const cell_range c = cells_near_body(p, L);
+    for (long q = 0; q < (long)L->nx * L->ny * L->nz; q++) {
+        chi[q] = 0.0f;
+        region[q] = -1;
     }
     st->solid_volume = 0.0;
-    for (int k = k0; k < k1; k++)
-        for (int j = j0; j < j1; j++)
-            for (int i = i0; i < i1; i++) {
-                int inside = 0;
+    for (int k = c.lo[2]; k < c.hi[2]; k++)
+        for (int j = c.lo[1]; j < c.hi[1]; j++)
+            for (int i = c.lo[0]; i < c.hi[0]; i++) {
                 double acc[3] = {0, 0, 0};
-                for (int q = 0; q < SUB * SUB * SUB; q++) {
-                    double g[3], s[3];
-                    g[0] = (i + (q % SUB + 0.5) / SUB) * h - L->centre_grid[0];
-                    g[1] = (j + (q / SUB % SUB + 0.5) / SUB) * h -
-                           L->centre_grid[1];
-                    g[2] = (k + (q / (SUB * SUB) + 0.5) / SUB) * h -
-                           L->centre_grid[2];
-                    to_sample(r, g, s);
-                    for (int a = 0; a < 3; a++)
-                        s[a] += L->centre_body[a];
-                    if (aero_body_inside(b, s)) {
-                        inside++;
-                        for (int a = 0; a < 3; a++)
-                            acc[a] += s[a];
-                    }
-                }
+                const int inside = sample_cell(p, r, L, i, j, k, acc);
                 if (inside) {
-                    size_t c = ((size_t)k * L->ny + j) * L->nx + i;
+                    size_t at = ((size_t)k * L->ny + j) * L->nx + i;
                     double f = (double)inside / (SUB * SUB * SUB);
                     double m[3] = {acc[0] / inside, acc[1] / inside,
                                    acc[2] / inside};
-                    int rg = aero_body_region(b, m, nr);
-                    chi[c] = (float)f;
-                    region[c] = rg;
+                    int rg = aero_body_region(p->body, m, nr);
+                    chi[at] = (float)f;
+                    region[at] = rg;
                     wsum[rg] += f;
                     for (int a = 0; a < 3; a++)
                         csum[3 * rg + a] += f * m[a];
@@ -186,17 +223,7 @@ static void voxelise(const aero_body_flow_params *p, const turn *r,
         for (int a = 0; a < 3; a++)
             st->centre[3 * l + a] = wsum[l] > 0.0 ? csum[3 * l + a] / wsum[l]
                                                   : L->centre_body[a];
-    /* frontal area: the columns along the flow that meet the body */
-    st->frontal_area = 0.0;
-    for (int j = 0; j < L->ny; j++)
-        for (int i = 0; i < L->nx; i++) {
-            float m = 0.0f;
-            for (int k = k0; k < k1; k++) {
-                float v = chi[((size_t)k * L->ny + j) * L->nx + i];
-                if (v > m) m = v;
-            }
-            st->frontal_area += m * h * h;
-        }
+    st->frontal_area = frontal_area(p, L, &c, chi);
 }
 
 static double step_of(const aero_body_flow_params *p)
@@ -322,13 +349,74 @@ typedef struct {
     uint32_t rng;
 } body_run;
 
+/* the cells' and the recording's arrays: 0 or -1 */
+static int alloc_run(body_run *b, char *err, size_t errlen)
+{
+    const size_t cells = (size_t)b->L.nx * b->L.ny * b->L.nz;
+    b->chi = malloc(sizeof(float) * cells);
+    b->region = malloc(sizeof(int) * cells);
+    b->times = malloc(sizeof(double) * (size_t)b->steps);
+    b->forces = malloc(sizeof(double) * (size_t)b->steps * 3 * b->nr);
+    b->series = malloc(sizeof(double) * (size_t)b->steps);
+    if (!b->chi || !b->region || !b->times || !b->forces || !b->series) {
+        snprintf(err, errlen, "out of memory for a %d x %d x %d grid",
+                 b->L.nx, b->L.ny, b->L.nz);
+        return -1;
+    }
+    return 0;
+}
+
+/* the 3D solver's parameters for this body and box */
+static void solver_params(const body_run *b, aero_flow3d_params *fp)
+{
+    const aero_body_flow_params *p = b->p;
+    memset(fp, 0, sizeof *fp);
+    fp->nx = b->L.nx;
+    fp->ny = b->L.ny;
+    fp->nz = b->L.nz;
+    fp->h = p->cell;
+    fp->nu = p->nu;
+    fp->u_ref = p->speed;
+    fp->confinement = p->confinement;
+    /* eps h (Fedkiw, Stam and Jensen 2001) with the body's size as the
+       length: the forcing of grid-scale eddies is the same at any grid,
+       and a resolved wake's vanishes as the grid is refined */
+    fp->confinement_length = b->d;
+    fp->advection = p->limiter ? AERO_F3_MACCORMACK
+                               : AERO_F3_MACCORMACK_UNLIMITED;
+    fp->threads = p->threads;
+    fp->sponge = p->downstream > 0.0
+                     ? fmin(0.5, p->sponge * p->downstream /
+                                     (b->L.nz * p->cell))
+                     : 0.0;
+}
+
+/* the solver, planned under the caller's lock (FFTW's planner), with the
+   body on its grid: 0 or -1 */
+static int start_solver(body_run *b, aero_body_flow_stats *st, void *ctx,
+                        char *err, size_t errlen)
+{
+    const aero_body_flow_params *p = b->p;
+    aero_flow3d_params fp;
+    solver_params(b, &fp);
+    if (p->plan_lock) p->plan_lock(ctx, 1);
+    b->solver_up = aero_flow3d_init(&b->s, &fp, err, errlen) == 0;
+    if (p->plan_lock) p->plan_lock(ctx, 0);
+    if (!b->solver_up)
+        return -1;
+    st->nx = b->L.nx;
+    st->ny = b->L.ny;
+    st->nz = b->L.nz;
+    st->dt = b->dt;
+    aero_flow3d_set_body(&b->s, b->chi, b->region, b->nr, b->force);
+    return 0;
+}
+
 /* the grid, the body on it, the solver: 0 or -1 */
 static int open_run(body_run *b, const aero_body_flow_params *p, double rate,
                     int nout, aero_body_flow_stats *st, void *ctx, char *err,
                     size_t errlen)
 {
-    aero_flow3d_params fp;
-    size_t cells;
     memset(b, 0, sizeof *b);
     b->p = p;
     b->nr = p->regions;
@@ -343,53 +431,15 @@ static int open_run(body_run *b, const aero_body_flow_params *p, double rate,
     b->fc = cutoff_of(p, rate);
     b->steps = aero_body_flow_steps(p, rate, nout);
     b->t_keep = p->settle - 8.0 / b->fc - b->dt;
-    cells = (size_t)b->L.nx * b->L.ny * b->L.nz;
-    b->chi = malloc(sizeof(float) * cells);
-    b->region = malloc(sizeof(int) * cells);
-    b->times = malloc(sizeof(double) * (size_t)b->steps);
-    b->forces = malloc(sizeof(double) * (size_t)b->steps * 3 * b->nr);
-    b->series = malloc(sizeof(double) * (size_t)b->steps);
-    if (!b->chi || !b->region || !b->times || !b->forces || !b->series) {
-        snprintf(err, errlen, "out of memory for a %d x %d x %d grid",
-                 b->L.nx, b->L.ny, b->L.nz);
+    if (alloc_run(b, err, errlen))
         return -1;
-    }
     voxelise(p, &b->r, &b->L, b->chi, b->region, st);
     if (!(st->solid_volume > 0.0)) {
         snprintf(err, errlen, "the body fills no cell: a finer grid "
                  "(cell %g m)", p->cell);
         return -1;
     }
-    memset(&fp, 0, sizeof fp);
-    fp.nx = b->L.nx;
-    fp.ny = b->L.ny;
-    fp.nz = b->L.nz;
-    fp.h = p->cell;
-    fp.nu = p->nu;
-    fp.u_ref = p->speed;
-    fp.confinement = p->confinement;
-    /* eps h (Fedkiw, Stam and Jensen 2001) with the body's size as the
-       length: the forcing of grid-scale eddies is the same at any grid,
-       and a resolved wake's vanishes as the grid is refined */
-    fp.confinement_length = b->d;
-    fp.advection = p->limiter ? AERO_F3_MACCORMACK
-                              : AERO_F3_MACCORMACK_UNLIMITED;
-    fp.threads = p->threads;
-    fp.sponge = p->downstream > 0.0
-                    ? fmin(0.5, p->sponge * p->downstream /
-                                    (b->L.nz * p->cell))
-                    : 0.0;
-    if (p->plan_lock) p->plan_lock(ctx, 1);
-    b->solver_up = aero_flow3d_init(&b->s, &fp, err, errlen) == 0;
-    if (p->plan_lock) p->plan_lock(ctx, 0);
-    if (!b->solver_up)
-        return -1;
-    st->nx = b->L.nx;
-    st->ny = b->L.ny;
-    st->nz = b->L.nz;
-    st->dt = b->dt;
-    aero_flow3d_set_body(&b->s, b->chi, b->region, b->nr, b->force);
-    return 0;
+    return start_solver(b, st, ctx, err, errlen);
 }
 
 static void close_run(body_run *b, void *ctx)
@@ -418,45 +468,55 @@ static void start_flow(body_run *b)
     b->rng = b->p->seed ? b->p->seed : 1;
 }
 
+/* the inflow at time t: a lateral gust (one sine period) during the
+   first quarter of the settling time, breaking the start-up flow's
+   symmetry, then a little seeded noise */
+static void set_inflow(body_run *b, double t)
+{
+    const aero_body_flow_params *p = b->p;
+    aero_flow3d *s = &b->s;
+    double gust = t < 0.25 * p->settle
+                      ? 0.1 * sin(2.0 * AERO_PI * t / (0.25 * p->settle))
+                      : 0.0;
+    float gu = (float)(p->speed * (gust + p->noise * aero_uniform(&b->rng)));
+    float gv = (float)(p->speed * (0.5 * gust +
+                                   p->noise * aero_uniform(&b->rng)));
+    for (size_t c = 0; c < s->plane; c++) {
+        s->in_u[c] = gu;
+        s->in_v[c] = gv;
+    }
+}
+
+/* the forces of the step that ended at t, into the sample frame */
+static void keep_forces(body_run *b, double t)
+{
+    b->times[b->kept] = t;
+    for (int l = 0; l < b->nr; l++)
+        to_sample(&b->r, b->force + 3 * l,
+                  b->forces + ((size_t)b->kept * b->nr + l) * 3);
+    b->kept++;
+}
+
 /* every step, the forces from t_keep on: 0 or -1 */
 static int run_flow(body_run *b,
                     void (*hook)(void *ctx, const aero_flow3d *s, long step,
                                  int recording),
                     long hook_every, void *ctx, char *err, size_t errlen)
 {
-    const aero_body_flow_params *p = b->p;
-    aero_flow3d *s = &b->s;
     const double dt = b->dt;
     for (long n = 0; n < b->steps; n++) {
         double t = n * dt;
-        /* a lateral gust (one sine period) during the first quarter of
-           the settling time, then a little seeded noise */
-        double gust = t < 0.25 * p->settle
-                          ? 0.1 * sin(2.0 * AERO_PI * t / (0.25 * p->settle))
-                          : 0.0;
-        float gu = (float)(p->speed * (gust + p->noise * aero_uniform(&b->rng)));
-        float gv = (float)(p->speed * (0.5 * gust +
-                                       p->noise * aero_uniform(&b->rng)));
-        for (size_t c = 0; c < s->plane; c++) {
-            s->in_u[c] = gu;
-            s->in_v[c] = gv;
-        }
-        if (aero_flow3d_step(s, dt)) {
+        set_inflow(b, t);
+        if (aero_flow3d_step(&b->s, dt)) {
             snprintf(err, errlen, "the flow blew up at t = %.4g s (step %ld): "
                      "a smaller --cfl", t, n);
             return -1;
         }
-        if (t + dt >= b->t_keep) {
-            b->times[b->kept] = t + dt;
-            /* into the sample frame */
-            for (int l = 0; l < b->nr; l++)
-                to_sample(&b->r, b->force + 3 * l,
-                          b->forces + ((size_t)b->kept * b->nr + l) * 3);
-            b->kept++;
-        }
+        if (t + dt >= b->t_keep)
+            keep_forces(b, t + dt);
         if (hook && hook_every > 0 &&
             (n % hook_every == 0 || n == b->steps - 1))
-            hook(ctx, s, n, t >= p->settle);
+            hook(ctx, &b->s, n, t >= b->p->settle);
     }
     return 0;
 }
@@ -526,6 +586,10 @@ static int statistics(body_run *b, aero_body_flow_stats *st, char *err,
     return 0;
 }
 
+/* the body on its grid and the solver (open_run), the uniform stream
+   started, every step run with its forces kept (run_flow), then each
+   region's g = rho dF/dt resampled at the texture rate, the 3D case of
+   Dobashi et al. 2003 (radiate), and the force statistics */
 int aero_body_flow_simulate(const aero_body_flow_params *p, double rate,
                             float *out, int stride, int nout,
                             aero_body_flow_stats *st,

@@ -182,25 +182,21 @@ static void time_derivative(const aero_field_pre *p, float *const *ring,
     }
 }
 
-/* Spatial stage of one frame: mapped density, velocity, momentum
- * divergence div(rho v) and the Lighthill term d2(rho v_i v_j)/dx_i dx_j,
- * central differences (one-sided halves at the faces). */
-static void spatial(aero_field_pre *p, const float *raw, int j)
+/* half the inverse spacings: central differences over two cells */
+static void half_inverse_spacing(const aero_volume_info *v, double *ih)
 {
-    const aero_volume_info *v = &p->info;
-    const int nx = v->nx, ny = v->ny, nz = v->nz;
-    const size_t sx = 1, sy = (size_t)nx, sz = (size_t)nx * ny;
-    const double ih[3] = {0.5 / v->spacing[0], 0.5 / v->spacing[1],
-                          0.5 / v->spacing[2]};
+    for (int a = 0; a < 3; a++)
+        ih[a] = 0.5 / v->spacing[a];
+}
+
+/* 1. acoustic mapping (Shin and Bajaj, sec. 3.2.2): the raw value to a
+ * density (NaN: rho_lo; negative: 0) */
+static void map_density(const aero_field_pre *p, const float *raw,
+                        float *rho)
+{
     const double lo = p->par.in_lo, span = p->par.in_hi - p->par.in_lo;
     const double rlo = p->par.rho_lo, rspan = p->par.rho_hi - p->par.rho_lo;
-    float *rho = p->rho[slot(p, j)], *dv = p->dv[slot(p, j)];
-    float *quad = p->quad[slot(p, j)];
-    float **vel = p->vel, **tens = p->tens;
-    const size_t n = p->n;
-
-    /* 1. acoustic mapping (Shin and Bajaj, sec. 3.2.2) */
-    for (size_t i = 0; i < n; i++) {
+    for (size_t i = 0; i < p->n; i++) {
         double s = raw[i];
         if (p->par.log_input)
             s = pow(10.0, s > 300 ? 300 : s);
@@ -209,14 +205,26 @@ static void spatial(aero_field_pre *p, const float *raw, int j)
             r = aero_is_finite(r) && r < 0 ? 0 : rlo;
         rho[i] = (float)r;
     }
-    /* 2. particle velocity: the flow's own, or vscale * grad(rho) */
+}
+
+/* 2. particle velocity: the flow's own (not finite or over 1e4: 0), or
+ * vscale * grad(rho) */
+static void particle_velocity(aero_field_pre *p, const float *raw,
+                              const float *rho)
+{
+    const aero_volume_info *v = &p->info;
+    const int nx = v->nx, ny = v->ny, nz = v->nz;
+    const size_t sx = 1, sy = (size_t)nx, sz = (size_t)nx * ny;
+    double ih[3];
+    float **vel = p->vel;
+    half_inverse_spacing(v, ih);
     for (int z = 0; z < nz; z++)
         for (int y = 0; y < ny; y++)
             for (int x = 0; x < nx; x++) {
                 size_t i = x + sy * y + sz * z;
                 if (p->flow) {
                     for (int a = 0; a < 3; a++) {
-                        double u = raw[i + (size_t)(a + 1) * n];
+                        double u = raw[i + (size_t)(a + 1) * p->n];
                         vel[a][i] = aero_is_finite(u) && fabs(u) < 1e4
                                         ? (float)u : 0.0f;
                     }
@@ -230,9 +238,14 @@ static void spatial(aero_field_pre *p, const float *raw, int j)
                 vel[1][i] = (float)(k * (rho[yp] - rho[ym]) * ih[1]);
                 vel[2][i] = (float)(k * (rho[zp] - rho[zm]) * ih[2]);
             }
-    /* 3. T_ij = rho v_i v_j (xx yy zz xy xz yz); momentum rho v_i kept in
-     * vel afterwards */
-    for (size_t i = 0; i < n; i++) {
+}
+
+/* 3. T_ij = rho v_i v_j (xx yy zz xy xz yz); momentum rho v_i kept in
+ * vel afterwards */
+static void stress_tensor(aero_field_pre *p, const float *rho)
+{
+    float **vel = p->vel, **tens = p->tens;
+    for (size_t i = 0; i < p->n; i++) {
         double r = rho[i], a = vel[0][i], b = vel[1][i], c = vel[2][i];
         tens[0][i] = (float)(r * a * a);
         tens[1][i] = (float)(r * b * b);
@@ -244,12 +257,23 @@ static void spatial(aero_field_pre *p, const float *raw, int j)
         vel[1][i] = (float)(r * b);
         vel[2][i] = (float)(r * c);
     }
-    /* 4. div(rho v) (eq. 13 before d/dt) and d2 T_ij / dx_i dx_j (eq. 14):
-     * diagonal terms by the 3-point second difference, the mixed ones by
-     * the 4-point cross difference, counted twice (T is symmetric) */
+}
+
+/* 4. div(rho v) (eq. 13 before d/dt) and d2 T_ij / dx_i dx_j (eq. 14):
+ * diagonal terms by the 3-point second difference, the mixed ones by
+ * the 4-point cross difference, counted twice (T is symmetric) */
+static void divergence_and_lighthill(aero_field_pre *p, float *dv,
+                                     float *quad)
+{
+    const aero_volume_info *v = &p->info;
+    const int nx = v->nx, ny = v->ny, nz = v->nz;
+    const size_t sx = 1, sy = (size_t)nx, sz = (size_t)nx * ny;
+    float *const *vel = p->vel, *const *tens = p->tens;
+    double ih[3];
     const double h2[3] = {1 / (v->spacing[0] * v->spacing[0]),
                           1 / (v->spacing[1] * v->spacing[1]),
                           1 / (v->spacing[2] * v->spacing[2])};
+    half_inverse_spacing(v, ih);
     for (int z = 0; z < nz; z++)
         for (int y = 0; y < ny; y++)
             for (int x = 0; x < nx; x++) {
@@ -279,6 +303,18 @@ static void spatial(aero_field_pre *p, const float *raw, int j)
                       ih[1] * ih[2];
                 quad[i] = (float)qq;
             }
+}
+
+/* Spatial stage of one frame: mapped density, velocity, momentum
+ * divergence div(rho v) and the Lighthill term d2(rho v_i v_j)/dx_i dx_j,
+ * central differences (one-sided halves at the faces). */
+static void spatial(aero_field_pre *p, const float *raw, int j)
+{
+    float *rho = p->rho[slot(p, j)];
+    map_density(p, raw, rho);
+    particle_velocity(p, raw, rho);
+    stress_tensor(p, rho);
+    divergence_and_lighthill(p, p->dv[slot(p, j)], p->quad[slot(p, j)]);
 }
 
 /* q_j: the mass source, d rho/dt (+ div(rho v) with a flow: continuity) */
@@ -409,58 +445,64 @@ int aero_field_pre_push(aero_field_pre *p, const float *raw, char *err,
     return 0;
 }
 
-int aero_field_pre_finish(aero_field_pre *p, aero_field_sources *out,
-                          char *err, size_t errlen)
+/* id[i]: the index of vertex i among the active ones (a source in at
+   least one frame) in order, or -1; their count */
+static int number_active(const aero_field_pre *p, int *id)
 {
-    const aero_volume_info *v = &p->info;
-    const int frames = v->frames;
-    int *id = NULL;
-    memset(out, 0, sizeof *out);
-    if (p->pushed != frames) {
-        aero_say(err, errlen, "only %d of %d frames were read", p->pushed,
-                 frames);
-        return -1;
-    }
-    if (advance(p) || p->emitted != frames) {
-        aero_say(err, errlen, "out of memory for the source list");
-        return -1;
-    }
-    /* active vertices: a source in at least one frame */
-    id = malloc(p->n * sizeof(int));
-    if (!id)
-        goto oom;
+    int count = 0;
     for (size_t i = 0; i < p->n; i++)
         id[i] = -1;
-    int count = 0;
     for (size_t e = 0; e < p->count; e++)
         if (p->entries[e].type && id[p->entries[e].vertex] < 0)
             id[p->entries[e].vertex] = count++;
+    return count;
+}
+
+/* the list's header: sizes, the nearest a listener may come (half the
+   finest spacing), the time derivatives per kind of source */
+static void describe_sources(const aero_field_pre *p, int count,
+                             aero_field_sources *out)
+{
+    const aero_volume_info *v = &p->info;
+    double hmin = v->spacing[0];
     out->count = count;
-    out->frames = frames;
+    out->frames = v->frames;
     out->rate = v->rate;
-    {
-        double hmin = v->spacing[0];
-        for (int a = 1; a < 3; a++)
-            if (v->spacing[a] < hmin)
-                hmin = v->spacing[a];
-        out->min_distance = 0.5 * hmin;
-    }
+    for (int a = 1; a < 3; a++)
+        if (v->spacing[a] < hmin)
+            hmin = v->spacing[a];
+    out->min_distance = 0.5 * hmin;
     /* with a flow all terms carry two time derivatives (see the header) */
     out->exponent[AERO_FIELD_NONE] = 0;
     out->exponent[AERO_FIELD_MONOPOLE] = 2;
     out->exponent[AERO_FIELD_DIPOLE] = p->flow ? 2 : 1;
     out->exponent[AERO_FIELD_QUADRUPOLE] = p->flow ? 2 : 0;
     memcpy(out->points, p->points, sizeof out->points);
-    size_t cells = (size_t)(count ? count : 1) * frames;
-    out->pos = malloc(3 * sizeof(float) * (count ? count : 1));
-    out->vertex = malloc(sizeof(int) * (count ? count : 1));
+}
+
+/* the arrays of count sources over their frames: 0, or -1 */
+static int alloc_sources(aero_field_sources *out, int count, int frames)
+{
+    const size_t one = (size_t)(count ? count : 1);
+    size_t cells = one * frames;
+    out->pos = malloc(3 * sizeof(float) * one);
+    out->vertex = malloc(sizeof(int) * one);
     out->g = calloc(cells, sizeof(float));
     out->type = calloc(cells, 1);
-    out->first = malloc(sizeof(int) * (count ? count : 1));
-    out->last = malloc(sizeof(int) * (count ? count : 1));
-    if (!out->pos || !out->vertex || !out->g || !out->type || !out->first ||
-        !out->last)
-        goto oom;
+    out->first = malloc(sizeof(int) * one);
+    out->last = malloc(sizeof(int) * one);
+    return out->pos && out->vertex && out->g && out->type && out->first &&
+                   out->last
+               ? 0
+               : -1;
+}
+
+/* each active vertex's position, its distance from the origin (the
+   farthest: max_reach), no frame yet */
+static void place_sources(const aero_field_pre *p, const int *id,
+                          aero_field_sources *out)
+{
+    const aero_volume_info *v = &p->info;
     for (size_t i = 0; i < p->n; i++) {
         int s = id[i];
         if (s < 0)
@@ -477,9 +519,18 @@ int aero_field_pre_finish(aero_field_pre *p, aero_field_sources *out,
         if (reach > out->max_reach)
             out->max_reach = reach;
         out->vertex[s] = (int)i;
-        out->first[s] = frames;
+        out->first[s] = v->frames;
         out->last[s] = -1;
     }
+}
+
+/* the entries, frame by frame (an entry of type NONE ends a frame), into
+   each source's strength and type per frame, and its first and last
+   frame */
+static void fill_sources(const aero_field_pre *p, const int *id,
+                         aero_field_sources *out)
+{
+    const int frames = p->info.frames;
     int frame = 0;
     for (size_t e = 0; e < p->count; e++) {
         const aero_field_entry *en = &p->entries[e];
@@ -495,6 +546,32 @@ int aero_field_pre_finish(aero_field_pre *p, aero_field_sources *out,
         if (frame > out->last[s])
             out->last[s] = frame;
     }
+}
+
+int aero_field_pre_finish(aero_field_pre *p, aero_field_sources *out,
+                          char *err, size_t errlen)
+{
+    const int frames = p->info.frames;
+    int *id = NULL, count;
+    memset(out, 0, sizeof *out);
+    if (p->pushed != frames) {
+        aero_say(err, errlen, "only %d of %d frames were read", p->pushed,
+                 frames);
+        return -1;
+    }
+    if (advance(p) || p->emitted != frames) {
+        aero_say(err, errlen, "out of memory for the source list");
+        return -1;
+    }
+    id = malloc(p->n * sizeof(int));
+    if (!id)
+        goto oom;
+    count = number_active(p, id);
+    describe_sources(p, count, out);
+    if (alloc_sources(out, count, frames))
+        goto oom;
+    place_sources(p, id, out);
+    fill_sources(p, id, out);
     free(id);
     free(p->entries);
     p->entries = NULL;

@@ -91,8 +91,9 @@ typedef struct {
                                   to the row above and below, ny */
     float *iy_v, *an_v, *as_v; /* v rows (faces): the same, ny + 1 */
     void *plan_fwd, *plan_inv; /* fftwf_plan */
-    /* the cosine transforms through a real FFT (even nx, flow2d.c):
-       rows reordered, their spectra, the quarter-wave twiddles */
+    /* the cosine transforms through a real FFT (even nx,
+       flow2d_pressure.c): rows reordered, their spectra, the
+       quarter-wave twiddles */
     float *dct_rows;     /* nx * ny */
     float *dct_spec;     /* (nx / 2 + 1) * ny complex (interleaved) */
     float *dct_tw;       /* cos, sin of pi k / (2 nx), k <= nx / 2 */

@@ -378,7 +378,7 @@ static inline float mean4(float a, float b, float c, float d)
     return 0.25f * (a + b + c + d);
 }
 
-/* semi-Lagrangian advection (FSJ01 sec. 3): each face value is the field
+/* semi-Lagrangian advection (Fedkiw et al. 2001, sec. 3): each face value is the field
    at the point the current velocity came from dt ago (dt < 0: forwards).
    Row by row: the departure points of a row's u, v and w faces (the
    neighbours across the periodic x side at i = 0 and nx - 1 taken apart,
@@ -476,58 +476,63 @@ static void swap_advected(aero_flow3d *s)
     s->w1 = t;
 }
 
+/* half the round trip's error added back to the forward pass (u1, v1,
+   w1), from the backward pass's result (bu, bv, bw): limited, clamped to
+   the values the forward pass interpolated between */
+static void maccormack_correct(aero_flow3d *s, const float *bu,
+                               const float *bv, const float *bw, int limited)
+{
+    const size_t uvn = s->plane * (size_t)(s->nz + 2);
+    const size_t wn = s->plane * (size_t)(s->nz + 1);
+    for (int f = 0; f < 3; f++) {
+        float *dst = f == 0 ? s->u1 : f == 1 ? s->v1 : s->w1;
+        const float *old = f == 0 ? s->u : f == 1 ? s->v : s->w;
+        const float *rt = f == 0 ? bu : f == 1 ? bv : bw;
+        /* layers 0..nz-1 of u, v and 1..nz of w: the same range */
+        if (limited) {
+            const float *lo = s->mc_lo + f * uvn, *hi = s->mc_hi + f * uvn;
+            F3_SLABS
+            for (size_t a = s->plane; a < wn; a++) {
+                float x = dst[a] + 0.5f * (old[a] - rt[a]);
+                dst[a] = x < lo[a] ? lo[a] : x > hi[a] ? hi[a] : x;
+            }
+        } else {
+            F3_SLABS
+            for (size_t a = s->plane; a < wn; a++)
+                dst[a] += 0.5f * (old[a] - rt[a]);
+        }
+    }
+}
+
+/* MacCormack (Selle et al. 2008): a forward pass, a backward pass of its
+   result, half the round trip's error added back; limited, no new extrema
+   (second order in smooth flow) */
+static void maccormack(aero_flow3d *s, double dt)
+{
+    const size_t uvn = s->plane * (size_t)(s->nz + 2);
+    float *bu = s->mc, *bv = s->mc + uvn, *bw = s->mc + 2 * uvn;
+    /* lo, hi NULL when unlimited: no bounds to keep */
+    const advect_io fwd = {s->u, s->v, s->w, s->u1, s->v1, s->w1,
+                           s->mc_lo, s->mc_hi};
+    const advect_io back = {s->u1, s->v1, s->w1, bu, bv, bw, NULL, NULL};
+    advect_pass(s, &fwd, dt);
+    set_ghosts(s, s->u1, s->v1, s->w1);
+    set_ghosts(s, bu, bv, bw);
+    advect_pass(s, &back, -dt);
+    maccormack_correct(s, bu, bv, bw, s->p.advection == AERO_F3_MACCORMACK);
+    swap_advected(s);
+}
+
 static void advect(aero_flow3d *s, double dt)
 {
-    advect_io io = {s->u, s->v, s->w, s->u1, s->v1, s->w1, NULL, NULL};
     if (s->p.advection == AERO_F3_SEMI_LAGRANGIAN) {
+        const advect_io io = {s->u, s->v, s->w, s->u1, s->v1, s->w1,
+                              NULL, NULL};
         advect_pass(s, &io, dt);
         swap_advected(s); /* boundary layers are set again later */
         return;
     }
-    /* MacCormack (Selle et al. 2008, J. Sci. Comput. 35): a forward pass,
-       a backward pass of its result, half the round trip's error added
-       back; limited, clamped to the values the forward pass interpolated
-       between (no new extrema; second order in smooth flow) */
-    {
-        const size_t uvn = s->plane * (size_t)(s->nz + 2);
-        const size_t wn = s->plane * (size_t)(s->nz + 1);
-        float *bu = s->mc, *bv = s->mc + uvn, *bw = s->mc + 2 * uvn;
-        const int limited = s->p.advection == AERO_F3_MACCORMACK;
-        advect_io back;
-        io.lo = s->mc_lo; /* NULL when unlimited: no bounds to keep */
-        io.hi = s->mc_hi;
-        advect_pass(s, &io, dt);
-        set_ghosts(s, s->u1, s->v1, s->w1);
-        back.u = s->u1;
-        back.v = s->v1;
-        back.w = s->w1;
-        back.du = bu;
-        back.dv = bv;
-        back.dw = bw;
-        back.lo = back.hi = NULL;
-        set_ghosts(s, bu, bv, bw);
-        advect_pass(s, &back, -dt);
-        for (int f = 0; f < 3; f++) {
-            float *dst = f == 0 ? s->u1 : f == 1 ? s->v1 : s->w1;
-            const float *old = f == 0 ? s->u : f == 1 ? s->v : s->w;
-            const float *rt = f == 0 ? bu : f == 1 ? bv : bw;
-            /* layers 0..nz-1 of u, v and 1..nz of w: the same range */
-            if (limited) {
-                const float *lo = s->mc_lo + f * uvn,
-                            *hi = s->mc_hi + f * uvn;
-                F3_SLABS
-                for (size_t a = s->plane; a < wn; a++) {
-                    float x = dst[a] + 0.5f * (old[a] - rt[a]);
-                    dst[a] = x < lo[a] ? lo[a] : x > hi[a] ? hi[a] : x;
-                }
-            } else {
-                F3_SLABS
-                for (size_t a = s->plane; a < wn; a++)
-                    dst[a] += 0.5f * (old[a] - rt[a]);
-            }
-        }
-        swap_advected(s);
-    }
+    maccormack(s, dt);
 }
 
 /* cell-centred velocity into cx, cy, cz */
@@ -664,7 +669,7 @@ static void confine_row(const aero_flow3d *s, row_stencil r, float a)
 #undef CONFINE_CELL
 }
 
-/* vorticity confinement (FSJ01 eq. 11-12): a = eps (h / L) U_ref
+/* vorticity confinement (Fedkiw et al. 2001, eq. 11-12): a = eps (h / L) U_ref
    (N x omega) at the cell centres, averaged onto the faces */
 static void confine(aero_flow3d *s, double dt)
 {
@@ -749,15 +754,13 @@ static void diffuse(aero_flow3d *s, double dt)
     t = s->w; s->w = s->w1; s->w1 = t;
 }
 
-void aero_flow3d_project(aero_flow3d *s)
+/* h^2 div u into phi, the right-hand side of the pressure solve (h^2
+   lap phi = h^2 div u) */
+static void divergence(aero_flow3d *s)
 {
-    const int nx = s->nx, ny = s->ny, nz = s->nz, nxh = nx / 2 + 1;
+    const int nx = s->nx, ny = s->ny, nz = s->nz;
     const size_t pl = s->plane;
-    const float h = (float)s->p.h, ih = 1.0f / h;
-    const float norm = 1.0f / (float)(nx * ny);
-    fftwf_complex *sp = s->spec;
-    apply_boundaries(s);
-    /* h^2 div u, the right-hand side (h^2 lap phi = h^2 div u) */
+    const float h = (float)s->p.h;
     F3_SLABS
     for (int k = 0; k < nz; k++)
         for (int j = 0; j < ny; j++) {
@@ -775,69 +778,89 @@ void aero_flow3d_project(aero_flow3d *s)
             F3_ROW(nx, DIVERGENCE_CELL);
 #undef DIVERGENCE_CELL
         }
-    fftwf_execute(s->fwd);
-    /* tridiagonal along z per (kx, ky) (sub- and super-diagonal 1): the
-       modes in blocks, each swept layer by layer, so that the loops over a
-       block's modes vectorise */
-    {
-        const size_t stride = (size_t)nxh * ny, block = 64;
-        const int blocks = (int)((stride + block - 1) / block);
-        float *d = (float *)sp; /* re, im interleaved */
-        F3_SLABS
-        for (int b = 0; b < blocks; b++) {
-            const size_t m0 = (size_t)b * block;
-            const size_t m1 = m0 + block < stride ? m0 + block : stride;
+}
+
+/* the tridiagonal along z per (kx, ky) of the transformed right-hand side
+   (sub- and super-diagonal 1, factors from factor_poisson): the modes in
+   blocks, each swept layer by layer, so that the loops over a block's
+   modes vectorise */
+static void solve_modes_z(aero_flow3d *s)
+{
+    const int ny = s->ny, nz = s->nz, nxh = s->nx / 2 + 1;
+    const size_t stride = (size_t)nxh * ny, block = 64;
+    const int blocks = (int)((stride + block - 1) / block);
+    float *d = (float *)s->spec; /* re, im interleaved */
+    F3_SLABS
+    for (int b = 0; b < blocks; b++) {
+        const size_t m0 = (size_t)b * block;
+        const size_t m1 = m0 + block < stride ? m0 + block : stride;
+        for (size_t m = m0; m < m1; m++) {
+            d[2 * m] *= s->tri_m[m];
+            d[2 * m + 1] *= s->tri_m[m];
+        }
+        for (int k = 1; k < nz; k++) {
+            const float *q = s->tri_m + (size_t)k * stride;
+            float *dk = d + 2 * (size_t)k * stride, *dl = dk - 2 * stride;
             for (size_t m = m0; m < m1; m++) {
-                d[2 * m] *= s->tri_m[m];
-                d[2 * m + 1] *= s->tri_m[m];
+                dk[2 * m] = (dk[2 * m] - dl[2 * m]) * q[m];
+                dk[2 * m + 1] = (dk[2 * m + 1] - dl[2 * m + 1]) * q[m];
             }
-            for (int k = 1; k < nz; k++) {
-                const float *q = s->tri_m + (size_t)k * stride;
-                float *dk = d + 2 * (size_t)k * stride, *dl = dk - 2 * stride;
-                for (size_t m = m0; m < m1; m++) {
-                    dk[2 * m] = (dk[2 * m] - dl[2 * m]) * q[m];
-                    dk[2 * m + 1] = (dk[2 * m + 1] - dl[2 * m + 1]) * q[m];
-                }
-            }
-            for (int k = nz - 2; k >= 0; k--) {
-                const float *q = s->tri_m + (size_t)k * stride;
-                float *dk = d + 2 * (size_t)k * stride, *du = dk + 2 * stride;
-                for (size_t m = m0; m < m1; m++) {
-                    dk[2 * m] -= q[m] * du[2 * m];
-                    dk[2 * m + 1] -= q[m] * du[2 * m + 1];
-                }
+        }
+        for (int k = nz - 2; k >= 0; k--) {
+            const float *q = s->tri_m + (size_t)k * stride;
+            float *dk = d + 2 * (size_t)k * stride, *du = dk + 2 * stride;
+            for (size_t m = m0; m < m1; m++) {
+                dk[2 * m] -= q[m] * du[2 * m];
+                dk[2 * m + 1] -= q[m] * du[2 * m + 1];
             }
         }
     }
-    fftwf_execute(s->inv);
-    /* u -= grad phi (phi scaled by the unnormalised inverse FFT) */
-    {
-        const float g = norm * ih;
-        F3_SLABS
-        for (int k = 0; k < nz; k++)
-            for (int j = 0; j < ny; j++) {
-                const int jm = j ? j - 1 : ny - 1;
-                const float *p = s->phi + AERO_F3_C(s, 0, j, k);
-                const float *pm = s->phi + AERO_F3_C(s, 0, jm, k);
-                float *u = s->u + AERO_F3_UV(s, 0, j, k);
-                float *v = s->v + AERO_F3_UV(s, 0, j, k);
-                float *w = s->w + AERO_F3_C(s, 0, j, k);
+}
+
+/* u -= grad phi (phi scaled by the unnormalised inverse FFT) */
+static void subtract_gradient(aero_flow3d *s)
+{
+    const int nx = s->nx, ny = s->ny, nz = s->nz;
+    const size_t pl = s->plane;
+    const float h = (float)s->p.h, ih = 1.0f / h;
+    const float norm = 1.0f / (float)(nx * ny);
+    const float g = norm * ih;
+    F3_SLABS
+    for (int k = 0; k < nz; k++)
+        for (int j = 0; j < ny; j++) {
+            const int jm = j ? j - 1 : ny - 1;
+            const float *p = s->phi + AERO_F3_C(s, 0, j, k);
+            const float *pm = s->phi + AERO_F3_C(s, 0, jm, k);
+            float *u = s->u + AERO_F3_UV(s, 0, j, k);
+            float *v = s->v + AERO_F3_UV(s, 0, j, k);
+            float *w = s->w + AERO_F3_C(s, 0, j, k);
 #define GRADIENT_CELL(i, im, ip)                                           \
     do {                                                                   \
         (void)(ip);                                                        \
         u[i] -= g * (p[i] - p[im]);                                        \
         v[i] -= g * (p[i] - pm[i]);                                        \
     } while (0)
-                F3_ROW(nx, GRADIENT_CELL);
+            F3_ROW(nx, GRADIENT_CELL);
 #undef GRADIENT_CELL
-                if (k > 0)
-                    for (int i = 0; i < nx; i++)
-                        w[i] -= g * (p[i] - p[i - (ptrdiff_t)pl]);
-            }
-        /* top face: phi = 0 there, so the ghost value is -phi[nz-1] */
-        for (size_t c = 0; c < pl; c++)
-            s->w[(size_t)nz * pl + c] += 2.0f * g * s->phi[(size_t)(nz - 1) * pl + c];
-    }
+            if (k > 0)
+                for (int i = 0; i < nx; i++)
+                    w[i] -= g * (p[i] - p[i - (ptrdiff_t)pl]);
+        }
+    /* top face: phi = 0 there, so the ghost value is -phi[nz-1] */
+    for (size_t c = 0; c < pl; c++)
+        s->w[(size_t)nz * pl + c] += 2.0f * g * s->phi[(size_t)(nz - 1) * pl + c];
+}
+
+/* the projection of Stam 1999: lap phi = div u solved by FFTs across the
+   periodic x and y and a tridiagonal along z, then u -= grad phi */
+void aero_flow3d_project(aero_flow3d *s)
+{
+    apply_boundaries(s);
+    divergence(s);
+    fftwf_execute(s->fwd);
+    solve_modes_z(s);
+    fftwf_execute(s->inv);
+    subtract_gradient(s);
     apply_boundaries(s);
 }
 
@@ -938,38 +961,43 @@ static void body_box(aero_flow3d *s, const float *solid)
     }
 }
 
+/* the cells within NEAR_BODY_CELLS of the body, where vorticity
+   confinement is off: it would push the boundary layer along the wall,
+   and the body would feel that push as a force (a capsule along the flow
+   showed a negative drag). Left NULL when out of memory: confinement
+   everywhere */
+static void mark_near_body(aero_flow3d *s, const float *solid)
+{
+    const int nx = s->nx, ny = s->ny, nz = s->nz, r = NEAR_BODY_CELLS;
+    s->near_body = calloc(s->plane * (size_t)nz, 1);
+    if (!s->near_body)
+        return;
+    for (int k = 0; k < nz; k++)
+        for (int j = 0; j < ny; j++)
+            for (int i = 0; i < nx; i++) {
+                if (!(solid[AERO_F3_C(s, i, j, k)] > 0.0f))
+                    continue;
+                for (int dk = -r; dk <= r; dk++) {
+                    const int kk = k + dk;
+                    if (kk < 0 || kk >= nz)
+                        continue;
+                    for (int dj = -r; dj <= r; dj++)
+                        for (int di = -r; di <= r; di++)
+                            s->near_body[AERO_F3_C(s, wrap(i + di, nx),
+                                                   wrap(j + dj, ny), kk)] = 1;
+                }
+            }
+}
+
 void aero_flow3d_set_body(aero_flow3d *s, const float *solid,
                           const int *region, int n_regions, double *force)
 {
     free(s->near_body);
     s->near_body = NULL;
     if (solid) {
-        /* the cells within NEAR_BODY_CELLS of the body, where vorticity
-           confinement is off: it would push the boundary layer along the
-           wall, and the body would feel that push as a force (a capsule
-           along the flow showed a negative drag) */
-        const int nx = s->nx, ny = s->ny, nz = s->nz, r = NEAR_BODY_CELLS;
-        s->near_body = calloc(s->plane * (size_t)nz, 1);
-        if (s->near_body)
-            for (int k = 0; k < nz; k++)
-                for (int j = 0; j < ny; j++)
-                    for (int i = 0; i < nx; i++) {
-                        if (!(solid[AERO_F3_C(s, i, j, k)] > 0.0f))
-                            continue;
-                        for (int dk = -r; dk <= r; dk++)
-                            for (int dj = -r; dj <= r; dj++)
-                                for (int di = -r; di <= r; di++) {
-                                    int kk = k + dk;
-                                    if (kk < 0 || kk >= nz)
-                                        continue;
-                                    s->near_body[AERO_F3_C(
-                                        s, wrap(i + di, nx), wrap(j + dj, ny),
-                                        kk)] = 1;
-                                }
-                    }
-    }
-    if (solid)
+        mark_near_body(s, solid);
         body_box(s, solid);
+    }
     s->solid = solid;
     s->region = solid ? region : NULL;
     s->n_regions = solid && force ? n_regions : 0;
@@ -1024,6 +1052,20 @@ static void force_body(aero_flow3d *s, double dt)
         }
 }
 
+/* a cheap finiteness check on one layer per step: 0, or -1 (NaN, or a
+   blown-up flow) */
+static int check_finite(const aero_flow3d *s)
+{
+    const float *w = s->w + (size_t)(s->nz / 2) * s->plane;
+    float acc = 0.0f;
+    for (size_t c = 0; c < s->plane; c++)
+        acc += w[c];
+    return !(acc == acc) || fabsf(acc) > 1e30f ? -1 : 0;
+}
+
+/* one step of the split of Stam 1999 and Fedkiw et al. 2001: advect,
+   confine the vorticity, diffuse, damp in the outflow's sponge, force the
+   body (Fadlun et al. 2000), project onto divergence-free fields */
 int aero_flow3d_step(aero_flow3d *s, double dt)
 {
     apply_boundaries(s);
@@ -1041,14 +1083,5 @@ int aero_flow3d_step(aero_flow3d *s, double dt)
         force_body(s, dt);
     aero_flow3d_project(s);
     s->t += dt;
-    /* a cheap finiteness check on one layer per step */
-    {
-        const float *w = s->w + (size_t)(s->nz / 2) * s->plane;
-        float acc = 0.0f;
-        for (size_t c = 0; c < s->plane; c++)
-            acc += w[c];
-        if (!(acc == acc) || fabsf(acc) > 1e30f)
-            return -1;
-    }
-    return 0;
+    return check_finite(s);
 }

@@ -14,7 +14,7 @@
  * grid (time stretched by 1/frequency_scale, force times force_scale), so
  * the texture's g = dF/dt grows by their product. The spanwise correlation
  * length (~3-5 d, Norberg 2003) is the player's: it spaces incoherent
- * sources ~3 d apart (stick_texture.h), as model mode does.
+ * sources ~3 d apart (aeolian.h), as model mode does.
  * Below Re 190 the real wake is two-dimensional and nothing is changed. */
 #ifndef AERO_SPAN3D_H
 #define AERO_SPAN3D_H

@@ -7,14 +7,13 @@
  * takes the smooth-wall value 60 nu / (beta0 h^2) that Menter (1994)
  * gives for the first cell. */
 #include "turbulence2d.h"
+#include "flow2d_internal.h"
 
 #include "aero_clones.h"
 #include "aero_fftw.h"
 #include <math.h>
 #include <string.h>
 
-#define G 2
-#define AT(i, j) ((size_t)((j) + G) * (size_t)s->sx + (size_t)((i) + G))
 /* cell (i, j) of the padded k and omega arrays, -1 <= i <= nx */
 #define PAD(i, j) ((size_t)((j) + 1) * (size_t)(s->nx + 2) + (size_t)((i) + 1))
 

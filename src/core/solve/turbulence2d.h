@@ -1,4 +1,5 @@
-/* aero: the k-omega turbulence model of the 2D flow (private to flow2d.c).
+/* aero: the k-omega turbulence model of the 2D flow (private to the 2D
+ * solver, flow2d*.c).
  *
  * A 2D flow past a bluff body at Re ~ 1e3-1e5 keeps its wake coherent
  * along an infinite span and its shear layers laminar: the square prism's

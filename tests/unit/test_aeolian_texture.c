@@ -1,9 +1,9 @@
-/* Unit tests of src/core/play/stick_texture: the player of aeolian textures for
- * moving sticks, on synthetic textures whose content is known exactly. */
+/* Unit tests of [aeolian~]'s texture mode (src/core/play/aeolian_texture.c,
+ * through aeolian.h): the player of aeolian textures for moving sticks, on synthetic textures whose content is known exactly. */
 #include <stdlib.h>
 #include <string.h>
 
-#include "stick_texture.h"
+#include "aeolian.h"
 #include "multi_instance.h"
 #include "unit.h"
 
@@ -46,23 +46,23 @@ static aero_texture *make_texture(int dirs, const double *freq,
 
 /* the exact-pitch checks freeze the sources' phases; section 9 tests their
  * wander */
-static void setup(aero_stick_texture *s, aero_texture *t, uint32_t seed)
+static void setup(aero_aeolian *s, aero_texture *t, uint32_t seed)
 {
     char err[128];
-    aero_stick_texture_init(s, SR, 1, seed);
-    if (aero_stick_texture_set_texture(s, t, err, sizeof(err)))
+    aero_aeolian_init(s, SR, 1, seed);
+    if (aero_aeolian_set_texture(s, t, err, sizeof(err)))
         printf("  set_texture: %s\n", err);
-    aero_stick_texture_set_ramp_ms(s, 0);
-    aero_stick_texture_set_phase_wander(s, 0.0);
+    aero_aeolian_set_ramp_ms(s, 0);
+    aero_aeolian_set_phase_wander(s, 0.0);
 }
 
 /* renders n samples in blocks of `block` */
-static void render(aero_stick_texture *s, float *out, int n, int block)
+static void render(aero_aeolian *s, float *out, int n, int block)
 {
     for (int i = 0; i < n; i += block) {
         int m = n - i < block ? n - i : block;
         float *o[1] = {out + i};
-        aero_stick_texture_process(s, NULL, o, m);
+        aero_aeolian_process(s, NULL, o, m);
     }
 }
 
@@ -77,15 +77,15 @@ static double sources_db(int sources, double width, uint32_t seed,
     float *x = calloc(len, sizeof(float));
     double f100[1] = {100.0}, wind[3] = {10.0, 0, 0};
     for (int k = 0; k < 2; k++) {
-        aero_stick_texture s;
+        aero_aeolian s;
         setup(&s, make_texture(1, f100, "0", "1", "0"), seed);
-        aero_stick_texture_set_phase_wander(&s, width);
-        aero_stick_texture_set_sources(&s, k ? sources : 1);
-        aero_stick_texture_set_wind(&s, wind);
+        aero_aeolian_set_phase_wander(&s, width);
+        aero_aeolian_set_sources(&s, k ? sources : 1);
+        aero_aeolian_set_wind(&s, wind);
         render(&s, x, len, 64);
         power[k] = unit_rms(x + 4800, len - 4800);
         power[k] *= power[k];
-        aero_stick_texture_free(&s);
+        aero_aeolian_free(&s);
     }
     free(x);
     return 10.0 * log10(power[1] / power[0]);
@@ -104,23 +104,23 @@ UNIT_TEST(static_stick_pitch)
     float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
     double f100[1] = {100.0};
     double wind[3] = {10.0, 0, 0};
-    aero_stick_texture s;
+    aero_aeolian s;
 
     /* 1. static stick in wind: f = St v / d, also for another diameter */
     setup(&s, make_texture(1, f100, "0", "1", "0"), 1);
-    aero_stick_texture_set_wind(&s, wind);
+    aero_aeolian_set_wind(&s, wind);
     render(&s, a, n, 64);
     UNIT_NEAR_REL(zero_crossing_hz(a + 4800, n - 4800), 100.0, 0.001,
                   "tone of a 1 cm stick at v0 (St v / d)");
-    aero_stick_texture_set_diameter(&s, 0.005);
+    aero_aeolian_set_diameter(&s, 0.005);
     double w20[3] = {20.0, 0, 0};
-    aero_stick_texture_set_wind(&s, w20);
+    aero_aeolian_set_wind(&s, w20);
     render(&s, a, n, 64);
     UNIT_NEAR_REL(zero_crossing_hz(a + 4800, n - 4800), 400.0, 0.001,
                   "tone of a 5 mm stick at 2 v0");
-    UNIT_NEAR_REL(aero_stick_texture_tone_hz(&s, 20.0), 400.0, 1e-9,
+    UNIT_NEAR_REL(aero_aeolian_tone_hz(&s, 20.0), 400.0, 1e-9,
                   "tone_hz agrees");
-    aero_stick_texture_free(&s);
+    aero_aeolian_free(&s);
     free(a);
     free(b);
 }
@@ -131,15 +131,15 @@ UNIT_TEST(block_sizes)
     float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
     double f100[1] = {100.0};
     double wind[3] = {10.0, 0, 0};
-    aero_stick_texture s;
+    aero_aeolian s;
 
     /* 2. any block size gives the same sound (static geometry) */
     setup(&s, make_texture(1, f100, "0", "1", "0"), 7);
-    aero_stick_texture_set_wind(&s, wind);
+    aero_aeolian_set_wind(&s, wind);
     render(&s, a, n, 64);
-    aero_stick_texture_free(&s);
+    aero_aeolian_free(&s);
     setup(&s, make_texture(1, f100, "0", "1", "0"), 7);
-    aero_stick_texture_set_wind(&s, wind);
+    aero_aeolian_set_wind(&s, wind);
     render(&s, b, n, 1);
     double diff = 0; /* after the first chunk's fade-in */
     for (int i = 4800; i < n; i++)
@@ -147,7 +147,7 @@ UNIT_TEST(block_sizes)
     UNIT_CHECK(diff <= 1e-3 * rms(a, n) && rms(a, n) > 0,
                "blocks of 1 and of 64 samples agree: max diff %g (rms %g)",
                diff, rms(a, n));
-    aero_stick_texture_free(&s);
+    aero_aeolian_free(&s);
     free(a);
     free(b);
 }
@@ -157,27 +157,27 @@ UNIT_TEST(doppler_approach)
     const int n = 48000;
     float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
     double f100[1] = {100.0};
-    aero_stick_texture s;
+    aero_aeolian s;
 
     /* 3. Doppler, exact for a moving source: a one-source stick flies at
      *    40 m/s straight at the listener, carried by a wind of the same
      *    velocity plus 10 m/s across; the tone rises by c0 / (c0 - v) */
     setup(&s, make_texture(1, f100, "0", "1", "0"), 3);
-    aero_stick_texture_set_sources(&s, 1);
+    aero_aeolian_set_sources(&s, 1);
     double wind_moving[3] = {10.0, 40.0, 0.0};
-    aero_stick_texture_set_wind(&s, wind_moving);
-    aero_stick_texture_set_ears(&s, &(aero_ears){1, {{0, 100, 0}}});
+    aero_aeolian_set_wind(&s, wind_moving);
+    aero_aeolian_set_ears(&s, &(aero_ears){1, {{0, 100, 0}}});
     for (int i = 0; i < n; i += 48) { /* a pose every 1 ms */
         double t = i / SR;
         double pa[3] = {0, -20 + 40 * t, -0.01}, pb[3] = {0, -20 + 40 * t, 0.01};
-        aero_stick_texture_set_pose(&s, pa, pb, 0.001);
+        aero_aeolian_set_pose(&s, pa, pb, 0.001);
         float *o[1] = {a + i};
-        aero_stick_texture_process(&s, NULL, o, 48);
+        aero_aeolian_process(&s, NULL, o, 48);
     }
     UNIT_NEAR_REL(zero_crossing_hz(a + 24000, n - 24000),
                   100.0 * 343.0 / (343.0 - 40.0), 0.002,
                   "approaching at 40 m/s: c0 / (c0 - v)");
-    aero_stick_texture_free(&s);
+    aero_aeolian_free(&s);
     free(a);
     free(b);
 }
@@ -187,18 +187,18 @@ UNIT_TEST(level_with_speed)
     const int n = 48000;
     float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
     double f100[1] = {100.0};
-    aero_stick_texture s;
+    aero_aeolian s;
 
     /* 4. level: (v/v0)^3, and the paper's ^6 on request */
     double lv[2];
     for (int k = 0; k < 2; k++) {
         setup(&s, make_texture(1, f100, "0", "1", "0"), 1);
-        aero_stick_texture_set_sources(&s, 1);
+        aero_aeolian_set_sources(&s, 1);
         double w[3] = {k ? 20.0 : 10.0, 0, 0};
-        aero_stick_texture_set_wind(&s, w);
+        aero_aeolian_set_wind(&s, w);
         render(&s, a, n, 64);
         lv[k] = 20 * log10(rms(a + 4800, n - 4800));
-        aero_stick_texture_free(&s);
+        aero_aeolian_free(&s);
     }
     UNIT_NEAR_REL(lv[1] - lv[0], 18.06, 0.005, "dB per speed doubling");
     free(a);
@@ -211,18 +211,18 @@ UNIT_TEST(incoherent_sources)
     float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
     double noise[1] = {0.0}, lv[2];
     double wind[3] = {10.0, 0, 0};
-    aero_stick_texture s;
+    aero_aeolian s;
 
     /* 5. incoherent sources: 16 sources with their own offsets sum in
      *    power (-12 dB against one source of the whole length) */
     for (int k = 0; k < 2; k++) {
         setup(&s, make_texture(1, noise, "0", "1", "0"), 9);
-        aero_stick_texture_set_sources(&s, k ? 16 : 1);
-        aero_stick_texture_set_length(&s, 0.02); /* compact: same r */
-        aero_stick_texture_set_wind(&s, wind);
+        aero_aeolian_set_sources(&s, k ? 16 : 1);
+        aero_aeolian_set_length(&s, 0.02); /* compact: same r */
+        aero_aeolian_set_wind(&s, wind);
         render(&s, a, n, 64);
         lv[k] = 20 * log10(rms(a + 4800, n - 4800));
-        aero_stick_texture_free(&s);
+        aero_aeolian_free(&s);
     }
     UNIT_CHECK(fabs(lv[1] - lv[0] + 10 * log10(16.0)) < 1.0,
                "16 sources of 1/16 the span: %+.2f dB (incoherent -12.04, "
@@ -237,7 +237,7 @@ UNIT_TEST(directions)
     float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
     double two[2] = {100.0, 200.0}, diff;
     double wind[3] = {10.0, 0, 0};
-    aero_stick_texture s;
+    aero_aeolian s;
 
     /* 6. directions: square-like symmetry (period 90, mirrored), sampled at
      *    0 and 45 deg. The flow angle in the body is -roll. */
@@ -245,11 +245,11 @@ UNIT_TEST(directions)
     const double rolls[4] = {0.0, -45.0, -90.0, -135.0};
     for (int k = 0; k < 4; k++) {
         setup(&s, make_texture(2, two, "4", "1", "0,45"), 5);
-        aero_stick_texture_set_wind(&s, wind);
-        aero_stick_texture_set_roll_deg(&s, rolls[k]);
+        aero_aeolian_set_wind(&s, wind);
+        aero_aeolian_set_roll_deg(&s, rolls[k]);
         render(&s, a, n, 64);
         out_angle[k] = zero_crossing_hz(a + 4800, n - 4800);
-        aero_stick_texture_free(&s);
+        aero_aeolian_free(&s);
     }
     UNIT_NEAR_REL(out_angle[0], 100.0, 0.01, "flow at 0 deg: direction 0");
     UNIT_NEAR_REL(out_angle[1], 200.0, 0.01, "flow at 45 deg: direction 1");
@@ -258,15 +258,15 @@ UNIT_TEST(directions)
 
     /* mirror: 60 deg is 30 deg seen in a mirror: the lift changes sign */
     setup(&s, make_texture(2, two, "4", "1", "0,45"), 5);
-    aero_stick_texture_set_wind(&s, wind);
-    aero_stick_texture_set_roll_deg(&s, -30.0);
+    aero_aeolian_set_wind(&s, wind);
+    aero_aeolian_set_roll_deg(&s, -30.0);
     render(&s, a, n, 64);
-    aero_stick_texture_free(&s);
+    aero_aeolian_free(&s);
     setup(&s, make_texture(2, two, "4", "1", "0,45"), 5);
-    aero_stick_texture_set_wind(&s, wind);
-    aero_stick_texture_set_roll_deg(&s, -60.0);
+    aero_aeolian_set_wind(&s, wind);
+    aero_aeolian_set_roll_deg(&s, -60.0);
     render(&s, b, n, 64);
-    aero_stick_texture_free(&s);
+    aero_aeolian_free(&s);
     diff = 0;
     for (int i = 4800; i < n; i++)
         diff = fmax(diff, fabs(a[i] + b[i]));
@@ -279,10 +279,10 @@ UNIT_TEST(directions)
     float *dst[3] = {a, b, c};
     for (int k = 0; k < 3; k++) {
         setup(&s, make_texture(2, two, "4", "1", "0,45"), 5);
-        aero_stick_texture_set_wind(&s, wind);
-        aero_stick_texture_set_roll_deg(&s, mid_rolls[k]);
+        aero_aeolian_set_wind(&s, wind);
+        aero_aeolian_set_roll_deg(&s, mid_rolls[k]);
         render(&s, dst[k], n, 64);
-        aero_stick_texture_free(&s);
+        aero_aeolian_free(&s);
     }
     diff = 0;
     for (int i = 4800; i < n; i++)
@@ -299,46 +299,46 @@ UNIT_TEST(bad_values)
     const int n = 48000;
     float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
     double f100[1] = {100.0};
-    aero_stick_texture s;
+    aero_aeolian s;
 
     /* 7. bad values are refused and nothing non-finite comes out */
     setup(&s, make_texture(1, f100, "0", "1", "0"), 1);
     double bad3[3] = {NAN, 0, 0}, zero3[3] = {0, 0, 0}, huge3[3] = {1e30, 0, 0};
-    int refused = (aero_stick_texture_set_wind(&s, bad3) != 0) +
-                  (aero_stick_texture_set_wind(&s, huge3) != 0) +
-                  (aero_stick_texture_set_pose(&s, zero3, zero3, 0.01) != 0) +
-                  (aero_stick_texture_set_pose(&s, bad3, zero3, 0.01) != 0) +
-                  (aero_stick_texture_set_reference(&s, zero3) != 0) +
-                  (aero_stick_texture_set_diameter(&s, -1) != 0) +
-                  (aero_stick_texture_set_diameter(&s, NAN) != 0) +
-                  (aero_stick_texture_set_sources(&s, -2) != 0) +
-                  (aero_stick_texture_set_sources(&s, 100000) != 0) +
-                  (aero_stick_texture_set_exponent(&s, NAN) != 0) +
-                  (aero_stick_texture_set_roll_deg(&s, INFINITY) != 0) +
-                  (aero_stick_texture_set_ears(&s,
+    int refused = (aero_aeolian_set_wind(&s, bad3) != 0) +
+                  (aero_aeolian_set_wind(&s, huge3) != 0) +
+                  (aero_aeolian_set_pose(&s, zero3, zero3, 0.01) != 0) +
+                  (aero_aeolian_set_pose(&s, bad3, zero3, 0.01) != 0) +
+                  (aero_aeolian_set_reference(&s, zero3) != 0) +
+                  (aero_aeolian_set_diameter(&s, -1) != 0) +
+                  (aero_aeolian_set_diameter(&s, NAN) != 0) +
+                  (aero_aeolian_set_sources(&s, -2) != 0) +
+                  (aero_aeolian_set_sources(&s, 100000) != 0) +
+                  (aero_aeolian_set_exponent(&s, NAN) != 0) +
+                  (aero_aeolian_set_roll_deg(&s, INFINITY) != 0) +
+                  (aero_aeolian_set_ears(&s,
                           &(aero_ears){1, {{NAN, 0, 0}}}) != 0) +
-                  (aero_stick_texture_set_ears(&s,
+                  (aero_aeolian_set_ears(&s,
                           &(aero_ears){2, {{0, 0, 0}, {0, 0, 0}}}) != 0) +
-                  (aero_stick_texture_set_sample_rate(&s, 0) != 0);
+                  (aero_aeolian_set_sample_rate(&s, 0) != 0);
     UNIT_CHECK(refused == 14, "bad values refused: %d of 14", refused);
     float *speed = calloc(n, sizeof(float));
     for (int i = 0; i < n; i++)
         speed[i] = i % 3 == 0 ? NAN : i % 3 == 1 ? 1e30f : -1e9f;
     float *o[1] = {a};
-    int clamped = aero_stick_texture_process(&s, speed, o, n);
+    int clamped = aero_aeolian_process(&s, speed, o, n);
     int finite = 1;
     for (int i = 0; i < n; i++)
         finite &= isfinite(a[i]) && fabs(a[i]) < 1e3;
     UNIT_CHECK(finite && clamped, "NaN and huge speeds: finite output, "
                "clamp reported (%d)", clamped);
     /* a listener inside the stick does not blow up */
-    aero_stick_texture_set_ears(&s, &(aero_ears){1, {{0, 0, 0}}});
+    aero_aeolian_set_ears(&s, &(aero_ears){1, {{0, 0, 0}}});
     render(&s, a, n, 64);
     finite = 1;
     for (int i = 0; i < n; i++)
         finite &= isfinite(a[i]) && fabs(a[i]) < 1e4;
     UNIT_CHECK(finite, "listener on the stick: finite, max bounded");
-    aero_stick_texture_free(&s);
+    aero_aeolian_free(&s);
     free(speed);
     free(a);
     free(b);
@@ -349,17 +349,17 @@ UNIT_TEST(wrong_kind)
     const int n = 48000;
     float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
     double f100[1] = {100.0};
-    aero_stick_texture s;
+    aero_aeolian s;
 
     /* 8. a texture of the wrong kind is refused and not taken */
     aero_texture *wrong = make_texture(1, f100, "0", "1", "0");
     aero_texture_set(wrong, "kind", "cavity");
     char err[128] = "";
-    aero_stick_texture_init(&s, SR, 1, 1);
-    UNIT_CHECK(aero_stick_texture_set_texture(&s, wrong, err, sizeof(err)) &&
+    aero_aeolian_init(&s, SR, 1, 1);
+    UNIT_CHECK(aero_aeolian_set_texture(&s, wrong, err, sizeof(err)) &&
                    strstr(err, "cavity"),
                "cavity texture refused: %s", err);
-    aero_stick_texture_free(&s);
+    aero_aeolian_free(&s);
     aero_texture_free(wrong);
     free(wrong);
     free(a);
@@ -372,7 +372,7 @@ UNIT_TEST(phase_wander)
     float *a = calloc(n, sizeof(float)), *b = calloc(n, sizeof(float));
     double f100[1] = {100.0};
     double diff;
-    aero_stick_texture s;
+    aero_aeolian s;
 
     /* 9. the sources' phases wander, so they add their powers, as model
      *    mode's incoherent segments do: n sources of length L/n give 1/n of
@@ -400,24 +400,24 @@ UNIT_TEST(phase_wander)
         float *x = calloc(len, sizeof(float)), *y = calloc(len, sizeof(float));
         double wind16[3] = {10.0, 0, 0};
         setup(&s, make_texture(1, f100, "0", "1", "0"), 2);
-        aero_stick_texture_set_phase_wander(&s, 0.01);
-        aero_stick_texture_set_sources(&s, 1);
-        aero_stick_texture_set_wind(&s, wind16);
+        aero_aeolian_set_phase_wander(&s, 0.01);
+        aero_aeolian_set_sources(&s, 1);
+        aero_aeolian_set_wind(&s, wind16);
         render(&s, x, len, 64);
         UNIT_NEAR_REL(zero_crossing_hz(x + 4800, len - 4800), 100.0, 0.003,
                       "phase wander: one source's mean pitch over 16 s");
-        aero_stick_texture_free(&s);
+        aero_aeolian_free(&s);
         /* and any block size still gives the same sound */
         setup(&s, make_texture(1, f100, "0", "1", "0"), 2);
-        aero_stick_texture_set_phase_wander(&s, 0.01);
-        aero_stick_texture_set_sources(&s, 1);
-        aero_stick_texture_set_wind(&s, wind16);
+        aero_aeolian_set_phase_wander(&s, 0.01);
+        aero_aeolian_set_sources(&s, 1);
+        aero_aeolian_set_wind(&s, wind16);
         render(&s, y, len, 1);
-        UNIT_CHECK(aero_stick_texture_set_phase_wander(&s, NAN) &&
-                       aero_stick_texture_set_phase_wander(&s, -0.1) &&
-                       aero_stick_texture_set_phase_wander(&s, 5.0),
+        UNIT_CHECK(aero_aeolian_set_phase_wander(&s, NAN) &&
+                       aero_aeolian_set_phase_wander(&s, -0.1) &&
+                       aero_aeolian_set_phase_wander(&s, 5.0),
                    "phase wander: NaN, negative and huge widths refused");
-        aero_stick_texture_free(&s);
+        aero_aeolian_free(&s);
         diff = 0;
         for (int i = 4800; i < len; i++)
             diff = fmax(diff, fabs(x[i] - y[i]));
@@ -435,22 +435,22 @@ UNIT_TEST(phase_wander)
 static void *mi_make(int variant)
 {
     char err[128];
-    aero_stick_texture *s = calloc(1, sizeof(*s));
-    aero_stick_texture_init(s, 44100.0, 1, 3u + variant);
-    aero_stick_texture_set_texture(s, unit_mi_texture("aeolian", 2), err,
-                                   sizeof(err));
+    aero_aeolian *s = calloc(1, sizeof(*s));
+    aero_aeolian_init(s, 44100.0, 1, 3u + variant);
+    aero_aeolian_set_texture(s, unit_mi_texture("aeolian", 2), err,
+                             sizeof(err));
     double wind[3] = {variant ? 7.0 : 12.0, 1.0, 0.0};
-    aero_stick_texture_set_wind(s, wind);
-    aero_stick_texture_set_sources(s, variant ? 3 : 5);
+    aero_aeolian_set_wind(s, wind);
+    aero_aeolian_set_sources(s, variant ? 3 : 5);
     return s;
 }
 static void mi_run(void *s, const float *speed, float *out, int n)
 {
-    aero_stick_texture_process(s, speed, (float *[]){out}, n);
+    aero_aeolian_process(s, speed, (float *[]){out}, n);
 }
 static void mi_drop(void *s)
 {
-    aero_stick_texture_free(s);
+    aero_aeolian_free(s);
     free(s);
 }
 

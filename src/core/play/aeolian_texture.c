@@ -1,6 +1,7 @@
-/* aero: a moving stick played from a sound texture (Dobashi et al. 2003); see
- * stick_texture.h for the model. */
-#include "stick_texture.h"
+/* aero: [aeolian~]'s texture mode, a moving stick played from a sound
+ * texture (Dobashi et al. 2003; see aeolian.h). It reads the object's
+ * settings; its state is *a->texture, made when first needed. */
+#include "aeolian_internal.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -8,6 +9,7 @@
 #include <string.h>
 
 #include "aero_air.h"
+#include "aero_ramp.h"
 #include "aero_util.h"
 #include "strouhal.h"
 
@@ -18,24 +20,69 @@
    source reads the same periodic texture at the same rate, so their phases
    stay frozen and each line of the sum gets a random gain of its own. So
    each source's phase wanders, a random walk whose Lorentzian line is
-   this wide relative to f (full width at half maximum): wide enough to
-   lose the sources' mutual phase in a fraction of a second (0.16 s at
-   200 Hz), narrower than the turbulent wake's few percent (model mode),
-   so the texture's own spectrum still shapes the line. */
-#define PHASE_WANDER_WIDTH 0.01
+   AERO_AEOLIAN_PHASE_WANDER_DEFAULT (1 %) wide relative to f (full width at
+   half maximum): wide enough to lose the sources' mutual phase in a
+   fraction of a second (0.16 s at 200 Hz), narrower than the turbulent
+   wake's few percent (model mode), so the texture's own spectrum still
+   shapes the line. */
 
 /* --- helpers ------------------------------------------------------------- */
 
 #define dot3 aero_dot3
 #define cross3 aero_cross3
 #define normalise3 aero_normalise3
-#define ramp_advance aero_ramp_advance
+/* the stick's short names for aeolian.h's sizes */
+#define AERO_STICK_CHUNK AERO_AEOLIAN_TEXTURE_CHUNK
+#define AERO_STICK_MAX_EARS AERO_AEOLIAN_MAX_EARS
+#define AERO_STICK_MAX_DELAY_S AERO_AEOLIAN_MAX_DELAY_S
+
+/* the object's target of gliding setting k, and the glide itself */
+static double target_of(const aero_aeolian *a, int k)
+{
+    return k >= AERO_AEO_ROLL   ? a->roll_deg
+           : k >= AERO_AEO_WIND ? a->wind[k - AERO_AEO_WIND]
+                                : a->target[k];
+}
+
+static aero_aeolian_glide *glide_of(aero_aeolian_texture *s, int k)
+{
+    return k >= AERO_AEO_ROLL   ? &s->roll
+           : k >= AERO_AEO_WIND ? &s->wind[k - AERO_AEO_WIND]
+           : k >= AERO_AEO_EAR  ? &s->ear[k - AERO_AEO_EAR]
+                                : &s->gain;
+}
+
+/* setting k glides to its target in ~ the ramp time, in whole chunks (as
+   aero_ramp_to does) */
+void aero_aeolian_texture_retarget(aero_aeolian *a, int k)
+{
+    aero_aeolian_glide *g = glide_of(a->texture, k);
+    double chunks = ceil(a->ramp_ms * 0.001 * a->sample_rate /
+                         AERO_STICK_CHUNK);
+    if (!(chunks >= 1.0)) {
+        g->value = target_of(a, k);
+        g->left = 0.0;
+    } else
+        g->left = chunks * AERO_STICK_CHUNK;
+}
+
+/* the value of setting k after one more chunk (as aero_ramp_advance) */
+static double glide_advance(const aero_aeolian *a, int k)
+{
+    aero_aeolian_glide *g = glide_of(a->texture, k);
+    if (g->left > 0.0) {
+        double target = target_of(a, k);
+        aero_glide_values(&g->value, &target, 1,
+                          aero_glide_fraction(&g->left, AERO_STICK_CHUNK));
+    }
+    return g->value;
+}
 
 /* --- life cycle ------------------------------------------------------------ */
 
-static void default_pose(aero_stick_texture *s)
+static void default_pose(aero_aeolian_texture *s, double length)
 {
-    double half = 0.5 * s->length;
+    double half = 0.5 * length;
     double p[6] = {0.0, 0.0, -half, 0.0, 0.0, half};
     memcpy(s->pose, p, sizeof(p));
     memcpy(s->pose_from, p, sizeof(p));
@@ -43,18 +90,20 @@ static void default_pose(aero_stick_texture *s)
     s->pose_elapsed = s->pose_duration = 0.0;
 }
 
-static double current_diameter(const aero_stick_texture *s)
+/* the diameter given, else the texture's */
+static double current_diameter(const aero_aeolian *a)
 {
-    if (s->diameter > 0.0)
-        return s->diameter;
-    return s->tex_diameter > 0.0 ? s->tex_diameter : 0.01;
+    const aero_aeolian_texture *s = a->texture;
+    if (a->diameter_set || !(s->tex_diameter > 0.0))
+        return a->target[AERO_AEO_DIAMETER];
+    return s->tex_diameter;
 }
 
 /* A circle texture corrected to a 3D cylinder (span3d.h) holds St and
    sectional C_L' of its own Re. Away from it both follow the circle's
    published laws, Roshko (1954) St(Re) and Norberg (2003) C_L'(Re), as
    model mode does, so the two modes agree at every speed. */
-static void set_re_law(aero_stick_texture *s, const aero_texture *t,
+static void set_re_law(aero_aeolian_texture *s, const aero_texture *t,
                        double v0, double d)
 {
     double re = t->head.re;
@@ -70,7 +119,7 @@ static void set_re_law(aero_stick_texture *s, const aero_texture *t,
 }
 
 /* St(Re) / St(Re of the texture): 1 unless the law applies */
-static double re_pitch(const aero_stick_texture *s, double v, double d)
+static double re_pitch(const aero_aeolian_texture *s, double v, double d)
 {
     if (!s->re_law || !(v > MIN_SPEED))
         return 1.0;
@@ -78,7 +127,7 @@ static double re_pitch(const aero_stick_texture *s, double v, double d)
 }
 
 /* C_L'(Re) / C_L'(Re of the texture) */
-static double re_level(const aero_stick_texture *s, double v, double d)
+static double re_level(const aero_aeolian_texture *s, double v, double d)
 {
     if (!s->re_law || !(v > MIN_SPEED))
         return 1.0;
@@ -95,9 +144,9 @@ static double stick_length(const double *pose)
    player's generator would only replay its own stream one step later (the
    sources' wanders equal and their phases frozen), so it is scrambled to
    another place in the xorshift cycle (Murmur3's finaliser) */
-static uint32_t source_generator(aero_stick_texture *s)
+static uint32_t source_generator(aero_aeolian_texture *s)
 {
-    uint32_t h = aero_xorshift32(&s->base.rng);
+    uint32_t h = aero_xorshift32(&s->rng);
     h ^= h >> 16;
     h *= 0x85ebca6bu;
     h ^= h >> 13;
@@ -108,9 +157,9 @@ static uint32_t source_generator(aero_stick_texture *s)
 
 /* a random offset of the texture and a generator of its own for the
    phase wander, which starts again */
-static void seed_source(aero_stick_texture *s, aero_stick_source *src)
+static void seed_source(aero_aeolian_texture *s, aero_aeolian_source *src)
 {
-    src->pos = 0.5 * (aero_uniform(&s->base.rng) + 1.0) *
+    src->pos = 0.5 * (aero_uniform(&s->rng) + 1.0) *
                (s->texture ? s->texture->frames : 1);
     src->rng = source_generator(s);
     src->wander = 0.0;
@@ -118,66 +167,103 @@ static void seed_source(aero_stick_texture *s, aero_stick_source *src)
 }
 
 /* a new source: nothing carried over */
-static void start_source(aero_stick_texture *s, aero_stick_source *src)
+static void start_source(aero_aeolian_texture *s, aero_aeolian_source *src)
 {
     memset(src, 0, sizeof(*src));
     seed_source(s, src);
 }
 
 /* n from the pose's length and the correlation length 3 d (Dobashi et
-   al. 2003) */
-static void update_source_count(aero_stick_texture *s)
+   al. 2003), for a stick of diameter d */
+static void count_sources(aero_aeolian *a, double d)
 {
-    int n = s->sources_wanted;
+    aero_aeolian_texture *s = a->texture;
+    int n = a->sources;
     if (n <= 0) {
         double len = stick_length(s->pose_to);
         /* clamp before the cast: a 1e5 m pose of a 1e-5 m stick asks for
            3e9 sources, beyond int */
-        double want = floor(len / (AERO_CORRELATION_DIAMETERS *
-                                       current_diameter(s)) + 0.5);
+        double want = floor(len / (AERO_CORRELATION_DIAMETERS * d) + 0.5);
         n = !(want >= 1.0) ? 1
-            : want > AERO_STICK_MAX_SOURCES ? AERO_STICK_MAX_SOURCES
-                                            : (int)want;
+            : want > AERO_AEOLIAN_SOURCES_MAX ? AERO_AEOLIAN_SOURCES_MAX
+                                              : (int)want;
     }
     if (n < 1)
         n = 1;
-    if (n > AERO_STICK_MAX_SOURCES)
-        n = AERO_STICK_MAX_SOURCES;
+    if (n > AERO_AEOLIAN_SOURCES_MAX)
+        n = AERO_AEOLIAN_SOURCES_MAX;
     for (int i = s->n_sources; i < n; i++) /* new ones fade in */
         start_source(s, &s->src[i]);
     s->n_sources = n;
 }
 
-int aero_stick_texture_init(aero_stick_texture *s, double sample_rate,
-                            int n_ears, uint32_t seed)
+static void update_source_count(aero_aeolian *a)
 {
-    memset(s, 0, sizeof(*s));
-    int rc = aero_moving_player_init(
-        &s->base,
-        sample_rate > 0.0 && aero_is_finite(sample_rate) ? sample_rate
-                                                         : 44100.0,
-        n_ears, seed, AERO_STICK_CHUNK, AERO_STICK_MAX_DELAY_S);
-    s->length = 0.5;
-    s->phase_wander_width = PHASE_WANDER_WIDTH;
-    default_pose(s);
-    s->reference[0] = 1.0;
-    update_source_count(s);
-    return rc;
+    count_sources(a, current_diameter(a));
 }
 
-void aero_stick_texture_free(aero_stick_texture *s)
+static int alloc_rings(aero_aeolian *a, double sr)
 {
-    aero_moving_player_free(&s->base);
+    return aero_arrivals_alloc(&a->texture->arrivals, a->n_ears, sr,
+                               AERO_STICK_MAX_DELAY_S, 4 * AERO_STICK_CHUNK);
+}
+
+/* The part starts as a stick at the defaults (0.5 m along z, 1 cm,
+ * gain 1, the default ears) and is then given the object's diameter (when
+ * set) and length, in that order, each starting the sources it adds, and
+ * glides its gain and ears to the object's. Its generator continues the
+ * model's stream (xored, so the two differ) until a seed is given. */
+int aero_aeolian_texture_make(aero_aeolian *a)
+{
+    if (a->texture)
+        return 0;
+    aero_aeolian_texture *s = calloc(1, sizeof(*s));
+    if (!s)
+        return -1;
+    a->texture = s;
+    if (alloc_rings(a, a->sample_rate)) {
+        aero_aeolian_texture_free(a);
+        return -1;
+    }
+    s->ring_rate = a->sample_rate;
+    uint32_t seed = a->model.rng ^ 0x9e3779b9u;
+    s->rng = seed ? seed : 1;
+    s->gain.value = 1.0;
+    for (int e = 0; e < AERO_EARS_MAX; e++) {
+        s->ear[3 * e + 0].value = a->n_ears == 2 ? (e ? 0.1 : -0.1) : 0.0;
+        s->ear[3 * e + 1].value = 1.0;
+    }
+    s->reference[0] = 1.0;
+    default_pose(s, AERO_AEOLIAN_LENGTH_DEFAULT);
+    count_sources(a, AERO_AEOLIAN_DIAMETER_DEFAULT);
+    if (a->diameter_set)
+        count_sources(a, a->target[AERO_AEO_DIAMETER]);
+    default_pose(s, a->target[AERO_AEO_LENGTH]);
+    update_source_count(a);
+    aero_aeolian_texture_retarget(a, AERO_AEO_GAIN);
+    for (int k = 0; k < 3 * a->n_ears; k++)
+        aero_aeolian_texture_retarget(a, AERO_AEO_EAR + k);
+    return 0;
+}
+
+void aero_aeolian_texture_free(aero_aeolian *a)
+{
+    aero_aeolian_texture *s = a->texture;
+    if (!s)
+        return;
+    aero_arrivals_free(&s->arrivals);
     if (s->texture) {
         aero_texture_free(s->texture);
         free(s->texture);
-        s->texture = NULL;
     }
+    free(s);
+    a->texture = NULL;
 }
 
-int aero_stick_texture_set_texture(aero_stick_texture *s, aero_texture *t,
-                                   char *err, size_t errlen)
+int aero_aeolian_texture_set(aero_aeolian *a, aero_texture *t, char *err,
+                             size_t errlen)
 {
+    aero_aeolian_texture *s = a->texture;
     if (t) {
         const char *kind = t->head.kind;
         if (strcmp(kind, "aeolian")) {
@@ -221,91 +307,60 @@ int aero_stick_texture_set_texture(aero_stick_texture *s, aero_texture *t,
     }
     s->texture = t;
     /* sources restart from random offsets of the new texture */
-    for (int i = 0; i < AERO_STICK_MAX_SOURCES; i++)
+    for (int i = 0; i < AERO_AEOLIAN_SOURCES_MAX; i++)
         start_source(s, &s->src[i]);
-    update_source_count(s);
+    update_source_count(a);
     return 0;
 }
 
-/* --- setters ---------------------------------------------------------------- */
+/* --- the settings, as the texture mode takes them ---------------------------- */
 
-int aero_stick_texture_set_sample_rate(aero_stick_texture *s, double sr)
+int aero_aeolian_texture_sample_rate(aero_aeolian *a, double sr)
 {
-    int rc = aero_moving_player_set_sample_rate(&s->base, sr);
-    if (rc > 0)
-        for (int i = 0; i < AERO_STICK_MAX_SOURCES; i++)
-            s->src[i].primed = 0;
-    return rc < 0 ? -1 : 0;
-}
-
-int aero_stick_texture_set_diameter(aero_stick_texture *s, double d)
-{
-    if (!(d == 0.0 || (d >= 1e-5 && d <= 10.0)))
+    aero_aeolian_texture *s = a->texture;
+    if (!(sr >= AERO_MOVING_SR_MIN && sr <= AERO_MOVING_SR_MAX))
         return -1;
-    s->diameter = d;
-    update_source_count(s);
+    if (sr == s->ring_rate && s->arrivals.ring[0])
+        return 0;
+    if (alloc_rings(a, sr))
+        return -1;
+    s->ring_rate = sr;
+    for (int i = 0; i < AERO_AEOLIAN_SOURCES_MAX; i++)
+        s->src[i].primed = 0; /* the rings are new */
     return 0;
 }
 
-int aero_stick_texture_set_length(aero_stick_texture *s, double l)
+void aero_aeolian_texture_resize(aero_aeolian *a, int k)
 {
-    if (!(l >= 1e-5 && l <= 1000.0))
-        return -1;
-    s->length = l;
-    if (!s->pose_set) {
-        default_pose(s);
-        update_source_count(s);
+    aero_aeolian_texture *s = a->texture;
+    if (k == AERO_AEO_LENGTH) {
+        if (s->pose_set) /* the poses give the length */
+            return;
+        default_pose(s, a->target[AERO_AEO_LENGTH]);
     }
-    return 0;
+    if (k == AERO_AEO_SOURCES && a->sources > 0 &&
+        a->sources < s->n_sources)
+        s->n_sources = a->sources;
+    update_source_count(a);
 }
 
-int aero_stick_texture_set_sources(aero_stick_texture *s, int n)
+/* the seed as given; each source a new offset and generator, the rest
+   kept */
+void aero_aeolian_texture_seed(aero_aeolian *a)
 {
-    if (n < 0 || n > AERO_STICK_MAX_SOURCES)
-        return -1;
-    s->sources_wanted = n;
-    if (n > 0 && n < s->n_sources)
-        s->n_sources = n;
-    update_source_count(s);
-    return 0;
-}
-
-int aero_stick_texture_set_exponent(aero_stick_texture *s, double e)
-{
-    return aero_moving_player_set_exponent(&s->base, e);
-}
-
-int aero_stick_texture_set_gain_db(aero_stick_texture *s, double db)
-{
-    return aero_moving_player_set_gain_db(&s->base, db);
-}
-
-int aero_stick_texture_set_ramp_ms(aero_stick_texture *s, double ms)
-{
-    return aero_moving_player_set_ramp_ms(&s->base, ms);
-}
-
-void aero_stick_texture_set_seed(aero_stick_texture *s, uint32_t seed)
-{
-    s->base.rng = seed ? seed : 1;
-    for (int i = 0; i < AERO_STICK_MAX_SOURCES; i++)
-        if (s->texture) /* a new offset and generator, the rest kept */
+    aero_aeolian_texture *s = a->texture;
+    s->rng = a->seed ? a->seed : 1;
+    for (int i = 0; i < AERO_AEOLIAN_SOURCES_MAX; i++)
+        if (s->texture)
             seed_source(s, &s->src[i]);
 }
 
-int aero_stick_texture_set_phase_wander(aero_stick_texture *s, double width)
+int aero_aeolian_texture_pose(aero_aeolian *a, const double end_a[3],
+                              const double end_b[3], double interval_s)
 {
-    if (!(width >= 0.0 && width <= 0.1))
-        return -1;
-    s->phase_wander_width = width;
-    return 0;
-}
-
-int aero_stick_texture_set_pose(aero_stick_texture *s, const double a[3],
-                                const double b[3], double interval_s)
-{
-    double p[6] = {a[0], a[1], a[2], b[0], b[1], b[2]};
-    if (!aero_position_ok(a) || !aero_position_ok(b) ||
+    aero_aeolian_texture *s = a->texture;
+    double p[6] = {end_a[0], end_a[1], end_a[2], end_b[0], end_b[1], end_b[2]};
+    if (!aero_position_ok(end_a) || !aero_position_ok(end_b) ||
         stick_length(p) < 1e-6)
         return -1;
     /* the first pose, one after a pause (a new gesture) or a placement
@@ -317,7 +372,7 @@ int aero_stick_texture_set_pose(aero_stick_texture *s, const double a[3],
         memset(s->pose_velocity, 0, sizeof(s->pose_velocity));
         s->pose_elapsed = s->pose_duration = 0.0;
         if (!s->pose_set)
-            update_source_count(s);
+            update_source_count(a);
         s->pose_set = 1;
         return 0;
     }
@@ -330,53 +385,29 @@ int aero_stick_texture_set_pose(aero_stick_texture *s, const double a[3],
     memcpy(s->pose_from, s->pose, sizeof(p));
     memcpy(s->pose_to, p, sizeof(p));
     s->pose_elapsed = 0.0;
-    s->pose_duration = interval_s * s->base.sample_rate;
-    if (s->sources_wanted <= 0) {
+    s->pose_duration = interval_s * a->sample_rate;
+    if (a->sources <= 0) {
         /* keep n unless the length changed a lot (a new object) */
         double was = stick_length(s->pose_from), now = stick_length(p);
         if (now > 1.5 * was || now < was / 1.5)
-            update_source_count(s);
+            update_source_count(a);
     }
     return 0;
 }
 
-int aero_stick_texture_set_reference(aero_stick_texture *s,
-                                     const double x[3])
+int aero_aeolian_texture_reference(aero_aeolian *a, const double x[3])
 {
     double v[3] = {x[0], x[1], x[2]};
     if (!aero_position_ok(v) || normalise3(v) < 1e-9)
         return -1;
-    memcpy(s->reference, v, sizeof(v));
+    memcpy(a->texture->reference, v, sizeof(v));
     return 0;
 }
 
-int aero_stick_texture_set_roll_deg(aero_stick_texture *s, double deg)
+double aero_aeolian_texture_tone_hz(const aero_aeolian *a, double v)
 {
-    if (!aero_is_finite(deg) || fabs(deg) > 1e6)
-        return -1;
-    aero_moving_player_ramp(&s->base, &s->roll, deg);
-    return 0;
-}
-
-int aero_stick_texture_set_wind(aero_stick_texture *s, const double w[3])
-{
-    return aero_moving_player_set_wind(&s->base, w);
-}
-
-int aero_stick_texture_set_ears(aero_stick_texture *s, const aero_ears *e)
-{
-    return aero_moving_player_set_ears(&s->base, e);
-}
-
-double aero_stick_texture_tone_hz(const aero_stick_texture *s, double v)
-{
-    double d = current_diameter(s);
-    return s->st * re_pitch(s, v, d) * v / d;
-}
-
-int aero_stick_texture_source_count(const aero_stick_texture *s)
-{
-    return s->n_sources;
+    double d = current_diameter(a);
+    return a->texture->st * re_pitch(a->texture, v, d) * v / d;
 }
 
 /* --- directions ------------------------------------------------------------ */
@@ -397,7 +428,7 @@ typedef struct {
  * halves are the same flow but their lift has opposite signs, so within
  * FOLD_HYSTERESIS_DEG of one the previous side (*sign on entry) is kept:
  * a stick hovering there does not flip its lift back and forth. */
-static double fold_angle(const aero_stick_texture *s, double a, double *sign)
+static double fold_angle(const aero_aeolian_texture *s, double a, double *sign)
 {
     double previous = *sign < 0.0 ? -1.0 : 1.0;
     *sign = 1.0;
@@ -418,7 +449,7 @@ static double fold_angle(const aero_stick_texture *s, double a, double *sign)
     return a;
 }
 
-static dir_pair find_pair(const aero_stick_texture *s, double folded,
+static dir_pair find_pair(const aero_aeolian_texture *s, double folded,
                           double sign)
 {
     const aero_texture *t = s->texture;
@@ -485,7 +516,7 @@ typedef struct {
    moves by more than 0.1 % (St and C_L' then move by about as little), as
    model mode caches its laws: a log and a power per source and chunk cost
    a fifth of the player */
-static void re_factors(const aero_stick_texture *s, aero_stick_source *src,
+static void re_factors(const aero_aeolian_texture *s, aero_aeolian_source *src,
                        double v, double d, double *pitch, double *level)
 {
     if (!s->re_law || !(v > MIN_SPEED)) {
@@ -503,9 +534,10 @@ static void re_factors(const aero_stick_texture *s, aero_stick_source *src,
     *level = src->law_level;
 }
 
-static int source_at(aero_stick_texture *s, const stick_frame *f, double u,
-                     aero_stick_source *src, source_geometry *g)
+static int source_at(const aero_aeolian *a, const stick_frame *f, double u,
+                     aero_aeolian_source *src, source_geometry *g)
 {
+    const aero_aeolian_texture *s = a->texture;
     int clamped = 0;
     double pos[3], rel[3];
     for (int i = 0; i < 3; i++) {
@@ -523,15 +555,15 @@ static int source_at(aero_stick_texture *s, const stick_frame *f, double u,
         v = vmax;
         clamped = 1;
     }
-    double d = current_diameter(s);
+    double d = current_diameter(a);
     double ratio = v / s->v0, pitch, level;
     re_factors(s, src, v, d, &pitch, &level);
     g->inc = ratio * pitch * (s->tex_diameter / d) * s->tex_rate /
-             s->base.sample_rate;
+             a->sample_rate;
     if (v > MIN_SPEED) {
         g->angle = atan2(dot3(perp, f->yb), dot3(perp, f->xb)) * 180.0 / AERO_PI;
         /* g = dF/dt: the force scales with C_L', its rate with St */
-        g->amp = pow(ratio, s->base.exponent) * pitch * level *
+        g->amp = pow(ratio, a->exponent) * pitch * level *
                  f->seg_len * f->gain;
     } else { /* no flow: silent, keep the direction */
         perp[0] = f->xb[0];
@@ -542,7 +574,7 @@ static int source_at(aero_stick_texture *s, const stick_frame *f, double u,
     }
     double across[3];
     cross3(f->axis, perp, across); /* y of the flow frame */
-    for (int e = 0; e < s->base.n_ears; e++) {
+    for (int e = 0; e < a->n_ears; e++) {
         double r[3] = {f->ears[e][0] - pos[0], f->ears[e][1] - pos[1],
                        f->ears[e][2] - pos[2]};
         double dist = sqrt(dot3(r, r));
@@ -552,8 +584,8 @@ static int source_at(aero_stick_texture *s, const stick_frame *f, double u,
         double k = 1.0 / (4.0 * AERO_PI * AERO_C0 * dist * dist);
         g->fx[e] = dot3(r, perp) * k;
         g->fy[e] = dot3(r, across) * k;
-        double delay = dist / AERO_C0 * s->base.sample_rate;
-        double dmax = AERO_STICK_MAX_DELAY_S * s->base.sample_rate;
+        double delay = dist / AERO_C0 * a->sample_rate;
+        double dmax = AERO_STICK_MAX_DELAY_S * a->sample_rate;
         g->delay[e] = delay < dmax ? delay : dmax;
     }
     return clamped;
@@ -561,9 +593,10 @@ static int source_at(aero_stick_texture *s, const stick_frame *f, double u,
 
 /* moves pose, velocities and ramps by m samples; fills the frame at the
  * chunk's end */
-static void advance_frame(aero_stick_texture *s, int m, double speed,
+static void advance_frame(aero_aeolian *a, int m, double speed,
                           stick_frame *f)
 {
+    aero_aeolian_texture *s = a->texture;
     s->pose_elapsed += m;
     double frac = s->pose_duration > 0.0 ? s->pose_elapsed / s->pose_duration
                                          : 1.0;
@@ -578,7 +611,7 @@ static void advance_frame(aero_stick_texture *s, int m, double speed,
     /* the stream's velocity, smoothed; zero once the stream has stopped
      * (no pose for 1.5 intervals) */
     int stopped = s->pose_elapsed > 1.5 * s->pose_duration + m;
-    double alpha = 1.0 - exp(-m / (VELOCITY_TAU_S * s->base.sample_rate));
+    double alpha = 1.0 - exp(-m / (VELOCITY_TAU_S * a->sample_rate));
     for (int i = 0; i < 6; i++) {
         double v = stopped ? 0.0 : s->pose_velocity[i];
         s->velocity[i] += alpha * (v - s->velocity[i]);
@@ -602,7 +635,7 @@ static void advance_frame(aero_stick_texture *s, int m, double speed,
         normalise3(xb);
     }
     memcpy(s->reference, xb, sizeof(xb));
-    double roll = ramp_advance(&s->roll) * AERO_PI / 180.0;
+    double roll = glide_advance(a, AERO_AEO_ROLL) * AERO_PI / 180.0;
     double yb[3];
     cross3(f->axis, xb, yb);
     for (int i = 0; i < 3; i++) {
@@ -610,13 +643,13 @@ static void advance_frame(aero_stick_texture *s, int m, double speed,
         f->yb[i] = cos(roll) * yb[i] - sin(roll) * xb[i];
     }
     for (int i = 0; i < 3; i++)
-        f->wind[i] = ramp_advance(&s->base.wind[i]);
+        f->wind[i] = glide_advance(a, AERO_AEO_WIND + i);
     f->wind[0] += speed;
-    for (int e = 0; e < s->base.n_ears; e++)
+    for (int e = 0; e < a->n_ears; e++)
         for (int i = 0; i < 3; i++)
-            f->ears[e][i] = ramp_advance(&s->base.ear[3 * e + i]);
+            f->ears[e][i] = glide_advance(a, AERO_AEO_EAR + 3 * e + i);
     f->seg_len = f->len / s->n_sources;
-    f->gain = ramp_advance(&s->base.gain);
+    f->gain = glide_advance(a, AERO_AEO_GAIN);
 }
 
 /* coefficients of one ear for a direction pair, from a geometry */
@@ -637,25 +670,108 @@ static void pair_coefs(const source_geometry *g, int e, double w, double sign,
    uniform number on [-1, 1) has variance 1/3. Each source draws from its
    own generator on its own sample count, so any block size gives the same
    sound. */
-static double phase_wander(const aero_stick_texture *s, aero_stick_source *src,
+static double phase_wander(const aero_aeolian *a, aero_aeolian_source *src,
                            double inc)
 {
-    if (!(s->phase_wander_width > 0.0) || !(s->frames_per_cycle > 0.0) ||
+    const aero_aeolian_texture *s = a->texture;
+    if (!(a->phase_wander > 0.0) || !(s->frames_per_cycle > 0.0) ||
         !(inc > 0.0))
         return 0.0;
-    double variance = s->phase_wander_width * inc * AERO_STICK_CHUNK *
+    double variance = a->phase_wander * inc * AERO_STICK_CHUNK *
                       s->frames_per_cycle / (2.0 * AERO_PI);
     return sqrt(3.0 * variance) * aero_uniform(&src->rng) / AERO_STICK_CHUNK;
 }
 
-/* one source over a chunk of m samples: texture read, Curle projection,
- * added into each ear's ring at its arrival time */
-static void render_source(aero_stick_texture *s, aero_stick_source *src,
-                          const source_geometry *g, int m)
+/* the texture read once for all ears over a chunk of m samples: x, y of
+ * both directions of the pair, the rate gliding from inc_then to inc_now
+ * (frames per sample) with the phase's wander */
+static void read_texture(aero_aeolian *a, aero_aeolian_source *src,
+                         const dir_pair *p, double inc_then, double inc_now,
+                         int m, float tex[4][AERO_STICK_CHUNK])
 {
-    const aero_texture *t = s->texture;
+    const aero_texture *t = a->texture->texture;
     const int ch = t->channels;
     const long frames = t->frames;
+    double pos = src->pos, inc = inc_then;
+    const double dinc = (inc_now - inc_then) * (1.0 / m);
+    double wander = src->wander;
+    int left = src->wander_left;
+    const int c0 = 3 * p->k0, c1 = 3 * p->k1;
+    for (int j = 0; j < m; j++) {
+        long i0 = (long)pos;
+        float fr = (float)(pos - (double)i0);
+        long i1 = i0 + 1 == frames ? 0 : i0 + 1;
+        const float *r0 = t->data + i0 * ch, *r1 = t->data + i1 * ch;
+        tex[0][j] = r0[c0] + fr * (r1[c0] - r0[c0]);
+        tex[1][j] = r0[c0 + 1] + fr * (r1[c0 + 1] - r0[c0 + 1]);
+        tex[2][j] = r0[c1] + fr * (r1[c1] - r0[c1]);
+        tex[3][j] = r0[c1 + 1] + fr * (r1[c1 + 1] - r0[c1 + 1]);
+        inc += dinc;
+        if (left <= 0) {
+            wander = phase_wander(a, src, inc);
+            left = AERO_STICK_CHUNK;
+        }
+        left--;
+        pos += inc + wander > 0.0 ? inc + wander : 0.0;
+        /* more than a whole texture per sample (a tiny stick in a fast
+         * flow, a short texture) must still wrap into it: reading past
+         * the end would overflow the texture */
+        if (pos >= frames) {
+            pos -= frames * floor(pos / frames);
+            if (!(pos >= 0.0 && pos < frames))
+                pos = 0.0;
+        }
+    }
+    if (!(pos >= 0.0 && pos < frames))
+        pos = 0.0;
+    src->pos = pos;
+    src->wander = wander;
+    src->wander_left = left;
+}
+
+/* the chunk's texture projected for each ear (Curle's dipole, its
+ * coefficients gliding from `then` to `now`) and added into the ear's ring
+ * at its arrival time */
+static void radiate(aero_aeolian *a, const source_geometry *then,
+                    const source_geometry *now, double w0, double w1,
+                    double sign_then, double sign_now, int m,
+                    float tex[4][AERO_STICK_CHUNK])
+{
+    aero_aeolian_texture *s = a->texture;
+    const double inv_m = 1.0 / m;
+    for (int e = 0; e < a->n_ears; e++) {
+        double c[4], cend[4];
+        float cf[4], dcf[4];
+        pair_coefs(then, e, w0, sign_then, c);
+        pair_coefs(now, e, w1, sign_now, cend);
+        for (int k = 0; k < 4; k++) {
+            cf[k] = (float)c[k];
+            dcf[k] = (float)((cend[k] - c[k]) * inv_m);
+        }
+        const double delay = then->delay[e];
+        const double ddelay = (now->delay[e] - delay) * inv_m;
+        float *ring = s->arrivals.ring[e];
+        const long mask = s->arrivals.mask;
+        double at = (double)s->arrivals.head + delay;
+        for (int j = 0; j < m; j++) {
+            float v = cf[0] * tex[0][j] + cf[1] * tex[1][j] +
+                      cf[2] * tex[2][j] + cf[3] * tex[3][j];
+            aero_arrivals_add_span(ring, mask, at, 1.0 + ddelay, v);
+            cf[0] += dcf[0];
+            cf[1] += dcf[1];
+            cf[2] += dcf[2];
+            cf[3] += dcf[3];
+            at += 1.0 + ddelay;
+        }
+    }
+}
+
+/* one source over a chunk of m samples: texture read, Curle projection,
+ * added into each ear's ring at its arrival time */
+static void render_source(aero_aeolian *a, aero_aeolian_source *src,
+                          const source_geometry *g, int m)
+{
+    aero_aeolian_texture *s = a->texture;
     double sign_then = src->sign, sign_now = src->sign;
     double folded = fold_angle(s, g->angle, &sign_now);
     dir_pair p = find_pair(s, folded, sign_now);
@@ -669,7 +785,7 @@ static void render_source(aero_stick_texture *s, aero_stick_source *src,
         then.inc = src->inc;
         then.angle = src->angle;
         then.amp = src->amp;
-        for (int e = 0; e < s->base.n_ears; e++) {
+        for (int e = 0; e < a->n_ears; e++) {
             then.fx[e] = src->fx[e];
             then.fy[e] = src->fy[e];
             then.delay[e] = src->delay[e];
@@ -678,87 +794,26 @@ static void render_source(aero_stick_texture *s, aero_stick_source *src,
     double folded_then = fold_angle(s, then.angle, &sign_then);
     src->sign = sign_now;
     double w0 = pair_weight(&p, folded_then, s->mirror ? 0.0 : s->period);
-    const double inv_m = 1.0 / m;
 
     /* the texture once for all ears: x, y of both directions */
     float tex[4][AERO_STICK_CHUNK];
-    {
-        double pos = src->pos, inc = then.inc;
-        const double dinc = (g->inc - then.inc) * inv_m;
-        double wander = src->wander;
-        int left = src->wander_left;
-        const int c0 = 3 * p.k0, c1 = 3 * p.k1;
-        for (int j = 0; j < m; j++) {
-            long i0 = (long)pos;
-            float fr = (float)(pos - (double)i0);
-            long i1 = i0 + 1 == frames ? 0 : i0 + 1;
-            const float *r0 = t->data + i0 * ch, *r1 = t->data + i1 * ch;
-            tex[0][j] = r0[c0] + fr * (r1[c0] - r0[c0]);
-            tex[1][j] = r0[c0 + 1] + fr * (r1[c0 + 1] - r0[c0 + 1]);
-            tex[2][j] = r0[c1] + fr * (r1[c1] - r0[c1]);
-            tex[3][j] = r0[c1 + 1] + fr * (r1[c1 + 1] - r0[c1 + 1]);
-            inc += dinc;
-            if (left <= 0) {
-                wander = phase_wander(s, src, inc);
-                left = AERO_STICK_CHUNK;
-            }
-            left--;
-            pos += inc + wander > 0.0 ? inc + wander : 0.0;
-            /* more than a whole texture per sample (a tiny stick in a fast
-             * flow, a short texture) must still wrap into it: reading past
-             * the end would overflow the texture */
-            if (pos >= frames) {
-                pos -= frames * floor(pos / frames);
-                if (!(pos >= 0.0 && pos < frames))
-                    pos = 0.0;
-            }
-        }
-        if (!(pos >= 0.0 && pos < frames))
-            pos = 0.0;
-        src->pos = pos;
-        src->wander = wander;
-        src->wander_left = left;
-    }
-
-    for (int e = 0; e < s->base.n_ears; e++) {
-        double c[4], cend[4];
-        float cf[4], dcf[4];
-        pair_coefs(&then, e, w0, sign_then, c);
-        pair_coefs(g, e, w1, sign_now, cend);
-        for (int k = 0; k < 4; k++) {
-            cf[k] = (float)c[k];
-            dcf[k] = (float)((cend[k] - c[k]) * inv_m);
-        }
-        const double delay = then.delay[e];
-        const double ddelay = (g->delay[e] - delay) * inv_m;
-        float *ring = s->base.arrivals.ring[e];
-        const long mask = s->base.arrivals.mask;
-        double at = (double)s->base.arrivals.head + delay;
-        for (int j = 0; j < m; j++) {
-            float v = cf[0] * tex[0][j] + cf[1] * tex[1][j] +
-                      cf[2] * tex[2][j] + cf[3] * tex[3][j];
-            aero_arrivals_add_span(ring, mask, at, 1.0 + ddelay, v);
-            cf[0] += dcf[0];
-            cf[1] += dcf[1];
-            cf[2] += dcf[2];
-            cf[3] += dcf[3];
-            at += 1.0 + ddelay;
-        }
-    }
+    read_texture(a, src, &p, then.inc, g->inc, m, tex);
+    radiate(a, &then, g, w0, w1, sign_then, sign_now, m, tex);
     src->inc = g->inc;
     src->angle = g->angle;
     src->amp = g->amp;
-    for (int e = 0; e < s->base.n_ears; e++) {
+    for (int e = 0; e < a->n_ears; e++) {
         src->fx[e] = g->fx[e];
         src->fy[e] = g->fy[e];
         src->delay[e] = g->delay[e];
     }
 }
 
-int aero_stick_texture_process(aero_stick_texture *s, const float *speed,
-                               float *const *out, int n)
+int aero_aeolian_texture_process(aero_aeolian *a, const float *speed,
+                                 float *const *out, int n)
 {
-    s->base.clamped = 0;
+    aero_aeolian_texture *s = a->texture;
+    s->clamped = 0;
     for (int done = 0; done < n;) {
         int m = n - done < AERO_STICK_CHUNK ? n - done : AERO_STICK_CHUNK;
         /* the inlet's mean speed over the chunk (NaN counts as 0) */
@@ -771,17 +826,17 @@ int aero_stick_texture_process(aero_stick_texture *s, const float *speed,
             sp /= m;
         }
         stick_frame f;
-        advance_frame(s, m, sp, &f);
+        advance_frame(a, m, sp, &f);
         if (s->texture) {
             for (int i = 0; i < s->n_sources; i++) {
                 source_geometry g;
                 double u = (i + 0.5) / s->n_sources;
-                s->base.clamped |= source_at(s, &f, u, &s->src[i], &g);
-                render_source(s, &s->src[i], &g, m);
+                s->clamped |= source_at(a, &f, u, &s->src[i], &g);
+                render_source(a, &s->src[i], &g, m);
             }
         }
-        aero_arrivals_take(&s->base.arrivals, out, done, m);
+        aero_arrivals_take(&s->arrivals, out, done, m);
         done += m;
     }
-    return s->base.clamped;
+    return s->clamped;
 }

@@ -358,9 +358,9 @@ check-windows:
 #   make check-valgrind  the core unit tests under valgrind memcheck, but
 #                     those declared slow (tests/robust/slow-tests.sh)
 #   ONLY=pattern      scopes both, as in tests/run.sh (ONLY=aeolian)
-#   make fuzz         libFuzzer harnesses of fuzz/targets.txt (FUZZ_SECONDS
+#   make fuzz         libFuzzer harnesses fuzz/fuzz_*.c (FUZZ_SECONDS
 #                     per harness, default 300)
-#   make check-long   one hour of audio per line of tests/robust/long.txt
+#   make check-long   one hour of audio per long run of tests/robust/objects/
 #   make check-globals  no writable globals in src/ (nm)
 # Everything builds under build-asan/ and build-fuzz/; build/ is untouched.
 # ============================================================================

@@ -39,7 +39,7 @@ static int fuzz_broken; /* invariants broken by the current input */
         }                                                                  \
     } while (0)
 
-static void fuzz_stop(void)
+static inline void fuzz_stop(void)
 {
 #ifndef FUZZ_REPLAY
     abort();
@@ -48,8 +48,8 @@ static void fuzz_stop(void)
 
 /* a file holding data[0..size) in memory; its path goes to path (which
  * stays valid until fuzz_file_close). Returns the descriptor or -1. */
-static int fuzz_file(const uint8_t *data, size_t size, char *path,
-                     size_t len)
+static inline int fuzz_file(const uint8_t *data, size_t size, char *path,
+                            size_t len)
 {
     int fd = memfd_create("aero-fuzz", 0);
     if (fd < 0)
@@ -68,14 +68,14 @@ static int fuzz_file(const uint8_t *data, size_t size, char *path,
     return fd;
 }
 
-static void fuzz_file_close(int fd)
+static inline void fuzz_file_close(int fd)
 {
     if (fd >= 0)
         close(fd);
 }
 
 /* all n floats finite */
-static int fuzz_finite(const float *x, int n)
+static inline int fuzz_finite(const float *x, int n)
 {
     for (int i = 0; i < n; i++)
         if (!isfinite(x[i]))
@@ -89,7 +89,7 @@ typedef struct {
     size_t left;
 } fuzz_stream;
 
-static unsigned fuzz_byte(fuzz_stream *s)
+static inline unsigned fuzz_byte(fuzz_stream *s)
 {
     if (!s->left)
         return 0;
@@ -99,7 +99,7 @@ static unsigned fuzz_byte(fuzz_stream *s)
 
 /* a number as a patch might send one: from a list of values that break
  * things (0, negatives, NaN, infinities, denormals, huge) or raw bits */
-static double fuzz_number(fuzz_stream *s)
+static inline double fuzz_number(fuzz_stream *s)
 {
     static const double special[] = {
         0.0, -0.0, 1.0, -1.0, 0.5, 2.0, 10.0, -10.0, 0.01, 0.001, 1e-5,

@@ -5,6 +5,7 @@
  * texture mode (on a small synthetic texture), switching between them.
  * Invariant: the output stays finite. No seeds: every byte string is a
  * valid program. */
+/* aero-fuzz: object aeolian~ */
 #include "fuzz.h"
 
 #include "aeolian.h"

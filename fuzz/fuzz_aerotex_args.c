@@ -4,12 +4,17 @@
  * aeolian (bit 0: cavity), vortex, object or auralize. Only the parser
  * runs (a valid command line would start a simulation).
  * Seeds: fuzz/seeds/aerotex_args/ (the command lines of textures/make.sh). */
+/* aero-fuzz: sources src/tools/aerotex_png.c src/tools/aerotex_common.c */
+/* aero-fuzz: sources src/tools/aerotex_aeolian.c src/tools/aerotex_cavity.c */
+/* aero-fuzz: sources src/tools/aerotex_section.c src/tools/aerotex_options.c */
+/* aero-fuzz: sources src/tools/aerotex_vortex.c src/tools/aerotex_object.c */
+/* aero-fuzz: sources src/tools/aerotex_field.c */
 #include "fuzz.h"
 
 #include <stdarg.h>
 
 /* the job of aeolian and cavity (aerotex_section.h); the commands'
-   tables come with their sources (fuzz/targets.txt) */
+   tables come with their sources (the aero-fuzz lines above) */
 #include "../src/tools/aerotex_section.h"
 
 #include <math.h>

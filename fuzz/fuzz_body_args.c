@@ -6,6 +6,7 @@
  * (sphere or axis symmetry, 1..3 directions, 1..4 regions, mirror or not).
  * Invariant: the output stays finite. No seeds: every byte string is a
  * valid program. */
+/* aero-fuzz: object body~ */
 #include "fuzz.h"
 
 #include "body_texture.h"

@@ -2,6 +2,7 @@
  * (src/pd/cavity~.c), in any order with any numbers, between blocks of any
  * size and speed signal, in model and texture mode (a small synthetic
  * cavity texture). Invariant: finite output. No seeds needed. */
+/* aero-fuzz: object cavity~ */
 #include "fuzz.h"
 
 #include "cavity_model.h"

@@ -6,6 +6,7 @@
  * them, the synthetic burst preprocessed at 4..8 vertices a side and
  * swapped in, the renderer driven. Invariant: the output stays finite. No
  * seeds: every byte string is a valid program. */
+/* aero-fuzz: object fieldsound~ */
 #include "fuzz.h"
 
 #include "field_render.h"

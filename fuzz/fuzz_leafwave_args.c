@@ -6,6 +6,7 @@
  * size 1..1024 with any speed signal, mono and stereo, on a small
  * generated tree or none. Invariant: the output stays finite. No seeds:
  * every byte string is a valid program. */
+/* aero-fuzz: object leafwave~ */
 #include "fuzz.h"
 
 #include "leafwave.h"

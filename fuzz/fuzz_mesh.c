@@ -1,7 +1,7 @@
 /* fuzz: closed triangle meshes for aerotex object (aero_body_mesh_parse:
  * the OBJ subset of textures/README.md), then the queries the 3D solver
  * makes of the body: inside tests over its box, regions, reference size.
- * Seeds: fuzz/seeds/mesh/*.obj. */
+ * Seeds: the .obj files in fuzz/seeds/mesh/. */
 #include "fuzz.h"
 
 #include "body_shape.h"

@@ -1,6 +1,7 @@
 /* fuzz: polygon files for aerotex (aero_shape2d_load_poly: lines "x y",
  * '#' comments), then the queries the flow solver makes of the shape.
- * Seeds: textures/*.poly. */
+ * Seeds: the .poly files in textures/ and fuzz/seeds/polygon/. */
+/* aero-fuzz: seeds textures/?*.poly */
 #include "fuzz.h"
 
 #include "shape2d.h"

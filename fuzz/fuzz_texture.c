@@ -1,6 +1,7 @@
 /* fuzz: texture files (aero_texture_load: libsndfile's header reading and
  * our metadata checks), then both players render what loaded.
  * Seeds: the shipped textures. */
+/* aero-fuzz: seeds textures/?*.wav */
 #include "texture_play.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)

@@ -6,6 +6,7 @@
  * of a loaded tree). A small tree that loaded is then handed to the two
  * objects' cores and rendered for a few blocks: the output stays finite.
  * Seeds: trees/small.tree and fuzz/seeds/tree/. */
+/* aero-fuzz: seeds trees/small.tree */
 #include "fuzz.h"
 
 #include "leafwave.h"

@@ -6,6 +6,7 @@
  * (aero_tree_generate, as `aerotex tree` makes them) or none. Invariant:
  * the output stays finite. No seeds: every byte string is a valid
  * program. */
+/* aero-fuzz: object treebranch~ */
 #include "fuzz.h"
 
 #include "treebranch.h"

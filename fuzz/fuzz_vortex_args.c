@@ -5,6 +5,7 @@
  * any size 1..1024 with any speed signal, mono and stereo, on a small
  * synthetic vortex texture of 1..4 speeds. Invariant: the output stays
  * finite. No seeds: every byte string is a valid program. */
+/* aero-fuzz: object vortex~ */
 #include "fuzz.h"
 
 #include "vortex_player.h"

@@ -1,5 +1,6 @@
 #!/bin/sh
-# aero: `make fuzz`: builds each harness of fuzz/targets.txt with libFuzzer
+# aero: `make fuzz`: builds each harness fuzz/fuzz_NAME.c (fuzz/targets.sh
+# says how a harness states its extra sources and seeds) with libFuzzer
 # (clang -fsanitize=fuzzer,address,undefined) and runs it FUZZ_SECONDS
 # (default 300) from its seeds plus the corpus of earlier runs
 # (build-fuzz/corpus/NAME). A crash, hang (> 10 s per input), leak, memory
@@ -18,10 +19,11 @@ FLAGS="-g -O1 -std=gnu99 -fsanitize=fuzzer,address,undefined \
 LIBS="-lsndfile -lfftw3f_threads -lfftw3f -lfftw3 -lpng -lm"
 status=0
 : >"$B/summary.txt"
-grep -v -e '^#' -e '^[[:space:]]*$' fuzz/targets.txt | while read -r name extra seeds; do
+. fuzz/targets.sh
+fuzz_targets | while read -r name; do
     case "$name" in *"${FUZZ_ONLY:-}"*) ;; *) continue ;; esac
-    [ "$extra" = "-" ] && extra=""
-    extra=$(echo "$extra" | tr ',' ' ')
+    extra=$(fuzz_key "$name" sources)
+    seeds=$(fuzz_seeds "$name")
     bin=$B/fuzz_$name
     echo "== fuzz $name: build"
     # shellcheck disable=SC2086
@@ -31,10 +33,10 @@ grep -v -e '^#' -e '^[[:space:]]*$' fuzz/targets.txt | while read -r name extra 
     art=$B/artifacts/$name
     mkdir -p "$corpus" "$art"
     seeddirs=""
-    if [ "$seeds" != "-" ]; then
+    if [ -n "$seeds" ]; then
         mkdir -p "$B/seeds/$name"
         # shellcheck disable=SC2086
-        for s in $seeds; do [ -f "$s" ] && cp "$s" "$B/seeds/$name/"; done
+        cp $seeds "$B/seeds/$name/"
         seeddirs="$B/seeds/$name"
     fi
     [ -d "fuzz/regress/$name" ] && seeddirs="$seeddirs fuzz/regress/$name"

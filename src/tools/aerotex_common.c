@@ -1,7 +1,7 @@
 /* aerotex: what every command shares (clocks, the progress bar, the job
  * of a texture command and its parallel tasks); apart from aerotex.c's
  * main() so that the fuzz harness of the option parser links them
- * (fuzz/targets.txt). */
+ * (its `aero-fuzz: sources` lines, fuzz/fuzz_aerotex_args.c). */
 #include "aerotex.h"
 
 #include <errno.h>

@@ -1,4 +1,5 @@
-# --- hostile input for every object, from tests/robust/objects.txt
+# --- hostile input for every object, from each object's own configurations
+# (tests/robust/objects/CLASS.txt, gathered by tests/robust/object-table.sh)
 # Per configuration line and sample rate (22050 ... 192000 Hz) one Pd run
 # of ~1 s of logical time with, for the object:
 #   - one instance per block size 1, 2, 4, ... 8192 ([block~ N]
@@ -27,11 +28,12 @@ case "tests/objects/90-hostile.sh" in
     *"${ONLY:-}"*) hostile_only=${HOSTILE_ONLY:-} ;;
     *) hostile_only=${ONLY:-} ;;
 esac
-if ! grep -v -e '^#' tests/robust/objects.txt | cut -d'|' -f1 |
+hostile_table=$(sh tests/robust/object-table.sh hostile)
+if ! printf '%s\n' "$hostile_table" | cut -d'|' -f1 |
     grep -q -F -e "$hostile_only"; then
     return 0 2>/dev/null || exit 0 # no class of the table in this run
 fi
-section "hostile input: every object of tests/robust/objects.txt in Pd"
+section "hostile input: every object of tests/robust/objects/*.txt in Pd"
 HOSTILE=$OUT/hostile
 mkdir -p "$HOSTILE"
 # The bad files, next to the patches (where canvas_open looks first), one
@@ -332,7 +334,7 @@ hostile_judge() {
 }
 
 _line_no=0
-grep -v -e '^#' -e '^[[:space:]]*$' tests/robust/objects.txt >"$HOSTILE/table.txt"
+printf '%s\n' "$hostile_table" | grep -v '^[[:space:]]*$' >"$HOSTILE/table.txt"
 while IFS='|' read -r h_cls h_args h_nout h_file h_new h_msgs; do
     _line_no=$((_line_no + 1))
     h_cls=$(trim "$h_cls") h_args=$(trim "$h_args") h_nout=$(trim "$h_nout")

@@ -1,9 +1,9 @@
-# --- fuzz regressions: every fuzz harness of fuzz/targets.txt,
+# --- fuzz regressions: every fuzz harness fuzz/fuzz_NAME.c (fuzz/targets.sh),
 # built without libFuzzer (-DFUZZ_REPLAY), replays its shipped seeds and
 # every input a fuzz run ever broke it with (fuzz/regress/NAME/*). Each
 # input must load or be refused with a message, never break an invariant
 # of the harness (finite output, consistent sizes) or crash.
-section "fuzz regressions: seeds and saved crashes replayed (fuzz/targets.txt)"
+section "fuzz regressions: seeds and saved crashes replayed (fuzz/fuzz_*.c)"
 # The harnesses and the core are compiled here with ASan and UBSan
 # (float-to-int overflow included), so that undefined behaviour a fuzz run once
 # found stays caught, as do overflows and leaks.
@@ -18,10 +18,10 @@ for c in src/core/*/*.c; do
         -o "$replay_dir/core/$(basename "$c" .c).o" 2>>"$OUT/fuzz-core.build" ||
         replay_ok=0
 done
-grep -v -e '^#' -e '^[[:space:]]*$' fuzz/targets.txt | while read -r name extra seeds; do
-    [ "$extra" = "-" ] && extra=""
-    extra=$(echo "$extra" | tr ',' ' ')
-    [ "$seeds" = "-" ] && seeds=""
+. fuzz/targets.sh
+fuzz_targets | while read -r name; do
+    extra=$(fuzz_key "$name" sources)
+    seeds=$(fuzz_seeds "$name")
     bin=$replay_dir/$name
     # shellcheck disable=SC2086
     if [ "$replay_ok" -ne 1 ] || ! ${CC:-cc} -std=gnu99 -O1 -g -DFUZZ_REPLAY \
@@ -34,7 +34,7 @@ grep -v -e '^#' -e '^[[:space:]]*$' fuzz/targets.txt | while read -r name extra 
         continue
     fi
     # shellcheck disable=SC2086
-    files=$(ls $seeds fuzz/regress/$name/* 2>/dev/null)
+    files=$(ls $seeds fuzz/regress/"$name"/* 2>/dev/null)
     [ -n "$files" ] || continue # a program-like input: fuzzed, nothing saved yet
     # shellcheck disable=SC2086
     "$bin" $files >"$OUT/fuzz-$name.txt" 2>&1 ||

@@ -179,6 +179,135 @@ else
     fail "the registration in src/pd/aero.c is not one line (has AERO_OBJECTS changed?)"
 fi
 
+# negative control: with the object's code and its word but none of its test
+# files yet, the registration check names what [gust~] lacks
+if (cd "$NEW" && sh tests/robust/registered.sh) >"$NEW/registered-before.log" 2>&1; then
+    fail "registration check: [gust~] without its test files passed"
+elif grep -q -F "FAIL [gust~] (AERO_OBJECTS) lacks its robustness file tests/robust/objects/gust~.txt, a unit_multi_instance(\"gust~\", ...) case in tests/unit/test_*.c, a fuzz harness with /* aero-fuzz: object gust~ */, a README.md line naming [gust~] and gust~-help.pd" \
+    "$NEW/registered-before.log"; then
+    pass "negative control: before step 5 the registration check names the four things [gust~] lacks"
+else
+    fail "registration check: not the expected findings for [gust~]"; cat "$NEW/registered-before.log"
+fi
+gust_hostile_before=$(cd "$NEW" && sh tests/robust/object-table.sh hostile | grep -c '^gust~ ')
+
+# 5. its tests: the unit test (a law and the multi-instance case), ...
+cat >"$NEW/tests/unit/test_gust.c" <<'EOF'
+/* Unit test of [gust~] (the throwaway object of 98-new-object.sh): its
+ * tone at St U / d, and two instances at once. */
+#include "gust.h"
+#include "multi_instance.h"
+
+UNIT_TEST(strouhal_tone)
+{
+    enum { N = 44100 };
+    static float speed[N], out[N];
+    aero_gust g;
+    aero_gust_init(&g, 44100.0, 1, 0);
+    for (int i = 0; i < N; i++)
+        speed[i] = 10.0f;
+    aero_gust_process(&g, speed, (float *[]){out}, N);
+    /* St 0.2 (Roshko 1954) x 10 m/s / 0.01 m */
+    UNIT_NEAR_REL(unit_zero_crossing_hz(out, N, 44100.0), 200.0, 0.01,
+                  "tone at 10 m/s (Hz)");
+    aero_gust_free(&g);
+}
+
+static void *mi_make(int variant)
+{
+    aero_gust *g = calloc(1, sizeof(*g));
+    aero_gust_init(g, 44100.0, 1, 0);
+    aero_gust_set_gain_db(g, variant ? -6.0 : 0.0);
+    return g;
+}
+static void mi_run(void *s, const float *speed, float *out, int n)
+{
+    aero_gust_process(s, speed, (float *[]){out}, n);
+}
+static void mi_drop(void *s)
+{
+    aero_gust_free(s);
+    free(s);
+}
+
+UNIT_TEST(multi_instance)
+{
+    unit_multi_instance("gust~", "model", mi_make, mi_run, mi_drop);
+}
+
+UNIT_MAIN(UNIT_CASE(strouhal_tone), UNIT_CASE(multi_instance))
+EOF
+# ... its hostile-input and long-run configurations, ...
+cat >"$NEW/tests/robust/objects/gust~.txt" <<'EOF'
+# [gust~]: its hostile-input configurations and long runs
+# (fields: tests/robust/objects/README.md)
+hostile | -gain 0 | 1 | - | -gain NAN, -gain INF, -gain 900, 1 2 3, -listener a b c | gain NAN; gain INF; gain 1e30; gain -1e9; listener NAN 0 0; listener a b c; listener 1 2
+long | gust-model | -gain 0 | -
+EOF
+# ... and its fuzz harness
+cat >"$NEW/fuzz/fuzz_gust_args.c" <<'EOF'
+/* fuzz: [gust~]'s messages through the core setters, between blocks of
+ * any size and speed. Invariant: finite output. No seeds needed. */
+/* aero-fuzz: object gust~ */
+#include "fuzz.h"
+
+#include "gust.h"
+
+#define MAXN 1024
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    fuzz_stream in = {data, size};
+    static float speed[MAXN], out[MAXN];
+    aero_gust g;
+    aero_gust_init(&g, 44100.0, 1, 0);
+    while (in.left) {
+        unsigned op = fuzz_byte(&in) % 3;
+        double a = fuzz_number(&in);
+        if (op == 0) {
+            aero_gust_set_gain_db(&g, a);
+        } else if (op == 1) {
+            aero_ears e = aero_ears_at(a, a, a);
+            aero_gust_set_ears(&g, &e);
+        } else {
+            int n = 1 + (int)(fuzz_byte(&in) % MAXN);
+            for (int i = 0; i < n; i++)
+                speed[i] = (float)a;
+            aero_gust_process(&g, speed, (float *[]){out}, n);
+            FUZZ_REQUIRE(fuzz_finite(out, n), "non-finite output");
+        }
+    }
+    aero_gust_free(&g);
+    return 0;
+}
+EOF
+# 6. its line in the README's list of objects
+awk '{ print } /^\| `\[body~\]` \|/ {
+    print "| `[gust~]` | the throwaway object of tests/objects/98-new-object.sh | help/gust~-help.pd |" }' \
+    README.md >"$NEW/README.md"
+
+if (cd "$NEW" && sh tests/robust/registered.sh) >"$NEW/registered.log" 2>&1 &&
+    grep -q -F "ok   [gust~]: wrapper, 1 hostile and 1 long configurations, multi-instance case, fuzz harness, README line" "$NEW/registered.log"; then
+    pass "registration check: [gust~] complete with its own files"
+else
+    fail "registration check: [gust~] with its files does not pass"; cat "$NEW/registered.log"
+fi
+# the files the copy changed beside its new ones: the word and the README line
+gust_changed=$(for f in src/pd/aero.c README.md $(git ls-files); do
+    [ -f "$NEW/$f" ] && ! cmp -s "$f" "$NEW/$f" && echo "$f"
+done | sort -u | tr '\n' ' ')
+if [ "$gust_changed" = "README.md src/pd/aero.c " ]; then
+    pass "beside its own new files, the copy changed only: $gust_changed"
+else
+    fail "the copy changed more than src/pd/aero.c and README.md: $gust_changed"
+fi
+gust_hostile_after=$(cd "$NEW" && sh tests/robust/object-table.sh hostile | grep -c '^gust~ ')
+if [ "$gust_hostile_before" -eq 0 ] && [ "$gust_hostile_after" -eq 1 ]; then
+    pass "the hostile-input table gains [gust~] from its own file ($gust_hostile_before -> $gust_hostile_after configurations)"
+else
+    fail "the hostile-input table has $gust_hostile_before -> $gust_hostile_after [gust~] configurations, want 0 -> 1"
+fi
+
 # build the copy: the new external and the single binary (the core's
 # objects depend on every core header: the new ones get an old time, so
 # that only gust.c is compiled)
@@ -234,3 +363,67 @@ if grep -q -F "$want" "$OUT/new-gust-ext.log"; then
 else
     fail "no '$want'"; cat "$OUT/new-gust-ext.log"
 fi
+
+# --- the lists that read [gust~]'s own files pick it up: in the copy, on
+# [gust~] alone. Its unit test, built by the rule for every
+# tests/unit/test_*.c: the law and the multi-instance case.
+if (cd "$NEW" && nice -n 10 make -s build/tests/test_gust >>"$NEW/build.log" 2>&1); then
+    (cd "$NEW" && build/tests/test_gust) >"$NEW/test_gust.txt" 2>&1
+    gust_mi=$(grep -F "[gust~] model: two instances interleaved" "$NEW/test_gust.txt")
+    if tail -1 "$NEW/test_gust.txt" | grep -q "^[1-9][0-9]* passed, 0 failed$" &&
+        [ -n "$gust_mi" ]; then
+        pass "tests/unit/test_gust.c built and passed ($(tail -1 "$NEW/test_gust.txt")):$(echo "$gust_mi" | sed 's/^ *ok *//')"
+    else
+        fail "tests/unit/test_gust.c:"; cat "$NEW/test_gust.txt"
+    fi
+else
+    fail "tests/unit/test_gust.c does not build"; tail -20 "$NEW/build.log"
+fi
+# the hostile-input test of tests/objects/90-hostile.sh, run in the copy (in
+# a subshell, its verdicts added here) for [gust~] only
+rm -f "$NEW/hostile-counts"
+(
+    cd "$NEW" || exit 1
+    ROOT=$NEW OUT=$NEW/out passed=0 failed=0 ONLY=90-hostile HOSTILE_ONLY='gust~'
+    mkdir -p "$OUT"
+    . tests/objects/90-hostile.sh
+    echo "$passed $failed" >"$NEW/hostile-counts"
+)
+if [ -s "$NEW/hostile-counts" ]; then
+    read -r gust_p gust_f <"$NEW/hostile-counts"
+    passed=$((passed + gust_p))
+    failed=$((failed + gust_f))
+    [ "$gust_p" -gt 0 ] || fail "the hostile-input test passed nothing for [gust~]"
+else
+    fail "the hostile-input test did not run [gust~] in the copy"
+fi
+# a long run of one minute (make check-long's runner, tests/robust/long.sh,
+# which plays Debian's pd: the single-precision binary)
+if [ "$ext" = pd_linux ]; then
+    if (cd "$NEW" && LONG_ONLY=gust LONG_SECONDS=60 LONG_COPIES=4 sh tests/robust/long.sh) \
+        >"$NEW/long.txt" 2>&1; then
+        pass "make check-long's runner picks up [gust~]: $(grep 'gust-model:' "$NEW/long.txt" | sed 's/^ *//')"
+    else
+        fail "the long run of [gust~]:"; cat "$NEW/long.txt"
+    fi
+fi
+# its fuzz harness, found by its file name and built as
+# tests/objects/95-fuzz-replay.sh builds it (without the sanitizers here, on
+# the copy's core library), replaying a few bytes
+gust_targets=$(cd "$NEW" && . fuzz/targets.sh && fuzz_targets | tr '\n' ' ')
+case " $gust_targets" in
+*" gust_args "*)
+    printf 'gust\001\002\003\377\200\000' >"$NEW/fuzz-input"
+    if (cd "$NEW" && ${CC:-cc} -std=gnu99 -O1 -DFUZZ_REPLAY -Wall -Wextra -fopenmp \
+        -Isrc/core/common -Isrc/core/solve -Isrc/core/play fuzz/fuzz_gust_args.c \
+        build/libaero_core.a -o build/fuzz_gust_args \
+        -lsndfile -lfftw3f_threads -lfftw3f -lfftw3 -lpng -lm) >"$NEW/fuzz-build.log" 2>&1 &&
+        ! grep -q 'warning:' "$NEW/fuzz-build.log" &&
+        "$NEW/build/fuzz_gust_args" "$NEW/fuzz-input" >"$NEW/fuzz.txt" 2>&1; then
+        pass "the fuzz targets include gust_args, found by its file; its harness builds warning-free and replays ($(tail -1 "$NEW/fuzz.txt"))"
+    else
+        fail "the fuzz harness of [gust~]:"; cat "$NEW/fuzz-build.log" "$NEW/fuzz.txt" 2>/dev/null | head -20
+    fi
+    ;;
+*) fail "the fuzz targets of the copy lack gust_args: $gust_targets" ;;
+esac

@@ -1,20 +1,23 @@
 #!/bin/sh
-# aero: `make check-long`: each line of tests/robust/long.txt
-# renders LONG_SECONDS (default 3600) of audio in one batch-mode Pd run,
-# with varying input. The patch prints every minute of audio: the CPU time
-# that minute took ([cputime], independent of other jobs' wall time) and
-# the count of non-finite output samples so far; the script samples Pd's
-# VmRSS every second. Pass, per line:
+# aero: `make check-long`: each long run of the objects' configurations
+# (the `long` lines of tests/robust/objects/CLASS.txt) renders LONG_SECONDS
+# (default 3600) of audio in one batch-mode Pd run, with varying input.
+# The patch prints every minute of audio: the CPU time that minute took
+# ([cputime], independent of other jobs' wall time) and the count of
+# non-finite output samples so far; the script samples Pd's VmRSS every
+# 0.2 s. Pass, per line:
 #   - every minute rendered, no NaN/Inf on the outlet;
 #   - no slow-down (denormals would show here): CPU per minute in the
 #     last 5 minutes within 10 % of minutes 2-6 (minute 1 includes
 #     loading; see tests/robust/long-judge.awk for why the fastest
 #     minute of each five is compared);
 #   - memory flat: VmRSS at the end at most 1 MB above its value after
-#     the first tenth (a leak of one byte per 64-sample block would add
-#     2.5 MB an hour).
+#     the first tenth of the minutes (a leak of one byte per 64-sample
+#     block would add 2.5 MB an hour); sampled every 0.2 s, by minutes of
+#     audio; a run too short or fast to be sampled after its first tenth
+#     says so and is not judged on memory.
 # Results: build/long/NAME.log (minutes), build/long/NAME.rss, and a
-# summary in build/long/summary.txt. LONG_ONLY=name runs one line.
+# summary in build/long/summary.txt. LONG_ONLY=name runs the runs whose name contains it.
 set -u
 SECONDS_TOTAL=${LONG_SECONDS:-3600}
 D=build/long
@@ -24,7 +27,7 @@ passed=0
 failed=0
 minutes=$((SECONDS_TOTAL / 60))
 COPIES=${LONG_COPIES:-16}
-grep -v -e '^#' -e '^[[:space:]]*$' tests/robust/long.txt >"$D/table.txt"
+sh tests/robust/object-table.sh long >"$D/table.txt"
 while IFS='|' read -r name box msg every; do
     name=$(echo $name) box=$(echo $box) msg=$(echo $msg) every=$(echo ${every:--})
     case "$name" in *"${LONG_ONLY:-}"*) ;; *) continue ;; esac
@@ -124,10 +127,13 @@ PATCH
         -path "$(pwd)" -open "$patch" </dev/null >"$D/$name.log" 2>&1 &
     pid=$!
     : >"$D/$name.rss"
+    # each sample: the minutes of audio printed so far and VmRSS (kB), so
+    # that the baseline is taken by audio time, not wall time (a cheap
+    # object renders its hour in seconds)
     while kill -0 "$pid" 2>/dev/null; do
-        sed -n 's/^VmRSS:[[:space:]]*\([0-9]*\) kB/\1/p' "/proc/$pid/status" \
-            >>"$D/$name.rss" 2>/dev/null
-        sleep 1
+        rss=$(sed -n 's/^VmRSS:[[:space:]]*\([0-9]*\) kB/\1/p' "/proc/$pid/status" 2>/dev/null)
+        [ -n "$rss" ] && echo "$(grep -c '^long:' "$D/$name.log") $rss" >>"$D/$name.rss"
+        sleep 0.2
     done
     wait "$pid"
     status=$?
@@ -136,6 +142,9 @@ PATCH
         -f tests/robust/long-judge.awk "$D/$name.log")
     ok=$?
     [ "$status" -ne 0 ] && { verdict="FAIL Pd exited $status; $verdict"; ok=1; }
+    # an object never created would pass the rest (the counters run on)
+    grep -q -e "couldn't create" -e "can't load" "$D/$name.log" &&
+        { verdict="FAIL [$box] not created; $verdict"; ok=1; }
     echo "  $name: $verdict" | tee -a "$D/summary.txt"
     if [ "$ok" -eq 0 ]; then passed=$((passed + 1)); else failed=$((failed + 1)); grep -v "^long:" "$D/$name.log" | head -10; fi
 done <"$D/table.txt"

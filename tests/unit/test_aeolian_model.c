@@ -3,6 +3,7 @@
  * (written here again, independently of the core) and the behaviour at
  * the edges: silence below onset, bad input, block-size independence. */
 #include "aeolian.h"
+#include "multi_instance.h"
 #include "strouhal.h"
 #include "unit.h"
 
@@ -198,4 +199,27 @@ UNIT_TEST(bad_input)
     UNIT_CHECK(isfinite(in[255]), "in-place processing works");
 }
 
-UNIT_MAIN(UNIT_CASE(strouhal), UNIT_CASE(lift_rms), UNIT_CASE(onset_and_level), UNIT_CASE(block_sizes), UNIT_CASE(bad_input))
+/* --- two instances at once (tests/unit/multi_instance.h) --- */
+static void *mi_make(int variant)
+{
+    aero_aeolian *m = calloc(1, sizeof(*m));
+    aero_aeolian_init(m, 44100.0, 1, 11u + variant);
+    aero_aeolian_set_diameter(m, variant ? 0.004 : 0.01);
+    return m;
+}
+static void mi_run(void *s, const float *speed, float *out, int n)
+{
+    aero_aeolian_process(s, speed, (float *[]){out}, n);
+}
+static void mi_drop(void *s)
+{
+    aero_aeolian_free(s);
+    free(s);
+}
+
+UNIT_TEST(multi_instance)
+{
+    unit_multi_instance("aeolian~", "model mode", mi_make, mi_run, mi_drop);
+}
+
+UNIT_MAIN(UNIT_CASE(strouhal), UNIT_CASE(lift_rms), UNIT_CASE(onset_and_level), UNIT_CASE(block_sizes), UNIT_CASE(bad_input), UNIT_CASE(multi_instance))

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "aeolian.h"
+#include "multi_instance.h"
 #include "unit.h"
 
 #define SR 48000.0
@@ -430,8 +431,37 @@ UNIT_TEST(phase_wander)
     free(b);
 }
 
+/* --- two instances at once (tests/unit/multi_instance.h) --- */
+static void *mi_make(int variant)
+{
+    char err[128];
+    aero_aeolian *s = calloc(1, sizeof(*s));
+    aero_aeolian_init(s, 44100.0, 1, 3u + variant);
+    aero_aeolian_set_texture(s, unit_mi_texture("aeolian", 2), err,
+                             sizeof(err));
+    double wind[3] = {variant ? 7.0 : 12.0, 1.0, 0.0};
+    aero_aeolian_set_wind(s, wind);
+    aero_aeolian_set_sources(s, variant ? 3 : 5);
+    return s;
+}
+static void mi_run(void *s, const float *speed, float *out, int n)
+{
+    aero_aeolian_process(s, speed, (float *[]){out}, n);
+}
+static void mi_drop(void *s)
+{
+    aero_aeolian_free(s);
+    free(s);
+}
+
+UNIT_TEST(multi_instance)
+{
+    unit_multi_instance("aeolian~", "texture mode (a moving stick)", mi_make,
+                        mi_run, mi_drop);
+}
+
 UNIT_MAIN(UNIT_CASE(static_stick_pitch), UNIT_CASE(block_sizes),
           UNIT_CASE(doppler_approach), UNIT_CASE(level_with_speed),
           UNIT_CASE(incoherent_sources), UNIT_CASE(directions),
           UNIT_CASE(bad_values), UNIT_CASE(wrong_kind),
-          UNIT_CASE(phase_wander))
+          UNIT_CASE(phase_wander), UNIT_CASE(multi_instance))

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "body_texture.h"
+#include "multi_instance.h"
 #include "unit.h"
 
 #define SR 48000.0
@@ -405,8 +406,49 @@ UNIT_TEST(pd_fixture)
     free(b);
 }
 
+/* --- two instances at once (tests/unit/multi_instance.h): a synthetic
+   object texture, 2 directions x 3 regions --- */
+static void *mi_make(int variant)
+{
+    char err[128];
+    aero_body *s = calloc(1, sizeof(*s));
+    aero_texture *t = calloc(1, sizeof(*t));
+    double wind[3] = {variant ? 7.0 : 12.0, 1.0, 0.5};
+    double pos[3] = {0.1 * variant, 0.0, 0.0}, q[4] = {0.9, 0.1, 0.2, 0.3};
+    aero_texture_init_regions(t, 512, 2, 3, 16000.0);
+    for (int n = 0; n < 512 * t->channels; n++)
+        t->data[n] = (float)sin(0.05 * n) * (float)cos(0.0031 * n);
+    aero_texture_set(t, "kind", "object");
+    aero_texture_set(t, "v0", "10");
+    aero_texture_set(t, "diameter", "0.05");
+    aero_texture_set(t, "symmetry", "axis");
+    aero_texture_set(t, "centres", "0,0,0;0,0,0.2;0,0,0.4");
+    t->angles[0] = 0.0;
+    t->angles[1] = 90.0;
+    aero_body_init(s, 44100.0, 1, 5u + variant);
+    aero_body_set_texture(s, t, err, sizeof(err));
+    aero_body_set_wind(s, wind);
+    aero_body_set_pose(s, pos, q, -1.0);
+    return s;
+}
+static void mi_run(void *s, const float *speed, float *out, int n)
+{
+    aero_body_process(s, speed, (float *[]){out}, n);
+}
+static void mi_drop(void *s)
+{
+    aero_body_free(s);
+    free(s);
+}
+
+UNIT_TEST(multi_instance)
+{
+    unit_multi_instance("body~", "a two-direction texture", mi_make, mi_run,
+                        mi_drop);
+}
+
 UNIT_MAIN(UNIT_CASE(static_sphere_laws), UNIT_CASE(block_sizes),
           UNIT_CASE(doppler_approach), UNIT_CASE(whirled_sphere),
           UNIT_CASE(direction_interpolation), UNIT_CASE(regions_centres),
           UNIT_CASE(bad_input), UNIT_CASE(save_and_load),
-          UNIT_CASE(pd_fixture))
+          UNIT_CASE(pd_fixture), UNIT_CASE(multi_instance))

@@ -1,6 +1,7 @@
 /* Unit tests of src/core/play/cavity_model: Rossiter and quarter-wave laws
  * (written here again from their sources), lock-in, bad input. */
 #include "cavity_model.h"
+#include "multi_instance.h"
 #include "unit.h"
 
 #include <math.h>
@@ -131,5 +132,37 @@ UNIT_TEST(bad_input)
     aero_cavity_free(&m);
 }
 
+/* --- two instances at once (tests/unit/multi_instance.h), model and
+   texture mode --- */
+static void *mi_make_mode(int variant, int textured)
+{
+    char err[128];
+    aero_cavity *m = calloc(1, sizeof(*m));
+    aero_cavity_init(m, 44100.0, 5u + variant);
+    aero_cavity_set_length(m, variant ? 0.05 : 0.02);
+    if (textured)
+        aero_cavity_set_texture(m, unit_mi_texture("cavity", 1), err,
+                                sizeof(err));
+    return m;
+}
+static void *mi_make(int variant) { return mi_make_mode(variant, 0); }
+static void *mi_make_texture(int variant) { return mi_make_mode(variant, 1); }
+static void mi_run(void *s, const float *speed, float *out, int n)
+{
+    aero_cavity_process(s, speed, (float *[]){out}, n);
+}
+static void mi_drop(void *s)
+{
+    aero_cavity_free(s);
+    free(s);
+}
+
+UNIT_TEST(multi_instance)
+{
+    unit_multi_instance("cavity~", "model mode", mi_make, mi_run, mi_drop);
+    unit_multi_instance("cavity~", "texture mode", mi_make_texture, mi_run,
+                        mi_drop);
+}
+
 UNIT_MAIN(UNIT_CASE(rossiter_and_depth_modes), UNIT_CASE(lock_in),
-          UNIT_CASE(bad_input))
+          UNIT_CASE(bad_input), UNIT_CASE(multi_instance))

@@ -5,6 +5,7 @@
  * sum. Files go to build/tests/field/. */
 #include "field_render.h"
 #include "unit.h"
+#include "multi_instance.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -507,4 +508,51 @@ UNIT_TEST(demo)
                "zero threshold refused: \"%s\"", err);
 }
 
-UNIT_MAIN(UNIT_CASE(format), UNIT_CASE(monopole), UNIT_CASE(reach), UNIT_CASE(classification), UNIT_CASE(demo))
+/* --- two instances at once (tests/unit/multi_instance.h): the demo
+   burst, preprocessed, played slowly --- */
+typedef struct {
+    aero_field_sources src;
+    aero_fieldsound r;
+} mi_state;
+static void *mi_make(int variant)
+{
+    char e[256];
+    aero_field_demo d;
+    aero_volume_info info;
+    aero_field_params par;
+    mi_state *f = calloc(1, sizeof(*f));
+    aero_field_demo_default(&d);
+    d.size = 12;
+    d.spacing = 1.28 / d.size;
+    d.seed = 1u + variant;
+    aero_field_demo_info(&d, &info);
+    aero_field_params_default(&par);
+    aero_field_prepare(&info, &d, &par, &f->src, NULL, NULL, e, sizeof(e));
+    aero_fieldsound_init(&f->r, 44100.0);
+    aero_fieldsound_set_sources(&f->r, &f->src);
+    aero_fieldsound_place_ears(&f->r,
+            &(aero_ears){1, {{variant ? 0.5 : 0.8, 0.1, 0.0}}});
+    aero_fieldsound_set_speed(&f->r, 100.0);
+    aero_fieldsound_play(&f->r);
+    return f;
+}
+static void mi_run(void *s, const float *speed, float *out, int n)
+{
+    (void)speed;
+    aero_fieldsound_process(&((mi_state *)s)->r, out, n);
+}
+static void mi_drop(void *s)
+{
+    mi_state *f = s;
+    aero_fieldsound_free(&f->r);
+    aero_field_sources_free(&f->src);
+    free(f);
+}
+
+UNIT_TEST(multi_instance)
+{
+    unit_multi_instance("fieldsound~", "the demo burst", mi_make, mi_run,
+                        mi_drop);
+}
+
+UNIT_MAIN(UNIT_CASE(format), UNIT_CASE(monopole), UNIT_CASE(reach), UNIT_CASE(classification), UNIT_CASE(demo), UNIT_CASE(multi_instance))

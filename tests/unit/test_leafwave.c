@@ -4,6 +4,7 @@
  * by hashing against brute force, 1/r and the cardioid microphone). */
 #include "../../src/core/play/leafwave.h"
 #include "unit.h"
+#include "multi_instance.h"
 
 #include <fftw3.h>
 #include <stdlib.h>
@@ -652,4 +653,35 @@ UNIT_TEST(in_step)
     aero_leafwave_free(&lw);
 }
 
-UNIT_MAIN(UNIT_CASE(table_frequencies), UNIT_CASE(state_machine), UNIT_CASE(still_air), UNIT_CASE(collision_onset), UNIT_CASE(wind), UNIT_CASE(friction_rate), UNIT_CASE(seed), UNIT_CASE(in_step), UNIT_CASE(centroid_follows_size), UNIT_CASE(neighbours), UNIT_CASE(rendering), UNIT_CASE(bad_input))
+/* --- two instances at once (tests/unit/multi_instance.h) --- */
+static void *mi_make(int variant)
+{
+    char err[128];
+    aero_tree t;
+    aero_leafwave *lw = calloc(1, sizeof(*lw));
+    aero_leafwave_init(lw, 44100.0, 1, 13u + variant);
+    aero_leafwave_set_tables(lw, 400.0, 4, 3);
+    unit_mi_tree(&t, variant);
+    aero_leafwave_set_tree(lw, &t, err, sizeof(err));
+    aero_leafwave_set_ears(lw, &(aero_ears){1, {{0.0, variant ? -1.0 : -2.0,
+                                                 1.5}}});
+    return lw;
+}
+static void mi_run(void *s, const float *speed, float *out, int n)
+{
+    aero_leafwave_set_wind(s, 1.0, 0.0, 0.0);
+    aero_leafwave_process(s, speed, (float *[]){out}, n);
+}
+static void mi_drop(void *s)
+{
+    aero_leafwave_free(s);
+    free(s);
+}
+
+UNIT_TEST(multi_instance)
+{
+    unit_multi_instance("leafwave~", "a small tree", mi_make, mi_run,
+                        mi_drop);
+}
+
+UNIT_MAIN(UNIT_CASE(table_frequencies), UNIT_CASE(state_machine), UNIT_CASE(still_air), UNIT_CASE(collision_onset), UNIT_CASE(wind), UNIT_CASE(friction_rate), UNIT_CASE(seed), UNIT_CASE(in_step), UNIT_CASE(centroid_follows_size), UNIT_CASE(neighbours), UNIT_CASE(rendering), UNIT_CASE(bad_input), UNIT_CASE(multi_instance))

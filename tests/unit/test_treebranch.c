@@ -4,6 +4,7 @@
 #include "../../src/core/common/strouhal.h"
 #include "../../src/core/play/treebranch.h"
 #include "unit.h"
+#include "multi_instance.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -314,4 +315,35 @@ UNIT_TEST(seed)
     aero_treebranch_free(&b);
 }
 
-UNIT_MAIN(UNIT_CASE(strouhal_peak), UNIT_CASE(speed_law), UNIT_CASE(length_law), UNIT_CASE(rendering), UNIT_CASE(still_and_bad), UNIT_CASE(seed))
+/* --- two instances at once (tests/unit/multi_instance.h) --- */
+static void *mi_make(int variant)
+{
+    aero_tree t;
+    aero_treebranch *tb = calloc(1, sizeof(*tb));
+    aero_treebranch_init(tb, 44100.0, 9u + variant);
+    unit_mi_tree(&t, variant);
+    aero_treebranch_set_tree(tb, &t);
+    aero_treebranch_set_ears(tb,
+                             &(aero_ears){1, {{0.0, variant ? -2.0 : -4.0,
+                                               1.5}}});
+    return tb;
+}
+static void mi_run(void *s, const float *speed, float *out, int n)
+{
+    double w[3] = {unit_mi_block_mean(speed, n), 0.0, 0.0};
+    aero_treebranch_set_wind(s, w);
+    aero_treebranch_process(s, out, NULL, n);
+}
+static void mi_drop(void *s)
+{
+    aero_treebranch_free(s);
+    free(s);
+}
+
+UNIT_TEST(multi_instance)
+{
+    unit_multi_instance("treebranch~", "a small tree", mi_make, mi_run,
+                        mi_drop);
+}
+
+UNIT_MAIN(UNIT_CASE(strouhal_peak), UNIT_CASE(speed_law), UNIT_CASE(length_law), UNIT_CASE(rendering), UNIT_CASE(still_and_bad), UNIT_CASE(seed), UNIT_CASE(multi_instance))

@@ -7,6 +7,7 @@
 #include "aero_air.h"
 #include "aero_util.h"
 #include "vortex_player.h"
+#include "multi_instance.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -271,4 +272,38 @@ UNIT_TEST(combustion)
     aero_vortex_free(&m);
 }
 
-UNIT_MAIN(UNIT_CASE(falloff), UNIT_CASE(combustion), UNIT_CASE(distance_and_speed), UNIT_CASE(doppler), UNIT_CASE(clip_and_sources), UNIT_CASE(hostile))
+/* --- two instances at once (tests/unit/multi_instance.h): a synthetic
+   vortex texture of 3 speeds, 4 sources --- */
+static void *mi_make(int variant)
+{
+    char err[128];
+    double speeds[3] = {5.0, 10.0, 20.0}, pos[12];
+    aero_vortex *m = calloc(1, sizeof(*m));
+    aero_texture *t = calloc(1, sizeof(*t));
+    aero_vortex_init(m, 44100.0, 0, 7u + variant);
+    aero_texture_init_speeds(t, 2048, 3, speeds, 8000.0);
+    for (int n = 0; n < 2048 * 3; n++)
+        t->data[n] = (float)sin(0.05 * n) * (float)cos(0.0031 * n);
+    aero_vortex_set_texture(m, t, err, sizeof(err));
+    aero_vortex_set_count(m, 4);
+    for (int i = 0; i < 12; i++)
+        pos[i] = 0.1 * i * (variant ? -1 : 1);
+    aero_vortex_set_positions(m, pos, 4);
+    return m;
+}
+static void mi_run(void *s, const float *speed, float *out, int n)
+{
+    aero_vortex_process(s, speed, (float *[]){out}, n);
+}
+static void mi_drop(void *s)
+{
+    aero_vortex_free(s);
+    free(s);
+}
+
+UNIT_TEST(multi_instance)
+{
+    unit_multi_instance("vortex~", "4 sources", mi_make, mi_run, mi_drop);
+}
+
+UNIT_MAIN(UNIT_CASE(falloff), UNIT_CASE(combustion), UNIT_CASE(distance_and_speed), UNIT_CASE(doppler), UNIT_CASE(clip_and_sources), UNIT_CASE(hostile), UNIT_CASE(multi_instance))

@@ -308,6 +308,16 @@ static inline int aero_pd_whole(t_float f, int lo, int hi, int *n)
     return 0;
 }
 
+/* the sample of the next DSP block at which a message now happens: the
+ * logical time since the last block's (recorded in perform) at sample
+ * rate sr, as [vline~] times its segments; >= 0 (the player clamps it to
+ * its block) */
+static inline int aero_pd_block_offset(double block_time, double sr)
+{
+    double at = clock_gettimesince(block_time) * sr * 0.001;
+    return at > 0.0 ? (at < 1e8 ? (int)at : 100000000) : 0;
+}
+
 /* exactly `want` numbers from a message, else an error naming the object */
 int aero_pd_floats(void *x, const char *obj, const char *what, int argc,
                    const t_atom *argv, int want, double *v);

@@ -206,6 +206,15 @@ int aero_aeolian_set_ears(aero_aeolian *a, const aero_ears *e);
  * interval_s < 0 (a placement) jump there without motion. */
 int aero_aeolian_set_pose(aero_aeolian *a, const double end_a[3],
                           const double end_b[3], double interval_s);
+/* the same at sample `offset` of the next process call (as [vline~]
+ * times its segments; a host gives each pose its logical time within the
+ * block), with the body's x axis when axis is not NULL: queued (up to
+ * AERO_GLIDE_QUEUE; beyond, the oldest is applied at once), the process
+ * call split there; an offset beyond the block applies at its last
+ * sample. 0, or -1 invalid (nothing queued). */
+int aero_aeolian_set_pose_at(aero_aeolian *a, const double end_a[3],
+                             const double end_b[3], const double *axis,
+                             double interval_s, int offset);
 /* the body's x axis (angle 0 of the texture's directions); projected onto
  * the plane normal to the stick and carried along as it turns */
 int aero_aeolian_set_reference(aero_aeolian *a, const double x[3]);

@@ -1,0 +1,72 @@
+/* aero: the path of a posed body between its poses, and the queue that
+ * applies poses at their time within a block. Shared by [aeolian~]'s
+ * texture mode (a stick's two ends) and [body~] (a position and a
+ * quaternion).
+ *
+ * The path is C1 (position and velocity continuous): at each new pose a
+ * cubic Hermite segment runs from where the path is, with its velocity,
+ * to the pose, arriving with the stream's velocity ((new - previous pose)
+ * / interval), over the pose's interval; past it the path goes on at that
+ * velocity (a pose due now may come late) and holds after 1.5 intervals,
+ * when the stream counts as stopped. A polyline through the poses (the
+ * earlier path) stepped the velocity, hence the Doppler rate, at every
+ * pose: a click each time, heard at the speed of a whirled sword's tip.
+ * The path lags the stream by one interval, as the polyline did.
+ *
+ * Host-independent C99, no globals. Times in samples. */
+#ifndef AERO_POSE_GLIDE_H
+#define AERO_POSE_GLIDE_H
+
+#define AERO_GLIDE_DIM_MAX 7 /* a body's position and quaternion */
+#define AERO_GLIDE_QUEUE 8   /* poses waiting for their sample */
+#define AERO_GLIDE_EVENT_MAX 10
+
+typedef struct {
+    int dim;
+    double pos[AERO_GLIDE_DIM_MAX];  /* on the path now */
+    double vel[AERO_GLIDE_DIM_MAX];  /* its derivative, per sample */
+    double from[AERO_GLIDE_DIM_MAX], from_vel[AERO_GLIDE_DIM_MAX];
+    double to[AERO_GLIDE_DIM_MAX];   /* the last pose */
+    double to_vel[AERO_GLIDE_DIM_MAX]; /* the stream's velocity, per sample */
+    double elapsed, duration;        /* since the last pose; its interval */
+} aero_pose_path;
+
+/* the path stands at x (the first pose, a placement, a new gesture) */
+void aero_pose_path_jump(aero_pose_path *p, int dim, const double *x);
+/* a new pose x, interval samples after the previous one (> 0) */
+void aero_pose_path_to(aero_pose_path *p, const double *x, double interval);
+/* moves the path on by m samples: pos and vel at the new time */
+void aero_pose_path_advance(aero_pose_path *p, double m);
+/* 1 once no pose came for 1.5 intervals (more than one chunk of m ago) */
+int aero_pose_path_stopped(const aero_pose_path *p, double m);
+
+/* a pose waiting for its sample: the numbers the player applies, its
+ * interval (s, < 0 a placement) and its sample in the next block */
+typedef struct {
+    double x[AERO_GLIDE_EVENT_MAX];
+    int has_extra;      /* x holds an optional part (the stick's axis) */
+    double interval_s;
+    int offset;
+} aero_pose_event;
+
+typedef struct {
+    aero_pose_event ev[AERO_GLIDE_QUEUE];
+    int head, n;
+} aero_pose_queue;
+
+/* queues e (its offset made >= 0 and >= the last queued one's). Full:
+ * the oldest is moved to *oldest and 1 is returned (the caller applies
+ * it at once), else 0. */
+int aero_pose_queue_push(aero_pose_queue *q, const aero_pose_event *e,
+                         aero_pose_event *oldest);
+/* the first queued pose, or NULL */
+const aero_pose_event *aero_pose_queue_front(const aero_pose_queue *q);
+/* the last queued pose, or NULL */
+const aero_pose_event *aero_pose_queue_back(const aero_pose_queue *q);
+void aero_pose_queue_pop(aero_pose_queue *q);
+/* samples from `done` to the first pose's offset (clamped to the block of
+ * n: a pose beyond it is due at its last sample), at most m; 0 when the
+ * first pose is due now */
+int aero_pose_queue_until(const aero_pose_queue *q, int done, int m, int n);
+
+#endif

@@ -16,8 +16,14 @@ void aero_pose_path_to(aero_pose_path *p, const double *x, double interval)
 {
     if (!(interval >= 1.0))
         interval = 1.0;
+    /* the stream was moving (its last chord is of this motion, not from
+       before a pause): the tangent at x from the last two chords */
+    int moving = p->duration > 0.0 && interval <= 1.5 * p->duration;
+    double weight = moving ? interval / (interval + p->duration) : 0.0;
     for (int i = 0; i < p->dim; i++) {
-        p->to_vel[i] = (x[i] - p->to[i]) / interval;
+        double chord = (x[i] - p->to[i]) / interval;
+        p->to_vel[i] = chord + weight * (chord - p->chord[i]);
+        p->chord[i] = chord;
         p->from[i] = p->pos[i];
         p->from_vel[i] = p->vel[i];
         p->to[i] = x[i];

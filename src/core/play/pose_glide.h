@@ -5,13 +5,20 @@
  *
  * The path is C1 (position and velocity continuous): at each new pose a
  * cubic Hermite segment runs from where the path is, with its velocity,
- * to the pose, arriving with the stream's velocity ((new - previous pose)
- * / interval), over the pose's interval; past it the path goes on at that
- * velocity (a pose due now may come late) and holds after 1.5 intervals,
- * when the stream counts as stopped. A polyline through the poses (the
- * earlier path) stepped the velocity, hence the Doppler rate, at every
- * pose: a click each time, heard at the speed of a whirled sword's tip.
- * The path lags the stream by one interval, as the polyline did.
+ * to the pose over the pose's interval, arriving with the stream's
+ * velocity there: the tangent from the last two chords ((new - previous
+ * pose) / interval, and the one before: a second-order backward
+ * difference, exact for a constant acceleration), the chord alone after
+ * a pause. Past the pose the path goes on at that velocity (a pose due
+ * now may come late) and holds after 1.5 intervals, when the stream
+ * counts as stopped. A polyline through the poses (the earlier path)
+ * stepped the velocity, hence the Doppler rate, at every pose: a click
+ * each time, heard at the speed of a whirled sword's tip. Arriving with
+ * the chord's velocity instead of the tangent left the path's
+ * acceleration stepping at each pose: a whirled sine measured up to 4
+ * where the tangent gives 1.4-1.9 (tests/unit/test_aeolian_texture.c,
+ * whirl_without_clicks). The path lags the stream by one interval, as the
+ * polyline did.
  *
  * Host-independent C99, no globals. Times in samples. */
 #ifndef AERO_POSE_GLIDE_H
@@ -27,8 +34,9 @@ typedef struct {
     double vel[AERO_GLIDE_DIM_MAX];  /* its derivative, per sample */
     double from[AERO_GLIDE_DIM_MAX], from_vel[AERO_GLIDE_DIM_MAX];
     double to[AERO_GLIDE_DIM_MAX];   /* the last pose */
-    double to_vel[AERO_GLIDE_DIM_MAX]; /* the stream's velocity, per sample */
+    double to_vel[AERO_GLIDE_DIM_MAX]; /* the stream's velocity at `to` */
     double elapsed, duration;        /* since the last pose; its interval */
+    double chord[AERO_GLIDE_DIM_MAX]; /* (to - the pose before) / interval */
 } aero_pose_path;
 
 /* the path stands at x (the first pose, a placement, a new gesture) */

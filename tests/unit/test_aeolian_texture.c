@@ -468,7 +468,7 @@ static double click_ratio(const float *x, long n, double sr)
     return worst;
 }
 
-enum { WHIRL_CHUNK, WHIRL_TIMED, WHIRL_BLOCK };
+enum { WHIRL_CHUNK, WHIRL_TIMED, WHIRL_BLOCK, WHIRL_CUT };
 
 /* the sword test's whirl (16-sword.sh 1): a stick from 0.5 to 1.5 m on a
    radius turning at 2 turns/s, ears 3 m out in the plane of the turn, a
@@ -478,10 +478,10 @@ enum { WHIRL_CHUNK, WHIRL_TIMED, WHIRL_BLOCK };
    blocks (TIMED: what the wrapper does) or every 5 ms at the start of the
    block it falls in (BLOCK: what Pd delivers without the offset). The
    worse ear's click measure over 2 s. */
-static double whirl_clicks(int mode)
+static double whirl_clicks(int mode, float *keep)
 {
     const double sr = 44100.0, turn = 4.0 * PI; /* rad/s */
-    const long total = 97024, skip = (long)(0.2 * sr);
+    const long total = 97024, skip = (long)(0.2 * sr); /* 2.2 s */
     float *ear[2] = {calloc(total, sizeof(float)), calloc(total, sizeof(float))};
     aero_texture *t = calloc(1, sizeof(*t));
     aero_texture_init(t, 16000, 1, 16000.0);
@@ -507,6 +507,7 @@ static double whirl_clicks(int mode)
     const int block = 64;
     long k = 0; /* poses given */
     for (long b = 0; b < total; b += block) {
+        int done = 0; /* WHIRL_CUT: the block cut at each pose's sample */
         /* the poses falling in this block, each at its sample */
         for (;; k++) {
             double at = k * period * sr; /* the pose's sample */
@@ -515,16 +516,22 @@ static double whirl_clicks(int mode)
             double f = turn * k * period, c = cos(f), sn = sin(f);
             double pa[3] = {0.5 * c, 0.5 * sn, 0}, pb[3] = {1.5 * c, 1.5 * sn, 0};
             double interval = k ? period : -1.0;
-            if (mode == WHIRL_BLOCK)
+            if (mode == WHIRL_CUT && (long)at > b + done) {
+                float *o[2] = {ear[0] + b + done, ear[1] + b + done};
+                aero_aeolian_process(&s, NULL, o, (int)((long)at - b - done));
+                done = (int)((long)at - b);
+            }
+            if (mode == WHIRL_BLOCK || mode == WHIRL_CUT)
                 aero_aeolian_set_pose(&s, pa, pb, interval);
             else
                 aero_aeolian_set_pose_at(&s, pa, pb, NULL, interval,
                                          (int)(at - b));
         }
-        float *o[2] = {ear[0] + b, ear[1] + b};
-        aero_aeolian_process(&s, NULL, o,
-                             total - b < block ? (int)(total - b) : block);
+        float *o[2] = {ear[0] + b + done, ear[1] + b + done};
+        aero_aeolian_process(&s, NULL, o, block - done);
     }
+    if (keep)
+        memcpy(keep, ear[0], sizeof(float) * (size_t)total);
     double worst = fmax(click_ratio(ear[0] + skip, total - skip, sr),
                         click_ratio(ear[1] + skip, total - skip, sr));
     aero_aeolian_free(&s);
@@ -538,8 +545,19 @@ static double whirl_clicks(int mode)
    64 samples (Hermite arriving with the chord's velocity: 4.0 / 3.6). */
 UNIT_TEST(whirl_without_clicks)
 {
-    double chunk = whirl_clicks(WHIRL_CHUNK), timed = whirl_clicks(WHIRL_TIMED),
-           block = whirl_clicks(WHIRL_BLOCK);
+    float *x = calloc(97024, sizeof(float)), *y = calloc(97024, sizeof(float));
+    double chunk = whirl_clicks(WHIRL_CHUNK, NULL),
+           timed = whirl_clicks(WHIRL_TIMED, x),
+           block = whirl_clicks(WHIRL_BLOCK, NULL);
+    whirl_clicks(WHIRL_CUT, y);
+    double diff = 0;
+    for (int i = 0; i < 97024; i++)
+        diff = fmax(diff, fabs(x[i] - y[i]));
+    UNIT_CHECK(diff <= 1e-6 * rms(y, 97024) && rms(y, 97024) > 0,
+               "poses queued at their samples = blocks cut there: max diff "
+               "%g (rms %g)", diff, rms(y, 97024));
+    free(x);
+    free(y);
     UNIT_CHECK(timed <= chunk + WHIRL_MARGIN,
                "whirled, posed every 5 ms at the pose's sample: clicks %.2f "
                "<= %.2f posed every 64 samples + %.2f", timed, chunk, WHIRL_MARGIN);

@@ -633,12 +633,12 @@ static void advance_frame(aero_aeolian *a, int m, double speed,
     aero_aeolian_texture *s = a->texture;
     aero_pose_path_advance(&s->path, m);
     const double *pose = s->path.pos;
-    /* the stream's velocity, smoothed; zero once the stream has stopped
-     * (no pose for 1.5 intervals) */
-    int stopped = aero_pose_path_stopped(&s->path, m);
+    /* the stream's velocity, smoothed, falling to 0 as the path comes to
+     * rest (the stream has ended) */
+    double pace = aero_pose_path_pace(&s->path);
     double alpha = 1.0 - exp(-m / (VELOCITY_TAU_S * a->sample_rate));
     for (int i = 0; i < 6; i++) {
-        double v = stopped ? 0.0 : s->pose_velocity[i];
+        double v = pace * s->pose_velocity[i];
         s->velocity[i] += alpha * (v - s->velocity[i]);
     }
     for (int i = 0; i < 3; i++) {

@@ -618,7 +618,7 @@ int aero_body_process(aero_body *s, const float *speed,
             m = n - done < AERO_BODY_CHUNK ? n - done : AERO_BODY_CHUNK;
         }
         double sp = 0.0, wind[3], ears[AERO_BODY_MAX_EARS][3], gain, alpha;
-        int stopped;
+        double pace;
         if (speed) { /* the inlet's mean over the chunk (NaN counts as 0) */
             for (int j = 0; j < m; j++) {
                 float v = speed[done + j];
@@ -627,7 +627,7 @@ int aero_body_process(aero_body *s, const float *speed,
             sp /= m;
         }
         advance_pose(s, m);
-        stopped = aero_pose_path_stopped(&s->path, m);
+        pace = aero_pose_path_pace(&s->path);
         alpha = 1.0 - exp(-m / (VELOCITY_TAU_S * s->base.sample_rate));
         for (int i = 0; i < 3; i++)
             wind[i] = ramp_advance(&s->base.wind[i], m);
@@ -640,7 +640,7 @@ int aero_body_process(aero_body *s, const float *speed,
             for (int l = 0; l < s->regions; l++) {
                 aero_body_geometry g;
                 for (int i = 0; i < 3; i++) {
-                    double v = stopped ? 0.0 : s->src[l].stream_velocity[i];
+                    double v = pace * s->src[l].stream_velocity[i];
                     s->src[l].velocity[i] += alpha * (v - s->src[l].velocity[i]);
                 }
                 s->base.clamped |= geometry(s, l, wind, (const double (*)[3])ears,

@@ -58,18 +58,24 @@ void aero_pose_path_advance(aero_pose_path *p, double m)
         }
         return;
     }
-    /* on past the pose at the stream's velocity; held after 1.5 intervals */
-    int held = t > 1.5 * T;
-    double past = held ? 0.5 * T : t - T;
+    /* on past the pose at that velocity for half an interval (a pose due
+       now may come late), then slowing evenly to rest at two intervals:
+       a stream that ends stops without a step of the velocity */
+    double past = t - T, on = past < 0.5 * T ? past : 0.5 * T;
+    double slow = past > 0.5 * T ? (past < T ? past : T) - 0.5 * T : 0.0;
+    double keep = 1.0 - slow / (0.5 * T);
     for (int i = 0; i < p->dim; i++) {
-        p->pos[i] = p->to[i] + past * p->to_vel[i];
-        p->vel[i] = held ? 0.0 : p->to_vel[i];
+        p->pos[i] = p->to[i] + (on + slow - slow * slow / T) * p->to_vel[i];
+        p->vel[i] = keep * p->to_vel[i];
     }
 }
 
-int aero_pose_path_stopped(const aero_pose_path *p, double m)
+double aero_pose_path_pace(const aero_pose_path *p)
 {
-    return p->elapsed > 1.5 * p->duration + m;
+    const double T = p->duration;
+    if (!(T > 0.0) || p->elapsed >= 2.0 * T)
+        return 0.0;
+    return p->elapsed <= 1.5 * T ? 1.0 : 4.0 - 2.0 * p->elapsed / T;
 }
 
 /* --- the queue ------------------------------------------------------------ */

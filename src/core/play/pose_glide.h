@@ -9,9 +9,10 @@
  * velocity there: the tangent from the last two chords ((new - previous
  * pose) / interval, and the one before: a second-order backward
  * difference, exact for a constant acceleration), the chord alone after
- * a pause. Past the pose the path goes on at that velocity (a pose due
- * now may come late) and holds after 1.5 intervals, when the stream
- * counts as stopped. A polyline through the poses (the earlier path)
+ * a pause. Past the pose the path goes on at that velocity for half an
+ * interval (a pose due now may come late), then slows evenly to rest at
+ * two intervals (a stream that ends stops without a step of the
+ * velocity). A polyline through the poses (the earlier path)
  * stepped the velocity, hence the Doppler rate, at every pose: a click
  * each time, heard at the speed of a whirled sword's tip. Arriving with
  * the chord's velocity instead of the tangent left the path's
@@ -45,8 +46,10 @@ void aero_pose_path_jump(aero_pose_path *p, int dim, const double *x);
 void aero_pose_path_to(aero_pose_path *p, const double *x, double interval);
 /* moves the path on by m samples: pos and vel at the new time */
 void aero_pose_path_advance(aero_pose_path *p, double m);
-/* 1 once no pose came for 1.5 intervals (more than one chunk of m ago) */
-int aero_pose_path_stopped(const aero_pose_path *p, double m);
+/* the fraction of the stream's velocity the path keeps now: 1 up to 1.5
+ * intervals, falling to 0 as it comes to rest (0 standing: placed, or
+ * never posed) */
+double aero_pose_path_pace(const aero_pose_path *p);
 
 /* a pose waiting for its sample: the numbers the player applies, its
  * interval (s, < 0 a placement) and its sample in the next block */

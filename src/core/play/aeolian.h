@@ -200,8 +200,9 @@ int aero_aeolian_set_ramp_ms(aero_aeolian *a, double ms);
 void aero_aeolian_set_seed(aero_aeolian *a, uint32_t seed);
 /* ears 0..e->n-1 (e->n at most the ears the object was made with) */
 int aero_aeolian_set_ears(aero_aeolian *a, const aero_ears *e);
-/* texture mode: ends A and B; interval_s is the time since the previous
- * pose: the motion is interpolated over it (at least 1 ms). The first
+/* texture mode: ends A and B, applied now; interval_s is the time since
+ * the previous pose: the ends move on a smooth path to it over that time
+ * (at least 1 ms; pose_glide.h). The first
  * pose, a pose more than 0.5 s after the previous one (a new gesture) and
  * interval_s < 0 (a placement) jump there without motion. */
 int aero_aeolian_set_pose(aero_aeolian *a, const double end_a[3],

@@ -119,9 +119,10 @@ int aero_body_set_exponent(aero_body *s, double e);
 int aero_body_set_gain_db(aero_body *s, double db);
 int aero_body_set_ramp_ms(aero_body *s, double ms);
 void aero_body_set_seed(aero_body *s, uint32_t seed);
-/* position and orientation (unit quaternion w x y z; normalised here);
- * interval_s as for sticks: the motion is interpolated over it; the first
- * pose, one after a 0.5 s pause and interval_s < 0 jump without motion */
+/* position and orientation (unit quaternion w x y z; normalised here),
+ * applied now; interval_s as for sticks: the body moves on a smooth path
+ * to it over that time (pose_glide.h); the first pose, one after a 0.5 s
+ * pause and interval_s < 0 jump without motion */
 int aero_body_set_pose(aero_body *s, const double pos[3],
                                const double quat[4], double interval_s);
 /* the same at sample `offset` of the next process call (a host gives each

@@ -448,33 +448,46 @@ UNIT_TEST(multi_instance)
 }
 
 /* a sphere whirled on a 2 m cord at 30 m/s, turning as it goes, posed
-   every 5 ms (240 samples), into x: with each pose queued at its sample
-   within 64-sample blocks (queued), or with the blocks cut at each pose's
+   every 5 ms (240 samples), into x, in calls of `block` samples within
+   ticks of 64 (Pd performs a block smaller than its tick several times at
+   one logical time): with each pose queued at the tick's start with its
+   sample in the tick (queued), or with the calls cut at each pose's
    sample and the pose applied at once between them */
-static void whirl_posed(float *x, int len, int queued)
+static void whirl_posed(float *x, int len, int queued, int block)
 {
     aero_body s;
+    int k = 0;
     setup(&s, sphere(0), 4);
     aero_body_set_ears(&s, &(aero_ears){1, {{0, -50, 0}}});
-    for (int b = 0, k = 0; b < len; b += 64) {
-        int done = 0;
-        for (; k * 240 < b + 64; k++) {
+    for (int tick = 0; tick < len; tick += 64) {
+        int due[8], n_due = 0; /* the tick's poses, by sample */
+        for (; k * 240 < tick + 64; k++) {
             double t = k * 0.005, rv[3] = {0, 0, 30.0 * k}, q[4];
             double p[3] = {2.0 * cos(15.0 * t), 2.0 * sin(15.0 * t), 0};
             aero_body_quaternion_from_rotvec(rv, q);
-            if (queued) {
-                aero_body_set_pose_at(&s, p, q, k ? 0.005 : -1.0, k * 240 - b);
-                continue;
-            }
-            if (k * 240 > b + done) {
-                float *o[1] = {x + b + done};
-                aero_body_process(&s, NULL, o, k * 240 - b - done);
-                done = k * 240 - b;
-            }
-            aero_body_set_pose(&s, p, q, k ? 0.005 : -1.0);
+            if (queued)
+                aero_body_set_pose_at(&s, p, q, k ? 0.005 : -1.0,
+                                      k * 240 - tick);
+            else
+                due[n_due++] = k;
         }
-        float *o[1] = {x + b + done};
-        aero_body_process(&s, NULL, o, 64 - done);
+        for (int b = tick, i = 0; b < tick + 64;) {
+            int end = b + block < tick + 64 ? b + block : tick + 64;
+            if (i < n_due && due[i] * 240 < end) /* cut at the pose */
+                end = due[i] * 240;
+            if (end > b) {
+                float *o[1] = {x + b};
+                aero_body_process(&s, NULL, o, end - b);
+                b = end;
+            }
+            if (i < n_due && due[i] * 240 == b) {
+                double t = due[i] * 0.005, rv[3] = {0, 0, 30.0 * due[i]}, q[4];
+                double p[3] = {2.0 * cos(15.0 * t), 2.0 * sin(15.0 * t), 0};
+                aero_body_quaternion_from_rotvec(rv, q);
+                aero_body_set_pose(&s, p, q, due[i] ? 0.005 : -1.0);
+                i++;
+            }
+        }
     }
     aero_body_free(&s);
 }
@@ -485,14 +498,18 @@ UNIT_TEST(poses_within_block)
     float *a = calloc(len, sizeof(float)), *b = calloc(len, sizeof(float));
     /* 9. a pose queued with its sample is applied there, as if the block
      *    were cut at it */
-    whirl_posed(a, len, 1);
-    whirl_posed(b, len, 0);
-    double diff = 0;
-    for (int i = 0; i < len; i++)
-        diff = fmax(diff, fabs(a[i] - b[i]));
-    UNIT_CHECK(diff <= 1e-6 * rms(b, len) && rms(b, len) > 0,
-               "poses queued at their samples = blocks cut there: max diff "
-               "%g (rms %g)", diff, rms(b, len));
+    static const int blocks[2] = {64, 16};
+    for (int j = 0; j < 2; j++) {
+        whirl_posed(a, len, 1, blocks[j]);
+        whirl_posed(b, len, 0, blocks[j]);
+        double diff = 0;
+        for (int i = 0; i < len; i++)
+            diff = fmax(diff, fabs(a[i] - b[i]));
+        UNIT_CHECK(diff <= 1e-6 * rms(b, len) && rms(b, len) > 0,
+                   "blocks of %d: poses queued at their samples = blocks "
+                   "cut there: max diff %g (rms %g)", blocks[j], diff,
+                   rms(b, len));
+    }
     /* a full queue applies the oldest at once; offsets beyond the block,
        negative or in blocks of 1 sample: no crash, finite sound */
     {

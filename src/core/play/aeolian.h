@@ -211,8 +211,8 @@ int aero_aeolian_set_pose(aero_aeolian *a, const double end_a[3],
  * times its segments; a host gives each pose its logical time within the
  * block), with the body's x axis when axis is not NULL: queued (up to
  * AERO_GLIDE_QUEUE; beyond, the oldest is applied at once), the process
- * call split there; an offset beyond the block applies at its last
- * sample. 0, or -1 invalid (nothing queued). */
+ * call split there; a pose beyond the call waits for the next (each
+ * call counts its samples off). 0, or -1 invalid (nothing queued). */
 int aero_aeolian_set_pose_at(aero_aeolian *a, const double end_a[3],
                              const double end_b[3], const double *axis,
                              double interval_s, int offset);

@@ -833,7 +833,7 @@ int aero_aeolian_texture_process(aero_aeolian *a, const float *speed,
     for (int done = 0; done < n;) {
         int m = n - done < AERO_STICK_CHUNK ? n - done : AERO_STICK_CHUNK;
         /* the poses due at this sample, then a chunk up to the next */
-        while ((m = aero_pose_queue_until(&s->queue, done, m, n)) == 0) {
+        while ((m = aero_pose_queue_until(&s->queue, done, m)) == 0) {
             apply_event(a, aero_pose_queue_front(&s->queue));
             aero_pose_queue_pop(&s->queue);
             m = n - done < AERO_STICK_CHUNK ? n - done : AERO_STICK_CHUNK;
@@ -860,5 +860,6 @@ int aero_aeolian_texture_process(aero_aeolian *a, const float *speed,
         aero_arrivals_take(&s->arrivals, out, done, m);
         done += m;
     }
+    aero_pose_queue_elapse(&s->queue, n);
     return s->clamped;
 }

@@ -611,7 +611,7 @@ int aero_body_process(aero_body *s, const float *speed,
     for (int done = 0; done < n;) {
         int m = n - done < AERO_BODY_CHUNK ? n - done : AERO_BODY_CHUNK;
         /* the poses due at this sample, then a chunk up to the next */
-        while ((m = aero_pose_queue_until(&s->queue, done, m, n)) == 0) {
+        while ((m = aero_pose_queue_until(&s->queue, done, m)) == 0) {
             aero_pose_event e = *aero_pose_queue_front(&s->queue);
             aero_pose_queue_pop(&s->queue);
             apply_pose(s, e.x, e.interval_s);
@@ -651,5 +651,6 @@ int aero_body_process(aero_body *s, const float *speed,
         aero_arrivals_take(&s->base.arrivals, out, done, m);
         done += m;
     }
+    aero_pose_queue_elapse(&s->queue, n);
     return s->base.clamped;
 }

@@ -128,8 +128,9 @@ int aero_body_set_pose(aero_body *s, const double pos[3],
 /* the same at sample `offset` of the next process call (a host gives each
  * pose its logical time within the block, as [vline~] times its
  * segments): queued (up to AERO_GLIDE_QUEUE; beyond, the oldest is
- * applied at once), the process call split there; an offset beyond the
- * block applies at its last sample. 0, or -1 invalid (nothing queued). */
+ * applied at once), the process call split there; a pose beyond the
+ * call waits for the next (each call counts its samples off). 0, or -1
+ * invalid (nothing queued). */
 int aero_body_set_pose_at(aero_body *s, const double pos[3],
                           const double quat[4], double interval_s,
                           int offset);

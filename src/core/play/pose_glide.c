@@ -121,11 +121,18 @@ void aero_pose_queue_pop(aero_pose_queue *q)
     q->n--;
 }
 
-int aero_pose_queue_until(const aero_pose_queue *q, int done, int m, int n)
+int aero_pose_queue_until(const aero_pose_queue *q, int done, int m)
 {
     if (q->n <= 0)
         return m;
-    int at = q->ev[q->head].offset < n ? q->ev[q->head].offset : n - 1;
-    int left = at - done;
+    int left = q->ev[q->head].offset - done;
     return left <= 0 ? 0 : left < m ? left : m;
+}
+
+void aero_pose_queue_elapse(aero_pose_queue *q, int n)
+{
+    for (int k = 0; k < q->n; k++) {
+        aero_pose_event *e = slot(q, k);
+        e->offset = e->offset > n ? e->offset - n : 0;
+    }
 }

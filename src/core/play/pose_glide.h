@@ -75,9 +75,12 @@ const aero_pose_event *aero_pose_queue_front(const aero_pose_queue *q);
 /* the last queued pose, or NULL */
 const aero_pose_event *aero_pose_queue_back(const aero_pose_queue *q);
 void aero_pose_queue_pop(aero_pose_queue *q);
-/* samples from `done` to the first pose's offset (clamped to the block of
- * n: a pose beyond it is due at its last sample), at most m; 0 when the
+/* samples from `done` to the first pose's offset, at most m; 0 when the
  * first pose is due now */
-int aero_pose_queue_until(const aero_pose_queue *q, int done, int m, int n);
+int aero_pose_queue_until(const aero_pose_queue *q, int done, int m);
+/* a process call of n samples is over: the poses beyond it come n samples
+ * sooner in the next (a block smaller than the host's tick: Pd calls
+ * perform several times at one logical time) */
+void aero_pose_queue_elapse(aero_pose_queue *q, int n);
 
 #endif

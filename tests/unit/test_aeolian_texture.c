@@ -439,7 +439,7 @@ UNIT_TEST(phase_wander)
     free(b);
 }
 
-/* --- a whirl without clicks ------------------------------------------------ */
+/* --- a whirl without clicks ----------------------------------------------- */
 
 /* the worst 2 ms window's largest |second difference| over the largest of
    its three neighbours on each side (aero-analyze's `clicks`, the sword
@@ -474,15 +474,17 @@ enum { WHIRL_CHUNK, WHIRL_TIMED, WHIRL_BLOCK, WHIRL_CUT };
    radius turning at 2 turns/s, ears 3 m out in the plane of the turn, a
    sine in every channel (nothing in it clicks), one source, 44.1 kHz.
    Posed every 64 samples at its sample (CHUNK; 32 would be below the
-   1 ms an interval is taken as at least), every 5 ms at its sample within 64-sample
-   blocks (TIMED: what the wrapper does) or every 5 ms at the start of the
-   block it falls in (BLOCK: what Pd delivers without the offset). The
-   worse ear's click measure over 2 s. */
+   1 ms an interval is taken as at least), every 5 ms at its sample within
+   64-sample blocks (TIMED: what the wrapper does), every 5 ms at the
+   start of the block it falls in (BLOCK: what Pd delivers without the
+   offset) or with the blocks cut at each pose's sample (CUT). The worse
+   ear's click measure over 2 s; keep (if not NULL) gets the left ear. */
 static double whirl_clicks(int mode, float *keep)
 {
     const double sr = 44100.0, turn = 4.0 * PI; /* rad/s */
     const long total = 97024, skip = (long)(0.2 * sr); /* 2.2 s */
-    float *ear[2] = {calloc(total, sizeof(float)), calloc(total, sizeof(float))};
+    float *ear[2] = {calloc(total, sizeof(float)),
+                     calloc(total, sizeof(float))};
     aero_texture *t = calloc(1, sizeof(*t));
     aero_texture_init(t, 16000, 1, 16000.0);
     for (int n = 0; n < 16000; n++) /* WHIRL_HZ at v0: whole periods */
@@ -514,7 +516,8 @@ static double whirl_clicks(int mode, float *keep)
             if (at >= b + block)
                 break;
             double f = turn * k * period, c = cos(f), sn = sin(f);
-            double pa[3] = {0.5 * c, 0.5 * sn, 0}, pb[3] = {1.5 * c, 1.5 * sn, 0};
+            double pa[3] = {0.5 * c, 0.5 * sn, 0},
+                   pb[3] = {1.5 * c, 1.5 * sn, 0};
             double interval = k ? period : -1.0;
             if (mode == WHIRL_CUT && (long)at > b + done) {
                 float *o[2] = {ear[0] + b + done, ear[1] + b + done};
@@ -560,7 +563,8 @@ UNIT_TEST(whirl_without_clicks)
     free(y);
     UNIT_CHECK(timed <= chunk + WHIRL_MARGIN,
                "whirled, posed every 5 ms at the pose's sample: clicks %.2f "
-               "<= %.2f posed every 64 samples + %.2f", timed, chunk, WHIRL_MARGIN);
+               "<= %.2f posed every 64 samples + %.2f", timed, chunk,
+               WHIRL_MARGIN);
     printf("  (posed every 5 ms at the block's start: %.2f)\n", block);
 }
 

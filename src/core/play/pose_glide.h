@@ -12,14 +12,14 @@
  * a pause. Past the pose the path goes on at that velocity for half an
  * interval (a pose due now may come late), then slows evenly to rest at
  * two intervals (a stream that ends stops without a step of the
- * velocity). A polyline through the poses (the earlier path)
- * stepped the velocity, hence the Doppler rate, at every pose: a click
- * each time, heard at the speed of a whirled sword's tip. Arriving with
- * the chord's velocity instead of the tangent left the path's
- * acceleration stepping at each pose: a whirled sine measured up to 4
- * where the tangent gives 1.4-1.9 (tests/unit/test_aeolian_texture.c,
- * whirl_without_clicks). The path lags the stream by one interval, as the
- * polyline did.
+ * velocity). The path lags the stream by one interval.
+ * Why: a polyline through the poses steps the velocity, hence the
+ * Doppler rate, at every pose, a click each time at the speed of a
+ * whirled sword's tip (a whirled sine's click measure 12.7, against 3.8
+ * posed every 64 samples); arriving with the chord's velocity instead of
+ * the tangent leaves the acceleration stepping at each pose (up to 4,
+ * where the tangent gives 1.4-1.9: tests/unit/test_aeolian_texture.c,
+ * whirl_without_clicks).
  *
  * Host-independent C99, no globals. Times in samples. */
 #ifndef AERO_POSE_GLIDE_H

@@ -64,6 +64,10 @@ static const aerotex_option aeolian_options[] = {
      "with --span3d urans: directions at a smaller\nincidence to the x "
      "axis run laminar (a thin\nedge-on wake the model would damp)", NULL,
      NULL},
+    {"--band-limit", AEROTEX_CHOICE, "grid|off", 0.0, 0, 0, AT(band_limit),
+     "with --span3d urans: grid: every channel low-passed\n(cyclic, zero "
+     "phase) from v0/(8 h) to v0/(4 h), h the\ncell: the band the grid "
+     "resolves; off: not", NULL, NULL},
     {"--stretch", AEROTEX_NUMBER, "r", 1.1, 1.0, 1.2, AT(stretch),
      "rows beyond 2 d of the body grow by r each\n(1: a uniform grid)",
      NULL, NULL},

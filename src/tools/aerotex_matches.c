@@ -96,6 +96,21 @@ static int rossiter_stage(double st_l, double mach, double *st_m)
     return best;
 }
 
+/* a URANS texture's band limit at what its grid resolves (band_limit.h) */
+static void band_row(const aero_texture *t)
+{
+    const double lo = aero_texture_getd(t, "band_limit_pass", 0.0);
+    const double hi = aero_texture_getd(t, "band_limit_stop", 0.0);
+    char v[64];
+    if (!(hi > 0.0))
+        return;
+    snprintf(v, sizeof v, "%.0f-%.0f Hz roll-off", lo, hi);
+    row("band limit: wavelengths of 8 to 4 cells at v0", v,
+        "the scheme resolves waves of > 4 cells", "Vichnevetsky and Bowles "
+        "1982; Lele 1992; Trefethen 1982",
+        "tests/unit/test_band_limit.c (the filter)", "method");
+}
+
 /* a thin blade (the sword): its tone's St on the projected width,
    chord sin(angle) from 20 deg on, and the checks that only Pd measures */
 static void blade_rows(const aero_texture *t)
@@ -121,10 +136,11 @@ static void blade_rows(const aero_texture *t)
         "at most 3", "issue 39", "16-sword.sh 2", "independent");
     row("clicks, whirled in Pd, chord at 0-90 deg", "(measured in Pd)",
         "within the whirled cylinder's + 0.5", "issue 39",
-        "16-sword.sh 1 (60 deg open)", "independent");
+        "16-sword.sh 1 (45 deg open)", "independent");
     row("edge-on tone below broadside", "(measured in Pd)",
         "below broadside, not silent", "issue 39", "16-sword.sh 4",
         "independent");
+    band_row(t);
 }
 
 static void aeolian_rows(const aero_texture *t)
@@ -175,6 +191,7 @@ static void aeolian_rows(const aero_texture *t)
                  kmax < na ? ang[kmax] : 0.0);
         row("St against incidence", v, "a maximum near 12-15 deg",
             "Knisely 1990", "not asserted (open)", "independent");
+        band_row(t);
         return;
     }
 }

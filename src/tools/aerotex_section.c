@@ -5,6 +5,7 @@
  * src/core/solve/aeolian_flow.c, the shapes in src/core/common/shape2d.c. */
 #include "aerotex_section.h"
 #include "aero_air.h"
+#include "band_limit.h"
 #include "texture.h"
 
 #include <math.h>
@@ -405,6 +406,12 @@ static void describe(const aeolian_job *j, const direction *r,
         if (j->urans_from > 0.0)
             aero_texture_setd(tex, "urans_from", j->urans_from);
     }
+    if (j->band_stop > 0.0) {
+        aero_texture_set(tex, "band_limit", "grid: raised cosine from "
+                         "v0/(8 h) to v0/(4 h), zero phase, over the loop");
+        aero_texture_setd(tex, "band_limit_pass", j->band_pass);
+        aero_texture_setd(tex, "band_limit_stop", j->band_stop);
+    }
     aero_texture_setd(tex, "span3d_frequency_scale", c->frequency_scale);
     aero_texture_setd(tex, "span3d_force_scale", c->force_scale);
     if (c->applied) {
@@ -440,6 +447,10 @@ static void report(const aeolian_job *j, const direction *r, const char *desc,
         if (j->urans_from > 0.0)
             printf("  laminar below %g deg of incidence\n", j->urans_from);
     }
+    if (j->band_stop > 0.0)
+        printf("  band limit of the grid: %.0f Hz passed, %.0f Hz and above "
+               "removed (v0 / 8 and v0 / 4 cells)\n", j->band_pass,
+               j->band_stop);
     if (c->applied)
         printf("  2D-to-3D (circle-calibrated): the 2D circle at Re %.4g "
                "sheds at St %.4f with Cl rms %.3f; Roshko St %.4f, Norberg "
@@ -477,12 +488,31 @@ static void report(const aeolian_job *j, const direction *r, const char *desc,
     printf("  %.1f s\n", aerotex_now() - j->job.t_start);
 }
 
+/* --span3d urans: every channel of the loop (len frames) low-passed at
+   the band the grid resolves (band_limit.h; the laminar directions too:
+   the grid is the same); 0, or 1 with a message */
+static int band_limit(aeolian_job *j, int len)
+{
+    const int ch = j->job.channels;
+    j->band_pass = j->band_stop = 0.0;
+    if (!urans(j) || j->band_limit != BAND_LIMIT_GRID)
+        return 0;
+    aero_band_limit_grid(j->v0, j->d / j->grid, &j->band_pass, &j->band_stop);
+    for (int c = 0; c < ch; c++)
+        if (aero_band_limit_apply(j->job.raw + c, len, ch, j->job.rate,
+                                  j->band_pass, j->band_stop))
+            return aerotex_job_fail(&j->job, "out of memory");
+    return 0;
+}
+
 /* the looped texture, saved and reported: the exit status */
 static int write_texture(aeolian_job *j, const direction *r, const char *desc)
 {
     const int nd = j->directions, len = aerotex_job_loop(&j->job);
     aero_texture tex;
     int status;
+    if (band_limit(j, len))
+        return 1;
     if (aero_texture_init(&tex, len, nd, j->job.rate))
         return aerotex_job_fail(&j->job, "out of memory");
     aerotex_job_fill(&j->job, &tex, len);

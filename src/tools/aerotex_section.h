@@ -25,9 +25,14 @@ typedef struct {
     aero_span3d correction; /* what the texture carries (span3d.h) */
     double urans_from;    /* --span3d urans: directions at a smaller
                              incidence to the x axis, deg, run laminar */
+    int band_limit;       /* --span3d urans: BAND_LIMIT_GRID (every channel
+                             band limited at what the grid resolves,
+                             band_limit.h) or BAND_LIMIT_OFF */
+    double band_pass, band_stop; /* its roll-off, Hz (0: none applied) */
 } aeolian_job;
 
 enum { SPAN3D_NONE, SPAN3D_CIRCLE, SPAN3D_URANS };
+enum { BAND_LIMIT_GRID, BAND_LIMIT_OFF };
 
 #define AT(field) offsetof(aeolian_job, field)
 /* the options aeolian and cavity share */

@@ -39,7 +39,9 @@ typedef struct {
     double delay[AERO_AEOLIAN_MAX_EARS]; /* samples */
     double sign;         /* side of the mirror fold (-1: mirrored) */
     uint32_t rng;        /* its phase wander's generator */
-    double wander;       /* phase rate now, frames per sample */
+    double wander_from;  /* phase rate offset at the last draw, and */
+    double wander;       /* the one it glides to by the next, frames per
+                            sample */
     int wander_left;     /* samples until the next draw */
     double law_speed, law_diameter, law_pitch, law_level; /* Re law cache */
     int primed;

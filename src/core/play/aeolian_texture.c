@@ -160,7 +160,7 @@ static void seed_source(aero_aeolian_texture *s, aero_aeolian_source *src)
     src->pos = 0.5 * (aero_uniform(&s->rng) + 1.0) *
                (s->texture ? s->texture->frames : 1);
     src->rng = source_generator(s);
-    src->wander = 0.0;
+    src->wander_from = src->wander = 0.0;
     src->wander_left = 0;
 }
 
@@ -719,7 +719,7 @@ static void read_texture(aero_aeolian *a, aero_aeolian_source *src,
     const long frames = t->frames;
     double pos = src->pos, inc = inc_then;
     const double dinc = (inc_now - inc_then) * (1.0 / m);
-    double wander = src->wander;
+    double from = src->wander_from, wander = src->wander;
     int left = src->wander_left;
     const int c0 = 3 * p->k0, c1 = 3 * p->k1;
     for (int j = 0; j < m; j++) {
@@ -733,14 +733,20 @@ static void read_texture(aero_aeolian *a, aero_aeolian_source *src,
         tex[3][j] = r0[c1 + 1] + fr * (r1[c1 + 1] - r0[c1 + 1]);
         inc += dinc;
         if (left <= 0) {
+            from = wander;
             wander = phase_wander(a, src, inc);
             left = AERO_STICK_CHUNK;
         }
         left--;
-        pos = aero_texture_wrap(pos + (inc + wander > 0.0 ? inc + wander : 0.0),
-                                frames);
+        /* the rate glides from one draw to the next: a rate that stepped
+           every chunk clicked on a pure tone (each step a kink of the
+           phase); the phase's long-run diffusion, hence the line width,
+           is the same */
+        double w = wander + (from - wander) * ((double)left / AERO_STICK_CHUNK);
+        pos = aero_texture_wrap(pos + (inc + w > 0.0 ? inc + w : 0.0), frames);
     }
     src->pos = pos;
+    src->wander_from = from;
     src->wander = wander;
     src->wander_left = left;
 }

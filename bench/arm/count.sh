@@ -20,7 +20,8 @@ CFLAGS="-std=c99 -D_POSIX_C_SOURCE=200809L -O3 -funroll-loops -fomit-frame-point
     -fPIC -fopenmp-simd -Wall -Wextra -Wshadow \
     -Isrc/core/common -Isrc/core/play -Isrc/core/solve"
 SRC="bench/arm/aeolian-core.c src/core/play/aeolian.c src/core/play/aeolian_model.c \
-    src/core/play/aeolian_texture.c src/core/play/arrivals.c src/core/common/strouhal.c"
+    src/core/play/aeolian_texture.c src/core/play/pose_glide.c \
+    src/core/play/arrivals.c src/core/common/strouhal.c"
 
 # ARCH COMPILER QEMU...: the command prefix to run that architecture's
 # binaries under QEMU

@@ -23,6 +23,9 @@ typedef struct _aeolian_tilde {
     aero_pd_base x_base;
     aero_aeolian x_core;
     double x_pose_time; /* logical time of the last pose */
+    double x_block_time; /* logical time of the last DSP block */
+    double x_sr;
+    int x_n;            /* its block size */
 } t_aeolian_tilde;
 
 #define OBJ "[aeolian~]"
@@ -31,11 +34,14 @@ static int aeolian_tilde_process(void *obj, const float *in,
                                  float *const *out, int n)
 {
     t_aeolian_tilde *x = obj;
+    x->x_block_time = clock_getlogicaltime(); /* poses count from here */
     return aero_aeolian_process(&x->x_core, in, out, n);
 }
 
 static void aeolian_tilde_dsp(t_aeolian_tilde *x, t_signal **sp)
 {
+    x->x_sr = sp[0]->s_sr;
+    x->x_n = sp[0]->s_n;
     if (aero_aeolian_set_sample_rate(&x->x_core, sp[0]->s_sr))
         pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
     aero_pd_dsp(&x->x_base, sp, 1, aeolian_tilde_process);
@@ -109,8 +115,10 @@ static void aeolian_tilde_pose(t_aeolian_tilde *x, t_symbol *s, int argc,
     x->x_pose_time = clock_getlogicaltime();
     if (!strcmp(s->s_name, "place")) /* a jump, no motion */
         interval = -1.0;
-    if (aero_aeolian_set_pose(&x->x_core, v, v + 3, interval) ||
-        (argc == 9 && aero_aeolian_set_reference(&x->x_core, v + 6)))
+    if (aero_aeolian_set_pose_at(&x->x_core, v, v + 3,
+                                 argc == 9 ? v + 6 : NULL, interval,
+                                 aero_pd_block_offset(x->x_block_time,
+                                                      x->x_sr, x->x_n)))
         aero_pd_refused_list(&x->x_base, s->s_name);
 }
 
@@ -187,7 +195,9 @@ static void *aeolian_tilde_new(t_symbol *s, int argc, t_atom *argv)
                           x->x_base.stereo ? 2 : 1, aero_pd_default_seed()))
         pd_error(x, OBJ ": sample rate %g not usable: 44100 Hz until the "
                  "DSP starts", sys_getsr());
-    x->x_pose_time = clock_getlogicaltime();
+    x->x_pose_time = x->x_block_time = clock_getlogicaltime();
+    x->x_sr = sys_getsr();
+    x->x_n = sys_getblksize();
     aero_pd_parse_flags(&x->x_base, argc, argv);
     aero_pd_base_outlets(&x->x_base);
     return x;

@@ -308,6 +308,18 @@ static inline int aero_pd_whole(t_float f, int lo, int hi, int *n)
     return 0;
 }
 
+/* the sample of the next DSP block at which a message now happens: the
+ * logical time since the last block's (recorded in perform) at sample
+ * rate sr, as [vline~] times its segments, in [0, max(n, Pd's tick)):
+ * blocks of n smaller than the tick are all performed at one logical
+ * time, and the player counts them off (pose_glide.h) */
+static inline int aero_pd_block_offset(double block_time, double sr, int n)
+{
+    double at = clock_gettimesince(block_time) * sr * 0.001;
+    int limit = n > sys_getblksize() ? n : sys_getblksize();
+    return at > 0.0 ? (at < limit - 1 ? (int)at : limit - 1) : 0;
+}
+
 /* exactly `want` numbers from a message, else an error naming the object */
 int aero_pd_floats(void *x, const char *obj, const char *what, int argc,
                    const t_atom *argv, int want, double *v);

@@ -66,7 +66,7 @@ static const aerotex_option aeolian_options[] = {
      NULL},
     {"--band-limit", AEROTEX_CHOICE, "grid|off", 0.0, 0, 0, AT(band_limit),
      "with --span3d urans: grid: every channel low-passed\n(cyclic, zero "
-     "phase) from v0/(8 h) to v0/(4 h), h the\ncell: the band the grid "
+     "phase) from v0/(16 h) to v0/(8 h), h the\ncell: the band the grid "
      "resolves; off: not", NULL, NULL},
     {"--stretch", AEROTEX_NUMBER, "r", 1.1, 1.0, 1.2, AT(stretch),
      "rows beyond 2 d of the body grow by r each\n(1: a uniform grid)",

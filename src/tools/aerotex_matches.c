@@ -105,8 +105,8 @@ static void band_row(const aero_texture *t)
     if (!(hi > 0.0))
         return;
     snprintf(v, sizeof v, "%.0f-%.0f Hz roll-off", lo, hi);
-    row("band limit: wavelengths of 8 to 4 cells at v0", v,
-        "the scheme resolves waves of > 4 cells", "Vichnevetsky and Bowles "
+    row("band limit: wavelengths of 16 to 8 cells at v0", v,
+        "the scheme carries waves of >= 16 cells", "Vichnevetsky and Bowles "
         "1982; Lele 1992; Trefethen 1982",
         "tests/unit/test_band_limit.c (the filter)", "method");
 }

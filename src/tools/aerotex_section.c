@@ -408,7 +408,7 @@ static void describe(const aeolian_job *j, const direction *r,
     }
     if (j->band_stop > 0.0) {
         aero_texture_set(tex, "band_limit", "grid: raised cosine from "
-                         "v0/(8 h) to v0/(4 h), zero phase, over the loop");
+                         "v0/(16 h) to v0/(8 h), zero phase, over the loop");
         aero_texture_setd(tex, "band_limit_pass", j->band_pass);
         aero_texture_setd(tex, "band_limit_stop", j->band_stop);
     }
@@ -449,7 +449,7 @@ static void report(const aeolian_job *j, const direction *r, const char *desc,
     }
     if (j->band_stop > 0.0)
         printf("  band limit of the grid: %.0f Hz passed, %.0f Hz and above "
-               "removed (v0 / 8 and v0 / 4 cells)\n", j->band_pass,
+               "removed (v0 / 16 and v0 / 8 cells)\n", j->band_pass,
                j->band_stop);
     if (c->applied)
         printf("  2D-to-3D (circle-calibrated): the 2D circle at Re %.4g "

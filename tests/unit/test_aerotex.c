@@ -163,18 +163,18 @@ UNIT_TEST(urans_band_limit)
     {
         /* --span3d urans band limits every channel at what the grid
            resolves (src/core/solve/band_limit.h): 1 cm at 10 m/s on 8
-           cells per d, 1.25 mm cells: 1000-2000 Hz, in the metadata, the
+           cells per d, 1.25 mm cells: 500-1000 Hz, in the metadata, the
            report and the table; --band-limit off leaves it out */
         int r = run("aeolian --shape square --diameter 0.01 --speed 10 "
                     "--grid 8 --span3d urans --duration 0.01 --settle 2 -q "
                     "-o build/tests/aerotex_urans.wav");
-        UNIT_CHECK(r == 0 && said("band limit of the grid: 1000 Hz passed, "
-                                  "2000 Hz and above removed"),
+        UNIT_CHECK(r == 0 && said("band limit of the grid: 500 Hz passed, "
+                                  "1000 Hz and above removed"),
                    "the band limit reported (exit %d)", r);
         r = run("info build/tests/aerotex_urans.wav");
-        UNIT_CHECK(r == 0 && said("band_limit_pass=1000") &&
-                       said("band_limit_stop=2000") &&
-                       said("| band limit: wavelengths of 8 to 4 cells"),
+        UNIT_CHECK(r == 0 && said("band_limit_pass=500") &&
+                       said("band_limit_stop=1000") &&
+                       said("| band limit: wavelengths of 16 to 8 cells"),
                    "info prints the band limit and its row");
         r = run("aeolian --shape square --diameter 0.01 --speed 10 "
                 "--grid 8 --span3d urans --band-limit off --duration 0.01 "

@@ -153,9 +153,20 @@ int aero_aeolian_set_ears(aero_aeolian *a, const aero_ears *e)
 int aero_aeolian_set_pose(aero_aeolian *a, const double end_a[3],
                           const double end_b[3], double interval_s)
 {
+    if (aero_aeolian_texture_make(a))
+        return -1;
+    aero_aeolian_texture_flush(a); /* the poses in the order given */
+    return aero_aeolian_texture_pose(a, end_a, end_b, interval_s);
+}
+
+int aero_aeolian_set_pose_at(aero_aeolian *a, const double end_a[3],
+                             const double end_b[3], const double *axis,
+                             double interval_s, int offset)
+{
     return aero_aeolian_texture_make(a)
                ? -1
-               : aero_aeolian_texture_pose(a, end_a, end_b, interval_s);
+               : aero_aeolian_texture_pose_at(a, end_a, end_b, axis,
+                                              interval_s, offset);
 }
 
 int aero_aeolian_set_reference(aero_aeolian *a, const double x[3])

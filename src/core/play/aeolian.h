@@ -200,12 +200,22 @@ int aero_aeolian_set_ramp_ms(aero_aeolian *a, double ms);
 void aero_aeolian_set_seed(aero_aeolian *a, uint32_t seed);
 /* ears 0..e->n-1 (e->n at most the ears the object was made with) */
 int aero_aeolian_set_ears(aero_aeolian *a, const aero_ears *e);
-/* texture mode: ends A and B; interval_s is the time since the previous
- * pose: the motion is interpolated over it (at least 1 ms). The first
+/* texture mode: ends A and B, applied now; interval_s is the time since
+ * the previous pose: the ends move on a smooth path to it over that time
+ * (at least 1 ms; pose_glide.h). The first
  * pose, a pose more than 0.5 s after the previous one (a new gesture) and
  * interval_s < 0 (a placement) jump there without motion. */
 int aero_aeolian_set_pose(aero_aeolian *a, const double end_a[3],
                           const double end_b[3], double interval_s);
+/* the same at sample `offset` of the next process call (as [vline~]
+ * times its segments; a host gives each pose its logical time within the
+ * block), with the body's x axis when axis is not NULL: queued (up to
+ * AERO_GLIDE_QUEUE; beyond, the oldest is applied at once), the process
+ * call split there; a pose beyond the call waits for the next (each
+ * call counts its samples off). 0, or -1 invalid (nothing queued). */
+int aero_aeolian_set_pose_at(aero_aeolian *a, const double end_a[3],
+                             const double end_b[3], const double *axis,
+                             double interval_s, int offset);
 /* the body's x axis (angle 0 of the texture's directions); projected onto
  * the plane normal to the stick and carried along as it turns */
 int aero_aeolian_set_reference(aero_aeolian *a, const double x[3]);

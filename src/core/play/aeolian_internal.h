@@ -6,6 +6,7 @@
 
 #include "aeolian.h"
 #include "arrivals.h"
+#include "pose_glide.h"
 
 /* --- model mode (aeolian_model.c) ------------------------------------------ */
 
@@ -38,7 +39,9 @@ typedef struct {
     double delay[AERO_AEOLIAN_MAX_EARS]; /* samples */
     double sign;         /* side of the mirror fold (-1: mirrored) */
     uint32_t rng;        /* its phase wander's generator */
-    double wander;       /* phase rate now, frames per sample */
+    double wander_from;  /* phase rate offset at the last draw, and */
+    double wander;       /* the one it glides to by the next, frames per
+                            sample */
     int wander_left;     /* samples until the next draw */
     double law_speed, law_diameter, law_pitch, law_level; /* Re law cache */
     int primed;
@@ -65,9 +68,10 @@ struct aero_aeolian_texture {
 
     int n_sources;
 
-    /* pose: from -> to over `pose_duration` samples */
-    double pose[6], pose_from[6], pose_to[6];
-    double pose_elapsed, pose_duration;
+    /* the ends' path through the poses (pose_glide.h) and the poses
+       waiting for their sample in the next block */
+    aero_pose_path path;
+    aero_pose_queue queue;
     int pose_set;        /* a pose message has arrived */
     double pose_velocity[6]; /* of the pose stream, from its time stamps */
     double velocity[6];  /* smoothed velocity of both ends, m/s */
@@ -101,6 +105,13 @@ void aero_aeolian_texture_resize(aero_aeolian *a, int k);
 int aero_aeolian_texture_pose(aero_aeolian *a, const double end_a[3],
                               const double end_b[3], double interval_s);
 int aero_aeolian_texture_reference(aero_aeolian *a, const double x[3]);
+/* the queued poses applied now, in order */
+void aero_aeolian_texture_flush(aero_aeolian *a);
+/* as _pose (and _reference when axis is not NULL), at sample `offset` of
+   the next process call */
+int aero_aeolian_texture_pose_at(aero_aeolian *a, const double end_a[3],
+                                 const double end_b[3], const double *axis,
+                                 double interval_s, int offset);
 int aero_aeolian_texture_process(aero_aeolian *a, const float *speed,
                                  float *const *out, int n);
 double aero_aeolian_texture_tone_hz(const aero_aeolian *a, double v);

@@ -66,14 +66,15 @@ void aero_aeolian_texture_retarget(aero_aeolian *a, int k)
         g->left = chunks * AERO_STICK_CHUNK;
 }
 
-/* the value of setting k after one more chunk (as aero_ramp_advance) */
-static double glide_advance(const aero_aeolian *a, int k)
+/* the value of setting k after m more samples (a chunk, shorter where a
+   pose splits it) */
+static double glide_advance(const aero_aeolian *a, int k, int m)
 {
     aero_aeolian_glide *g = glide_of(a->texture, k);
     if (g->left > 0.0) {
         double target = target_of(a, k);
         aero_glide_values(&g->value, &target, 1,
-                          aero_glide_fraction(&g->left, AERO_STICK_CHUNK));
+                          aero_glide_fraction(&g->left, m));
     }
     return g->value;
 }
@@ -84,10 +85,7 @@ static void default_pose(aero_aeolian_texture *s, double length)
 {
     double half = 0.5 * length;
     double p[6] = {0.0, 0.0, -half, 0.0, 0.0, half};
-    memcpy(s->pose, p, sizeof(p));
-    memcpy(s->pose_from, p, sizeof(p));
-    memcpy(s->pose_to, p, sizeof(p));
-    s->pose_elapsed = s->pose_duration = 0.0;
+    aero_pose_path_jump(&s->path, 6, p);
 }
 
 /* the diameter given, else the texture's */
@@ -162,7 +160,7 @@ static void seed_source(aero_aeolian_texture *s, aero_aeolian_source *src)
     src->pos = 0.5 * (aero_uniform(&s->rng) + 1.0) *
                (s->texture ? s->texture->frames : 1);
     src->rng = source_generator(s);
-    src->wander = 0.0;
+    src->wander_from = src->wander = 0.0;
     src->wander_left = 0;
 }
 
@@ -180,7 +178,7 @@ static void count_sources(aero_aeolian *a, double d)
     aero_aeolian_texture *s = a->texture;
     int n = a->sources;
     if (n <= 0) {
-        double len = stick_length(s->pose_to);
+        double len = stick_length(s->path.to);
         /* clamp before the cast: a 1e5 m pose of a 1e-5 m stick asks for
            3e9 sources, beyond int */
         double want = floor(len / (AERO_CORRELATION_DIAMETERS * d) + 0.5);
@@ -355,22 +353,24 @@ void aero_aeolian_texture_seed(aero_aeolian *a)
             seed_source(s, &s->src[i]);
 }
 
+static int pose_ok(const double *p)
+{
+    return aero_position_ok(p) && aero_position_ok(p + 3) &&
+           stick_length(p) >= 1e-6;
+}
+
 int aero_aeolian_texture_pose(aero_aeolian *a, const double end_a[3],
                               const double end_b[3], double interval_s)
 {
     aero_aeolian_texture *s = a->texture;
     double p[6] = {end_a[0], end_a[1], end_a[2], end_b[0], end_b[1], end_b[2]};
-    if (!aero_position_ok(end_a) || !aero_position_ok(end_b) ||
-        stick_length(p) < 1e-6)
+    if (!pose_ok(p))
         return -1;
     /* the first pose, one after a pause (a new gesture) or a placement
      * (interval < 0) jumps: there is nothing to move from */
     if (!s->pose_set || interval_s < 0.0 || interval_s > 0.5) {
-        memcpy(s->pose, p, sizeof(p));
-        memcpy(s->pose_from, p, sizeof(p));
-        memcpy(s->pose_to, p, sizeof(p));
+        aero_pose_path_jump(&s->path, 6, p);
         memset(s->pose_velocity, 0, sizeof(s->pose_velocity));
-        s->pose_elapsed = s->pose_duration = 0.0;
         if (!s->pose_set)
             update_source_count(a);
         s->pose_set = 1;
@@ -378,20 +378,54 @@ int aero_aeolian_texture_pose(aero_aeolian *a, const double end_a[3],
     }
     if (!(interval_s >= 0.001))
         interval_s = 0.001;
-    /* the velocity of the stream itself (its time stamps are exact, while
-     * the arrivals are quantised to DSP blocks): what the air sees */
+    /* the velocity of the stream itself (its time stamps are exact): what
+     * the air sees */
+    double was = stick_length(s->path.to), now = stick_length(p);
     for (int i = 0; i < 6; i++)
-        s->pose_velocity[i] = (p[i] - s->pose_to[i]) / interval_s;
-    memcpy(s->pose_from, s->pose, sizeof(p));
-    memcpy(s->pose_to, p, sizeof(p));
-    s->pose_elapsed = 0.0;
-    s->pose_duration = interval_s * a->sample_rate;
-    if (a->sources <= 0) {
-        /* keep n unless the length changed a lot (a new object) */
-        double was = stick_length(s->pose_from), now = stick_length(p);
-        if (now > 1.5 * was || now < was / 1.5)
-            update_source_count(a);
+        s->pose_velocity[i] = (p[i] - s->path.to[i]) / interval_s;
+    aero_pose_path_to(&s->path, p, interval_s * a->sample_rate);
+    /* keep n unless the length changed a lot (a new object) */
+    if (a->sources <= 0 && (now > 1.5 * was || now < was / 1.5))
+        update_source_count(a);
+    return 0;
+}
+
+static void apply_event(aero_aeolian *a, const aero_pose_event *e)
+{
+    aero_aeolian_texture_pose(a, e->x, e->x + 3, e->interval_s);
+    if (e->has_extra)
+        aero_aeolian_texture_reference(a, e->x + 6);
+}
+
+void aero_aeolian_texture_flush(aero_aeolian *a)
+{
+    aero_pose_queue *q = &a->texture->queue;
+    while (q->n > 0) {
+        apply_event(a, aero_pose_queue_front(q));
+        aero_pose_queue_pop(q);
     }
+}
+
+int aero_aeolian_texture_pose_at(aero_aeolian *a, const double end_a[3],
+                                 const double end_b[3], const double *axis,
+                                 double interval_s, int offset)
+{
+    aero_pose_event e, oldest;
+    memcpy(e.x, end_a, 3 * sizeof(double));
+    memcpy(e.x + 3, end_b, 3 * sizeof(double));
+    e.has_extra = axis != NULL;
+    if (axis) {
+        double v[3] = {axis[0], axis[1], axis[2]};
+        if (!aero_position_ok(v) || normalise3(v) < 1e-9)
+            return -1;
+        memcpy(e.x + 6, axis, 3 * sizeof(double));
+    }
+    if (!pose_ok(e.x))
+        return -1;
+    e.interval_s = interval_s;
+    e.offset = offset;
+    if (aero_pose_queue_push(&a->texture->queue, &e, &oldest))
+        apply_event(a, &oldest); /* full: the oldest at once */
     return 0;
 }
 
@@ -597,28 +631,19 @@ static void advance_frame(aero_aeolian *a, int m, double speed,
                           stick_frame *f)
 {
     aero_aeolian_texture *s = a->texture;
-    s->pose_elapsed += m;
-    double frac = s->pose_duration > 0.0 ? s->pose_elapsed / s->pose_duration
-                                         : 1.0;
-    /* past the target the motion goes on (a pose due now may come a block
-       late): stopping and starting again each time stepped the Doppler
-       shift and gain; held after 1.5 intervals, when the stream counts as
-       stopped */
-    if (frac > 1.5)
-        frac = 1.5;
-    for (int i = 0; i < 6; i++)
-        s->pose[i] = s->pose_from[i] + frac * (s->pose_to[i] - s->pose_from[i]);
-    /* the stream's velocity, smoothed; zero once the stream has stopped
-     * (no pose for 1.5 intervals) */
-    int stopped = s->pose_elapsed > 1.5 * s->pose_duration + m;
+    aero_pose_path_advance(&s->path, m);
+    const double *pose = s->path.pos;
+    /* the stream's velocity, smoothed, falling to 0 as the path comes to
+     * rest (the stream has ended) */
+    double pace = aero_pose_path_pace(&s->path);
     double alpha = 1.0 - exp(-m / (VELOCITY_TAU_S * a->sample_rate));
     for (int i = 0; i < 6; i++) {
-        double v = stopped ? 0.0 : s->pose_velocity[i];
+        double v = pace * s->pose_velocity[i];
         s->velocity[i] += alpha * (v - s->velocity[i]);
     }
     for (int i = 0; i < 3; i++) {
-        f->a[i] = s->pose[i];
-        f->axis[i] = s->pose[3 + i] - s->pose[i];
+        f->a[i] = pose[i];
+        f->axis[i] = pose[3 + i] - pose[i];
         f->va[i] = s->velocity[i];
         f->vb[i] = s->velocity[3 + i];
     }
@@ -635,7 +660,7 @@ static void advance_frame(aero_aeolian *a, int m, double speed,
         normalise3(xb);
     }
     memcpy(s->reference, xb, sizeof(xb));
-    double roll = glide_advance(a, AERO_AEO_ROLL) * AERO_PI / 180.0;
+    double roll = glide_advance(a, AERO_AEO_ROLL, m) * AERO_PI / 180.0;
     double yb[3];
     cross3(f->axis, xb, yb);
     for (int i = 0; i < 3; i++) {
@@ -643,13 +668,13 @@ static void advance_frame(aero_aeolian *a, int m, double speed,
         f->yb[i] = cos(roll) * yb[i] - sin(roll) * xb[i];
     }
     for (int i = 0; i < 3; i++)
-        f->wind[i] = glide_advance(a, AERO_AEO_WIND + i);
+        f->wind[i] = glide_advance(a, AERO_AEO_WIND + i, m);
     f->wind[0] += speed;
     for (int e = 0; e < a->n_ears; e++)
         for (int i = 0; i < 3; i++)
-            f->ears[e][i] = glide_advance(a, AERO_AEO_EAR + 3 * e + i);
+            f->ears[e][i] = glide_advance(a, AERO_AEO_EAR + 3 * e + i, m);
     f->seg_len = f->len / s->n_sources;
-    f->gain = glide_advance(a, AERO_AEO_GAIN);
+    f->gain = glide_advance(a, AERO_AEO_GAIN, m);
 }
 
 /* coefficients of one ear for a direction pair, from a geometry */
@@ -694,7 +719,7 @@ static void read_texture(aero_aeolian *a, aero_aeolian_source *src,
     const long frames = t->frames;
     double pos = src->pos, inc = inc_then;
     const double dinc = (inc_now - inc_then) * (1.0 / m);
-    double wander = src->wander;
+    double from = src->wander_from, wander = src->wander;
     int left = src->wander_left;
     const int c0 = 3 * p->k0, c1 = 3 * p->k1;
     for (int j = 0; j < m; j++) {
@@ -708,14 +733,20 @@ static void read_texture(aero_aeolian *a, aero_aeolian_source *src,
         tex[3][j] = r0[c1 + 1] + fr * (r1[c1 + 1] - r0[c1 + 1]);
         inc += dinc;
         if (left <= 0) {
+            from = wander;
             wander = phase_wander(a, src, inc);
             left = AERO_STICK_CHUNK;
         }
         left--;
-        pos = aero_texture_wrap(pos + (inc + wander > 0.0 ? inc + wander : 0.0),
-                                frames);
+        /* the rate glides from one draw to the next: a rate that stepped
+           every chunk clicked on a pure tone (each step a kink of the
+           phase); the phase's long-run diffusion, hence the line width,
+           is the same */
+        double w = wander + (from - wander) * ((double)left / AERO_STICK_CHUNK);
+        pos = aero_texture_wrap(pos + (inc + w > 0.0 ? inc + w : 0.0), frames);
     }
     src->pos = pos;
+    src->wander_from = from;
     src->wander = wander;
     src->wander_left = left;
 }
@@ -807,6 +838,12 @@ int aero_aeolian_texture_process(aero_aeolian *a, const float *speed,
     s->clamped = 0;
     for (int done = 0; done < n;) {
         int m = n - done < AERO_STICK_CHUNK ? n - done : AERO_STICK_CHUNK;
+        /* the poses due at this sample, then a chunk up to the next */
+        while ((m = aero_pose_queue_until(&s->queue, done, m)) == 0) {
+            apply_event(a, aero_pose_queue_front(&s->queue));
+            aero_pose_queue_pop(&s->queue);
+            m = n - done < AERO_STICK_CHUNK ? n - done : AERO_STICK_CHUNK;
+        }
         /* the inlet's mean speed over the chunk (NaN counts as 0) */
         double sp = 0.0;
         if (speed) {
@@ -829,5 +866,6 @@ int aero_aeolian_texture_process(aero_aeolian *a, const float *speed,
         aero_arrivals_take(&s->arrivals, out, done, m);
         done += m;
     }
+    aero_pose_queue_elapse(&s->queue, n);
     return s->clamped;
 }

@@ -54,8 +54,7 @@ int aero_body_init(aero_body *s, double sample_rate,
     memset(s, 0, sizeof(*s));
     s->scale = AERO_BODY_SCALE_DEFAULT;
     memcpy(s->pose, unturned, sizeof(unturned));
-    memcpy(s->pose_from, unturned, sizeof(unturned));
-    memcpy(s->pose_to, unturned, sizeof(unturned));
+    aero_pose_path_jump(&s->path, 7, unturned);
     return aero_moving_player_init(
         &s->base,
         sample_rate >= AERO_MOVING_SR_MIN && sample_rate <= AERO_MOVING_SR_MAX
@@ -233,45 +232,86 @@ static void region_point(const aero_body *s, const double *pose,
         x[i] += pose[i];
 }
 
-int aero_body_set_pose(aero_body *s, const double pos[3],
-                               const double quat[4], double interval_s)
+/* pos and quat as a pose p (the quaternion normalised): 0, or -1 */
+static int make_pose(const double pos[3], const double quat[4], double *p)
 {
-    double p[7] = {pos[0], pos[1], pos[2], quat[0], quat[1], quat[2], quat[3]};
-    double n = sqrt(p[3] * p[3] + p[4] * p[4] + p[5] * p[5] + p[6] * p[6]);
+    double n = sqrt(quat[0] * quat[0] + quat[1] * quat[1] +
+                    quat[2] * quat[2] + quat[3] * quat[3]);
     if (!aero_position_ok(pos) || !aero_finite_within(quat, 4, 1e6) ||
         !(n > 1e-9))
         return -1;
-    for (int i = 3; i < 7; i++)
-        p[i] /= n;
+    for (int i = 0; i < 3; i++)
+        p[i] = pos[i];
+    for (int i = 0; i < 4; i++)
+        p[3 + i] = quat[i] / n;
+    return 0;
+}
+
+/* a valid pose p (make_pose) */
+static void apply_pose(aero_body *s, double *p, double interval_s)
+{
+    const double *to = s->path.to;
     /* the shorter way round: q and -q are the same turn */
-    if (p[3] * s->pose_to[3] + p[4] * s->pose_to[4] + p[5] * s->pose_to[5] +
-            p[6] * s->pose_to[6] < 0.0)
+    if (p[3] * to[3] + p[4] * to[4] + p[5] * to[5] + p[6] * to[6] < 0.0)
         for (int i = 3; i < 7; i++)
             p[i] = -p[i];
     if (!s->pose_set || interval_s < 0.0 || interval_s > 0.5) {
-        memcpy(s->pose, p, sizeof(p));
-        memcpy(s->pose_from, p, sizeof(p));
-        memcpy(s->pose_to, p, sizeof(p));
+        aero_pose_path_jump(&s->path, 7, p);
+        memcpy(s->pose, p, 7 * sizeof(double));
         for (int l = 0; l < AERO_BODY_MAX_SOURCES; l++)
             memset(s->src[l].stream_velocity, 0, sizeof(double) * 3);
-        s->pose_elapsed = s->pose_duration = 0.0;
         s->pose_set = 1;
-        return 0;
+        return;
     }
     if (!(interval_s >= 0.001))
         interval_s = 0.001;
     /* each region's velocity from the stream's own time stamps */
     for (int l = 0; l < s->regions; l++) {
         double a[3], b[3];
-        region_point(s, s->pose_to, l, a);
+        region_point(s, to, l, a);
         region_point(s, p, l, b);
         for (int i = 0; i < 3; i++)
             s->src[l].stream_velocity[i] = (b[i] - a[i]) / interval_s;
     }
-    memcpy(s->pose_from, s->pose, sizeof(p));
-    memcpy(s->pose_to, p, sizeof(p));
-    s->pose_elapsed = 0.0;
-    s->pose_duration = interval_s * s->base.sample_rate;
+    /* the orientation on the same Hermite path as the position, its
+       quaternion normalised (advance_pose): C1 like the position, and for
+       the few degrees a body turns between poses as near the constant
+       rate of a slerp as the path's speed is to the stream's */
+    aero_pose_path_to(&s->path, p, interval_s * s->base.sample_rate);
+}
+
+static void flush_poses(aero_body *s)
+{
+    while (s->queue.n > 0) {
+        aero_pose_event e = *aero_pose_queue_front(&s->queue);
+        aero_pose_queue_pop(&s->queue);
+        apply_pose(s, e.x, e.interval_s);
+    }
+}
+
+int aero_body_set_pose(aero_body *s, const double pos[3],
+                               const double quat[4], double interval_s)
+{
+    double p[7];
+    if (make_pose(pos, quat, p))
+        return -1;
+    flush_poses(s); /* the poses in the order given */
+    apply_pose(s, p, interval_s);
+    return 0;
+}
+
+int aero_body_set_pose_at(aero_body *s, const double pos[3],
+                          const double quat[4], double interval_s,
+                          int offset)
+{
+    aero_pose_event e, oldest;
+    if (make_pose(pos, quat, e.x))
+        return -1;
+    e.has_extra = 0;
+    e.interval_s = interval_s;
+    e.offset = offset;
+    if (aero_pose_queue_push(&s->queue, &e, &oldest))
+        apply_pose(s, oldest.x, oldest.interval_s); /* full: at once */
     return 0;
 }
 
@@ -287,26 +327,28 @@ int aero_body_set_ears(aero_body *s, const aero_ears *e)
 
 /* --- processing --------------------------------------------------------------- */
 
-/* the pose at the chunk's end: position linear, orientation normalised
-   linear (nlerp), both over the pose interval */
+/* the pose at the chunk's end on the path (pose_glide.h), the quaternion
+   normalised */
 static void advance_pose(aero_body *s, int m)
 {
-    double frac, n = 0.0;
-    s->pose_elapsed += m;
-    frac = s->pose_duration > 0.0 ? s->pose_elapsed / s->pose_duration : 1.0;
-    /* past the target the motion goes on (a pose due now may come a block
-       late): stopping and starting again each time stepped the Doppler
-       shift and gain; held after 1.5 intervals, when the stream counts as
-       stopped */
-    if (frac > 1.5)
-        frac = 1.5;
-    for (int i = 0; i < 7; i++)
-        s->pose[i] = s->pose_from[i] + frac * (s->pose_to[i] - s->pose_from[i]);
+    double n = 0.0;
+    aero_pose_path_advance(&s->path, m);
+    memcpy(s->pose, s->path.pos, sizeof(s->pose));
     for (int i = 3; i < 7; i++)
         n += s->pose[i] * s->pose[i];
     n = sqrt(n);
     for (int i = 3; i < 7; i++)
         s->pose[i] = n > 1e-12 ? s->pose[i] / n : (i == 3);
+}
+
+/* a ramp's value after m samples (a chunk, shorter where a pose splits
+   it) */
+static double ramp_advance(aero_ramp *r, int m)
+{
+    if (r->left > 0.0)
+        aero_glide_values(&r->value, &r->target, 1,
+                          aero_glide_fraction(&r->left, m));
+    return r->value;
 }
 
 /* the direction pair around theta and the weight of the second */
@@ -568,8 +610,15 @@ int aero_body_process(aero_body *s, const float *speed,
     s->base.clamped = 0;
     for (int done = 0; done < n;) {
         int m = n - done < AERO_BODY_CHUNK ? n - done : AERO_BODY_CHUNK;
+        /* the poses due at this sample, then a chunk up to the next */
+        while ((m = aero_pose_queue_until(&s->queue, done, m)) == 0) {
+            aero_pose_event e = *aero_pose_queue_front(&s->queue);
+            aero_pose_queue_pop(&s->queue);
+            apply_pose(s, e.x, e.interval_s);
+            m = n - done < AERO_BODY_CHUNK ? n - done : AERO_BODY_CHUNK;
+        }
         double sp = 0.0, wind[3], ears[AERO_BODY_MAX_EARS][3], gain, alpha;
-        int stopped;
+        double pace;
         if (speed) { /* the inlet's mean over the chunk (NaN counts as 0) */
             for (int j = 0; j < m; j++) {
                 float v = speed[done + j];
@@ -578,20 +627,20 @@ int aero_body_process(aero_body *s, const float *speed,
             sp /= m;
         }
         advance_pose(s, m);
-        stopped = s->pose_elapsed > 1.5 * s->pose_duration + m;
+        pace = aero_pose_path_pace(&s->path);
         alpha = 1.0 - exp(-m / (VELOCITY_TAU_S * s->base.sample_rate));
         for (int i = 0; i < 3; i++)
-            wind[i] = aero_ramp_advance(&s->base.wind[i]);
+            wind[i] = ramp_advance(&s->base.wind[i], m);
         wind[0] += sp;
         for (int e = 0; e < s->base.n_ears; e++)
             for (int i = 0; i < 3; i++)
-                ears[e][i] = aero_ramp_advance(&s->base.ear[3 * e + i]);
-        gain = aero_ramp_advance(&s->base.gain);
+                ears[e][i] = ramp_advance(&s->base.ear[3 * e + i], m);
+        gain = ramp_advance(&s->base.gain, m);
         if (s->texture) {
             for (int l = 0; l < s->regions; l++) {
                 aero_body_geometry g;
                 for (int i = 0; i < 3; i++) {
-                    double v = stopped ? 0.0 : s->src[l].stream_velocity[i];
+                    double v = pace * s->src[l].stream_velocity[i];
                     s->src[l].velocity[i] += alpha * (v - s->src[l].velocity[i]);
                 }
                 s->base.clamped |= geometry(s, l, wind, (const double (*)[3])ears,
@@ -602,5 +651,6 @@ int aero_body_process(aero_body *s, const float *speed,
         aero_arrivals_take(&s->base.arrivals, out, done, m);
         done += m;
     }
+    aero_pose_queue_elapse(&s->queue, n);
     return s->base.clamped;
 }

@@ -44,6 +44,7 @@
 #include <stdint.h>
 
 #include "moving_player.h"
+#include "pose_glide.h"
 #include "texture.h"
 
 #define AERO_BODY_MAX_EARS AERO_EARS_MAX
@@ -87,9 +88,12 @@ typedef struct aero_body {
 
     double scale;
 
-    /* pose: position and quaternion (w, x, y, z), from -> to */
-    double pose[7], pose_from[7], pose_to[7];
-    double pose_elapsed, pose_duration;
+    /* pose: position and quaternion (w, x, y, z) now (the path's,
+       the quaternion normalised), its path through the poses
+       (pose_glide.h) and the poses waiting for their sample */
+    double pose[7];
+    aero_pose_path path;
+    aero_pose_queue queue;
     int pose_set;
 
     aero_body_source src[AERO_BODY_MAX_SOURCES];
@@ -115,17 +119,29 @@ int aero_body_set_exponent(aero_body *s, double e);
 int aero_body_set_gain_db(aero_body *s, double db);
 int aero_body_set_ramp_ms(aero_body *s, double ms);
 void aero_body_set_seed(aero_body *s, uint32_t seed);
-/* position and orientation (unit quaternion w x y z; normalised here);
- * interval_s as for sticks: the motion is interpolated over it; the first
- * pose, one after a 0.5 s pause and interval_s < 0 jump without motion */
+/* position and orientation (unit quaternion w x y z; normalised here),
+ * applied now; interval_s as for sticks: the body moves on a smooth path
+ * to it over that time (pose_glide.h); the first pose, one after a 0.5 s
+ * pause and interval_s < 0 jump without motion */
 int aero_body_set_pose(aero_body *s, const double pos[3],
                                const double quat[4], double interval_s);
-/* the orientation of the last pose (w x y z), for a pose that moves alone */
+/* the same at sample `offset` of the next process call (a host gives each
+ * pose its logical time within the block, as [vline~] times its
+ * segments): queued (up to AERO_GLIDE_QUEUE; beyond, the oldest is
+ * applied at once), the process call split there; a pose beyond the
+ * call waits for the next (each call counts its samples off). 0, or -1
+ * invalid (nothing queued). */
+int aero_body_set_pose_at(aero_body *s, const double pos[3],
+                          const double quat[4], double interval_s,
+                          int offset);
+/* the orientation of the last pose given (w x y z), for a pose that moves
+ * alone */
 static inline void aero_body_orientation(const aero_body *s,
                                                  double quat[4])
 {
+    const aero_pose_event *e = aero_pose_queue_back(&s->queue);
     for (int k = 0; k < 4; k++)
-        quat[k] = s->pose_to[3 + k];
+        quat[k] = e ? e->x[3 + k] : s->path.to[3 + k];
 }
 int aero_body_set_wind(aero_body *s, const double w[3]);
 /* ears 0..e->n-1 (e->n at most the ears the player was made with) */

@@ -5,14 +5,20 @@
  * modified wavenumber (Fourier analysis of the scheme: Vichnevetsky and
  * Bowles 1982; Lele 1992), on a wave N cells long (theta = 2 pi / N):
  * k' h = (8 sin theta - sin 2 theta) / 6 carried, (1 - cos theta)^2 / 3
- * damped. At N = 8 the wave travels 1.2 % slow and keeps 80 % of its
- * amplitude over each wavelength travelled; at N = 4 it travels 15 % slow,
- * its energy at a third of the speed (the group velocity; Trefethen
+ * damped. At N = 16 the wave travels 0.08 % slow and keeps 97 % of its
+ * amplitude over each wavelength travelled: carried as the flow carries
+ * it. At N = 8 it travels 1.2 % slow and keeps only 80 % per wavelength
+ * (41 % over the sword's chord of 32 cells); at N = 4 it travels 15 %
+ * slow, its energy at a third of the speed (the group velocity; Trefethen
  * 1982), and keeps 26 %; at 3.5 cells the group velocity turns back.
- * Content shorter than about 4 cells is the grid's, not the flow's. A
- * structure of length lambda carried past the body at the flow speed v0
- * forces it at f = v0 / lambda, so the band of the force history the grid
- * resolves ends between v0 / (8 h) and v0 / (4 h), h the cell.
+ * So content shorter than 16 cells is carried ever less faithfully and
+ * below 8 cells it is more the grid's than the flow's. A structure of
+ * length lambda carried past the body at the flow speed v0 forces it at
+ * f = v0 / lambda, so the band of the force history the grid resolves
+ * ends between v0 / (16 h) and v0 / (8 h), h the cell. (Cut at
+ * v0 / (8 h) to v0 / (4 h) instead, the sword's stalled drags kept bursts
+ * once per shedding cycle below 1 kHz that clicked when whirled:
+ * textures/README.md.)
  * aero_band_limit_apply passes everything below f_pass untouched, nothing
  * from f_stop up, and a raised cosine between (one octave when f_stop =
  * 2 f_pass): a zero-phase gain over the loop taken as periodic, so the
@@ -25,8 +31,8 @@
 #define AERO_BAND_LIMIT_H
 
 /* cells per wavelength at the ends of the roll-off (above) */
-#define AERO_BAND_LIMIT_CELLS_PASS 8.0
-#define AERO_BAND_LIMIT_CELLS_STOP 4.0
+#define AERO_BAND_LIMIT_CELLS_PASS 16.0
+#define AERO_BAND_LIMIT_CELLS_STOP 8.0
 
 /* the roll-off's ends (Hz) for flow speed v0 (m/s) on cells of h (m) */
 void aero_band_limit_grid(double v0, double h, double *f_pass,

@@ -132,7 +132,8 @@ PATCH
     # object renders its hour in seconds)
     while kill -0 "$pid" 2>/dev/null; do
         rss=$(sed -n 's/^VmRSS:[[:space:]]*\([0-9]*\) kB/\1/p' "/proc/$pid/status" 2>/dev/null)
-        [ -n "$rss" ] && echo "$(grep -c '^long:' "$D/$name.log") $rss" >>"$D/$name.rss"
+        # a process being torn down reports VmRSS 0: not a sample
+        [ "${rss:-0}" -gt 0 ] && echo "$(grep -c '^long:' "$D/$name.log") $rss" >>"$D/$name.rss"
         sleep 0.2
     done
     wait "$pid"

@@ -105,7 +105,7 @@ if [ "$LANES" = 1 ]; then
 fi
 # the lanes balanced by their CPU times at one thread (textures/README.md):
 # 1139 s and 1173 s measured
-echo "textures/make.sh: two lanes, one thread each (about 20 min on an idle" \
+echo "textures/make.sh: two lanes, one thread each (about 19 min on an idle" \
     "2-core machine); progress in $LOGS/a.log and $LOGS/b.log"
 lane a square cylinder cavity fire &
 a=$!

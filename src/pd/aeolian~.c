@@ -22,10 +22,7 @@ typedef struct _aeolian_tilde {
     t_float x_f;
     aero_pd_base x_base;
     aero_aeolian x_core;
-    double x_pose_time; /* logical time of the last pose */
-    double x_block_time; /* logical time of the last DSP block */
-    double x_sr;
-    int x_n;            /* its block size */
+    aero_pd_pose_clock x_clock; /* poses' intervals and block offsets */
 } t_aeolian_tilde;
 
 #define OBJ "[aeolian~]"
@@ -34,14 +31,13 @@ static int aeolian_tilde_process(void *obj, const float *in,
                                  float *const *out, int n)
 {
     t_aeolian_tilde *x = obj;
-    x->x_block_time = clock_getlogicaltime(); /* poses count from here */
+    aero_pd_pose_clock_block(&x->x_clock);
     return aero_aeolian_process(&x->x_core, in, out, n);
 }
 
 static void aeolian_tilde_dsp(t_aeolian_tilde *x, t_signal **sp)
 {
-    x->x_sr = sp[0]->s_sr;
-    x->x_n = sp[0]->s_n;
+    aero_pd_pose_clock_dsp(&x->x_clock, sp[0]);
     if (aero_aeolian_set_sample_rate(&x->x_core, sp[0]->s_sr))
         pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
     aero_pd_dsp(&x->x_base, sp, 1, aeolian_tilde_process);
@@ -111,14 +107,11 @@ static void aeolian_tilde_pose(t_aeolian_tilde *x, t_symbol *s, int argc,
     }
     if (aero_pd_floats(x, OBJ, s->s_name, argc, argv, argc, v))
         return;
-    double interval = clock_gettimesince(x->x_pose_time) * 0.001;
-    x->x_pose_time = clock_getlogicaltime();
-    if (!strcmp(s->s_name, "place")) /* a jump, no motion */
-        interval = -1.0;
+    int offset; /* place: a jump, no motion */
+    double interval = aero_pd_pose_clock_pose(
+        &x->x_clock, !strcmp(s->s_name, "place"), &offset);
     if (aero_aeolian_set_pose_at(&x->x_core, v, v + 3,
-                                 argc == 9 ? v + 6 : NULL, interval,
-                                 aero_pd_block_offset(x->x_block_time,
-                                                      x->x_sr, x->x_n)))
+                                 argc == 9 ? v + 6 : NULL, interval, offset))
         aero_pd_refused_list(&x->x_base, s->s_name);
 }
 
@@ -195,9 +188,7 @@ static void *aeolian_tilde_new(t_symbol *s, int argc, t_atom *argv)
                           x->x_base.stereo ? 2 : 1, aero_pd_default_seed()))
         pd_error(x, OBJ ": sample rate %g not usable: 44100 Hz until the "
                  "DSP starts", sys_getsr());
-    x->x_pose_time = x->x_block_time = clock_getlogicaltime();
-    x->x_sr = sys_getsr();
-    x->x_n = sys_getblksize();
+    aero_pd_pose_clock_init(&x->x_clock);
     aero_pd_parse_flags(&x->x_base, argc, argv);
     aero_pd_base_outlets(&x->x_base);
     return x;

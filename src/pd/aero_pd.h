@@ -308,16 +308,50 @@ static inline int aero_pd_whole(t_float f, int lo, int hi, int *n)
     return 0;
 }
 
-/* the sample of the next DSP block at which a message now happens: the
- * logical time since the last block's (recorded in perform) at sample
- * rate sr, as [vline~] times its segments, in [0, max(n, Pd's tick)):
- * blocks of n smaller than the tick are all performed at one logical
- * time, and the player counts them off (pose_glide.h) */
-static inline int aero_pd_block_offset(double block_time, double sr, int n)
+/* the clock of a posed body's stream ([aeolian~], [body~]): when the
+ * last pose came, when the last DSP block was performed, that block's
+ * rate and size */
+typedef struct {
+    double pose_time, block_time, sr;
+    int n;
+} aero_pd_pose_clock;
+
+static inline void aero_pd_pose_clock_init(aero_pd_pose_clock *c)
 {
-    double at = clock_gettimesince(block_time) * sr * 0.001;
-    int limit = n > sys_getblksize() ? n : sys_getblksize();
-    return at > 0.0 ? (at < limit - 1 ? (int)at : limit - 1) : 0;
+    c->pose_time = c->block_time = clock_getlogicaltime();
+    c->sr = sys_getsr();
+    c->n = sys_getblksize();
+}
+
+/* in the dsp method */
+static inline void aero_pd_pose_clock_dsp(aero_pd_pose_clock *c,
+                                          const t_signal *s)
+{
+    c->sr = s->s_sr;
+    c->n = s->s_n;
+}
+
+/* in perform: the poses that follow count from here */
+static inline void aero_pd_pose_clock_block(aero_pd_pose_clock *c)
+{
+    c->block_time = clock_getlogicaltime();
+}
+
+/* a pose now (place: a jump): the seconds since the previous pose (-1 for
+ * a jump), and in *offset its sample in the next DSP block: the logical
+ * time since the last block's, as [vline~] times its segments, in
+ * [0, max(n, Pd's tick)): blocks of n smaller than the tick are all
+ * performed at one logical time, and the player counts them off
+ * (pose_glide.h) */
+static inline double aero_pd_pose_clock_pose(aero_pd_pose_clock *c,
+                                             int place, int *offset)
+{
+    double interval = clock_gettimesince(c->pose_time) * 0.001;
+    double at = clock_gettimesince(c->block_time) * c->sr * 0.001;
+    int limit = c->n > sys_getblksize() ? c->n : sys_getblksize();
+    c->pose_time = clock_getlogicaltime();
+    *offset = at > 0.0 ? (at < limit - 1 ? (int)at : limit - 1) : 0;
+    return place ? -1.0 : interval;
 }
 
 /* exactly `want` numbers from a message, else an error naming the object */

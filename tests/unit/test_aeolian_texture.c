@@ -468,6 +468,36 @@ static double click_ratio(const float *x, long n, double sr)
     return worst;
 }
 
+/* one direction, a WHIRL_HZ sine at v0 in every channel (whole periods),
+   the sword's diameter */
+static aero_texture *sine_blade_texture(void)
+{
+    aero_texture *t = calloc(1, sizeof(*t));
+    aero_texture_init(t, 16000, 1, 16000.0);
+    for (int n = 0; n < 16000; n++) /* WHIRL_HZ at v0: whole periods */
+        for (int c = 0; c < 3; c++)
+            t->data[(size_t)n * 3 + c] =
+                (float)sin(2.0 * PI * WHIRL_HZ * n / 16000.0);
+    aero_texture_set(t, "kind", "aeolian");
+    aero_texture_set(t, "v0", "10");
+    aero_texture_set(t, "diameter", "0.04");
+    aero_texture_set(t, "symmetry", "0");
+    aero_texture_set(t, "mirror", "1");
+    aero_texture_set(t, "st", "0.16");
+    aero_texture_set(t, "angles", "0");
+    return t;
+}
+
+/* the worse ear's click measure after `skip` samples; frees both ears */
+static double worse_ear(float *ear[2], long total, long skip, double sr)
+{
+    double worst = fmax(click_ratio(ear[0] + skip, total - skip, sr),
+                        click_ratio(ear[1] + skip, total - skip, sr));
+    free(ear[0]);
+    free(ear[1]);
+    return worst;
+}
+
 enum { WHIRL_CHUNK, WHIRL_TIMED, WHIRL_BLOCK, WHIRL_CUT };
 
 /* the sword test's whirl (16-sword.sh 1): a stick from 0.5 to 1.5 m on a
@@ -485,19 +515,7 @@ static double whirl_clicks(int mode, float *keep)
     const long total = 97024, skip = (long)(0.2 * sr); /* 2.2 s */
     float *ear[2] = {calloc(total, sizeof(float)),
                      calloc(total, sizeof(float))};
-    aero_texture *t = calloc(1, sizeof(*t));
-    aero_texture_init(t, 16000, 1, 16000.0);
-    for (int n = 0; n < 16000; n++) /* WHIRL_HZ at v0: whole periods */
-        for (int c = 0; c < 3; c++)
-            t->data[(size_t)n * 3 + c] =
-                (float)sin(2.0 * PI * WHIRL_HZ * n / 16000.0);
-    aero_texture_set(t, "kind", "aeolian");
-    aero_texture_set(t, "v0", "10");
-    aero_texture_set(t, "diameter", "0.04");
-    aero_texture_set(t, "symmetry", "0");
-    aero_texture_set(t, "mirror", "1");
-    aero_texture_set(t, "st", "0.16");
-    aero_texture_set(t, "angles", "0");
+    aero_texture *t = sine_blade_texture();
     aero_aeolian s;
     char err[128];
     aero_aeolian_init(&s, sr, 2, 5);
@@ -535,12 +553,8 @@ static double whirl_clicks(int mode, float *keep)
     }
     if (keep)
         memcpy(keep, ear[0], sizeof(float) * (size_t)total);
-    double worst = fmax(click_ratio(ear[0] + skip, total - skip, sr),
-                        click_ratio(ear[1] + skip, total - skip, sr));
     aero_aeolian_free(&s);
-    free(ear[0]);
-    free(ear[1]);
-    return worst;
+    return worse_ear(ear, total, skip, sr);
 }
 
 /* The polyline path stepped the Doppler rate at every pose: posed every
@@ -578,19 +592,7 @@ static double wander_clicks(double width)
     const long total = 97024, skip = (long)(0.2 * sr);
     float *ear[2] = {calloc(total, sizeof(float)),
                      calloc(total, sizeof(float))};
-    aero_texture *t = calloc(1, sizeof(*t));
-    aero_texture_init(t, 16000, 1, 16000.0);
-    for (int n = 0; n < 16000; n++)
-        for (int c = 0; c < 3; c++)
-            t->data[(size_t)n * 3 + c] =
-                (float)sin(2.0 * PI * WHIRL_HZ * n / 16000.0);
-    aero_texture_set(t, "kind", "aeolian");
-    aero_texture_set(t, "v0", "10");
-    aero_texture_set(t, "diameter", "0.04");
-    aero_texture_set(t, "symmetry", "0");
-    aero_texture_set(t, "mirror", "1");
-    aero_texture_set(t, "st", "0.16");
-    aero_texture_set(t, "angles", "0");
+    aero_texture *t = sine_blade_texture();
     aero_aeolian s;
     char err[128];
     double wind[3] = {10.0, 0, 0};
@@ -605,12 +607,8 @@ static double wander_clicks(double width)
         float *o[2] = {ear[0] + b, ear[1] + b};
         aero_aeolian_process(&s, NULL, o, 64);
     }
-    double worst = fmax(click_ratio(ear[0] + skip, total - skip, sr),
-                        click_ratio(ear[1] + skip, total - skip, sr));
     aero_aeolian_free(&s);
-    free(ear[0]);
-    free(ear[1]);
-    return worst;
+    return worse_ear(ear, total, skip, sr);
 }
 
 /* The phase wander's rate stepped at every draw (each 32-sample chunk), a

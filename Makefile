@@ -491,7 +491,8 @@ DEB_PACKAGES += gcc-mingw-w64-x86-64-win32 gcc-mingw-w64-x86-64-posix \
 platform:
 	@case " $(PLATFORMS) " in *" $(P) "*) ;; *) \
 	    echo "make platform P=PLATFORM, one of: $(PLATFORMS)" >&2; exit 2 ;; esac
-	@sh platforms/deps.sh $(P)
+	@$(MAKE) --no-print-directory -s $(VENDORED)/fftw-3.3.10.tar.gz $(VENDORED)/libsndfile-1.2.0.tar.gz
+	@AERO_VENDOR=$(abspath $(VENDORED)) sh platforms/deps.sh $(P)
 	@$(if $(filter windows-%,$(P)),sh platforms/pd.sh $(P) single >/dev/null)
 	@$(MAKE) --no-print-directory -f platforms/platform.mk P=$(P)
 windows:
@@ -549,17 +550,26 @@ web.page = $(wildcard web/*.html web/*.js web/*.css)
 # platforms/deps.sh wasm: links in build/deps/wasm to the cached libraries
 # (whose times are the cache's: a stamp says when they were linked)
 WASM_DEPS_STAMP = $(WASM_DEPS)/.linked
-$(WASM_DEPS_STAMP): platforms/deps.sh platforms/deps/fftw.sh platforms/deps/sndfile.sh
-	NODE_PATH=/usr/share/nodejs AERO_VENDOR=$(abspath $(VENDOR)) \
+# build/vendor/: links to the archives as platforms/vendor.sh finds or
+# fetches them, each checked against its pinned SHA-256
+VENDORED = $(BUILD)/vendor
+$(VENDORED)/%.tar.gz: platforms/vendor.sh
+	@mkdir -p $(dir $@)
+	a=$$(VENDOR=$(abspath $(VENDOR)) sh platforms/vendor.sh $*.tar.gz) && \
+	    ln -sf "$$a" $@
+$(WASM_DEPS_STAMP): platforms/deps.sh platforms/deps/fftw.sh platforms/deps/sndfile.sh \
+    $(VENDORED)/fftw-3.3.10.tar.gz $(VENDORED)/libsndfile-1.2.0.tar.gz
+	NODE_PATH=/usr/share/nodejs AERO_VENDOR=$(abspath $(VENDORED)) \
 	    nice -n 10 sh platforms/deps.sh wasm
 	touch $@
 
 # libpd's own Makefile with emcc: the static library only, no extras (pd~
 # forks), no utils
-$(WASM_LIBPD)/libs/libpd.a:
+$(WASM_LIBPD)/libs/libpd.a: $(VENDORED)/libpd-0.16.1.tar.gz \
+    $(VENDORED)/pure-data-0.56-5.tar.gz
 	rm -rf $(WASM_LIBPD) && mkdir -p $(WASM_LIBPD)/pure-data
-	tar xzf $(VENDOR)/libpd-0.16.1.tar.gz -C $(WASM_LIBPD) --strip-components=1
-	tar xzf $(VENDOR)/pure-data-0.56-5.tar.gz -C $(WASM_LIBPD)/pure-data \
+	tar xzf $(VENDORED)/libpd-0.16.1.tar.gz -C $(WASM_LIBPD) --strip-components=1
+	tar xzf $(VENDORED)/pure-data-0.56-5.tar.gz -C $(WASM_LIBPD)/pure-data \
 	    --strip-components=1
 	env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL NODE_PATH=/usr/share/nodejs \
 	    nice -n 10 make -C $(WASM_LIBPD) -j2 CC=emcc AR=emar STATIC=true \

@@ -510,7 +510,7 @@ platforms:
 #                   (platforms/deps.sh wasm, cached), the scene patches,
 #                   abstractions, textures and trees the page loads into
 #                   the module's file system
-#   make web-serve  serves build/web/ on http://localhost:8000/
+#   make web-serve  serves build/web/ on http://127.0.0.1:8000/ (PORT=)
 #   make check-web  the page in headless Chromium against native renders
 #                   (tests/web/run.sh)
 # Debian's emscripten works offline from its own cache (EM_CACHE unset);
@@ -608,10 +608,12 @@ web: $(WEB)/aero.js $(web.data) $(web.page)
 	cp abstractions/*.pd $(WEB)/aero/abstractions/
 	cp $(web.textures) $(WEB)/aero/textures/
 	cp $(web.trees) $(WEB)/aero/trees/
-	@echo "web: $(WEB)/ (make web-serve, then open http://localhost:8000/)"
+	@echo "web: $(WEB)/ (make web-serve, then open http://127.0.0.1:$(PORT)/)"
 
+# on this machine only (127.0.0.1), on port PORT (make web-serve PORT=8080)
+PORT ?= 8000
 web-serve: web
-	cd $(WEB) && python3 -m http.server 8000
+	python3 -m http.server $(PORT) --bind 127.0.0.1 --directory $(WEB)
 
 # only what it uses natively: the core for the native host, the analyser
 check-web:

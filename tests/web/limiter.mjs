@@ -60,11 +60,11 @@ function run(sig) {
 // of +34 dBFS, loud noise bursts: every true peak <= -1 dBTP
 for (const [name, f] of [
   ['a +20 dBFS tone at 11.9 kHz', i => 10 * Math.sin(2 * Math.PI * 11900 * i / RATE + 0.7)],
-  ['a +34 dBFS click on silence', i => (i === 20000 ? 50 : 0)],
+  ['a +34 dBFS click on silence', i => (i === 10000 ? 50 : 0)],
   ['+14 dBFS noise bursts', (i, u) => ((i >> 11) & 1 ? 5 * (u - 0.5) : 0.05 * (u - 0.5))],
-  ['a tone stepping 0 -> +24 dBFS', i => (i < 24000 ? 0.3 : 16) * Math.sin(2 * Math.PI * 440 * i / RATE)],
+  ['a tone stepping 0 -> +24 dBFS', i => (i < 12000 ? 0.3 : 16) * Math.sin(2 * Math.PI * 440 * i / RATE)],
 ]) {
-  const n = RATE, a = new Float32Array(n), b = new Float32Array(n);
+  const n = RATE / 2, a = new Float32Array(n), b = new Float32Array(n);
   let seed = 7;
   for (let i = 0; i < n; i++) {
     seed = (seed * 1103515245 + 12345) >>> 0;

@@ -56,6 +56,28 @@ for s in $scenes; do
         "$OUT/native-$s.wav" 2>"$OUT/native-$s.log" || fail "native render of $s"
 done
 
+# --- levels: the master limiter, each scene's loudness ---------------------
+section "levels: the master limiter (-1 dBTP) and each scene's default loudness"
+judge_all() { # every "ok"/"FAIL" line of a command counted
+    "$@" >"$OUT/judge.log" 2>&1
+    while IFS= read -r line; do
+        case "$line" in
+            ok*) passed=$((passed + 1)); echo "  $line" ;;
+            FAIL*) failed=$((failed + 1)); echo "  $line" ;;
+            *) echo "  $line" ;;
+        esac
+    done <"$OUT/judge.log"
+}
+judge_all node tests/web/limiter.mjs
+# the first 10 s of each scene at its defaults, natively (the same samples
+# as the page's, checked below for the first SECONDS)
+for s in $scenes; do
+    "$OUT/render-native" -data "$ROOT" -path "$ROOT/abstractions" \
+        -seconds 10 -settle 0 "web/scenes/$s.pd" "$OUT/loud-$s.wav" \
+        2>"$OUT/loud-$s.log" || fail "native 10 s render of $s"
+done
+judge_all node tests/web/loudness.mjs $RATE "$OUT"/loud-*.wav
+
 # --- the page in Chromium ---------------------------------------------------
 section "the page in Chromium (headless, playwright-core)"
 (cd tests/web && [ -d node_modules/playwright-core ] ||
@@ -68,15 +90,9 @@ python3 -m http.server "$port" --bind 127.0.0.1 --directory build/web \
 server=$!
 trap 'kill $server 2>/dev/null' EXIT INT TERM
 sleep 1
-node tests/web/check.mjs "http://127.0.0.1:$port/" "$OUT" "$SECONDS_RENDER" \
-    ${BENCH:+bench} >"$OUT/browser.log" 2>&1
-while IFS= read -r line; do
-    case "$line" in
-        ok*) passed=$((passed + 1)); echo "  $line" ;;
-        FAIL*) failed=$((failed + 1)); echo "  $line" ;;
-        *) echo "  $line" ;;
-    esac
-done <"$OUT/browser.log"
+judge_all node tests/web/check.mjs "http://127.0.0.1:$port/" "$OUT" "$SECONDS_RENDER" \
+    ${BENCH:+bench}
+cp "$OUT/judge.log" "$OUT/browser.log"
 kill $server 2>/dev/null
 
 # --- the same samples ----------------------------------------------------------
@@ -146,6 +162,39 @@ judge build/aero-analyze peakratio --fmin 50 --fmax 1000 --nfft 32768 \
     "$OUT/wires-u12.wav" "$OUT/wires-u24.wav" --expect "$(law ratio)" --tol 0.02
 judge build/aero-analyze leveldiff "$OUT/wires-u12.wav" "$OUT/wires-u24.wav" \
     --expect "$(law level)" --tol 1
+
+# --- examples/web-embed: docs/web.md's embedding, from its steps alone ----
+section "examples/web-embed built in an empty folder from its README's steps"
+rm -rf "$OUT/embed" && mkdir -p "$OUT/embed"
+cp examples/web-embed/* "$OUT/embed/"
+if (cd "$OUT/embed" && AERO="$ROOT" nice sh build.sh) >"$OUT/embed.log" 2>&1; then
+    pass "examples/web-embed: AERO=... sh build.sh after make web builds embed.js and embed.wasm"
+    python3 -m http.server "$port" --bind 127.0.0.1 --directory "$OUT/embed" \
+        >"$OUT/server-embed.log" 2>&1 &
+    server=$!
+    sleep 1
+    judge_all node tests/web/embed.mjs "http://127.0.0.1:$port/"
+    kill $server 2>/dev/null
+else
+    tail -20 "$OUT/embed.log"
+    fail "examples/web-embed: its build.sh failed ($OUT/embed.log)"
+fi
+
+# --- the small things outside the page ------------------------------------
+section "make web-serve and docs/web.md"
+serve=$(make -n --no-print-directory web-serve PORT=8123 2>/dev/null | grep http.server)
+case "$serve" in
+    *"--bind 127.0.0.1"*8123*|*8123*"--bind 127.0.0.1"*) pass "make web-serve PORT=8123: $serve" ;;
+    *) fail "make web-serve does not bind 127.0.0.1 on PORT= ($serve)" ;;
+esac
+# each texture's size as docs/web.md states it (gzip -9, kB) within 3 %
+for t in sword fire; do
+    kb=$(gzip -9c "textures/$t.wav" | wc -c | awk '{printf "%.0f", $1 / 1000}')
+    said=$(sed -n "s/.*the $t's texture \([0-9]*\) kB.*/\1/p" docs/web.md | tr -d '\n')
+    awk -v a="$kb" -v b="$said" -v t="$t" 'BEGIN { ok = b != "" && (a - b) / a < 0.03 && (b - a) / a < 0.03
+        printf "%s  docs/web.md: the %s texture %s kB, measured %s kB (gzip -9)\n", ok ? "ok   " : "FAIL ", t, b, a
+        exit !ok }' && passed=$((passed + 1)) || failed=$((failed + 1))
+done
 
 echo
 echo "$passed passed, $failed failed"

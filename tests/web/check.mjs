@@ -112,6 +112,8 @@ try {
   // the mouse: a drag across the swing pad moves the blade live
   await page.click('#play');
   await page.waitForFunction(() => window.aero.state.playing, null, { timeout: 30000 });
+  await page.waitForFunction(() => window.aero.state.playingScene?.id === 'sword', null,
+    { timeout: 30000 });
   const pad = await page.locator('#swingpad').boundingBox();
   await page.mouse.move(pad.x + 10, pad.y + pad.height / 2);
   await page.mouse.down();

@@ -582,6 +582,8 @@ async function main() {
   state.module = await WebAssembly.compile(state.wasm);
   showScene(SCENES[0]);
   showStatus();
+  const c = $('spectrogram');
+  drawAxes(c.getContext('2d'), c.width, c.height, c.height - AXIS_BOTTOM);
   window.aero = { SCENES, render, blockCost, wav: wavBytes, state, resetLevels, ready: true };
 }
 

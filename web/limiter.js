@@ -43,6 +43,26 @@ function interpolator() {
 
 export const CEILING_DB = -1;
 
+// pushes X into HIST (a ring of TAPS samples kept twice, so that the
+// window ending at the newest is contiguous; POS[0] the next write) and
+// returns the largest of the sample HALF-1 back and the three points
+// after it that the interpolator H gives. The caller advances POS[0].
+function truePeakPush(hist, pos, h, x) {
+  const p = pos[0];
+  hist[p] = x;
+  hist[p + TAPS] = x;
+  const o = p + 1; // hist[o .. o + TAPS - 1]: oldest to newest
+  let m = Math.abs(hist[o + HALF - 1]);
+  for (let j = 0; j < h.length; j++) {
+    const f = h[j];
+    let s = 0;
+    for (let k = 0; k < TAPS; k++) s += f[k] * hist[o + k];
+    if (s > m) m = s;
+    else if (-s > m) m = -s;
+  }
+  return m;
+}
+
 export class Limiter {
   // RATE in Hz; CEILING in dBFS (true peak); LOOKAHEAD and RELEASE in s
   constructor(rate, channels = 2, ceilingDb = CEILING_DB, lookahead = 0.0015,
@@ -58,7 +78,8 @@ export class Limiter {
     // input history per channel (the interpolator's), the delay line of
     // the audio (look-ahead + the interpolator's centre), the held and
     // averaged gain
-    this.hist = Array.from({ length: channels }, () => new Float64Array(TAPS));
+    this.hist = Array.from({ length: channels }, () => new Float64Array(2 * TAPS));
+    this.histPos = [0];
     this.delay = this.L - 1 + HALF;
     this.line = Array.from({ length: channels }, () => new Float64Array(this.delay + 1));
     this.pos = 0;
@@ -76,16 +97,7 @@ export class Limiter {
 
   // the true peak of the newest stretch of channel C after pushing X
   _peak(c, x) {
-    const hist = this.hist[c];
-    hist.copyWithin(0, 1);
-    hist[TAPS - 1] = x;
-    let m = Math.abs(hist[HALF - 1]);
-    for (const f of this.h) {
-      let s = 0;
-      for (let k = 0; k < TAPS; k++) s += f[k] * hist[k];
-      if (Math.abs(s) > m) m = Math.abs(s);
-    }
-    return m;
+    return truePeakPush(this.hist[c], this.histPos, this.h, x);
   }
 
   // limits CHANNELS (arrays of Float32Array, in place) over N frames
@@ -98,6 +110,7 @@ export class Limiter {
         const p = this._peak(c, Number.isFinite(x) ? x : 0);
         if (p > peak) peak = p;
       }
+      this.histPos[0] = (this.histPos[0] + 1) % TAPS;
       const want = peak > this.ceiling ? this.ceiling / peak : 1;
       this.req[this.reqPos] = want;
       this.reqPos = (this.reqPos + 1) % (L + 1);
@@ -130,7 +143,8 @@ export class Limiter {
 export class Meter {
   constructor(channels = 2) {
     this.h = interpolator();
-    this.hist = Array.from({ length: channels }, () => new Float64Array(TAPS));
+    this.hist = Array.from({ length: channels }, () => new Float64Array(2 * TAPS));
+    this.pos = 0;
     this.channels = channels;
     this.reset();
   }
@@ -140,19 +154,15 @@ export class Meter {
   add(chans, n) {
     for (let c = 0; c < this.channels; c++) {
       const x = chans[c], hist = this.hist[c];
+      const pos = [this.pos];
       for (let i = 0; i < n; i++) {
         const v = Number.isFinite(x[i]) ? x[i] : 0;
-        hist.copyWithin(0, 1);
-        hist[TAPS - 1] = v;
-        let m = Math.abs(hist[HALF - 1]);
-        for (const f of this.h) {
-          let s = 0;
-          for (let k = 0; k < TAPS; k++) s += f[k] * hist[k];
-          if (Math.abs(s) > m) m = Math.abs(s);
-        }
+        const m = truePeakPush(hist, pos, this.h, v);
+        pos[0] = (pos[0] + 1) % TAPS;
         if (m > this.peak) this.peak = m;
         this.sum += v * v;
       }
+      if (c === this.channels - 1) this.pos = pos[0];
     }
     this.n += n * this.channels;
   }

@@ -99,7 +99,7 @@ export async function renderScene(wasm, files, patch, messages, seconds, rate,
       left[t * BLOCK + i] = out[2 * i];
       right[t * BLOCK + i] = out[2 * i + 1];
     }
-    if (t % (chunk * 64) === 0) progress(t / ticks);
+    if (t % (chunk * 8) === 0) progress(t / ticks);
   }
   pd.close();
   return { left, right };

@@ -239,7 +239,7 @@ async function caseRenders(browser, url, out, say, errors) {
       })),
       new Promise(r => setTimeout(() => r(Infinity), 10000))]);
     const p1 = await page.evaluate(() => document.getElementById('render-progress')?.value);
-    await page.waitForTimeout(1500);
+    await page.waitForTimeout(2500);
     const p2 = await page.evaluate(() => document.getElementById('render-progress')?.value);
     say(gap < 250 && p2 > p1 && p1 >= 0,
       `renders: during a 60 s render of the whirl the page answers within ${gap.toFixed(0)} ms ` +

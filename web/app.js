@@ -177,6 +177,8 @@ function showMeter(m) {
   L.input = Math.max(L.input, m.input);
   L.reduction = Math.min(L.reduction, m.reduction);
   L.limited += m.limited;
+  L.scene = m.scene;
+  L.scenePeak = m.scenePeak;
   const db = toDb(m.peak), now = performance.now();
   if (db > peakHold.db || now - peakHold.t > 1500) peakHold = { db, t: now };
   const pos = d => `${Math.max(0, Math.min(100, (d + 60) / 60 * 100))}%`;
@@ -357,9 +359,10 @@ function renderInWorker(job, progress = () => {}) {
 async function render(id, seconds, rate = 48000, vals, opts = {}) {
   const scene = SCENES.find(s => s.id === id);
   const files = await sceneFiles(scene);
+  const { progress, ...job } = opts; // a function does not cross to the worker
   return renderInWorker({ wasm: state.module, files, patch: scene.patch,
-    messages: controlMessages(scene, vals ?? values(scene)), seconds, rate, ...opts },
-    opts.progress);
+    messages: controlMessages(scene, vals ?? values(scene)), seconds, rate, ...job },
+    progress);
 }
 
 // the cost of scene ID per 128-frame block (two Pd blocks, as the

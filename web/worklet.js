@@ -8,7 +8,8 @@
 //       of the new scene is heard)
 //   { send: [recv, sel, ...] }   { gain: linear }   { record: true|false }
 // It answers { ready: true } once Pd runs, { opened: id } when a scene
-// plays, { meter: {...} } about 20 times a second, { recorded: [Float32Array
+// plays, { meter: {...} } about 20 times a second (levels since the last
+// one, and the peak before the limiter since the scene opened), { recorded: [Float32Array
 // left, right] } chunks while recording, { error: text } on failure.
 
 // an AudioWorkletGlobalScope has no performance clock; emscripten's clock
@@ -43,6 +44,7 @@ class AeroProcessor extends AudioWorkletProcessor {
     this.outMeter = new Meter();
     this.meterCount = 0;
     this.clips = 0;         // blocks whose input the limiter had to reduce
+    this.scenePeak = 0;
     this.recording = null;  // { l, r, n } while recording
     this.l = new Float32Array(128);
     this.r = new Float32Array(128);
@@ -99,6 +101,7 @@ class AeroProcessor extends AudioWorkletProcessor {
       for (const m of s.messages) this.pd.send(m);
       this.gain = this.target = s.gain;
       this.sceneId = s.id;
+      this.scenePeak = 0;
       this.port.postMessage({ opened: s.id });
     } catch (err) {
       this.port.postMessage({ error: String(err) });
@@ -127,6 +130,8 @@ class AeroProcessor extends AudioWorkletProcessor {
         if (a > peak) peak = a;
       }
       if (peak > this.inMeter.peak || !(peak === peak)) this.inMeter.peak = peak;
+      // the scene's own, from its first sample (not the old scene's fade)
+      if (!this.pending && (peak > this.scenePeak || !(peak === peak))) this.scenePeak = peak;
     } else {
       l.fill(0);
       r.fill(0);
@@ -159,6 +164,8 @@ class AeroProcessor extends AudioWorkletProcessor {
         reduction: this.limiter.reduction,  // smallest limiter gain
         limited: this.clips,                // blocks the limiter reduced
         scene: this.sceneId,
+        scenePeak: this.scenePeak,          // sample peak before the limiter
+                                            // since this scene opened
       } });
       m.reset();
       this.inMeter.peak = 0;

@@ -5,7 +5,7 @@
 # wasm (LIBPD=$AERO/build/libpd/wasm), aero's core for wasm and FFTW and
 # libsndfile for wasm (build/deps/wasm).
 set -eu
-AERO=${AERO:?set AERO to aero's folder, where make web has run}
+AERO=${AERO:?set AERO to the folder of aero where make web has run}
 LIBPD=${LIBPD:-$AERO/build/libpd/wasm}
 NODE_PATH=${NODE_PATH:-/usr/share/nodejs} emcc -O3 -DHAVE_LIBPD \
     -I"$LIBPD/libpd_wrapper" -I"$LIBPD/pure-data/src" \

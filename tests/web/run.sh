@@ -32,7 +32,8 @@ judge() { # a command's exit status; its own output says what it measured
         failed=$((failed + 1)); echo "  $line"
     fi
 }
-section() { echo; echo "== $*"; }
+START=$(date +%s)
+section() { echo; echo "== $* (at $(( $(date +%s) - START )) s)"; }
 rm -rf "$OUT"
 mkdir -p "$OUT"
 

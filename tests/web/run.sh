@@ -79,6 +79,13 @@ for s in $scenes; do
 done
 judge_all node tests/web/loudness.mjs $RATE "$OUT"/loud-*.wav
 
+# examples/web-embed (checked below) compiles meanwhile: the page's checks
+# mostly wait on the audio clock
+rm -rf "$OUT/embed" && mkdir -p "$OUT/embed"
+cp examples/web-embed/* "$OUT/embed/"
+(cd "$OUT/embed" && AERO="$ROOT" nice sh build.sh) >"$OUT/embed.log" 2>&1 &
+embed_build=$!
+
 # --- the page in Chromium ---------------------------------------------------
 section "the page in Chromium (headless, playwright-core)"
 (cd tests/web && [ -d node_modules/playwright-core ] ||
@@ -166,9 +173,7 @@ judge build/aero-analyze leveldiff "$OUT/wires-u12.wav" "$OUT/wires-u24.wav" \
 
 # --- examples/web-embed: docs/web.md's embedding, from its steps alone ----
 section "examples/web-embed built in an empty folder from its README's steps"
-rm -rf "$OUT/embed" && mkdir -p "$OUT/embed"
-cp examples/web-embed/* "$OUT/embed/"
-if (cd "$OUT/embed" && AERO="$ROOT" nice sh build.sh) >"$OUT/embed.log" 2>&1; then
+if wait $embed_build; then
     pass "examples/web-embed: AERO=... sh build.sh after make web builds embed.js and embed.wasm"
     python3 -m http.server "$port" --bind 127.0.0.1 --directory "$OUT/embed" \
         >"$OUT/server-embed.log" 2>&1 &

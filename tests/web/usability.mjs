@@ -325,7 +325,7 @@ async function casePhone(browser, url, out, say, errors) {
   const context = await browser.newContext();
   const page = await context.newPage();
   try {
-    await page.goto('file://' + resolve('build/web/index.html'));
+    await page.goto('file://' + resolve(process.env.WEB_DIR || 'build/web', 'index.html'));
     await page.waitForTimeout(1000);
     const box = page.locator('#unsupported');
     const text = (await box.isVisible()) ? await box.textContent() : '';

@@ -96,7 +96,7 @@ port=$(python3 -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1", 0)); p
 python3 -m http.server "$port" --bind 127.0.0.1 --directory build/web \
     >"$OUT/server.log" 2>&1 &
 server=$!
-trap 'kill $server 2>/dev/null' EXIT INT TERM
+trap 'kill $server $embed_build 2>/dev/null' EXIT INT TERM
 sleep 1
 judge_all node tests/web/check.mjs "http://127.0.0.1:$port/" "$OUT" "$SECONDS_RENDER" \
     ${BENCH:+bench}
@@ -201,6 +201,21 @@ for t in sword fire; do
         printf "%s  docs/web.md: the %s texture %s kB, measured %s kB (gzip -9)\n", ok ? "ok   " : "FAIL ", t, b, a
         exit !ok }' && passed=$((passed + 1)) || failed=$((failed + 1))
 done
+
+# platforms/vendor.sh (make web's archives): a verified archive in VENDOR
+# is used as it is, a damaged copy is refused before anything is fetched
+section "platforms/vendor.sh: the source archives checked against their pinned SHA-256"
+got=$(VENDOR="$VENDOR" sh platforms/vendor.sh libpd-0.16.1.tar.gz 2>&1)
+[ "$got" = "$VENDOR/libpd-0.16.1.tar.gz" ] && pass "vendor.sh: libpd-0.16.1.tar.gz found in VENDOR ($got)" ||
+    fail "vendor.sh: libpd-0.16.1.tar.gz in VENDOR not used ($got)"
+mkdir -p "$OUT/bad-vendor"
+head -c 100000 "$VENDOR/libpd-0.16.1.tar.gz" >"$OUT/bad-vendor/libpd-0.16.1.tar.gz"
+if got=$(VENDOR="$OUT/bad-vendor" sh platforms/vendor.sh libpd-0.16.1.tar.gz 2>&1); then
+    fail "vendor.sh: a truncated libpd-0.16.1.tar.gz was accepted"
+else
+    case "$got" in *refused*) pass "vendor.sh: a truncated copy is refused: ${got%%(*}" ;;
+        *) fail "vendor.sh: a truncated copy failed without saying why ($got)" ;; esac
+fi
 
 echo
 echo "$passed passed, $failed failed"

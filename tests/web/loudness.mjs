@@ -3,14 +3,14 @@
 // (in pascals; the page's renders are the same samples, run.sh checks that)
 // times the scene's default gain (web/scenes.js), through the page's master
 // limiter (web/limiter.js), measured as integrated loudness over the render
-// (the scene's first seconds): ITU-R BS.1770-4 (2015) K-weighting (its
+// (the scene's first seconds): ITU-R BS.1770-4 2015 K-weighting (its
 // 48 kHz filter coefficients), 400 ms blocks overlapping 75 %, the
 // absolute gate at -70 LUFS and the relative gate 10 LU under the
 // ungated level. A sound designer moving between scenes should not have
 // to reach for the gain: every scene within 3 LU of the others (EBU R 128
-// s1, 2016, allows +-1 LU around its target for programmes; 3 LU is about
-// the smallest change of level a listener calls louder or softer in
-// programme material). Prints each scene's loudness and true-peak level
+// s1 2016 allows +-1 LU around its target for short-form programmes, so
+// two of them may differ by 2 LU; 3 LU leaves a scene's gain in whole dB
+// and the scatter of a gusting scene's first 10 s room). Prints each scene's loudness and true-peak level
 // and "ok"/"FAIL" for the spread.
 import { floats } from './wav.mjs';
 import { SCENES } from '../../web/scenes.js';

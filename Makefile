@@ -520,6 +520,8 @@ DEB_PACKAGES += emscripten chromium nodejs
 # which conflicts with Debian's npm) is installed
 DEB_PACKAGES += $(if $(shell command -v npm),,npm)
 WEB = $(BUILD)/web
+# where the outside source archives are looked for first; missing ones are
+# fetched and every one is checked (platforms/vendor.sh, docs/building.md)
 VENDOR ?= ../shared/vendor
 EMCC = NODE_PATH=/usr/share/nodejs nice -n 10 emcc
 EMAR = NODE_PATH=/usr/share/nodejs emar

@@ -553,21 +553,23 @@ web.page = $(wildcard web/*.html web/*.js web/*.css)
 # (whose times are the cache's: a stamp says when they were linked)
 WASM_DEPS_STAMP = $(WASM_DEPS)/.linked
 # build/vendor/: links to the archives as platforms/vendor.sh finds or
-# fetches them, each checked against its pinned SHA-256
+# fetches them, each checked against its pinned SHA-256 when linked (make
+# reads a link's time as its archive's: they are order-only prerequisites,
+# so that an archive's date never rebuilds what it built)
 VENDORED = $(BUILD)/vendor
-$(VENDORED)/%.tar.gz: platforms/vendor.sh
+$(VENDORED)/%.tar.gz:
 	@mkdir -p $(dir $@)
 	a=$$(VENDOR=$(abspath $(VENDOR)) sh platforms/vendor.sh $*.tar.gz) && \
 	    ln -sf "$$a" $@
 $(WASM_DEPS_STAMP): platforms/deps.sh platforms/deps/fftw.sh platforms/deps/sndfile.sh \
-    $(VENDORED)/fftw-3.3.10.tar.gz $(VENDORED)/libsndfile-1.2.0.tar.gz
+    | $(VENDORED)/fftw-3.3.10.tar.gz $(VENDORED)/libsndfile-1.2.0.tar.gz
 	NODE_PATH=/usr/share/nodejs AERO_VENDOR=$(abspath $(VENDORED)) \
 	    nice -n 10 sh platforms/deps.sh wasm
 	touch $@
 
 # libpd's own Makefile with emcc: the static library only, no extras (pd~
 # forks), no utils
-$(WASM_LIBPD)/libs/libpd.a: $(VENDORED)/libpd-0.16.1.tar.gz \
+$(WASM_LIBPD)/libs/libpd.a: | $(VENDORED)/libpd-0.16.1.tar.gz \
     $(VENDORED)/pure-data-0.56-5.tar.gz
 	rm -rf $(WASM_LIBPD) && mkdir -p $(WASM_LIBPD)/pure-data
 	tar xzf $(VENDORED)/libpd-0.16.1.tar.gz -C $(WASM_LIBPD) --strip-components=1

@@ -1,13 +1,14 @@
 #!/bin/sh
 # Builds embed.js + embed.wasm from glue.c, aero and libpd (docs/web.md):
-#   AERO=/path/to/aero sh build.sh
+#   AERO=/path/to/aero sh build.sh          (OPT=-O1: a quicker build, a
+#                                            slower module; default -O3)
 # after `make web` in AERO, which builds what this links: libpd 0.16.1 for
 # wasm (LIBPD=$AERO/build/libpd/wasm), aero's core for wasm and FFTW and
 # libsndfile for wasm (build/deps/wasm).
 set -eu
 AERO=${AERO:?set AERO to the folder of aero where make web has run}
 LIBPD=${LIBPD:-$AERO/build/libpd/wasm}
-NODE_PATH=${NODE_PATH:-/usr/share/nodejs} emcc -O3 -DHAVE_LIBPD \
+NODE_PATH=${NODE_PATH:-/usr/share/nodejs} emcc ${OPT:--O3} -DHAVE_LIBPD \
     -I"$LIBPD/libpd_wrapper" -I"$LIBPD/pure-data/src" \
     -I"$AERO/src/pd" -I"$AERO/src/core/common" -I"$AERO/src/core/solve" \
     -I"$AERO/src/core/play" -I"$AERO/build/deps/wasm/include" \

@@ -15,7 +15,7 @@
 #define SECONDS 4
 
 /* the sword's section (textures/README.md): chord 4 cm, sharp edges */
-static const aero_airfoil sword = {0.04f, 1, 0, 28.5f, 1,
+static const aero_airfoil sword = {0.04f, 1, 0, 27.3f, 1,
                                    AERO_AIRFOIL_NO_TIP, 0};
 
 /* one-third-octave band powers of x (Welch, Hann, half overlap), the

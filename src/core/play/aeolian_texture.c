@@ -277,7 +277,8 @@ void aero_aeolian_texture_free(aero_aeolian *a)
  * textures/README.md): chord, trailing-edge thickness and angle, and
  * whether its boundary layer is taken as tripped. The shipped sword.wav
  * was made before these keys: its section (sword.poly, lenticular, chord
- * 40 mm, two arcs meeting at 28.5 deg at sharp edges) is read as such.
+ * 40 mm, sharp edges whose sides meet at 27.3 deg: what aerotex writes
+ * for it) is read as such.
  * 1 for a blade (out filled), else 0. */
 static int read_blade(const aero_texture *t, aero_airfoil *out)
 {
@@ -298,7 +299,7 @@ static int read_blade(const aero_texture *t, aero_airfoil *out)
     } else if (!strcmp(t->head.shape, "polygon sword.poly")) {
         out->chord = (float)t->head.diameter;
         out->te_thickness = 0.0f;
-        out->te_angle_deg = 28.5f;
+        out->te_angle_deg = 27.3f;
         out->tripped = 1;
     } else
         return 0;

@@ -17,16 +17,17 @@
    there), each section's bandwidth set so that the pair is -3 dB at the
    third octave's edges: a section at -1.5 dB there, 0.517 octave wide */
 #define SECTION_OCTAVES 0.517
-#define SOLVE_ROUNDS 24
+#define SOLVE_ROUNDS 12
 /* the model's level is computed again when the speed moves by this
    fraction or the angle by this much (the spectrum moves by ~0.05 dB) */
 #define SPEED_STEP 0.01
 #define ALPHA_STEP_DEG 0.5
 /* a band whose share is quieter than this (dB SPL at 1 m) or this far
    under the loudest is not run (after the gains are solved, so that
-   leaving it out moves its neighbours by less than 0.01 dB) */
+   leaving it out moves its neighbours by less than 0.01 dB; 40 dB under
+   the loudest is where the filters' skirts leave their floor anyway) */
 #define FLOOR_DB (-20.0)
-#define RANGE_DB 60.0
+#define RANGE_DB 40.0
 #define P_REF 2e-5
 
 /* |H(f)|^2 of band j's biquad at f Hz */
@@ -150,28 +151,46 @@ void aero_blade_voice_reset(aero_blade_voice *v, uint32_t seed)
 
 /* the band gains whose outputs, leaking into their neighbours, give each
    band the power p[k]: x = g^2 >= 0 solving leak x = p by the
-   multiplicative (Richardson-Lucy) iteration, which keeps x >= 0 */
+   multiplicative (Richardson-Lucy) iteration, which keeps x >= 0, over
+   the bands the model fills and two either side (the leak two bands off
+   is 25 dB down). x holds the last solution on entry (a warm start: the
+   speed moved by a percent), or zeros. */
 static void solve_gains(const aero_blade_noise *b, const double *p,
                         double *x)
 {
-    int n = b->n_bands;
+    int n = b->n_bands, lo = n, hi = -1;
+    double den[AERO_BLADE_BANDS_MAX];
+    for (int k = 0; k < n; k++)
+        if (p[k] > 0) {
+            lo = k < lo ? k : lo;
+            hi = k;
+        }
     for (int j = 0; j < n; j++)
-        x[j] = b->leak[j][j] > 0 ? p[j] / b->leak[j][j] : 0;
+        if (j < lo || j > hi)
+            x[j] = 0;
+        else if (!(x[j] > 0))
+            x[j] = b->leak[j][j] > 0 ? p[j] / b->leak[j][j] : 0;
+    if (hi < lo)
+        return;
+    int klo = lo - 2 < 0 ? 0 : lo - 2, khi = hi + 2 >= n ? n - 1 : hi + 2;
+    for (int j = lo; j <= hi; j++) {
+        den[j] = 0;
+        for (int k = klo; k <= khi; k++)
+            den[j] += b->leak[k][j];
+    }
     for (int round = 0; round < SOLVE_ROUNDS; round++) {
         double ratio[AERO_BLADE_BANDS_MAX];
-        for (int k = 0; k < n; k++) {
+        for (int k = klo; k <= khi; k++) {
             double got = 0;
-            for (int j = 0; j < n; j++)
+            for (int j = lo; j <= hi; j++)
                 got += b->leak[k][j] * x[j];
             ratio[k] = got > 0 ? p[k] / got : 0;
         }
-        for (int j = 0; j < n; j++) {
-            double num = 0, den = 0;
-            for (int k = 0; k < n; k++) {
+        for (int j = lo; j <= hi; j++) {
+            double num = 0;
+            for (int k = klo; k <= khi; k++)
                 num += b->leak[k][j] * ratio[k];
-                den += b->leak[k][j];
-            }
-            x[j] = den > 0 ? x[j] * num / den : 0;
+            x[j] = den[j] > 0 ? x[j] * num / den[j] : 0;
         }
     }
 }
@@ -253,6 +272,8 @@ void aero_blade_voice_target(const aero_blade_noise *b, aero_blade_voice *v,
         v->law_speed = 0;
     } else if (moved(v, speed, alpha_deg, span, scale)) {
         double p[AERO_BLADE_BANDS_MAX], x[AERO_BLADE_BANDS_MAX];
+        for (int k = 0; k < n; k++) /* the last solution, to start from */
+            x[k] = (double)v->target[k] * v->target[k];
         aero_blade_noise_band_powers(b, speed, alpha_deg, span, scale, size,
                                      p);
         for (int k = 0; k < n; k++)

@@ -48,16 +48,17 @@ median() { # the median of the numbers on stdin
     sort -n | awk '{ v[NR] = $1 } END { if (NR == 0) exit
         print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
 }
-render_whirls() { # NAME ANGLE|cylinder: NAME-SEED.wav for each seed
+render_whirls() { # NAME ANGLE|cylinder [EARS]: NAME-SEED.wav for each seed
+    ears=${3:--0.1 3 0 0.1 3 0}
     for seed in $sword_seeds; do
         if [ "$2" = cylinder ]; then
             PD_EXTRA="tests/pd/aero-rotor 0.5 1.5 0 720 5" \
                 pd_render "$1-$seed" "aeolian~ -texture cylinder -stereo -seed $seed" \
-                2 2000 "; aero-obj ears -0.1 3 0 0.1 3 0"
+                2 2000 "; aero-obj ears $ears"
         else
             PD_EXTRA="tests/pd/aero-blade 0.5 1.5 0 720 5 $2" \
                 pd_render "$1-$seed" "aeolian~ -texture $sword -stereo -seed $seed" \
-                2 2000 "; aero-obj ears -0.1 3 0 0.1 3 0"
+                2 2000 "; aero-obj ears $ears"
         fi
         judge $ANALYZE finite "$OUT/$1-$seed.wav" --max 100
     done
@@ -195,17 +196,7 @@ esac
 case $sword in
 sword)
     for what in cylinder 0 45; do
-        for seed in $sword_seeds; do
-            if [ "$what" = cylinder ]; then
-                PD_EXTRA="tests/pd/aero-rotor 0.5 1.5 0 720 5" \
-                    pd_render "sw-up-$what-$seed" "aeolian~ -texture cylinder -stereo -seed $seed" \
-                    2 2000 "; aero-obj ears -0.1 3 1 0.1 3 1"
-            else
-                PD_EXTRA="tests/pd/aero-blade 0.5 1.5 0 720 5 $what" \
-                    pd_render "sw-up-$what-$seed" "aeolian~ -texture $sword -stereo -seed $seed" \
-                    2 2000 "; aero-obj ears -0.1 3 1 0.1 3 1"
-            fi
-        done
+        render_whirls "sw-up-$what" "$what" "-0.1 3 1 0.1 3 1"
     done
     up0=$(median_clicks sw-up-cylinder 0) up1=$(median_clicks sw-up-cylinder 1)
     for angle in 0 45; do

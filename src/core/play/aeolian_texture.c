@@ -144,13 +144,7 @@ static double stick_length(const double *pose)
    another place in the xorshift cycle (Murmur3's finaliser) */
 static uint32_t source_generator(aero_aeolian_texture *s)
 {
-    uint32_t h = aero_xorshift32(&s->rng);
-    h ^= h >> 16;
-    h *= 0x85ebca6bu;
-    h ^= h >> 13;
-    h *= 0xc2b2ae35u;
-    h ^= h >> 16;
-    return h ? h : 1;
+    return aero_scramble32(aero_xorshift32(&s->rng));
 }
 
 /* a random offset of the texture and a generator of its own for the

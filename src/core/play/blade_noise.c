@@ -133,13 +133,7 @@ int aero_blade_noise_set_rate(aero_blade_noise *b, double sample_rate)
    xorshift cycle */
 static uint32_t band_seed(uint32_t seed, int k)
 {
-    uint32_t h = aero_run_seed(seed, k);
-    h ^= h >> 16;
-    h *= 0x85ebca6bu;
-    h ^= h >> 13;
-    h *= 0xc2b2ae35u;
-    h ^= h >> 16;
-    return h ? h : 1;
+    return aero_scramble32(aero_run_seed(seed, k));
 }
 
 void aero_blade_voice_reset(aero_blade_voice *v, uint32_t seed)

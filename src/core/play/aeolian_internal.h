@@ -54,6 +54,9 @@ struct aero_aeolian_texture {
     int clamped;            /* a speed was clamped at Mach 0.3 */
     /* the gliding settings' values now */
     aero_aeolian_glide wind[3], ear[3 * AERO_AEOLIAN_MAX_EARS], gain, roll;
+    /* a source radiated in the last chunk: the ears' and the gain's
+       changes glide; while nothing sounds they jump (aeolian_texture.c) */
+    int sounding;
 
     /* the texture (owned) and what the player needs of it */
     aero_texture *texture;
@@ -97,7 +100,7 @@ enum {
     AERO_AEO_SOURCES
 };
 /* gliding setting k (AERO_AEO_GAIN, _EAR + i, _WIND + i, _ROLL) changed:
-   its glide starts */
+   its glide starts (the ears and the gain: at once while nothing sounds) */
 void aero_aeolian_texture_retarget(aero_aeolian *a, int k);
 /* k (AERO_AEO_DIAMETER, _LENGTH, _SOURCES) changed: the source count and
    the default pose follow */

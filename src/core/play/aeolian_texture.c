@@ -53,12 +53,19 @@ static aero_aeolian_glide *glide_of(aero_aeolian_texture *s, int k)
 }
 
 /* setting k glides to its target in ~ the ramp time, in whole chunks (as
-   aero_ramp_to does) */
+   aero_ramp_to does). The ears and the gain go there at once while no
+   source sounds: nothing heard moves, and a listener placed as a stream
+   of poses begins (at load, at a spawn) is not still flying there, 2 m in
+   20 ms, when the sound starts; the Doppler rate that then stepped at the
+   glide's end was a click of a tenth of the signal (a sword whirled from
+   rest: click measure 45-80 at a chord of 90 deg, issue 48). */
 void aero_aeolian_texture_retarget(aero_aeolian *a, int k)
 {
     aero_aeolian_glide *g = glide_of(a->texture, k);
     double chunks = ceil(a->ramp_ms * 0.001 * a->sample_rate /
                          AERO_STICK_CHUNK);
+    if (!a->texture->sounding && k < AERO_AEO_WIND)
+        chunks = 0.0;
     if (!(chunks >= 1.0)) {
         g->value = target_of(a, k);
         g->left = 0.0;
@@ -789,8 +796,8 @@ static void radiate(aero_aeolian *a, const source_geometry *then,
 }
 
 /* one source over a chunk of m samples: texture read, Curle projection,
- * added into each ear's ring at its arrival time */
-static void render_source(aero_aeolian *a, aero_aeolian_source *src,
+ * added into each ear's ring at its arrival time; 1 if it sounded */
+static int render_source(aero_aeolian *a, aero_aeolian_source *src,
                           const source_geometry *g, int m)
 {
     aero_aeolian_texture *s = a->texture;
@@ -829,6 +836,7 @@ static void render_source(aero_aeolian *a, aero_aeolian_source *src,
         src->fy[e] = g->fy[e];
         src->delay[e] = g->delay[e];
     }
+    return then.amp != 0.0 || g->amp != 0.0;
 }
 
 int aero_aeolian_texture_process(aero_aeolian *a, const float *speed,
@@ -855,14 +863,16 @@ int aero_aeolian_texture_process(aero_aeolian *a, const float *speed,
         }
         stick_frame f;
         advance_frame(a, m, sp, &f);
+        int sounding = 0;
         if (s->texture) {
             for (int i = 0; i < s->n_sources; i++) {
                 source_geometry g;
                 double u = (i + 0.5) / s->n_sources;
                 s->clamped |= source_at(a, &f, u, &s->src[i], &g);
-                render_source(a, &s->src[i], &g, m);
+                sounding |= render_source(a, &s->src[i], &g, m);
             }
         }
+        s->sounding = sounding;
         aero_arrivals_take(&s->arrivals, out, done, m);
         done += m;
     }

@@ -570,8 +570,8 @@ static void radiate(aero_body *s, const aero_body_geometry *then,
     }
 }
 
-/* one source over a chunk of m samples */
-static void render(aero_body *s, int l, const aero_body_geometry *g,
+/* one source over a chunk of m samples; 1 if it sounded */
+static int render(aero_body *s, int l, const aero_body_geometry *g,
                    int m)
 {
     aero_body_source *src = &s->src[l];
@@ -602,6 +602,7 @@ static void render(aero_body *s, int l, const aero_body_geometry *g,
     for (int e = 0; e < s->base.n_ears; e++)
         radiate(s, &then, g, w_then, w_now, tex, e, m);
     src->then = *g;
+    return then.amp != 0.0 || g->amp != 0.0;
 }
 
 int aero_body_process(aero_body *s, const float *speed,
@@ -636,6 +637,7 @@ int aero_body_process(aero_body *s, const float *speed,
             for (int i = 0; i < 3; i++)
                 ears[e][i] = ramp_advance(&s->base.ear[3 * e + i], m);
         gain = ramp_advance(&s->base.gain, m);
+        s->base.sounding = 0;
         if (s->texture) {
             for (int l = 0; l < s->regions; l++) {
                 aero_body_geometry g;
@@ -645,7 +647,7 @@ int aero_body_process(aero_body *s, const float *speed,
                 }
                 s->base.clamped |= geometry(s, l, wind, (const double (*)[3])ears,
                                        gain, &g);
-                render(s, l, &g, m);
+                s->base.sounding |= render(s, l, &g, m);
             }
         }
         aero_arrivals_take(&s->base.arrivals, out, done, m);

@@ -37,6 +37,7 @@ typedef struct {
     double amp;          /* amplitude factor at that end */
     double fx[AERO_AEOLIAN_MAX_EARS], fy[AERO_AEOLIAN_MAX_EARS]; /* Curle, 1/m */
     double delay[AERO_AEOLIAN_MAX_EARS]; /* samples */
+    double step[AERO_AEOLIAN_MAX_EARS];  /* arrival step over that chunk */
     double sign;         /* side of the mirror fold (-1: mirrored) */
     uint32_t rng;        /* its phase wander's generator */
     double wander_from;  /* phase rate offset at the last draw, and */
@@ -45,6 +46,9 @@ typedef struct {
     int wander_left;     /* samples until the next draw */
     double law_speed, law_diameter, law_pitch, law_level; /* Re law cache */
     int primed;
+    /* a ghost's amplitude and rate when it began to fade, and the
+       samples since */
+    double fade_amp, fade_inc, fade_samples;
 } aero_aeolian_source;
 
 struct aero_aeolian_texture {
@@ -81,6 +85,10 @@ struct aero_aeolian_texture {
     double reference[3]; /* body x axis, kept normal to the stick axis */
 
     aero_aeolian_source src[AERO_AEOLIAN_SOURCES_MAX];
+    /* the sources as they were when the stick jumped while sounding,
+       fading where they were (aeolian_texture.c) */
+    aero_aeolian_source ghost[AERO_AEOLIAN_SOURCES_MAX];
+    int n_ghosts;
 };
 
 /* the texture mode's state, made from the object's settings when first

@@ -311,6 +311,7 @@ int aero_aeolian_texture_set(aero_aeolian *a, aero_texture *t, char *err,
         free(s->texture);
     }
     s->texture = t;
+    s->n_ghosts = 0; /* they read the old texture */
     /* sources restart from random offsets of the new texture */
     for (int i = 0; i < AERO_AEOLIAN_SOURCES_MAX; i++)
         start_source(s, &s->src[i]);
@@ -332,6 +333,7 @@ int aero_aeolian_texture_sample_rate(aero_aeolian *a, double sr)
     s->ring_rate = sr;
     for (int i = 0; i < AERO_AEOLIAN_SOURCES_MAX; i++)
         s->src[i].primed = 0; /* the rings are new */
+    s->n_ghosts = 0;
     return 0;
 }
 
@@ -360,6 +362,26 @@ void aero_aeolian_texture_seed(aero_aeolian *a)
             seed_source(s, &s->src[i]);
 }
 
+/* The stick jumps while it sounds: what it sounded goes on where it was,
+   fading as a stopped stream's sound does (its velocity, hence its rate,
+   falling with VELOCITY_TAU_S, its amplitude as the rate to the exponent:
+   render_ghosts), and the sources start again from rest at the new place.
+   Moving the sounding sources with the stick instead jumped their delays
+   within a chunk, the tail of the old sound cut where the new place's
+   arrivals began (a step of a fifth of the signal, issue 48). */
+static void leave_sound(aero_aeolian_texture *s)
+{
+    for (int i = 0; i < s->n_sources; i++) {
+        s->ghost[i] = s->src[i];
+        s->ghost[i].fade_amp = s->src[i].amp;
+        s->ghost[i].fade_inc = s->src[i].inc;
+        s->ghost[i].fade_samples = 0.0;
+        s->src[i].amp = 0.0;
+    }
+    s->n_ghosts = s->n_sources;
+    memset(s->velocity, 0, sizeof(s->velocity));
+}
+
 static int pose_ok(const double *p)
 {
     return aero_position_ok(p) && aero_position_ok(p + 3) &&
@@ -373,9 +395,13 @@ int aero_aeolian_texture_pose(aero_aeolian *a, const double end_a[3],
     double p[6] = {end_a[0], end_a[1], end_a[2], end_b[0], end_b[1], end_b[2]};
     if (!pose_ok(p))
         return -1;
-    /* the first pose, one after a pause (a new gesture) or a placement
-     * (interval < 0) jumps: there is nothing to move from */
-    if (!s->pose_set || interval_s < 0.0 || interval_s > 0.5) {
+    /* the first pose, one after a pause (a new gesture: the stream had
+     * ended) or a placement (interval < 0) jumps: there is nothing to move
+     * from */
+    if (!s->pose_set || interval_s < 0.0 || interval_s > 0.5 ||
+        aero_pose_path_ended(&s->path)) {
+        if (s->sounding)
+            leave_sound(s);
         aero_pose_path_jump(&s->path, 6, p);
         memset(s->pose_velocity, 0, sizeof(s->pose_velocity));
         if (!s->pose_set)
@@ -764,7 +790,7 @@ static void read_texture(aero_aeolian *a, aero_aeolian_source *src,
 static void radiate(aero_aeolian *a, const source_geometry *then,
                     const source_geometry *now, double w0, double w1,
                     double sign_then, double sign_now, int m,
-                    float tex[4][AERO_STICK_CHUNK])
+                    float tex[4][AERO_STICK_CHUNK], double *step_last)
 {
     aero_aeolian_texture *s = a->texture;
     const double inv_m = 1.0 / m;
@@ -782,10 +808,12 @@ static void radiate(aero_aeolian *a, const source_geometry *then,
         float *ring = s->arrivals.ring[e];
         const long mask = s->arrivals.mask;
         double at = (double)s->arrivals.head + delay;
+        const double step = 1.0 + ddelay, last = step_last[e];
+        step_last[e] = step;
         for (int j = 0; j < m; j++) {
             float v = cf[0] * tex[0][j] + cf[1] * tex[1][j] +
                       cf[2] * tex[2][j] + cf[3] * tex[3][j];
-            aero_arrivals_add_span(ring, mask, at, 1.0 + ddelay, v);
+            aero_arrivals_add_chunk(ring, mask, at, step, last, j, m, v);
             cf[0] += dcf[0];
             cf[1] += dcf[1];
             cf[2] += dcf[2];
@@ -810,6 +838,7 @@ static int render_source(aero_aeolian *a, aero_aeolian_source *src,
         then = *g;
         then.amp = 0.0;
         src->primed = 1;
+        memset(src->step, 0, sizeof(src->step));
     } else {
         then.inc = src->inc;
         then.angle = src->angle;
@@ -827,7 +856,7 @@ static int render_source(aero_aeolian *a, aero_aeolian_source *src,
     /* the texture once for all ears: x, y of both directions */
     float tex[4][AERO_STICK_CHUNK];
     read_texture(a, src, &p, then.inc, g->inc, m, tex);
-    radiate(a, &then, g, w0, w1, sign_then, sign_now, m, tex);
+    radiate(a, &then, g, w0, w1, sign_then, sign_now, m, tex, src->step);
     src->inc = g->inc;
     src->angle = g->angle;
     src->amp = g->amp;
@@ -837,6 +866,42 @@ static int render_source(aero_aeolian *a, aero_aeolian_source *src,
         src->delay[e] = g->delay[e];
     }
     return then.amp != 0.0 || g->amp != 0.0;
+}
+
+/* the ghosts' next m samples, each at its own place, its velocity (so its
+   rate, and its amplitude as the velocity to the exponent) falling to 0
+   over GHOST_FADE_S on a half cosine: smooth where it begins and where it
+   ends, as a stopped stream's velocity falls (pose_glide.h, then
+   VELOCITY_TAU_S); 1 if one sounded */
+#define GHOST_FADE_S (4.0 * VELOCITY_TAU_S)
+
+static int render_ghosts(aero_aeolian *a, int m)
+{
+    aero_aeolian_texture *s = a->texture;
+    const double span = GHOST_FADE_S * a->sample_rate;
+    int sounding = 0;
+    for (int i = 0; i < s->n_ghosts; i++) {
+        aero_aeolian_source *gh = &s->ghost[i];
+        if (!gh->primed || !(gh->fade_samples < span))
+            continue;
+        gh->fade_samples += m;
+        double v = gh->fade_samples < span
+                       ? 0.5 + 0.5 * cos(AERO_PI * gh->fade_samples / span)
+                       : 0.0;
+        source_geometry g;
+        g.inc = gh->fade_inc * v;
+        g.angle = gh->angle;
+        g.amp = gh->fade_amp * pow(v, a->exponent);
+        for (int e = 0; e < a->n_ears; e++) {
+            g.fx[e] = gh->fx[e];
+            g.fy[e] = gh->fy[e];
+            g.delay[e] = gh->delay[e];
+        }
+        sounding |= render_source(a, gh, &g, m);
+    }
+    if (!sounding)
+        s->n_ghosts = 0;
+    return sounding;
 }
 
 int aero_aeolian_texture_process(aero_aeolian *a, const float *speed,
@@ -872,6 +937,8 @@ int aero_aeolian_texture_process(aero_aeolian *a, const float *speed,
                 sounding |= render_source(a, &s->src[i], &g, m);
             }
         }
+        if (s->n_ghosts && s->texture)
+            sounding |= render_ghosts(a, m);
         s->sounding = sounding;
         aero_arrivals_take(&s->arrivals, out, done, m);
         done += m;

@@ -39,6 +39,7 @@ void aero_body_quaternion_from_rotvec(const double r[3], double q[4])
 
 static void restart_sources(aero_body *s)
 {
+    s->n_ghosts = 0;
     for (int i = 0; i < AERO_BODY_MAX_SOURCES; i++) {
         memset(&s->src[i], 0, sizeof(s->src[i]));
         if (s->texture)
@@ -186,9 +187,11 @@ int aero_body_set_texture(aero_body *s, aero_texture *t,
 int aero_body_set_sample_rate(aero_body *s, double sr)
 {
     int rc = aero_moving_player_set_sample_rate(&s->base, sr);
-    if (rc > 0)
+    if (rc > 0) {
         for (int i = 0; i < AERO_BODY_MAX_SOURCES; i++)
             s->src[i].primed = 0;
+        s->n_ghosts = 0;
+    }
     return rc < 0 ? -1 : 0;
 }
 
@@ -247,6 +250,24 @@ static int make_pose(const double pos[3], const double quat[4], double *p)
     return 0;
 }
 
+/* The body jumps while it sounds: what it sounded goes on where it was,
+   fading as a stopped stream's sound does (render_ghosts), and the
+   sources start again from rest at the new place; moving the sounding
+   sources with it jumped their delays within a chunk (issue 48). */
+static void leave_sound(aero_body *s)
+{
+    for (int l = 0; l < s->regions; l++) {
+        aero_body_source *src = &s->src[l], *gh = &s->ghost[l];
+        *gh = *src;
+        gh->fade_amp = src->then.amp;
+        gh->fade_inc = src->then.inc;
+        gh->fade_samples = 0.0;
+        src->then.amp = 0.0;
+        memset(src->velocity, 0, sizeof(src->velocity));
+    }
+    s->n_ghosts = s->regions;
+}
+
 /* a valid pose p (make_pose) */
 static void apply_pose(aero_body *s, double *p, double interval_s)
 {
@@ -255,7 +276,12 @@ static void apply_pose(aero_body *s, double *p, double interval_s)
     if (p[3] * to[3] + p[4] * to[4] + p[5] * to[5] + p[6] * to[6] < 0.0)
         for (int i = 3; i < 7; i++)
             p[i] = -p[i];
-    if (!s->pose_set || interval_s < 0.0 || interval_s > 0.5) {
+    /* the first pose, one after a pause (a new gesture: the stream had
+       ended) or a placement (interval < 0) jumps */
+    if (!s->pose_set || interval_s < 0.0 || interval_s > 0.5 ||
+        aero_pose_path_ended(&s->path)) {
+        if (s->base.sounding && s->texture)
+            leave_sound(s);
         aero_pose_path_jump(&s->path, 7, p);
         memcpy(s->pose, p, 7 * sizeof(double));
         for (int l = 0; l < AERO_BODY_MAX_SOURCES; l++)
@@ -542,7 +568,7 @@ static void read_texture(aero_body *s, aero_body_source *src,
 static void radiate(aero_body *s, const aero_body_geometry *then,
                     const aero_body_geometry *g, double w_then,
                     double w_now, float (*tex)[AERO_BODY_CHUNK], int e,
-                    int m)
+                    int m, double *step_last)
 {
     const double inv_m = 1.0 / m;
     float cf[6], dcf[6];
@@ -550,6 +576,8 @@ static void radiate(aero_body *s, const aero_body_geometry *then,
     const long mask = s->base.arrivals.mask;
     const double ddelay = (g->delay[e] - then->delay[e]) * inv_m;
     double at = (double)s->base.arrivals.head + then->delay[e];
+    const double step = 1.0 + ddelay, last = step_last[e];
+    step_last[e] = step;
     for (int c = 0; c < 3; c++) {
         double a0 = then->amp * then->proj[e][c], a1 = g->amp * g->proj[e][c];
         double s0 = (1.0 - w_then) * a0, s1 = (1.0 - w_now) * a1;
@@ -565,16 +593,16 @@ static void radiate(aero_body *s, const aero_body_geometry *then,
             v += cf[q] * tex[q][j];
             cf[q] += dcf[q];
         }
-        aero_arrivals_add_span(ring, mask, at, 1.0 + ddelay, v);
+        aero_arrivals_add_chunk(ring, mask, at, step, last, j, m, v);
         at += 1.0 + ddelay;
     }
 }
 
-/* one source over a chunk of m samples; 1 if it sounded */
-static int render(aero_body *s, int l, const aero_body_geometry *g,
-                   int m)
+/* one source (region l's, or its ghost) over a chunk of m samples; 1 if
+   it sounded */
+static int render(aero_body *s, aero_body_source *src, int l,
+                  const aero_body_geometry *g, int m)
 {
-    aero_body_source *src = &s->src[l];
     const aero_texture *t = s->texture;
     const int R = s->regions;
     aero_body_geometry then = src->primed ? src->then : *g;
@@ -584,6 +612,7 @@ static int render(aero_body *s, int l, const aero_body_geometry *g,
     if (!src->primed) { /* first chunk: amplitude from 0 */
         then.amp = 0.0;
         src->primed = 1;
+        memset(src->step, 0, sizeof(src->step));
     }
     /* the pair of the chunk's end serves its whole chunk */
     direction_pair(t, g->theta, &k0, &k1, &w_now);
@@ -600,9 +629,37 @@ static int render(aero_body *s, int l, const aero_body_geometry *g,
     read_texture(s, src, &then, g, 3 * (k0 * R + region),
                  3 * (k1 * R + region), tex, m);
     for (int e = 0; e < s->base.n_ears; e++)
-        radiate(s, &then, g, w_then, w_now, tex, e, m);
+        radiate(s, &then, g, w_then, w_now, tex, e, m, src->step);
     src->then = *g;
     return then.amp != 0.0 || g->amp != 0.0;
+}
+
+/* the ghosts' next m samples, each where it was, its velocity (so its
+   rate, and its amplitude as the velocity to the exponent) falling to 0
+   over GHOST_FADE_S on a half cosine, smooth where it begins and ends;
+   1 if one sounded */
+#define GHOST_FADE_S (4.0 * VELOCITY_TAU_S)
+
+static int render_ghosts(aero_body *s, int m)
+{
+    const double span = GHOST_FADE_S * s->base.sample_rate;
+    int sounding = 0;
+    for (int l = 0; l < s->n_ghosts; l++) {
+        aero_body_source *gh = &s->ghost[l];
+        if (!gh->primed || !(gh->fade_samples < span))
+            continue;
+        gh->fade_samples += m;
+        double v = gh->fade_samples < span
+                       ? 0.5 + 0.5 * cos(AERO_PI * gh->fade_samples / span)
+                       : 0.0;
+        aero_body_geometry g = gh->then;
+        g.inc = gh->fade_inc * v;
+        g.amp = gh->fade_amp * pow(v, s->base.exponent);
+        sounding |= render(s, gh, l, &g, m);
+    }
+    if (!sounding)
+        s->n_ghosts = 0;
+    return sounding;
 }
 
 int aero_body_process(aero_body *s, const float *speed,
@@ -647,9 +704,11 @@ int aero_body_process(aero_body *s, const float *speed,
                 }
                 s->base.clamped |= geometry(s, l, wind, (const double (*)[3])ears,
                                        gain, &g);
-                s->base.sounding |= render(s, l, &g, m);
+                s->base.sounding |= render(s, &s->src[l], l, &g, m);
             }
         }
+        if (s->n_ghosts && s->texture)
+            s->base.sounding |= render_ghosts(s, m);
         aero_arrivals_take(&s->base.arrivals, out, done, m);
         done += m;
     }

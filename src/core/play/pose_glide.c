@@ -70,6 +70,11 @@ void aero_pose_path_advance(aero_pose_path *p, double m)
     }
 }
 
+int aero_pose_path_ended(const aero_pose_path *p)
+{
+    return p->duration > 0.0 && p->elapsed >= 2.0 * p->duration;
+}
+
 double aero_pose_path_pace(const aero_pose_path *p)
 {
     const double T = p->duration;

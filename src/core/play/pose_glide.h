@@ -46,6 +46,13 @@ void aero_pose_path_jump(aero_pose_path *p, int dim, const double *x);
 void aero_pose_path_to(aero_pose_path *p, const double *x, double interval);
 /* moves the path on by m samples: pos and vel at the new time */
 void aero_pose_path_advance(aero_pose_path *p, double m);
+/* 1 when the stream has ended: the path came to rest two intervals after
+ * its last pose. A pose after that begins a new gesture (the players jump
+ * to it): the path lags the stream by one interval, so gliding there over
+ * the pause and then catching up in one interval crossed the pause's
+ * whole way in a pose's interval, near Mach 1 for a sword after 0.3 s (a
+ * Doppler burst, click measure 7-330, issue 48). */
+int aero_pose_path_ended(const aero_pose_path *p);
 /* the fraction of the stream's velocity the path keeps now: 1 up to 1.5
  * intervals, falling to 0 as it comes to rest (0 standing: placed, or
  * never posed) */

@@ -89,6 +89,7 @@ struct aero_aeolian_texture {
        fading where they were (aeolian_texture.c) */
     aero_aeolian_source ghost[AERO_AEOLIAN_SOURCES_MAX];
     int n_ghosts;
+    double fade_in;      /* samples since the jump, as the ghosts fade */
 };
 
 /* the texture mode's state, made from the object's settings when first

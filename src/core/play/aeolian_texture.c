@@ -231,6 +231,7 @@ int aero_aeolian_texture_make(aero_aeolian *a)
         return -1;
     }
     s->ring_rate = a->sample_rate;
+    s->fade_in = HUGE_VAL; /* no jump to fade in from */
     uint32_t seed = a->model.rng ^ 0x9e3779b9u;
     s->rng = seed ? seed : 1;
     s->gain.value = 1.0;
@@ -379,6 +380,7 @@ static void leave_sound(aero_aeolian_texture *s)
         s->src[i].amp = 0.0;
     }
     s->n_ghosts = s->n_sources;
+    s->fade_in = 0.0;
     memset(s->velocity, 0, sizeof(s->velocity));
 }
 
@@ -411,6 +413,14 @@ int aero_aeolian_texture_pose(aero_aeolian *a, const double end_a[3],
     }
     if (!(interval_s >= 0.001))
         interval_s = 0.001;
+    if (aero_pose_path_waited(&s->path, interval_s * a->sample_rate)) {
+        double from[6]; /* the gesture began at the last pose */
+        memcpy(from, s->path.to, sizeof(from));
+        if (s->sounding)
+            leave_sound(s);
+        aero_pose_path_jump(&s->path, 6, from);
+        memset(s->velocity, 0, sizeof(s->velocity));
+    }
     /* the velocity of the stream itself (its time stamps are exact): what
      * the air sees */
     double was = stick_length(s->path.to), now = stick_length(p);
@@ -875,6 +885,28 @@ static int render_source(aero_aeolian *a, aero_aeolian_source *src,
    VELOCITY_TAU_S); 1 if one sounded */
 #define GHOST_FADE_S (4.0 * VELOCITY_TAU_S)
 
+/* the ghosts' fade at `t` samples after the jump: the velocity's fraction
+   to the exponent */
+static double ghost_fade(const aero_aeolian *a, double t)
+{
+    double span = GHOST_FADE_S * a->sample_rate;
+    if (!(t < span))
+        return 0.0;
+    return pow(0.5 + 0.5 * cos(AERO_PI * t / span), a->exponent);
+}
+
+/* the sources' amplitude factor at the end of the next m samples: they
+   fade in as the ghosts fade out (a stick in a wind sounds at once at its
+   new place) */
+static double fade_in(aero_aeolian *a, int m)
+{
+    aero_aeolian_texture *s = a->texture;
+    if (!(s->fade_in < GHOST_FADE_S * a->sample_rate))
+        return 1.0;
+    s->fade_in += m;
+    return 1.0 - ghost_fade(a, s->fade_in);
+}
+
 static int render_ghosts(aero_aeolian *a, int m)
 {
     aero_aeolian_texture *s = a->texture;
@@ -891,7 +923,7 @@ static int render_ghosts(aero_aeolian *a, int m)
         source_geometry g;
         g.inc = gh->fade_inc * v;
         g.angle = gh->angle;
-        g.amp = gh->fade_amp * pow(v, a->exponent);
+        g.amp = gh->fade_amp * ghost_fade(a, gh->fade_samples);
         for (int e = 0; e < a->n_ears; e++) {
             g.fx[e] = gh->fx[e];
             g.fy[e] = gh->fy[e];
@@ -930,10 +962,12 @@ int aero_aeolian_texture_process(aero_aeolian *a, const float *speed,
         advance_frame(a, m, sp, &f);
         int sounding = 0;
         if (s->texture) {
+            double faded = fade_in(a, m);
             for (int i = 0; i < s->n_sources; i++) {
                 source_geometry g;
                 double u = (i + 0.5) / s->n_sources;
                 s->clamped |= source_at(a, &f, u, &s->src[i], &g);
+                g.amp *= faded;
                 sounding |= render_source(a, &s->src[i], &g, m);
             }
         }

@@ -54,6 +54,7 @@ int aero_body_init(aero_body *s, double sample_rate,
     static const double unturned[7] = {0, 0, 0, 1, 0, 0, 0};
     memset(s, 0, sizeof(*s));
     s->scale = AERO_BODY_SCALE_DEFAULT;
+    s->fade_in = HUGE_VAL; /* no jump to fade in from */
     memcpy(s->pose, unturned, sizeof(unturned));
     aero_pose_path_jump(&s->path, 7, unturned);
     return aero_moving_player_init(
@@ -266,6 +267,7 @@ static void leave_sound(aero_body *s)
         memset(src->velocity, 0, sizeof(src->velocity));
     }
     s->n_ghosts = s->regions;
+    s->fade_in = 0.0;
 }
 
 /* a valid pose p (make_pose) */
@@ -291,6 +293,15 @@ static void apply_pose(aero_body *s, double *p, double interval_s)
     }
     if (!(interval_s >= 0.001))
         interval_s = 0.001;
+    if (aero_pose_path_waited(&s->path, interval_s * s->base.sample_rate)) {
+        double from[7]; /* the gesture began at the last pose */
+        memcpy(from, s->path.to, sizeof(from));
+        if (s->base.sounding && s->texture)
+            leave_sound(s);
+        aero_pose_path_jump(&s->path, 7, from);
+        for (int l = 0; l < AERO_BODY_MAX_SOURCES; l++)
+            memset(s->src[l].velocity, 0, sizeof(s->src[l].velocity));
+    }
     /* each region's velocity from the stream's own time stamps */
     for (int l = 0; l < s->regions; l++) {
         double a[3], b[3];
@@ -640,6 +651,27 @@ static int render(aero_body *s, aero_body_source *src, int l,
    1 if one sounded */
 #define GHOST_FADE_S (4.0 * VELOCITY_TAU_S)
 
+/* the ghosts' fade at `t` samples after the jump: the velocity's fraction
+   to the exponent */
+static double ghost_fade(const aero_body *s, double t)
+{
+    double span = GHOST_FADE_S * s->base.sample_rate;
+    if (!(t < span))
+        return 0.0;
+    return pow(0.5 + 0.5 * cos(AERO_PI * t / span), s->base.exponent);
+}
+
+/* the sources' amplitude factor at the end of the next m samples: they
+   fade in as the ghosts fade out (a body in a wind sounds at once at its
+   new place) */
+static double fade_in(aero_body *s, int m)
+{
+    if (!(s->fade_in < GHOST_FADE_S * s->base.sample_rate))
+        return 1.0;
+    s->fade_in += m;
+    return 1.0 - ghost_fade(s, s->fade_in);
+}
+
 static int render_ghosts(aero_body *s, int m)
 {
     const double span = GHOST_FADE_S * s->base.sample_rate;
@@ -654,7 +686,7 @@ static int render_ghosts(aero_body *s, int m)
                        : 0.0;
         aero_body_geometry g = gh->then;
         g.inc = gh->fade_inc * v;
-        g.amp = gh->fade_amp * pow(v, s->base.exponent);
+        g.amp = gh->fade_amp * ghost_fade(s, gh->fade_samples);
         sounding |= render(s, gh, l, &g, m);
     }
     if (!sounding)
@@ -696,6 +728,7 @@ int aero_body_process(aero_body *s, const float *speed,
         gain = ramp_advance(&s->base.gain, m);
         s->base.sounding = 0;
         if (s->texture) {
+            double faded = fade_in(s, m);
             for (int l = 0; l < s->regions; l++) {
                 aero_body_geometry g;
                 for (int i = 0; i < 3; i++) {
@@ -704,6 +737,7 @@ int aero_body_process(aero_body *s, const float *speed,
                 }
                 s->base.clamped |= geometry(s, l, wind, (const double (*)[3])ears,
                                        gain, &g);
+                g.amp *= faded;
                 s->base.sounding |= render(s, &s->src[l], l, &g, m);
             }
         }

@@ -105,6 +105,7 @@ typedef struct aero_body {
        fading where they were */
     aero_body_source ghost[AERO_BODY_MAX_SOURCES];
     int n_ghosts;
+    double fade_in;             /* samples since the jump, as they fade */
 } aero_body;
 
 /* 0, or -1 when out of memory. Defaults: no texture (silent), the body at

@@ -28,6 +28,7 @@ void aero_pose_path_to(aero_pose_path *p, const double *x, double interval)
         p->from_vel[i] = p->vel[i];
         p->to[i] = x[i];
     }
+    p->after_standing = !(p->duration > 0.0);
     p->elapsed = 0.0;
     p->duration = interval;
 }
@@ -73,6 +74,11 @@ void aero_pose_path_advance(aero_pose_path *p, double m)
 int aero_pose_path_ended(const aero_pose_path *p)
 {
     return p->duration > 0.0 && p->elapsed >= 2.0 * p->duration;
+}
+
+int aero_pose_path_waited(const aero_pose_path *p, double interval)
+{
+    return p->after_standing && p->duration > 2.0 * interval;
 }
 
 double aero_pose_path_pace(const aero_pose_path *p)

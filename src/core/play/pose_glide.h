@@ -38,6 +38,8 @@ typedef struct {
     double to_vel[AERO_GLIDE_DIM_MAX]; /* the stream's velocity at `to` */
     double elapsed, duration;        /* since the last pose; its interval */
     double chord[AERO_GLIDE_DIM_MAX]; /* (to - the pose before) / interval */
+    int after_standing;              /* the segment began with the path
+                                        standing (after a jump) */
 } aero_pose_path;
 
 /* the path stands at x (the first pose, a placement, a new gesture) */
@@ -53,6 +55,14 @@ void aero_pose_path_advance(aero_pose_path *p, double m);
  * whole way in a pose's interval, near Mach 1 for a sword after 0.3 s (a
  * Doppler burst, click measure 7-330, issue 48). */
 int aero_pose_path_ended(const aero_pose_path *p);
+/* 1 when a pose `interval` samples after the last is the first of a
+ * gesture that began at the last pose: the running segment is the first
+ * after the path stood (placed, or a new gesture) and lasts more than
+ * twice the new interval, a wait and not a motion (a pose 0.2 s after a
+ * placement, then one every 5 ms). The players jump to the last pose and
+ * glide on from there: the path catching up a 0.2 s segment in 5 ms was a
+ * Doppler burst (click measure 935, issue 48). */
+int aero_pose_path_waited(const aero_pose_path *p, double interval);
 /* the fraction of the stream's velocity the path keeps now: 1 up to 1.5
  * intervals, falling to 0 as it comes to rest (0 standing: placed, or
  * never posed) */

@@ -49,6 +49,7 @@ typedef struct {
     /* a ghost's amplitude and rate when it began to fade, and the
        samples since */
     double fade_amp, fade_inc, fade_samples;
+    double fade_rate[AERO_AEOLIAN_MAX_EARS]; /* its delays' rates then */
 } aero_aeolian_source;
 
 struct aero_aeolian_texture {

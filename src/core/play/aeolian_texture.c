@@ -377,6 +377,9 @@ static void leave_sound(aero_aeolian_texture *s)
         s->ghost[i].fade_amp = s->src[i].amp;
         s->ghost[i].fade_inc = s->src[i].inc;
         s->ghost[i].fade_samples = 0.0;
+        for (int e = 0; e < AERO_AEOLIAN_MAX_EARS; e++) /* its delay's rate */
+            s->ghost[i].fade_rate[e] =
+                s->src[i].step[e] > 0.0 ? s->src[i].step[e] - 1.0 : 0.0;
         s->src[i].amp = 0.0;
     }
     s->n_ghosts = s->n_sources;
@@ -916,6 +919,9 @@ static int render_ghosts(aero_aeolian *a, int m)
         aero_aeolian_source *gh = &s->ghost[i];
         if (!gh->primed || !(gh->fade_samples < span))
             continue;
+        double v_then = gh->fade_samples < span
+                            ? 0.5 + 0.5 * cos(AERO_PI * gh->fade_samples / span)
+                            : 0.0;
         gh->fade_samples += m;
         double v = gh->fade_samples < span
                        ? 0.5 + 0.5 * cos(AERO_PI * gh->fade_samples / span)
@@ -927,7 +933,8 @@ static int render_ghosts(aero_aeolian *a, int m)
         for (int e = 0; e < a->n_ears; e++) {
             g.fx[e] = gh->fx[e];
             g.fy[e] = gh->fy[e];
-            g.delay[e] = gh->delay[e];
+            /* it moves on as it slows: its delay's rate falls with v */
+            g.delay[e] = gh->delay[e] + gh->fade_rate[e] * 0.5 * (v_then + v) * m;
         }
         sounding |= render_source(a, gh, &g, m);
     }

@@ -263,6 +263,8 @@ static void leave_sound(aero_body *s)
         gh->fade_amp = src->then.amp;
         gh->fade_inc = src->then.inc;
         gh->fade_samples = 0.0;
+        for (int e = 0; e < AERO_BODY_MAX_EARS; e++) /* its delay's rate */
+            gh->fade_rate[e] = src->step[e] > 0.0 ? src->step[e] - 1.0 : 0.0;
         src->then.amp = 0.0;
         memset(src->velocity, 0, sizeof(src->velocity));
     }
@@ -680,6 +682,9 @@ static int render_ghosts(aero_body *s, int m)
         aero_body_source *gh = &s->ghost[l];
         if (!gh->primed || !(gh->fade_samples < span))
             continue;
+        double v_then = gh->fade_samples < span
+                            ? 0.5 + 0.5 * cos(AERO_PI * gh->fade_samples / span)
+                            : 0.0;
         gh->fade_samples += m;
         double v = gh->fade_samples < span
                        ? 0.5 + 0.5 * cos(AERO_PI * gh->fade_samples / span)
@@ -687,6 +692,9 @@ static int render_ghosts(aero_body *s, int m)
         aero_body_geometry g = gh->then;
         g.inc = gh->fade_inc * v;
         g.amp = gh->fade_amp * ghost_fade(s, gh->fade_samples);
+        /* it moves on as it slows: its delay's rate falls with v */
+        for (int e = 0; e < s->base.n_ears; e++)
+            g.delay[e] += gh->fade_rate[e] * 0.5 * (v_then + v) * m;
         sounding |= render(s, gh, l, &g, m);
     }
     if (!sounding)

@@ -75,6 +75,7 @@ typedef struct {
     /* a ghost's amplitude and rate when it began to fade, and the
        samples since (body_texture.c) */
     double fade_amp, fade_inc, fade_samples;
+    double fade_rate[AERO_BODY_MAX_EARS]; /* its delays' rates then */
 } aero_body_source;
 
 typedef struct aero_body {

@@ -10,9 +10,9 @@
  * pose) / interval, and the one before: a second-order backward
  * difference, exact for a constant acceleration), the chord alone after
  * a pause. Past the pose the path goes on at that velocity for half an
- * interval (a pose due now may come late), then slows evenly to rest at
- * two intervals (a stream that ends stops without a step of the
- * velocity). The path lags the stream by one interval.
+ * interval (a pose due now may come late), then slows on a half cosine
+ * to rest at two intervals (a stream that ends stops without a step of
+ * the velocity or its slope). The path lags the stream by one interval.
  * Why: a polyline through the poses steps the velocity, hence the
  * Doppler rate, at every pose, a click each time at the speed of a
  * whirled sword's tip (a whirled sine's click measure 12.7, against 3.8

@@ -85,7 +85,8 @@ done
 #    and the first pose 0.1 s in (from rest), stopped at 0.4 s, started
 #    again at 0.55 s (after a pause, mid-swing), stopped at 0.8 s with a
 #    placement elsewhere (a jump while sounding), started again from there
-#    at 1 s, stopped at 1.3 s. Each ear's click measure over the whole
+#    at 1 s, its texture changed to the cylinder's at 1.15 s (while
+#    moving), stopped at 1.3 s. Each ear's click measure over the whole
 #    1.5 s (median of the seeds) within the steady whirl's above + 0.5.
 render_gestures() { # NAME ANGLE: NAME-SEED.wav for each seed
     for seed in $sword_seeds; do
@@ -94,7 +95,8 @@ render_gestures() { # NAME ANGLE: NAME-SEED.wav for each seed
             2 1500 "" 0 "100 ; aero-obj ears -0.1 3 0 0.1 3 0; aero-whirl 1" \
             "400 ; aero-whirl 0" "550 ; aero-whirl 1" \
             "800 ; aero-whirl 0; aero-obj place 0 -0.5 0 0 -1.5 0 0 0 1" \
-            "1000 ; aero-whirl 1" "1300 ; aero-whirl 0"
+            "1000 ; aero-whirl 1" "1150 ; aero-obj texture cylinder" \
+            "1300 ; aero-whirl 0"
         judge $ANALYZE finite "$OUT/$1-$seed.wav" --max 100
     done
 }
@@ -104,7 +106,7 @@ for angle in 0 30 45 60 90; do
         eval "ref=\${steady_${angle}_$ch:-?}"
         c=$(median_clicks "sw-start-$angle" "$ch")
         verdict "start$angle" "$(holds "\"$c\" != \"\" && \"$ref\" != \"?\" && $c <= $ref + 0.5")" \
-            "blade started, stopped and placed, chord at $angle deg, ear $ch, from before the first pose: click measure ${c:-?} (median of seeds $sword_seeds; the steady whirl's ${ref} + 0.5)"
+            "blade started, stopped, placed and retextured, chord at $angle deg, ear $ch, from before the first pose: click measure ${c:-?} (median of seeds $sword_seeds; the steady whirl's ${ref} + 0.5)"
     done
 done
 

@@ -91,6 +91,11 @@ struct aero_aeolian_texture {
     aero_aeolian_source ghost[AERO_AEOLIAN_SOURCES_MAX];
     int n_ghosts;
     double fade_in;      /* samples since the jump, as the ghosts fade */
+    /* after a texture change while sounding: the ghosts' texture (owned)
+       and what they read of it; they go on moving as they were */
+    aero_texture *ghost_texture;
+    double ghost_period, ghost_frames_per_cycle;
+    int ghost_mirror, ghost_moving;
 };
 
 /* the texture mode's state, made from the object's settings when first

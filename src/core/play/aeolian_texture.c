@@ -252,12 +252,48 @@ int aero_aeolian_texture_make(aero_aeolian *a)
     return 0;
 }
 
+/* The stick jumps while it sounds: what it sounded goes on where it was,
+   fading as a stopped stream's sound does (its velocity, hence its rate,
+   falling with VELOCITY_TAU_S, its amplitude as the rate to the exponent:
+   render_ghosts), and the sources start again from rest at the new place.
+   Moving the sounding sources with the stick instead jumped their delays
+   within a chunk, the tail of the old sound cut where the new place's
+   arrivals began (a step of a fifth of the signal, issue 48). */
+static void drop_ghost_texture(aero_aeolian_texture *s)
+{
+    if (s->ghost_texture) {
+        aero_texture_free(s->ghost_texture);
+        free(s->ghost_texture);
+        s->ghost_texture = NULL;
+    }
+    s->ghost_moving = 0;
+}
+
+static void leave_sound(aero_aeolian_texture *s)
+{
+    drop_ghost_texture(s);
+    for (int i = 0; i < s->n_sources; i++) {
+        s->ghost[i] = s->src[i];
+        s->ghost[i].fade_amp = s->src[i].amp;
+        s->ghost[i].fade_inc = s->src[i].inc;
+        s->ghost[i].fade_samples = 0.0;
+        for (int e = 0; e < AERO_AEOLIAN_MAX_EARS; e++) /* its delay's rate */
+            s->ghost[i].fade_rate[e] =
+                s->src[i].step[e] > 0.0 ? s->src[i].step[e] - 1.0 : 0.0;
+        s->src[i].amp = 0.0;
+    }
+    s->n_ghosts = s->n_sources;
+    s->fade_in = 0.0;
+    memset(s->velocity, 0, sizeof(s->velocity));
+}
+
 void aero_aeolian_texture_free(aero_aeolian *a)
 {
     aero_aeolian_texture *s = a->texture;
     if (!s)
         return;
     aero_arrivals_free(&s->arrivals);
+    drop_ghost_texture(s);
     if (s->texture) {
         aero_texture_free(s->texture);
         free(s->texture);
@@ -270,6 +306,9 @@ int aero_aeolian_texture_set(aero_aeolian *a, aero_texture *t, char *err,
                              size_t errlen)
 {
     aero_aeolian_texture *s = a->texture;
+    /* what the old texture's sources need to fade out reading it */
+    double was_period = s->period, was_frames_per_cycle = s->frames_per_cycle;
+    int was_mirror = s->mirror;
     if (t) {
         const char *kind = t->head.kind;
         if (strcmp(kind, "aeolian")) {
@@ -307,12 +346,28 @@ int aero_aeolian_texture_set(aero_aeolian *a, aero_texture *t, char *err,
                                   : 0.0;
         set_re_law(s, t, v0, d);
     }
-    if (s->texture) {
-        aero_texture_free(s->texture);
-        free(s->texture);
+    if (s->sounding && s->texture && t) {
+        /* a texture changed while sounding: the old sources fade out
+           reading the old texture, moving on as they were, as the new
+           ones fade in (fade_in); cutting them stepped the sound */
+        double velocity[6]; /* the stick goes on moving */
+        memcpy(velocity, s->velocity, sizeof(velocity));
+        leave_sound(s);
+        memcpy(s->velocity, velocity, sizeof(velocity));
+        s->ghost_texture = s->texture;
+        s->ghost_period = was_period;
+        s->ghost_mirror = was_mirror;
+        s->ghost_frames_per_cycle = was_frames_per_cycle;
+        s->ghost_moving = 1;
+    } else {
+        drop_ghost_texture(s);
+        s->n_ghosts = 0; /* they read the old texture */
+        if (s->texture) {
+            aero_texture_free(s->texture);
+            free(s->texture);
+        }
     }
     s->texture = t;
-    s->n_ghosts = 0; /* they read the old texture */
     /* sources restart from random offsets of the new texture */
     for (int i = 0; i < AERO_AEOLIAN_SOURCES_MAX; i++)
         start_source(s, &s->src[i]);
@@ -335,6 +390,7 @@ int aero_aeolian_texture_sample_rate(aero_aeolian *a, double sr)
     for (int i = 0; i < AERO_AEOLIAN_SOURCES_MAX; i++)
         s->src[i].primed = 0; /* the rings are new */
     s->n_ghosts = 0;
+    drop_ghost_texture(s);
     return 0;
 }
 
@@ -361,30 +417,6 @@ void aero_aeolian_texture_seed(aero_aeolian *a)
     for (int i = 0; i < AERO_AEOLIAN_SOURCES_MAX; i++)
         if (s->texture)
             seed_source(s, &s->src[i]);
-}
-
-/* The stick jumps while it sounds: what it sounded goes on where it was,
-   fading as a stopped stream's sound does (its velocity, hence its rate,
-   falling with VELOCITY_TAU_S, its amplitude as the rate to the exponent:
-   render_ghosts), and the sources start again from rest at the new place.
-   Moving the sounding sources with the stick instead jumped their delays
-   within a chunk, the tail of the old sound cut where the new place's
-   arrivals began (a step of a fifth of the signal, issue 48). */
-static void leave_sound(aero_aeolian_texture *s)
-{
-    for (int i = 0; i < s->n_sources; i++) {
-        s->ghost[i] = s->src[i];
-        s->ghost[i].fade_amp = s->src[i].amp;
-        s->ghost[i].fade_inc = s->src[i].inc;
-        s->ghost[i].fade_samples = 0.0;
-        for (int e = 0; e < AERO_AEOLIAN_MAX_EARS; e++) /* its delay's rate */
-            s->ghost[i].fade_rate[e] =
-                s->src[i].step[e] > 0.0 ? s->src[i].step[e] - 1.0 : 0.0;
-        s->src[i].amp = 0.0;
-    }
-    s->n_ghosts = s->n_sources;
-    s->fade_in = 0.0;
-    memset(s->velocity, 0, sizeof(s->velocity));
 }
 
 static int pose_ok(const double *p)
@@ -915,6 +947,16 @@ static int render_ghosts(aero_aeolian *a, int m)
     aero_aeolian_texture *s = a->texture;
     const double span = GHOST_FADE_S * a->sample_rate;
     int sounding = 0;
+    /* after a texture change they read the old one */
+    aero_texture *texture = s->texture;
+    double period = s->period, frames_per_cycle = s->frames_per_cycle;
+    int mirror = s->mirror;
+    if (s->ghost_texture) {
+        s->texture = s->ghost_texture;
+        s->period = s->ghost_period;
+        s->mirror = s->ghost_mirror;
+        s->frames_per_cycle = s->ghost_frames_per_cycle;
+    }
     for (int i = 0; i < s->n_ghosts; i++) {
         aero_aeolian_source *gh = &s->ghost[i];
         if (!gh->primed || !(gh->fade_samples < span))
@@ -926,6 +968,8 @@ static int render_ghosts(aero_aeolian *a, int m)
         double v = gh->fade_samples < span
                        ? 0.5 + 0.5 * cos(AERO_PI * gh->fade_samples / span)
                        : 0.0;
+        if (s->ghost_moving) /* a texture change: the stick goes on */
+            v = v_then = 1.0;
         source_geometry g;
         g.inc = gh->fade_inc * v;
         g.angle = gh->angle;
@@ -938,8 +982,14 @@ static int render_ghosts(aero_aeolian *a, int m)
         }
         sounding |= render_source(a, gh, &g, m);
     }
-    if (!sounding)
+    s->texture = texture;
+    s->period = period;
+    s->mirror = mirror;
+    s->frames_per_cycle = frames_per_cycle;
+    if (!sounding) {
         s->n_ghosts = 0;
+        drop_ghost_texture(s);
+    }
     return sounding;
 }
 

@@ -301,8 +301,9 @@ pd_render bd-tiny "body~ -texture $OUT/tiny-sphere" 1 500 "; aero-speed 10"
 judge $ANALYZE level "$OUT/bd-tiny.wav" --min 0
 
 # the club whirled on a 0.5 m radius at 2 turns/s (its axis along the
-# radius) past stereo ears 3 m out, started, stopped, paused and placed
-# as 16-sword.sh 1b does with the blade, recorded from before the first
+# radius) past stereo ears 3 m out, started, stopped, paused, placed and
+# its texture loaded again while it whirls, as 16-sword.sh 1b does with
+# the blade, recorded from before the first
 # pose (issue 48: the ears given as the poses began were still gliding
 # there when the sound started, 5.5-7; a stream resumed after a placement
 # caught up its wait in one interval, 117-229): each ear's click measure
@@ -323,14 +324,15 @@ for seed in 1 2 3 4 5; do
         "" 0 "100 ; aero-obj ears -0.1 3 0 0.1 3 0; aero-whirl 1" \
         "400 ; aero-whirl 0" "550 ; aero-whirl 1" \
         "800 ; aero-whirl 0; aero-obj place 0 -0.5 0 0.70710678 0.70710678 0 0" \
-        "1000 ; aero-whirl 1" "1300 ; aero-whirl 0"
+        "1000 ; aero-whirl 1" "1150 ; aero-obj texture club" \
+        "1300 ; aero-whirl 0"
     judge $ANALYZE finite "$OUT/bd-club-start-$seed.wav" --max 100
 done
 for ch in 0 1; do
     ref=$(bd_median_clicks bd-club-whirl "$ch") c=$(bd_median_clicks bd-club-start "$ch")
     if [ "$(bd_holds "\"$c\" != \"\" && \"$ref\" != \"\" && $c <= $ref + 0.5")" -eq 1 ]; then
-        pass "club started, stopped and placed, ear $ch, from before the first pose: click measure $c (median of 5 seeds; the steady whirl's $ref + 0.5)"
+        pass "club started, stopped, placed and retextured, ear $ch, from before the first pose: click measure $c (median of 5 seeds; the steady whirl's $ref + 0.5)"
     else
-        fail "club started, stopped and placed, ear $ch, from before the first pose: click measure ${c:-?} (median of 5 seeds; the steady whirl's ${ref:-?} + 0.5)"
+        fail "club started, stopped, placed and retextured, ear $ch, from before the first pose: click measure ${c:-?} (median of 5 seeds; the steady whirl's ${ref:-?} + 0.5)"
     fi
 done

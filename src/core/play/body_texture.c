@@ -37,9 +37,18 @@ void aero_body_quaternion_from_rotvec(const double r[3], double q[4])
 
 /* --- life cycle ----------------------------------------------------------- */
 
+static void drop_ghost_texture(aero_body *s)
+{
+    if (s->ghost_texture) {
+        aero_texture_free(s->ghost_texture);
+        free(s->ghost_texture);
+        s->ghost_texture = NULL;
+    }
+    s->ghost_moving = 0;
+}
+
 static void restart_sources(aero_body *s)
 {
-    s->n_ghosts = 0;
     for (int i = 0; i < AERO_BODY_MAX_SOURCES; i++) {
         memset(&s->src[i], 0, sizeof(s->src[i]));
         if (s->texture)
@@ -67,6 +76,7 @@ int aero_body_init(aero_body *s, double sample_rate,
 void aero_body_free(aero_body *s)
 {
     aero_moving_player_free(&s->base);
+    drop_ghost_texture(s);
     if (s->texture) {
         aero_texture_free(s->texture);
         free(s->texture);
@@ -122,9 +132,32 @@ static int parse_centres(const char *p, int n, double *centre)
     return *p == 0 || *p == '\n' ? 0 : -1;
 }
 
+/* The body jumps while it sounds: what it sounded goes on where it was,
+   fading as a stopped stream's sound does (render_ghosts), and the
+   sources start again from rest at the new place; moving the sounding
+   sources with it jumped their delays within a chunk (issue 48). */
+static void leave_sound(aero_body *s)
+{
+    drop_ghost_texture(s);
+    for (int l = 0; l < s->regions; l++) {
+        aero_body_source *src = &s->src[l], *gh = &s->ghost[l];
+        *gh = *src;
+        gh->fade_amp = src->then.amp;
+        gh->fade_inc = src->then.inc;
+        gh->fade_samples = 0.0;
+        for (int e = 0; e < AERO_BODY_MAX_EARS; e++) /* its delay's rate */
+            gh->fade_rate[e] = src->step[e] > 0.0 ? src->step[e] - 1.0 : 0.0;
+        src->then.amp = 0.0;
+        memset(src->velocity, 0, sizeof(src->velocity));
+    }
+    s->n_ghosts = s->regions;
+    s->fade_in = 0.0;
+}
+
 int aero_body_set_texture(aero_body *s, aero_texture *t,
                                   char *err, size_t errlen)
 {
+    int was_regions = s->regions;
     if (t) {
         const char *kind = t->head.kind, *sym = t->head.symmetry;
         double centre[3 * AERO_BODY_MAX_SOURCES];
@@ -172,6 +205,35 @@ int aero_body_set_texture(aero_body *s, aero_texture *t,
         memcpy(s->centre, centre, sizeof(double) * 3 * t->regions);
         s->re_law = !sphere && strip_re_law(s, t);
     }
+    if (s->base.sounding && s->texture && t) {
+        /* a texture changed while sounding: the old sources fade out
+           reading the old texture, moving on as they were, as the new
+           ones (at the body's speed) fade in; cutting them stepped the
+           sound */
+        double velocity[AERO_BODY_MAX_SOURCES][2][3];
+        for (int l = 0; l < AERO_BODY_MAX_SOURCES; l++) {
+            memcpy(velocity[l][0], s->src[l].velocity, sizeof(velocity[l][0]));
+            memcpy(velocity[l][1], s->src[l].stream_velocity,
+                   sizeof(velocity[l][1]));
+        }
+        int regions = s->regions;
+        s->regions = was_regions; /* the old sources */
+        leave_sound(s);
+        s->regions = regions;
+        s->ghost_texture = s->texture;
+        s->ghost_regions = was_regions;
+        s->ghost_moving = 1;
+        s->texture = t;
+        restart_sources(s);
+        for (int l = 0; l < AERO_BODY_MAX_SOURCES; l++) {
+            memcpy(s->src[l].velocity, velocity[l][0], sizeof(velocity[l][0]));
+            memcpy(s->src[l].stream_velocity, velocity[l][1],
+                   sizeof(velocity[l][1]));
+        }
+        return 0;
+    }
+    drop_ghost_texture(s);
+    s->n_ghosts = 0; /* they read the old texture */
     if (s->texture) {
         aero_texture_free(s->texture);
         free(s->texture);
@@ -192,6 +254,7 @@ int aero_body_set_sample_rate(aero_body *s, double sr)
         for (int i = 0; i < AERO_BODY_MAX_SOURCES; i++)
             s->src[i].primed = 0;
         s->n_ghosts = 0;
+        drop_ghost_texture(s);
     }
     return rc < 0 ? -1 : 0;
 }
@@ -249,27 +312,6 @@ static int make_pose(const double pos[3], const double quat[4], double *p)
     for (int i = 0; i < 4; i++)
         p[3 + i] = quat[i] / n;
     return 0;
-}
-
-/* The body jumps while it sounds: what it sounded goes on where it was,
-   fading as a stopped stream's sound does (render_ghosts), and the
-   sources start again from rest at the new place; moving the sounding
-   sources with it jumped their delays within a chunk (issue 48). */
-static void leave_sound(aero_body *s)
-{
-    for (int l = 0; l < s->regions; l++) {
-        aero_body_source *src = &s->src[l], *gh = &s->ghost[l];
-        *gh = *src;
-        gh->fade_amp = src->then.amp;
-        gh->fade_inc = src->then.inc;
-        gh->fade_samples = 0.0;
-        for (int e = 0; e < AERO_BODY_MAX_EARS; e++) /* its delay's rate */
-            gh->fade_rate[e] = src->step[e] > 0.0 ? src->step[e] - 1.0 : 0.0;
-        src->then.amp = 0.0;
-        memset(src->velocity, 0, sizeof(src->velocity));
-    }
-    s->n_ghosts = s->regions;
-    s->fade_in = 0.0;
 }
 
 /* a valid pose p (make_pose) */
@@ -678,6 +720,13 @@ static int render_ghosts(aero_body *s, int m)
 {
     const double span = GHOST_FADE_S * s->base.sample_rate;
     int sounding = 0;
+    /* after a texture change they read the old one */
+    aero_texture *texture = s->texture;
+    int regions = s->regions;
+    if (s->ghost_texture) {
+        s->texture = s->ghost_texture;
+        s->regions = s->ghost_regions;
+    }
     for (int l = 0; l < s->n_ghosts; l++) {
         aero_body_source *gh = &s->ghost[l];
         if (!gh->primed || !(gh->fade_samples < span))
@@ -689,6 +738,8 @@ static int render_ghosts(aero_body *s, int m)
         double v = gh->fade_samples < span
                        ? 0.5 + 0.5 * cos(AERO_PI * gh->fade_samples / span)
                        : 0.0;
+        if (s->ghost_moving) /* a texture change: the body goes on */
+            v = v_then = 1.0;
         aero_body_geometry g = gh->then;
         g.inc = gh->fade_inc * v;
         g.amp = gh->fade_amp * ghost_fade(s, gh->fade_samples);
@@ -697,8 +748,12 @@ static int render_ghosts(aero_body *s, int m)
             g.delay[e] += gh->fade_rate[e] * 0.5 * (v_then + v) * m;
         sounding |= render(s, gh, l, &g, m);
     }
-    if (!sounding)
+    s->texture = texture;
+    s->regions = regions;
+    if (!sounding) {
         s->n_ghosts = 0;
+        drop_ghost_texture(s);
+    }
     return sounding;
 }
 

@@ -107,6 +107,10 @@ typedef struct aero_body {
     aero_body_source ghost[AERO_BODY_MAX_SOURCES];
     int n_ghosts;
     double fade_in;             /* samples since the jump, as they fade */
+    /* after a texture change while sounding: the ghosts' texture (owned)
+       and its regions; they go on moving as they were */
+    aero_texture *ghost_texture;
+    int ghost_regions, ghost_moving;
 } aero_body;
 
 /* 0, or -1 when out of memory. Defaults: no texture (silent), the body at

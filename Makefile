@@ -515,6 +515,26 @@ platforms:
 	@for p in $(filter-out darwin-%,$(PLATFORMS)); do \
 	    $(MAKE) --no-print-directory platform P=$$p || exit 1; done
 
+# --- macOS: universal arm64 + x86_64 binaries, built and checked here ------
+#   make platform P=darwin  (above) build/darwin/aero/: NAME.d_fat and
+#                   NAME.darwin-fat-64.so, and build/darwin/aerotex;
+#                   Zig 0.11's zig cc (platforms/zig.sh, from npm, cached),
+#                   linked by LLVM's ld64.lld
+#   make check-macos  tests/macos/check.sh: every binary's Mach-O structure,
+#                   exports, imports, libraries, minos and arm64 signature
+#                   read with LLVM's tools, and the same compiler's code
+#                   run on Linux (unit tests, the platform runner against
+#                   the gcc build). No macOS runs here.
+DEB_PACKAGES += llvm-14 lld-14
+.PHONY: check-macos
+check-macos:
+	@$(MAKE) --no-print-directory deps
+	@$(MAKE) --no-print-directory -s all lib >$(BUILD).log 2>&1 || \
+	    { cat $(BUILD).log; exit 1; }
+	@mkdir -p $(BUILD) && $(MAKE) --no-print-directory -s platform P=darwin \
+	    >$(BUILD)/platform-darwin.log 2>&1 || { cat $(BUILD)/platform-darwin.log; exit 1; }
+	@sh tests/macos/check.sh
+
 # --- web: aero in the browser (libpd + aero compiled to WebAssembly) --------
 #   make web        build/web/: the page of web/, libpd 0.16.1 (Pd 0.56-5)
 #                   with aero linked in (one aero_setup()) as aero.wasm +

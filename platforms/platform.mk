@@ -27,6 +27,7 @@
 # Windows. Pd's headers are Debian's (Pd 0.53: what they declare exists in
 # every Pd the packages load in).
 P ?= linux-amd64
+.DEFAULT_GOAL := all
 B = build/$(P)
 STAGE = $(B)/aero
 DEPS = build/deps/$(P)
@@ -50,6 +51,7 @@ $(STAGE)/%.darwin-fat-64.so: build/darwin-arm64/aero/%.darwin-arm64-64.so \
 	@mkdir -p $(dir $@)
 	$(LIPO) -create $^ -output $@
 $(B)/aerotex: build/darwin-arm64/aerotex build/darwin-amd64/aerotex
+	@mkdir -p $(dir $@)
 	$(LIPO) -create $^ -output $@
 else ifneq ($(filter darwin-arm64 darwin-amd64,$(P)),)
 # --- macOS, one architecture -------------------------------------------------

@@ -11,7 +11,8 @@
 #      makes no MH_BUNDLE; Pd's dlopen() loads either) for an external, an
 #      executable for aerotex;
 #    - it exports only Pd's entry points (_*_setup);
-#    - every undefined symbol is either one m_pd.h declares, looked up in
+#    - every undefined symbol is either one m_pd.h (or g_canvas.h, which
+#      aero_pd.c includes) declares, looked up in
 #      the flat namespace when Pd loads it (llvm-nm: "dynamically looked
 #      up"), or libSystem's; a double external asks for class_new64, a
 #      single one for class_new; aerotex takes everything from libSystem;
@@ -132,7 +133,7 @@ for entry in $bins; do
         fail "no $b"; continue
     fi
     nbin=$((nbin + 1))
-    archs=$(llvm-lipo-14 -archs "$b" 2>/dev/null | tr ' ' '\n' | LC_ALL=C sort | tr '\n' ' ')
+    archs=$(llvm-lipo-14 -archs "$b" 2>/dev/null | tr ' ' '\n' | grep . | LC_ALL=C sort | tr '\n' ' ')
     wrong=""
     [ "$archs" = "arm64 x86_64 " ] || wrong=" archs:$archs"
     for a in arm64 x86_64; do
@@ -141,16 +142,16 @@ for entry in $bins; do
     done
     if [ -z "$wrong" ]; then
         case $kind in
-            tool) what="executable, everything from libSystem" ;;
-            external32) what="single-precision external (class_new)" ;;
-            external64) what="double-precision external (class_new64)" ;;
+            tool) what="executable, every import from libSystem," ;;
+            external32) what="single-precision external (class_new), Pd's API looked up flat," ;;
+            external64) what="double-precision external (class_new64), Pd's API looked up flat," ;;
         esac
-        pass "$(basename "$b"): universal arm64 + x86_64 $what, Pd's API flat, only libSystem, minos 11.0, arm64 signed"
+        pass "$(basename "$b"): universal arm64 + x86_64 $what, only libSystem loaded, minos 11.0, arm64 signed"
     else
         fail "$(basename "$b"):$wrong"
     fi
 done
-[ -d "$STAGE" ] && echo "  ($nbin binaries read slice by slice; m_pd.h declares $(wc -l <"$OUT/pd-api.txt") names)"
+[ -d "$STAGE" ] && echo "  ($nbin binaries read slice by slice; m_pd.h and g_canvas.h declare $(wc -l <"$OUT/pd-api.txt") names)"
 
 # --- negative controls ---------------------------------------------------
 section "negative controls: the checks fail on binaries that break them"
@@ -194,8 +195,8 @@ b=$STAGE/aeolian~.d_fat
 if [ -f "$b" ]; then
     # one byte of the arm64 slice's code changed (the slice's offset from
     # the universal header, its text 16 KiB in)
-    off=$(llvm-otool-14 -f "$b" 2>/dev/null | awk '/^architecture / { a = $2 }
-        a == "arm64" && $1 == "offset" { print $2; exit }')
+    off=$(llvm-otool-14 -f "$b" 2>/dev/null | awk '$1 == "cputype" { c = $2 }
+        c == 16777228 && $1 == "offset" { print $2; exit }')
     cp "$b" "$OUT/flipped.d_fat"
     pos=$((off + 16384 + 100))
     byte=$(od -A n -t u1 -j "$pos" -N 1 "$b" | tr -d ' ')
@@ -212,6 +213,13 @@ fi
 section "zig cc's code on Linux x86_64: the unit tests and the externals in Pd"
 if sh tests/macos/zig-linux.sh >"$OUT/zig-linux.log" 2>&1; then
     pass "zig cc built aero for x86_64-linux-gnu (build/zig-linux-amd64)"
+    # the externals under test are clang's (zig's), the reference ones gcc's
+    if readelf -p .comment build/zig-linux-amd64/aero/aeolian~.pd_linux 2>/dev/null |
+        grep -q clang && ! readelf -p .comment aeolian~.pd_linux 2>/dev/null | grep -q clang; then
+        pass "the externals played are zig's clang's (.comment), the references gcc's"
+    else
+        fail "build/zig-linux-amd64's externals are not clang's, or the native ones are"
+    fi
     # the unit tests (ZIG_UNITS, tests/macos/zig-linux.sh), each binary's
     # own `N passed, N failed` added to these
     for t in build/zig-linux-amd64/tests/test_*; do

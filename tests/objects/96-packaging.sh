@@ -137,7 +137,7 @@ for pkg in $packages Sources; do
         if [ "$format" = Mach-O ]; then
             # a universal binary holding exactly the package's CPUs;
             # symbols without Mach-O's leading underscore, both slices
-            a=$(llvm-lipo-14 -archs "$b" 2>/dev/null | tr ' ' '\n' | LC_ALL=C sort | tr '\n' '+')
+            a=$(llvm-lipo-14 -archs "$b" 2>/dev/null | tr ' ' '\n' | grep . | LC_ALL=C sort | tr '\n' '+')
             [ "$a" = "$(echo "$cpu" | tr '+' '\n' | LC_ALL=C sort | tr '\n' '+')" ] ||
                 wrong="$wrong $n:archs-$a"
             imports=$(llvm-nm-14 -u -j "$b" 2>/dev/null | grep -v -e ':$' -e '^$' |

@@ -65,7 +65,7 @@ else ifneq ($(filter darwin-arm64 darwin-amd64,$(P)),)
 # the names of platforms/darwin/exports.txt (the *_setup functions), with
 # Pd's functions left undefined and looked up in the flat namespace when
 # Pd loads it (dynamic_lookup), and signs arm64 code ad hoc, as arm64
-# macOS requires.
+# macOS requires. -S: no debug map (it would name this machine's paths).
 ZIG := $(shell sh platforms/zig.sh)
 export ZIG_GLOBAL_CACHE_DIR ?= $(or $(AERO_CACHE),$(HOME)/.cache/aero)/zig-cache
 ARCH = $(patsubst darwin-%,%,$(P))
@@ -78,7 +78,7 @@ EXT.64 = darwin-$(ARCH)-64.so
 PD_IMPORT =
 PIC = -fPIC
 LD_ARCH = $(if $(filter arm64,$(ARCH)),arm64,x86_64)
-LINK = ld64.lld-14 -arch $(LD_ARCH) -platform_version macos 11.0 11.0 -dead_strip
+LINK = ld64.lld-14 -arch $(LD_ARCH) -platform_version macos 11.0 11.0 -dead_strip -S
 EXT_LDFLAGS = -bundle -undefined dynamic_lookup \
     -exported_symbols_list platforms/darwin/exports.txt
 SYSLIBS = $(dir $(ZIG))lib/libc/darwin/libSystem.11.tbd

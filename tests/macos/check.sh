@@ -142,9 +142,9 @@ for entry in $bins; do
     done
     if [ -z "$wrong" ]; then
         case $kind in
-            tool) what="executable, every import from libSystem," ;;
-            external32) what="single-precision external (class_new), Pd's API looked up flat," ;;
-            external64) what="double-precision external (class_new64), Pd's API looked up flat," ;;
+            tool) what="executable, every import from libSystem" ;;
+            external32) what="single-precision external (class_new), Pd's API looked up flat" ;;
+            external64) what="double-precision external (class_new64), Pd's API looked up flat" ;;
         esac
         pass "$(basename "$b"): universal arm64 + x86_64 $what, only libSystem loaded, minos 11.0, arm64 signed"
     else

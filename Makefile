@@ -485,9 +485,11 @@ clean-robust:
 #   make platform P=PLATFORM   build/PLATFORM/aero/: every external, the
 #                  single-binary library, help, abstractions, textures,
 #                  trees, meta, LICENSE, README (a deken package's folder);
-#                  PLATFORM is linux-amd64, windows-amd64, linux-arm64 or
-#                  linux-armv7 (platforms/platform.mk says what each holds)
-#   make windows | linux-amd64 | linux-arm64 | linux-armv7   the same
+#                  PLATFORM is linux-amd64, windows-amd64, linux-arm64,
+#                  linux-armv7 or darwin (macOS, universal; darwin-arm64 and
+#                  darwin-amd64 are its two halves, binaries only)
+#                  (platforms/platform.mk says what each holds)
+#   make windows | linux-amd64 | linux-arm64 | linux-armv7 | darwin   the same
 # FFTW and libsndfile are linked statically, built once per machine by
 # platforms/deps.sh (cached in ${AERO_CACHE:-~/.cache/aero}); the Windows
 # externals link pd.dll's import library from Pd for Windows

@@ -14,8 +14,9 @@
 #                  one macOS architecture (macOS 11 and later), binaries
 #                  only: NAME.d_arm64 / NAME.d_amd64 (single) and
 #                  NAME.darwin-arm64-64.so / NAME.darwin-amd64-64.so
-#                  (double), and aerotex, in build/PLATFORM/aero/; built
-#                  by Zig's `zig cc` (platforms/zig.sh)
+#                  (double) in build/PLATFORM/aero/, and
+#                  build/PLATFORM/aerotex; compiled by Zig's `zig cc`
+#                  (platforms/zig.sh), linked by ld64.lld-14
 #   darwin         the two joined into universal (fat) binaries by
 #                  llvm-lipo: NAME.d_fat (single) and NAME.darwin-fat-64.so
 #                  (double), and build/darwin/aerotex beside the folder
@@ -24,7 +25,7 @@
 # too), linked with the static FFTW and libsndfile of build/deps/PLATFORM,
 # and exports only the Pd entry points (*_setup): hidden visibility and a
 # version script on Linux, dllexport (AERO_PD_EXPORT, aero_pd.h) on
-# Windows. Pd's headers are Debian's (Pd 0.53: what they declare exists in
+# Windows, ld64.lld's exported-symbols list on macOS. Pd's headers are Debian's (Pd 0.53: what they declare exists in
 # every Pd the packages load in).
 P ?= linux-amd64
 .DEFAULT_GOAL := all
@@ -36,7 +37,6 @@ PD_INCLUDE ?= /usr/include/pd
 ifeq ($(P),darwin)
 # --- macOS, universal: the two architectures' binaries joined -----------------
 LIPO = llvm-lipo-14
-ARCHS = arm64 amd64
 EXT.32 = d_fat
 EXT.64 = darwin-fat-64.so
 classes = $(patsubst src/pd/%.c,%,$(sort $(wildcard src/pd/*~.c)))

@@ -217,11 +217,14 @@ fi
 # the package of this Pd's float size, unpacked into a fresh folder as
 # deken does: every help patch opens from there, with nothing else on the
 # path (externals, abstractions, textures and trees from the package)
+# (when the Linux amd64 packages are among those made)
 fs=${PD_FLOATSIZE:-32}
 unpacked=$OUT/deken-$fs
 rm -rf "$unpacked"
 mkdir -p "$unpacked"
-if unzip -q "$D/aero[v$version](Linux-amd64-$fs).dek" -d "$unpacked" 2>"$OUT/deken-unzip.log"; then
+if ! echo " $platforms " | grep -q " linux-amd64 "; then
+    :
+elif unzip -q "$D/aero[v$version](Linux-amd64-$fs).dek" -d "$unpacked" 2>"$OUT/deken-unzip.log"; then
     for p in "$unpacked"/aero/*-help.pd; do
         [ -f "$p" ] || continue
         log="$OUT/deken-$fs-$(basename "$p" .pd).log"

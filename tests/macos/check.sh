@@ -22,7 +22,8 @@
 #    - arm64: an ad-hoc code signature whose every page hash is recomputed
 #      (tests/macos/codesign.py);
 #    with negative controls: a small external built to break the rules
-#    (an exported helper, a symbol that is not Pd's, macOS 13) fails each
+#    (an exported helper, a symbol that is not Pd's, a Homebrew library,
+#    macOS 13) fails each
 #    check, and a copy of an external with one byte of code changed fails
 #    the signature check.
 # 2. The compiler's arithmetic: the same zig cc compiles aero for Linux
@@ -159,12 +160,14 @@ ZIG=$(sh platforms/zig.sh)
 export ZIG_GLOBAL_CACHE_DIR=${ZIG_GLOBAL_CACHE_DIR:-${AERO_CACHE:-$HOME/.cache/aero}/zig-cache}
 cat >"$OUT/control.c" <<'EOF'
 /* a small external that breaks the rules: helper() is exported, it calls
-   a function Pd does not declare, and it is built for macOS 13 */
+   a function Pd does not declare and one of a Homebrew library, and it is
+   built for macOS 13 */
 #include "m_pd.h"
 void not_pd_api(void);
+void foo(void);
 static t_class *control_class;
 static void *control_new(void) { return pd_new(control_class); }
-int helper(int x) { not_pd_api(); return x + 1; }
+int helper(int x) { not_pd_api(); foo(); return x + 1; }
 __attribute__((visibility("default"))) void control_setup(void)
 {
     control_class = class_new(gensym("control"), (t_newmethod)control_new,
@@ -172,9 +175,25 @@ __attribute__((visibility("default"))) void control_setup(void)
     post("control %d", helper(1));
 }
 EOF
-if $ZIG cc -target aarch64-macos.13.0 -O2 -I/usr/include/pd -shared \
-    -Wl,-undefined,dynamic_lookup "$OUT/control.c" -o "$OUT/control.d_arm64" \
-    >"$OUT/control.log" 2>&1; then
+# the Homebrew library: its interface only (a text stub, as Apple's SDKs
+# ship libraries), enough to link against
+cat >"$OUT/libfoo.tbd" <<'EOF'
+--- !tapi-tbd
+tbd-version: 4
+targets: [ arm64-macos ]
+install-name: '/opt/homebrew/lib/libfoo.dylib'
+exports:
+  - targets: [ arm64-macos ]
+    symbols: [ _foo ]
+...
+EOF
+# compiled and linked as platform.mk does, without the exports list
+if $ZIG cc -target aarch64-macos.13.0 -O2 -I/usr/include/pd -c "$OUT/control.c" \
+        -o "$OUT/control.o" >"$OUT/control.log" 2>&1 &&
+    ld64.lld-14 -arch arm64 -platform_version macos 13.0 13.0 -bundle \
+        -undefined dynamic_lookup -o "$OUT/control.d_arm64" "$OUT/control.o" \
+        "$OUT/libfoo.tbd" "$(dirname "$ZIG")/lib/libc/darwin/libSystem.13.tbd" \
+        >>"$OUT/control.log" 2>&1; then
     c=$OUT/control.d_arm64
     e=$(bad_exports "$c" arm64)
     case "$e" in *_helper*) pass "negative control: an exported helper is found ($e)" ;;
@@ -182,6 +201,9 @@ if $ZIG cc -target aarch64-macos.13.0 -O2 -I/usr/include/pd -shared \
     i=$(bad_imports "$c" arm64 yes)
     case "$i" in *_not_pd_api*) pass "negative control: a symbol m_pd.h does not declare is found ($i)" ;;
         *) fail "negative control: _not_pd_api is not found among the imports (${i:-nothing})" ;; esac
+    d=$(bad_dylibs "$c" arm64)
+    case "$d" in */opt/homebrew/lib/libfoo.dylib*) pass "negative control: a Homebrew library is found ($d)" ;;
+        *) fail "negative control: the Homebrew library is not found (${d:-nothing})" ;; esac
     m=$(bad_minos "$c" arm64)
     case "$m" in *13.0*) pass "negative control: a macOS 13 minimum is found ($m)" ;;
         *) fail "negative control: minos 13 is not found (${m:-nothing})" ;; esac

@@ -5,6 +5,7 @@
 #include "aero_util.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -25,13 +26,6 @@
 
 #define KD_BUCKET 8
 
-static int cmp_pair(const void *a, const void *b)
-{
-    const aero_leaf_pair *x = a, *y = b;
-    if (x->i != y->i)
-        return x->i < y->i ? -1 : 1;
-    return x->j < y->j ? -1 : x->j > y->j;
-}
 
 typedef struct {
     float lo[3], hi[3]; /* box of the node's leaves */
@@ -246,6 +240,23 @@ static int neighbours(const kd_tree *kd, int i, float rmax,
 /* Candidate pairs: rest blade centres closer than reach (r_i + r_j), r the
    leaf's swing radius; each leaf keeps its nearest MAX_NEIGHBOURS, found
    in the k-d tree above: O(n log n) for any arrangement of the leaves. */
+/* keys[0..n) sorted in place (LSD radix, 11-bit digits, `bits` wide);
+   tmp: scratch of n. Linear: a comparison sort of the 8 n candidate pairs
+   took most of the load of a large crown. */
+static void radix_sort(uint64_t *keys, uint64_t *tmp, size_t n, int bits)
+{
+    for (int shift = 0; shift < bits; shift += 11) {
+        size_t count[2049] = {0};
+        for (size_t k = 0; k < n; k++)
+            count[((keys[k] >> shift) & 2047u) + 1]++;
+        for (int d = 0; d < 2048; d++)
+            count[d + 1] += count[d];
+        for (size_t k = 0; k < n; k++)
+            tmp[count[(keys[k] >> shift) & 2047u]++] = keys[k];
+        memcpy(keys, tmp, sizeof(uint64_t) * n);
+    }
+}
+
 int leafwave_build_pairs(aero_leafwave *lw)
 {
     int n = lw->nleaves;
@@ -255,41 +266,53 @@ int leafwave_build_pairs(aero_leafwave *lw)
     if (n < 2)
         return 0;
     kd_tree kd;
-    aero_leaf_pair *pairs = malloc(sizeof(aero_leaf_pair) * (size_t)n *
-                                   AERO_LEAF_MAX_NEIGHBOURS);
-    if (!pairs || kd_make(lw, &kd)) {
-        free(pairs);
+    size_t cap = (size_t)n * AERO_LEAF_MAX_NEIGHBOURS;
+    /* each candidate as one key, (smaller index) n + larger */
+    uint64_t *keys = malloc(sizeof(uint64_t) * cap);
+    uint64_t *tmp = malloc(sizeof(uint64_t) * cap);
+    if (!keys || !tmp || kd_make(lw, &kd)) {
+        free(keys);
+        free(tmp);
         return -1;
     }
     float rmax = 0.0f;
     for (int i = 0; i < n; i++)
         if (lw->leaves[i].reach > rmax)
             rmax = lw->leaves[i].reach;
-    int np = 0;
+    size_t np = 0;
     for (int i = 0; i < n; i++) {
         int best[AERO_LEAF_MAX_NEIGHBOURS];
         int nb = neighbours(&kd, i, rmax, best);
         for (int m = 0; m < nb; m++) {
-            aero_leaf_pair *p = &pairs[np++];
-            memset(p, 0, sizeof(*p));
-            p->i = i < best[m] ? i : best[m];
-            p->j = i < best[m] ? best[m] : i;
+            int a = i < best[m] ? i : best[m], b = i < best[m] ? best[m] : i;
+            keys[np++] = (uint64_t)a * (uint64_t)n + (uint64_t)b;
         }
     }
     kd_free(&kd);
+    int bits = 1;
+    while (bits < 64 && ((uint64_t)n * (uint64_t)n >> bits))
+        bits++;
+    radix_sort(keys, tmp, np, bits);
+    free(tmp);
     /* a pair found from both sides is kept once */
-    qsort(pairs, np, sizeof(aero_leaf_pair), cmp_pair);
-    int unique = 0;
-    for (int k = 0; k < np; k++)
-        if (!unique || pairs[k].i != pairs[unique - 1].i ||
-            pairs[k].j != pairs[unique - 1].j)
-            pairs[unique++] = pairs[k];
-    for (int k = 0; k < unique; k++) {
+    size_t unique = 0;
+    for (size_t k = 0; k < np; k++)
+        if (!unique || keys[k] != keys[unique - 1])
+            keys[unique++] = keys[k];
+    aero_leaf_pair *pairs = calloc(unique, sizeof(aero_leaf_pair));
+    if (!pairs) {
+        free(keys);
+        return -1;
+    }
+    for (size_t k = 0; k < unique; k++) {
+        pairs[k].i = (int)(keys[k] / (uint64_t)n);
+        pairs[k].j = (int)(keys[k] % (uint64_t)n);
         pairs[k].state = AERO_PAIR_INITIAL;
         pairs[k].voice = -1;
         pairs[k].q = 1e30f;
     }
+    free(keys);
     lw->pairs = pairs;
-    lw->npairs = unique;
+    lw->npairs = (int)unique;
     return 0;
 }

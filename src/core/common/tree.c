@@ -618,3 +618,27 @@ oom:
     aero_tree_free(t);
     return -1;
 }
+
+int aero_tree_copy(aero_tree *dst, const aero_tree *src)
+{
+    memset(dst, 0, sizeof *dst);
+    if (src->nbranches > 0) {
+        dst->branches = malloc(sizeof *dst->branches * (size_t)src->nbranches);
+        if (!dst->branches)
+            return -1;
+        memcpy(dst->branches, src->branches,
+               sizeof *dst->branches * (size_t)src->nbranches);
+    }
+    if (src->nleaves > 0) {
+        dst->leaves = malloc(sizeof *dst->leaves * (size_t)src->nleaves);
+        if (!dst->leaves) {
+            aero_tree_free(dst);
+            return -1;
+        }
+        memcpy(dst->leaves, src->leaves,
+               sizeof *dst->leaves * (size_t)src->nleaves);
+    }
+    dst->nbranches = src->nbranches;
+    dst->nleaves = src->nleaves;
+    return 0;
+}

@@ -284,4 +284,30 @@ int aero_leafwave_process(aero_leafwave *lw, const float *speed,
 /* number of pairs in each state now (tests, inspection) */
 void aero_leafwave_count_states(const aero_leafwave *lw, int counts[5]);
 
+/* For a host that builds a new core in a worker and swaps it in (Pd's
+ * [leafwave~]). What rebuilds the tables or the neighbour lists: */
+typedef struct {
+    double fm;
+    int per_octave, octaves;
+    double reach;
+    uint32_t seed;
+} aero_leafwave_rebuild;
+/* the checks of set_tables and set_reach, without setting: 1 valid */
+int aero_leafwave_tables_valid(double fm, int per_octave, int octaves);
+int aero_leafwave_reach_valid(double factor);
+/* src's settings that rebuild nothing (wind, speed, ears, gain, ramp,
+   stiffness, beta, mic, sway, coupling, flutter, hit, rub, voices) given
+   to dst, reading only src's numbers (src may be a copy of a live core
+   made in the host's thread) */
+void aero_leafwave_copy_settings(aero_leafwave *dst, const aero_leafwave *src);
+/* a new core in lw (initialised here) with src's settings, `want`'s
+   tables, reach and seed, and the tree t (taken; NULL: none): what a
+   worker runs; 0, or -1 with err (lw is then freed) */
+int aero_leafwave_build(aero_leafwave *lw, const aero_leafwave *src,
+                        const aero_leafwave_rebuild *want, aero_tree *t,
+                        char *err, size_t errlen);
+/* moves src's whole state into dst (dst's own is overwritten, not freed);
+   src is left empty */
+void aero_leafwave_move(aero_leafwave *dst, aero_leafwave *src);
+
 #endif

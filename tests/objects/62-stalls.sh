@@ -1,0 +1,110 @@
+# --- no stalls: loading and rebuilding off Pd's thread (issue 49) ----------
+section "[treebranch~] / [leafwave~]: loads and rebuilds do not block Pd's thread"
+
+# Pd's thread is where audio runs: whatever it spends in a message is a
+# dropout for the whole Pd. [realtime] is read around each message (and
+# around creating an object from a huge file); the longest such block must
+# stay under STALL_MS. This bounds a stall, it is not a benchmark (figures
+# in BENCHMARKS.md): reading trees/large.tree, or making 128 tables per
+# octave, took 75-400 ms in Pd's thread before loading moved to a worker.
+STALL_MS=50
+
+# stall_run NAME BODY: a patch that measures with [realtime] the message
+# boxes fed by [t b b b] and prints the longest as "NAME-ms: X"
+# 1. `tables 128` / `tables 1` / `open small` / `open large` at 200 Hz
+#    (one every 5 ms) for 2 s on [leafwave~] and (the opens) [treebranch~]
+stall_patch="$OUT/stall-msgs.pd"
+{
+    echo "#N canvas 0 50 700 500 10;"
+    echo "#X obj 10 10 loadbang;"                                   # 0
+    echo "#X obj 10 30 t b b;"                                      # 1
+    echo "#X msg 200 30 \\; pd dsp 1;"                              # 2
+    echo "#X obj 10 60 metro 5;"                                    # 3
+    echo "#X obj 10 90 f;"                                          # 4
+    echo "#X obj 50 90 + 1;"                                        # 5
+    echo "#X obj 10 120 mod 4;"                                     # 6
+    echo "#X obj 10 150 t b f b;"                                   # 7
+    echo "#X obj 10 180 realtime;"                                  # 8
+    echo "#X obj 10 210 max;"                                       # 9
+    echo "#X obj 100 180 sel 0 1 2 3;"                              # 10
+    echo "#X msg 100 210 tables 128;"                               # 11
+    echo "#X msg 200 210 tables 1;"                                 # 12
+    echo "#X msg 300 210 open $ROOT/trees/small.tree;"              # 13
+    echo "#X msg 400 210 open $ROOT/trees/large.tree;"              # 14
+    echo "#X obj 100 250 leafwave~ $ROOT/trees/small.tree;"         # 15
+    echo "#X obj 300 250 treebranch~ $ROOT/trees/small.tree;"       # 16
+    echo "#X obj 10 300 delay 2000;"                                # 17
+    echo "#X obj 10 330 t b b b;"                                   # 18
+    echo "#X msg 10 360 stop;"                                      # 19
+    echo "#X obj 10 390 f;"                                         # 20
+    echo "#X obj 10 420 print msgs-ms;"                             # 21
+    echo "#X msg 100 450 \\; pd quit;"                              # 22
+    echo "#X obj 400 300 r aero-speed;"                             # 23
+    for c in "0 0 1 0" "1 1 2 0" "1 0 3 0" "1 0 17 0" "3 0 4 0" "4 0 5 0" \
+        "5 0 4 1" "4 0 6 0" "6 0 7 0" "7 2 8 0" "7 1 10 0" "7 0 8 1" \
+        "8 0 9 0" "9 0 9 1" "9 0 20 1" "10 0 11 0" "10 1 12 0" \
+        "10 2 13 0" "10 3 14 0" "11 0 15 0" "12 0 15 0" "13 0 15 0" \
+        "14 0 15 0" "13 0 16 0" "14 0 16 0" "17 0 18 0" "18 2 19 0" \
+        "19 0 3 0" "18 1 20 0" "20 0 21 0" "18 0 22 0"; do
+        echo "#X connect $c;"
+    done
+} >"$stall_patch"
+# shellcheck disable=SC2086
+timeout 600 "$PD" $PD_FLAGS -path "$ROOT" -open "$stall_patch" \
+    >"$OUT/stall-msgs.log" 2>&1
+ms=$(sed -n 's/.*msgs-ms: \([0-9.e+-]*\).*/\1/p' "$OUT/stall-msgs.log" | tail -1)
+if [ -z "$ms" ]; then
+    fail "no figure from the message run"; cat "$OUT/stall-msgs.log"
+elif awk -v m="$ms" -v b="$STALL_MS" 'BEGIN { exit !(m < b) }'; then
+    pass "tables 128 / tables 1 / open small / open large at 200 Hz: the longest message took $ms ms in Pd's thread (< $STALL_MS)"
+else
+    fail "tables / open at 200 Hz: a message took $ms ms in Pd's thread (>= $STALL_MS)"
+fi
+if grep -qi "error\|fail" "$OUT/stall-msgs.log"; then
+    fail "errors in the message run"; cat "$OUT/stall-msgs.log"
+else
+    pass "the message run is clean"
+fi
+
+# 2. creating [treebranch~] on a 200,000-branch chain (12 MB) and
+#    [leafwave~] on 100,000 leaves at one spot, while DSP runs: the creation
+#    returns at once and the tree plays once ready
+awk 'BEGIN { for (i = 0; i < 200000; i++)
+    printf "branch %d %d 0 0 %.4f 0.001 0 %.4f 0.05 0.05\n", i, i - 1,
+        i * 0.01, (i + 1) * 0.01 }' >"$OUT/chain.tree"
+awk 'BEGIN { print "branch 0 -1 0 0 0 0 0 1 0.1 0.1"
+    for (i = 0; i < 100000; i++) print "leaf 0 0 0 0.5 0.05 0 0.5 0.1 0.05" }' \
+    >"$OUT/spot.tree"
+stall_patch="$OUT/stall-create.pd"
+{
+    echo "#N canvas 0 50 700 500 10;"
+    echo "#X obj 10 10 loadbang;"                                   # 0
+    echo "#X obj 10 30 t b b b;"                                    # 1
+    echo "#X msg 200 30 \\; pd dsp 1;"                              # 2
+    echo "#X obj 10 60 t b b b;"                                    # 3
+    echo "#X obj 10 90 realtime;"                                   # 4
+    echo "#X msg 100 90 \\; pd-stall-create.pd obj 10 400 treebranch~ $ROOT/$OUT/chain.tree \\; pd-stall-create.pd obj 10 430 leafwave~ $ROOT/$OUT/spot.tree;" # 5
+    echo "#X obj 10 120 print create-ms;"                           # 6
+    echo "#X obj 10 150 delay 100;"                                 # 7
+    echo "#X msg 10 180 \\; pd quit;"                               # 8
+    for c in "0 0 1 0" "1 2 2 0" "1 1 3 0" "1 0 7 0" "3 2 4 0" "3 1 5 0" \
+        "3 0 4 1" "4 0 6 0" "7 0 8 0"; do
+        echo "#X connect $c;"
+    done
+} >"$stall_patch"
+# shellcheck disable=SC2086
+timeout 600 "$PD" $PD_FLAGS -path "$ROOT" -open "$stall_patch" \
+    >"$OUT/stall-create.log" 2>&1
+ms=$(sed -n 's/.*create-ms: \([0-9.e+-]*\).*/\1/p' "$OUT/stall-create.log" | tail -1)
+if [ -z "$ms" ]; then
+    fail "no figure from the creation run"; cat "$OUT/stall-create.log"
+elif awk -v m="$ms" -v b="$STALL_MS" 'BEGIN { exit !(m < b) }'; then
+    pass "creating [treebranch~] on a 200,000-branch chain and [leafwave~] on 100,000 leaves at one spot took $ms ms in Pd's thread (< $STALL_MS)"
+else
+    fail "creating the huge trees took $ms ms in Pd's thread (>= $STALL_MS)"
+fi
+if grep -qi "error\|fail" "$OUT/stall-create.log"; then
+    fail "errors in the creation run"; cat "$OUT/stall-create.log"
+else
+    pass "the creation run is clean"
+fi

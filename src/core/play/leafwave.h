@@ -17,9 +17,9 @@
  * motion of [treebranch~] exactly when both load the same tree with the same
  * seed and wind (tree_motion.h is deterministic in time).
  *
- * Pairs. Neighbour lists are built once at load with a spatial hash (cells
- * of the largest reach, 27 cells per leaf: O(n), not O(n^2)); each leaf
- * keeps its nearest AERO_LEAF_MAX_NEIGHBOURS. Every frame, the blade
+ * Pairs. Neighbour lists are built once at load from a k-d tree of the
+ * blade centres (O(n log n) for any arrangement, leaves at one spot
+ * included); each leaf keeps its nearest AERO_LEAF_MAX_NEIGHBOURS. Every frame, the blade
  * centre P_j of the neighbour is expressed in the blade frame of leaf i
  * (their eq. 15) and compared with an ellipsoid of the two blades' half
  * sizes (a thin one across the blade): inside is "A", outside "B" (their

@@ -45,7 +45,8 @@ typedef struct _leafwave_tilde {
 typedef struct lw_load {
     int has_file;             /* else a rebuild of the live tree, if any */
     aero_pd_tree_file read;
-    const aero_tree *live;    /* the live core's tree (read-only), or NULL */
+    aero_tree live;           /* the live core's tree (shared, read-only) */
+    int has_live, owns_live;  /* owns: its object was deleted meanwhile */
     aero_leafwave snap;       /* the live core's numbers at the start */
     aero_leafwave_rebuild want;
     aero_leafwave core;       /* built in the worker */
@@ -116,8 +117,8 @@ static int leafwave_tilde_build(void *arg)
         if (aero_pd_tree_read(&l->read, &t))
             return -1;
         tp = &t;
-    } else if (l->live) {
-        if (aero_tree_copy(&t, l->live)) {
+    } else if (l->has_live) {
+        if (aero_tree_copy(&t, &l->live)) {
             snprintf(l->err, sizeof(l->err), "out of memory");
             return -1;
         }
@@ -129,6 +130,17 @@ static int leafwave_tilde_build(void *arg)
         return -1;
     l->ok = 1;
     return 0;
+}
+
+/* a job's leftovers (load_job.h: also from the worker, when abandoned) */
+static void leafwave_tilde_drop_load(void *arg)
+{
+    lw_load *l = arg;
+    if (l->ok)
+        aero_leafwave_free(&l->core);
+    if (l->owns_live)
+        aero_tree_free(&l->live);
+    free(l);
 }
 
 static void leafwave_tilde_drop_old(t_leafwave_tilde *x)
@@ -191,7 +203,7 @@ static void leafwave_tilde_finish(t_leafwave_tilde *x)
         if (l->has_file && l->nleaves == 0)
             pd_error(x, OBJ ": tree %s has no leaves: silent", l->read.path);
     }
-    free(l);
+    leafwave_tilde_drop_load(l);
     if (x->x_next) {
         t_symbol *next = x->x_next;
         x->x_next = NULL;
@@ -253,7 +265,9 @@ static void leafwave_tilde_start(t_leafwave_tilde *x, t_symbol *name,
         l->has_file = 1;
         small = stat(l->read.path, &st) == 0 && st.st_size < SMALL_FILE;
     } else if (x->x_core.has_tree) {
-        l->live = &x->x_core.tree; /* not replaced while the job runs */
+        /* the arrays stay the live core's: not replaced while this runs */
+        l->live = x->x_core.tree;
+        l->has_live = 1;
     }
     l->snap = x->x_core; /* its numbers only are read */
     l->want = x->x_want;
@@ -517,11 +531,14 @@ static void leafwave_tilde_free(t_leafwave_tilde *x)
 {
     aero_pd_base_free(&x->x_base);
     clock_free(x->x_poll);
-    if (x->x_job) { /* waits for the worker: it owns x_load until then */
-        aero_load_job_finish(x->x_job);
-        if (x->x_load->ok)
-            aero_leafwave_free(&x->x_load->core);
-        free(x->x_load);
+    if (x->x_job) {
+        /* not waited for: the worker drops what it made when done; the
+           live tree it may still be copying becomes the job's */
+        if (x->x_load->has_live) {
+            x->x_load->owns_live = 1;
+            memset(&x->x_core.tree, 0, sizeof(x->x_core.tree));
+        }
+        aero_load_job_abandon(x->x_job, leafwave_tilde_drop_load);
     }
     leafwave_tilde_drop_old(x);
     if (x->x_ok)

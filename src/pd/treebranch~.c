@@ -29,6 +29,8 @@ typedef struct _treebranch_tilde {
     struct tb_load *x_load;
     aero_load_job *x_job;
     t_symbol *x_next;         /* the latest 'open' asked during a load */
+    int x_creating;           /* in new(): a seed acts at once */
+    uint32_t x_want_seed;     /* the seed asked (a job builds it) */
     t_clock *x_poll;
     double x_logical, x_real; /* when the load started: logical, real (s) */
     aero_treebranch *x_old;   /* the core fading out, or NULL */
@@ -36,7 +38,10 @@ typedef struct _treebranch_tilde {
 } t_treebranch_tilde;
 
 typedef struct tb_load {
+    int has_file;             /* else the live tree again (a new seed) */
     aero_pd_tree_file read;
+    aero_tree live;           /* the live core's tree (shared, read-only) */
+    int has_live, owns_live;  /* owns: its object was deleted meanwhile */
     aero_treebranch snap;     /* the live core's numbers at the start */
     aero_treebranch core;     /* built in the worker */
     int ok;
@@ -96,7 +101,8 @@ static int treebranch_tilde_build(void *arg)
 {
     tb_load *l = arg;
     aero_tree t;
-    if (aero_pd_tree_read(&l->read, &t))
+    if (l->has_file ? aero_pd_tree_read(&l->read, &t)
+                    : aero_tree_copy(&t, &l->live))
         return -1;
     if (aero_treebranch_init(&l->core, l->snap.sample_rate, l->snap.seed) ||
         aero_treebranch_copy_settings(&l->core, &l->snap) ||
@@ -106,6 +112,17 @@ static int treebranch_tilde_build(void *arg)
     }
     l->ok = 1;
     return 0;
+}
+
+/* a job's leftovers (load_job.h: also from the worker, when abandoned) */
+static void treebranch_tilde_drop_load(void *arg)
+{
+    tb_load *l = arg;
+    if (l->ok)
+        aero_treebranch_free(&l->core);
+    if (l->owns_live)
+        aero_tree_free(&l->live);
+    free(l);
 }
 
 static void treebranch_tilde_drop_old(t_treebranch_tilde *x)
@@ -128,11 +145,15 @@ static void treebranch_tilde_finish(t_treebranch_tilde *x)
     aero_load_job_finish(x->x_job);
     x->x_job = NULL;
     x->x_load = NULL;
-    if (aero_pd_tree_report(&x->x_base, &l->read)) {
+    if (l->has_file && aero_pd_tree_report(&x->x_base, &l->read)) {
         aero_treebranch_set_tree(&x->x_core, NULL);
-    } else if (!l->ok) {
+    } else if (!l->ok && l->has_file) {
         pd_error(x, OBJ ": %s: out of memory: silent", l->read.path);
         aero_treebranch_set_tree(&x->x_core, NULL);
+    } else if (!l->ok) {
+        pd_error(x, OBJ ": out of memory restarting the tree: silent");
+        aero_treebranch_set_tree(&x->x_core, NULL);
+        x->x_want_seed = x->x_core.seed;
     } else {
         /* what changed while it loaded */
         aero_treebranch_set_sample_rate(&l->core, x->x_core.sample_rate);
@@ -147,13 +168,16 @@ static void treebranch_tilde_finish(t_treebranch_tilde *x)
         x->x_fade = 0;
         x->x_fade_len = (int)(FADE_MS * 0.001 * x->x_core.sample_rate);
     }
-    if (l->ok)
-        aero_treebranch_free(&l->core);
-    free(l);
+    treebranch_tilde_drop_load(l);
     if (x->x_next) {
         t_symbol *next = x->x_next;
         x->x_next = NULL;
         treebranch_tilde_start(x, next, 0);
+    } else if (x->x_want_seed != x->x_core.seed) {
+        if (x->x_core.has_tree)
+            treebranch_tilde_start(x, NULL, 0);
+        else
+            aero_treebranch_set_seed(&x->x_core, x->x_want_seed);
     }
 }
 
@@ -187,30 +211,40 @@ static void treebranch_tilde_start(t_treebranch_tilde *x, t_symbol *name,
 {
     struct stat st;
     if (x->x_job) {
-        x->x_next = name; /* the latest wins */
+        if (name)
+            x->x_next = name; /* the latest wins; a new seed follows */
         return;
     }
     tb_load *l = calloc(1, sizeof(*l));
     if (!l) {
-        pd_error(x, OBJ ": %s: out of memory: silent", name->s_name);
+        pd_error(x, OBJ ": out of memory: silent");
         aero_treebranch_set_tree(&x->x_core, NULL);
         return;
     }
-    if (aero_pd_tree_find(&x->x_base, treebranch_tilde_class, name,
-                          &l->read)) {
-        free(l);
-        aero_treebranch_set_tree(&x->x_core, NULL);
-        return;
+    int small = 0;
+    if (name) {
+        if (aero_pd_tree_find(&x->x_base, treebranch_tilde_class, name,
+                              &l->read)) {
+            free(l);
+            aero_treebranch_set_tree(&x->x_core, NULL);
+            return;
+        }
+        l->has_file = 1;
+        small = stat(l->read.path, &st) == 0 && st.st_size < SMALL_FILE;
+    } else {
+        /* the arrays stay the live core's: not replaced while this runs */
+        l->live = x->x_core.tree;
+        l->has_live = 1;
     }
-    int small = stat(l->read.path, &st) == 0 && st.st_size < SMALL_FILE;
     l->snap = x->x_core; /* its numbers only are read */
+    l->snap.seed = x->x_want_seed;
     x->x_load = l;
     x->x_job = aero_load_job_start(treebranch_tilde_build, l,
                                    !(now && small));
     if (!x->x_job) {
         x->x_load = NULL;
         free(l);
-        pd_error(x, OBJ ": %s: out of memory: silent", name->s_name);
+        pd_error(x, OBJ ": out of memory: silent");
         return;
     }
     if (now && small) {
@@ -274,14 +308,22 @@ AERO_PD_SETTER(treebranch_tilde, t_treebranch_tilde, beta, x_core,
 AERO_PD_SETTER(treebranch_tilde, t_treebranch_tilde, alpha, x_core,
                aero_treebranch_set_alpha)
 
+/* a new seed restarts the motion of every branch: in a job (a copy of
+   the tree and a new core) when there is a tree, but at once in new() (the
+   flag) or without a tree, where it costs nothing */
 static void treebranch_tilde_seed(t_treebranch_tilde *x, t_floatarg f)
 {
     if (!(f == f) || f < 0 || f > 4294967295.0) {
         aero_pd_refused(&x->x_base, "seed", f);
         return;
     }
-    if (aero_treebranch_set_seed(&x->x_core, (uint32_t)(int64_t)f))
-        pd_error(x, OBJ ": out of memory restarting the tree: silent");
+    x->x_want_seed = (uint32_t)(int64_t)f;
+    if (x->x_creating || (!x->x_job && !x->x_core.has_tree)) {
+        if (aero_treebranch_set_seed(&x->x_core, x->x_want_seed))
+            pd_error(x, OBJ ": out of memory restarting the tree: silent");
+    } else {
+        treebranch_tilde_start(x, NULL, 0);
+    }
 }
 
 static const aero_pd_method treebranch_tilde_methods[] = {
@@ -326,14 +368,17 @@ static void *treebranch_tilde_new(t_symbol *s, int argc, t_atom *argv)
     aero_pd_base_init(&x->x_base, x, &treebranch_tilde_spec, argc, argv);
     aero_pd_wind_init(&x->x_wind);
     x->x_poll = clock_new(x, (t_method)treebranch_tilde_poll);
+    x->x_creating = 1;
     if (aero_treebranch_init(&x->x_core, sys_getsr(), aero_pd_default_seed()))
         pd_error(x, OBJ ": out of memory: silent");
     aero_treebranch_set_stereo(&x->x_core, x->x_base.stereo);
+    x->x_want_seed = x->x_core.seed;
     /* the tree file: the first argument, when it is not a flag */
     t_symbol *file = aero_pd_first_symbol(&argc, &argv);
     if (file)
         treebranch_tilde_start(x, file, 1);
     aero_pd_parse_flags(&x->x_base, argc, argv);
+    x->x_creating = 0;
     aero_pd_base_outlets(&x->x_base);
     return x;
 }
@@ -342,11 +387,14 @@ static void treebranch_tilde_free(t_treebranch_tilde *x)
 {
     aero_pd_base_free(&x->x_base);
     clock_free(x->x_poll);
-    if (x->x_job) { /* waits for the worker: it owns x_load until then */
-        aero_load_job_finish(x->x_job);
-        if (x->x_load->ok)
-            aero_treebranch_free(&x->x_load->core);
-        free(x->x_load);
+    if (x->x_job) {
+        /* not waited for: the worker drops what it made when done; the
+           live tree it may still be copying becomes the job's */
+        if (x->x_load->has_live) {
+            x->x_load->owns_live = 1;
+            memset(&x->x_core.tree, 0, sizeof(x->x_core.tree));
+        }
+        aero_load_job_abandon(x->x_job, treebranch_tilde_drop_load);
     }
     treebranch_tilde_drop_old(x);
     aero_treebranch_free(&x->x_core);

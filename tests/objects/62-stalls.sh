@@ -108,3 +108,49 @@ if grep -qi "error\|fail" "$OUT/stall-create.log"; then
 else
     pass "the creation run is clean"
 fi
+
+# 3. deleted while loading: in a subpatch, [leafwave~] on the leaves at one
+#    spot, [treebranch~] on the chain, and both on small trees asked a new
+#    seed and new tables at once (jobs that share the live tree), all
+#    deleted 5 ms later, ten times over: the objects go at once (the worker
+#    drops what it made when it is done), nothing crashes, nothing in the
+#    log but the run's own lines
+stall_patch="$OUT/stall-delete.pd"
+{
+    echo "#N canvas 0 50 700 500 10;"
+    echo "#X obj 10 10 loadbang;"                                   # 0
+    echo "#X msg 200 10 \\; pd dsp 1;"                              # 1
+    echo "#X obj 10 40 metro 5;"                                    # 2
+    echo "#X obj 10 70 f;"                                          # 3
+    echo "#X obj 50 70 + 1;"                                        # 4
+    echo "#X obj 10 100 moses 20;"                                  # 5
+    echo "#X obj 10 130 mod 2;"                                     # 6
+    echo "#X obj 10 160 sel 0 1;"                                   # 7
+    echo "#X msg 10 190 \\; pd-sub obj 10 10 leafwave~ $ROOT/$OUT/spot.tree \\; pd-sub obj 10 40 treebranch~ $ROOT/$OUT/chain.tree \\; pd-sub obj 10 70 leafwave~ $ROOT/trees/small.tree \\; pd-sub obj 10 100 treebranch~ $ROOT/trees/small.tree \\; pd-sub obj 10 130 r stall-seed \\; pd-sub obj 100 130 r stall-tables \\; pd-sub connect 4 0 0 0 \\; pd-sub connect 4 0 1 0 \\; pd-sub connect 4 0 2 0 \\; pd-sub connect 4 0 3 0 \\; pd-sub connect 5 0 0 0 \\; pd-sub connect 5 0 2 0 \\; stall-seed seed 7 \\; stall-tables tables 24;" # 8
+    echo "#X msg 100 220 \\; pd-sub clear;"                         # 9
+    echo "#X obj 100 100 t b b;"                                    # 10
+    echo "#X msg 100 130 stop;"                                     # 11
+    echo "#X obj 200 130 print stall-delete;"                       # 12
+    echo "#X msg 200 160 done \\; pd quit;"                         # 13
+    echo "#N canvas 0 0 300 200 sub 0;"
+    echo "#X restore 300 300 pd sub;"                               # 14
+    for c in "0 0 1 0" "0 0 2 0" "2 0 3 0" "3 0 4 0" "4 0 3 1" "3 0 5 0" \
+        "5 0 6 0" "6 0 7 0" "7 0 8 0" "7 1 9 0" "5 1 10 0" "10 1 11 0" \
+        "11 0 2 0" "10 0 13 0" "13 0 12 0"; do
+        echo "#X connect $c;"
+    done
+} >"$stall_patch"
+# shellcheck disable=SC2086
+timeout 600 "$PD" $PD_FLAGS -path "$ROOT" -open "$stall_patch" \
+    >"$OUT/stall-delete.log" 2>&1
+rc=$?
+if [ $rc -eq 0 ] && grep -q "stall-delete: done" "$OUT/stall-delete.log"; then
+    pass "[treebranch~] and [leafwave~] deleted while loading, ten times: Pd carries on and quits cleanly"
+else
+    fail "deleting while loading: Pd exit $rc"; tail -20 "$OUT/stall-delete.log"
+fi
+if grep -v "stall-delete: done" "$OUT/stall-delete.log" | grep -q .; then
+    fail "unexpected lines in the deletion run"; head -20 "$OUT/stall-delete.log"
+else
+    pass "the deletion run is clean"
+fi

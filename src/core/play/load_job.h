@@ -26,4 +26,10 @@ int aero_load_job_done(aero_load_job *j);
    fn's result; the caller owns arg again. NULL: -1. */
 int aero_load_job_finish(aero_load_job *j);
 
+/* Gives the job up without waiting (an object deleted while it loads):
+   when fn returns, the worker calls drop(arg) and frees the job itself;
+   at once here when fn has already returned. The caller must not touch
+   arg or the job again. NULL is fine. */
+void aero_load_job_abandon(aero_load_job *j, void (*drop)(void *arg));
+
 #endif

@@ -662,8 +662,6 @@ int aero_treebranch_copy_settings(aero_treebranch *dst,
     aero_treebranch_set_stiffness(dst, src->motion.stiffness);
     aero_treebranch_set_beta(dst, src->motion.beta);
     aero_treebranch_set_wind(dst, src->wind);
-    if (dst->seed != src->seed)
-        r = aero_treebranch_set_seed(dst, src->seed);
     return r;
 }
 

@@ -40,6 +40,7 @@ typedef struct _leafwave_tilde {
     double x_logical, x_real; /* when the job started: logical, real (s) */
     aero_leafwave *x_old;     /* the core fading out, or NULL */
     int x_fade, x_fade_len;   /* samples of the fade done, its length */
+    int x_fade_seen;          /* x_fade at the last poll */
 } t_leafwave_tilde;
 
 typedef struct lw_load {
@@ -198,7 +199,7 @@ static void leafwave_tilde_finish(t_leafwave_tilde *x)
         else
             aero_leafwave_free(&x->x_core);
         aero_leafwave_move(&x->x_core, &l->core);
-        x->x_fade = 0;
+        x->x_fade = x->x_fade_seen = 0;
         x->x_fade_len = (int)(FADE_MS * 0.001 * x->x_core.sample_rate);
         if (l->has_file && l->nleaves == 0)
             pd_error(x, OBJ ": tree %s has no leaves: silent", l->read.path);
@@ -224,8 +225,11 @@ static int leafwave_tilde_batch(const t_leafwave_tilde *x)
 
 static void leafwave_tilde_poll(t_leafwave_tilde *x)
 {
-    if (x->x_old && x->x_fade >= x->x_fade_len)
+    /* faded out, or not fading at all (DSP is off) */
+    if (x->x_old && (x->x_fade >= x->x_fade_len ||
+                     x->x_fade == x->x_fade_seen))
         leafwave_tilde_drop_old(x);
+    x->x_fade_seen = x->x_fade;
     if (x->x_job && (aero_load_job_done(x->x_job) ||
                      leafwave_tilde_batch(x)))
         leafwave_tilde_finish(x);

@@ -35,6 +35,7 @@ typedef struct _treebranch_tilde {
     double x_logical, x_real; /* when the load started: logical, real (s) */
     aero_treebranch *x_old;   /* the core fading out, or NULL */
     int x_fade, x_fade_len;   /* samples of the fade done, its length */
+    int x_fade_seen;          /* x_fade at the last poll */
 } t_treebranch_tilde;
 
 typedef struct tb_load {
@@ -165,7 +166,7 @@ static void treebranch_tilde_finish(t_treebranch_tilde *x)
         else
             aero_treebranch_free(&x->x_core);
         aero_treebranch_move(&x->x_core, &l->core);
-        x->x_fade = 0;
+        x->x_fade = x->x_fade_seen = 0;
         x->x_fade_len = (int)(FADE_MS * 0.001 * x->x_core.sample_rate);
     }
     treebranch_tilde_drop_load(l);
@@ -192,8 +193,11 @@ static int treebranch_tilde_batch(const t_treebranch_tilde *x)
 
 static void treebranch_tilde_poll(t_treebranch_tilde *x)
 {
-    if (x->x_old && x->x_fade >= x->x_fade_len)
+    /* faded out, or not fading at all (DSP is off) */
+    if (x->x_old && (x->x_fade >= x->x_fade_len ||
+                     x->x_fade == x->x_fade_seen))
         treebranch_tilde_drop_old(x);
+    x->x_fade_seen = x->x_fade;
     if (x->x_job && (aero_load_job_done(x->x_job) ||
                      treebranch_tilde_batch(x)))
         treebranch_tilde_finish(x);

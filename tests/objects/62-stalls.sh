@@ -163,7 +163,7 @@ fi
 #    4x (the measure of 60-leafwave.sh's collisions). A guard, not a fix:
 #    the objects that rebuilt in place did not click either (1.6 and 1.9);
 #    a new [treebranch~] core starts silent for the sound's 15 ms flight,
-#    so swapping without the fade would cut to silence.
+#    so swapping it in without the fade cuts to silence: ratio 8.3.
 pd_render stall-swap-tb "treebranch~ trees/medium.tree -listener 0 -5 1.7" 1 2000 \
     "; aero-speed 12" 0 "1000 ; aero-obj open trees/large.tree"
 judge $ANALYZE clicks "$OUT/stall-swap-tb.wav" --max 4

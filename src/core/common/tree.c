@@ -50,18 +50,12 @@ typedef struct {
     int count;
 } id_index;
 
-/* the 32-bit finaliser of MurmurHash3: every bit of the id moves
-   every bit of the slot, so regular ids (multiples of a power of two, a
-   chain counting by 1000) spread like any others */
+/* Murmur3's finaliser (aero_scramble32): every bit of the id moves every
+   bit of the slot, so regular ids (multiples of a power of two, a chain
+   counting by 1000) spread like any others */
 static unsigned id_hash(long id, unsigned mask)
 {
-    uint32_t h = (uint32_t)id;
-    h ^= h >> 16;
-    h *= 0x85ebca6bu;
-    h ^= h >> 13;
-    h *= 0xc2b2ae35u;
-    h ^= h >> 16;
-    return h & mask;
+    return aero_scramble32((uint32_t)id) & mask;
 }
 
 /* index of the branch with this id, or -1 */

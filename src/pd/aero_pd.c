@@ -516,40 +516,72 @@ void aero_pd_load_texture(aero_pd_base *b, t_class *cls, t_symbol *name,
 
 /* --- trees ------------------------------------------------------------------ */
 
-typedef struct {
-    const aero_pd_base *b;
-    const char *path;
-    int count;
-} tree_lines;
-
+/* the bad lines of a read, kept for the report (the read may run in a
+   worker, which must not call Pd) */
 static void tree_bad_line(void *ctx, int line, const char *message)
 {
-    tree_lines *c = ctx;
-    if (++c->count <= AERO_PD_TREE_LINES_SHOWN)
-        pd_error(c->b->owner, "%s: %s:%d: %s (line skipped)", c->b->obj,
-                 c->path, line, message);
+    aero_pd_tree_file *r = ctx;
+    if (r->count < AERO_PD_TREE_LINES_SHOWN) {
+        r->line[r->count] = line;
+        snprintf(r->message[r->count], sizeof(r->message[0]), "%s", message);
+    }
+    r->count++;
+}
+
+int aero_pd_tree_find(aero_pd_base *b, t_class *cls, t_symbol *name,
+                      aero_pd_tree_file *r)
+{
+    memset(r, 0, sizeof(*r));
+    if (aero_pd_find_tree(b->canvas, cls, name->s_name, r->path,
+                          sizeof(r->path))) {
+        pd_error(b->owner, "%s: can't find tree '%s' (looked %s): silent",
+                 b->obj, name->s_name, r->path);
+        return -1;
+    }
+    return 0;
+}
+
+int aero_pd_tree_read(aero_pd_tree_file *r, aero_tree *t)
+{
+    r->bad = aero_tree_load(r->path, t, tree_bad_line, r, r->err,
+                            sizeof(r->err));
+    return r->bad;
+}
+
+int aero_pd_tree_report(aero_pd_base *b, const aero_pd_tree_file *r)
+{
+    int shown = r->count < AERO_PD_TREE_LINES_SHOWN
+        ? r->count : AERO_PD_TREE_LINES_SHOWN;
+    for (int i = 0; i < shown; i++)
+        pd_error(b->owner, "%s: %s:%d: %s (line skipped)", b->obj, r->path,
+                 r->line[i], r->message[i]);
+    if (r->count > AERO_PD_TREE_LINES_SHOWN)
+        pd_error(b->owner, "%s: %s: %d more bad lines not shown", b->obj,
+                 r->path, r->count - AERO_PD_TREE_LINES_SHOWN);
+    if (r->bad) {
+        pd_error(b->owner, "%s: %s: silent", b->obj, r->err);
+        return -1;
+    }
+    return 0;
 }
 
 int aero_pd_load_tree(aero_pd_base *b, t_class *cls, t_symbol *name,
                       aero_tree *t)
 {
-    char path[MAXPDSTRING], err[MAXPDSTRING + 100];
-    if (aero_pd_find_tree(b->canvas, cls, name->s_name, path, sizeof(path))) {
-        pd_error(b->owner, "%s: can't find tree '%s' (looked %s): silent",
-                 b->obj, name->s_name, path);
+    aero_pd_tree_file *r = malloc(sizeof(*r));
+    int bad;
+    if (!r) {
+        pd_error(b->owner, "%s: out of memory reading a tree: silent",
+                 b->obj);
         return -1;
     }
-    tree_lines lines = {b, path, 0};
-    int bad = aero_tree_load(path, t, tree_bad_line, &lines, err,
-                             sizeof(err));
-    if (lines.count > AERO_PD_TREE_LINES_SHOWN)
-        pd_error(b->owner, "%s: %s: %d more bad lines not shown", b->obj,
-                 path, lines.count - AERO_PD_TREE_LINES_SHOWN);
-    if (bad) {
-        pd_error(b->owner, "%s: %s: silent", b->obj, err);
-        return -1;
+    bad = aero_pd_tree_find(b, cls, name, r);
+    if (!bad) {
+        aero_pd_tree_read(r, t);
+        bad = aero_pd_tree_report(b, r);
     }
-    return 0;
+    free(r);
+    return bad;
 }
 
 /* --- numbers --------------------------------------------------------------- */

@@ -280,6 +280,22 @@ void aero_pd_load_texture(aero_pd_base *b, t_class *cls, t_symbol *name,
 int aero_pd_load_tree(aero_pd_base *b, t_class *cls, t_symbol *name,
                       aero_tree *t);
 
+/* The same in three steps, so that the reading can run in a worker
+ * thread: find (Pd's thread: the search path; -1 reported), read (any
+ * thread: no Pd call; the bad lines are kept), report (Pd's thread: the
+ * same words as aero_pd_load_tree; 0, or -1 when the read failed). */
+typedef struct {
+    char path[MAXPDSTRING];
+    char err[MAXPDSTRING + 100];
+    int bad, count;
+    int line[AERO_PD_TREE_LINES_SHOWN];
+    char message[AERO_PD_TREE_LINES_SHOWN][256];
+} aero_pd_tree_file;
+int aero_pd_tree_find(aero_pd_base *b, t_class *cls, t_symbol *name,
+                      aero_pd_tree_file *r);
+int aero_pd_tree_read(aero_pd_tree_file *r, aero_tree *t);
+int aero_pd_tree_report(aero_pd_base *b, const aero_pd_tree_file *r);
+
 /* --- numbers from a patch ------------------------------------------------- */
 
 /* A default seed that differs between objects but is the same every time

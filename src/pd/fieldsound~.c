@@ -9,6 +9,7 @@
  *   outlet 2: progress <0..1>, ready <active vertices> <seconds>, done
  */
 #include "aero_pd.h"
+#include "s_stuff.h" /* audio_isopen */
 
 #include "field_job.h"
 
@@ -153,10 +154,16 @@ static void fieldsound_tilde_prepare(t_fieldsound_tilde *x)
         use_demo = &demo;
     }
     x->x_reported_progress = 0;
+    /* -sync blocks Pd's thread: only without an audio device (batch
+       renders, tests), where no one hears the wait; with audio running
+       it would be a dropout of the whole Pd, so the worker prepares */
+    int block = x->x_sync && !audio_isopen();
     post(OBJ ": preprocessing %s (%d frames of %dx%dx%d)%s",
          fieldsound_tilde_name(x, name, sizeof name), info->frames,
-         info->nx, info->ny, info->nz, x->x_sync ? " in Pd's thread" : "");
-    x->x_job = aero_field_job_start(info, use_demo, &x->x_par, !x->x_sync);
+         info->nx, info->ny, info->nz,
+         block ? " in Pd's thread"
+               : x->x_sync ? " in a worker (-sync: audio is running)" : "");
+    x->x_job = aero_field_job_start(info, use_demo, &x->x_par, !block);
     if (!x->x_job) {
         pd_error(x, OBJ ": out of memory");
         return;

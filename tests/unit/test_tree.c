@@ -303,4 +303,53 @@ UNIT_TEST(round_trip_and_generator)
     }
 }
 
-UNIT_MAIN(UNIT_CASE(parse_good), UNIT_CASE(parse_bad_lines), UNIT_CASE(parse_empty), UNIT_CASE(long_line), UNIT_CASE(round_trip_and_generator))
+/* ids that are not the indices (each a multiple of 2^20, the last of a
+   20,000-branch chain first in no order): every parent, leaf and repeat
+   found by id (the parser looks ids up in a table, not by a search per
+   record: a 200,000-branch chain took a minute) */
+UNIT_TEST(parse_any_ids)
+{
+    const int n = 20000;
+    size_t cap = (size_t)n * 80 + 200, len = 0;
+    char *text = malloc(cap);
+    aero_tree t;
+    reports r = {0};
+    char err[256] = "";
+    int i, wrong = 0;
+    UNIT_CHECK(text != NULL, "memory");
+    if (!text)
+        return;
+    for (i = 0; i < n; i++) {
+        long id = (long)(n - i) * 1048576L % 2147483647L;
+        long parent = i ? (long)(n - i + 1) * 1048576L % 2147483647L : -1;
+        len += (size_t)snprintf(text + len, cap - len,
+                                "branch %ld %ld 0 0 %d 0 0 %d 0.1 0.1\n", id,
+                                parent, i, i + 1);
+    }
+    len += (size_t)snprintf(text + len, cap - len,
+                            "leaf %ld 0 0 0.5 0 0.1 0.5 0.1 0.05\n"
+                            "branch %ld -1 0 0 0 0 0 1 0.1 0.1\n",
+                            (long)n * 1048576L % 2147483647L,
+                            (long)5 * 1048576L % 2147483647L);
+    int rc = aero_tree_parse(text, &t, collect, &r, err, sizeof err);
+    UNIT_CHECK(rc == 0 && t.nbranches == n && t.nleaves == 1,
+               "a %d-branch chain with ids k 2^20 parses (rc %d, %d branches, "
+               "%d leaves)", n, rc, t.nbranches, t.nleaves);
+    for (i = 1; rc == 0 && i < n; i++)
+        if (t.branches[i].parent != i - 1)
+            wrong++;
+    UNIT_CHECK(rc == 0 && wrong == 0 && t.branches[0].parent == -1,
+               "every parent is the branch before (%d wrong)", wrong);
+    UNIT_CHECK(rc == 0 && t.leaves[0].branch == 0,
+               "the leaf is on the branch its id names (%d)",
+               rc == 0 ? t.leaves[0].branch : -1);
+    UNIT_CHECK(r.count == 1 && reported(&r, n + 2) &&
+                   strstr(r.last, "used twice") != NULL,
+               "a repeated id is reported on its line (%d reports, last: %s)",
+               r.count, r.last);
+    if (rc == 0)
+        aero_tree_free(&t);
+    free(text);
+}
+
+UNIT_MAIN(UNIT_CASE(parse_any_ids), UNIT_CASE(parse_good), UNIT_CASE(parse_bad_lines), UNIT_CASE(parse_empty), UNIT_CASE(long_line), UNIT_CASE(round_trip_and_generator))

@@ -52,6 +52,8 @@ int aero_tree_parse(const char *text, aero_tree *t, aero_tree_report report,
 int aero_tree_save(const char *path, const aero_tree *t, char *err,
                    size_t errlen);
 void aero_tree_free(aero_tree *t);
+/* dst a copy of src (its own arrays); 0 or -1 (out of memory, dst empty) */
+int aero_tree_copy(aero_tree *dst, const aero_tree *src);
 
 /* a branch's frame: two unit vectors perpendicular to its unit axis e and
    to each other (the generator's and the motion's); x is horizontal

@@ -195,6 +195,13 @@ static void base_report(aero_pd_base *b)
                  AERO_MACH_LIMIT * AERO_C0);
         b->warned_clamp = 1;
     }
+    if (b->ceiling_hit && !b->warned_ceiling) {
+        pd_error(b->owner, "%s: output beyond %g Pa (1 atm, 194 dB SPL: no "
+                 "sound in air reaches it) clamped, NaN set to 0: a corrupt "
+                 "file or a runaway state (this is reported once)", b->obj,
+                 (double)AERO_PD_CEILING_PA);
+        b->warned_ceiling = 1;
+    }
 }
 
 void aero_pd_base_init(aero_pd_base *b, void *owner, const aero_pd_spec *spec,
@@ -235,6 +242,33 @@ void aero_pd_base_free(aero_pd_base *b)
 
 /* --- perform ---------------------------------------------------------------- */
 
+/* the last guard (aero_pd.h): 1 when it changed a sample */
+static int aero_pd_guard(float *out, int n)
+{
+    const float c = AERO_PD_CEILING_PA;
+    int hit = 0;
+    for (int i = 0; i < n; i++) {
+        float y = out[i];
+        if (!(y >= -c && y <= c)) { /* NaN fails both */
+            out[i] = y > c ? c : y < -c ? -c : 0.0f;
+            hit = 1;
+        }
+    }
+    return hit;
+}
+
+static void aero_pd_guard_outputs(aero_pd_base *b, float *const *out, int n)
+{
+    int hit = 0;
+    for (int c = 0; c < 2; c++)
+        if (out[c])
+            hit |= aero_pd_guard(out[c], n);
+    if (hit && !b->ceiling_hit) {
+        b->ceiling_hit = 1;
+        clock_delay(b->clock, 0);
+    }
+}
+
 static t_int *aero_pd_perform(t_int *w)
 {
     aero_pd_base *b = (aero_pd_base *)(w[1]);
@@ -245,6 +279,7 @@ static t_int *aero_pd_perform(t_int *w)
     float *out[2] = {pd_out[0], pd_out[1]};
     if (b->process(b->owner, in, out, n))
         aero_pd_clamped(b);
+    aero_pd_guard_outputs(b, out, n);
 #else
     float *f_in = b->scratch, *out[2] = {b->scratch + n, NULL};
     if (pd_out[1])
@@ -253,6 +288,7 @@ static t_int *aero_pd_perform(t_int *w)
         f_in[i] = (float)in[i];
     if (b->process(b->owner, in ? f_in : NULL, out, n))
         aero_pd_clamped(b);
+    aero_pd_guard_outputs(b, out, n);
     for (int c = 0; c < 2; c++)
         for (int i = 0; pd_out[c] && i < n; i++)
             pd_out[c][i] = out[c][i];

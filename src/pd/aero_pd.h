@@ -155,6 +155,8 @@ typedef struct aero_pd_base {
     int stereo;       /* created with -stereo: two outlets, `ears` */
     int clamped;      /* set by perform, reported once by the clock */
     int warned_clamp;
+    int ceiling_hit;  /* set by perform: the output guard acted */
+    int warned_ceiling;
     t_clock *clock;
     t_outlet *out[2];
     aero_pd_process process;
@@ -179,6 +181,16 @@ void aero_pd_base_free(aero_pd_base *b);
  * chunk of its input before it writes that chunk of its output). */
 void aero_pd_dsp(aero_pd_base *b, t_signal **sp, int inlet,
                  aero_pd_process process);
+
+/* The last guard at every object's output (aero_pd_guard, called by the
+ * one perform routine on every block): no sample leaves an aero object
+ * beyond AERO_PD_CEILING_PA, and NaN or an infinity leaves as 0. An
+ * acoustic pressure amplitude beyond the ambient pressure, 101325 Pa
+ * (194 dB SPL re 20 uPa), would need a negative absolute pressure in the
+ * rarefaction: no sound in air reaches it, at any distance (Beranek and
+ * Mellow 2012). A value there is a fault (a corrupt file, a runaway
+ * state), so it is clamped and reported once per object. */
+#define AERO_PD_CEILING_PA 101325.0f
 
 /* Called by perform when the core clamped a speed above Mach 0.3: the
  * warning is posted once, from the clock (never from perform). */

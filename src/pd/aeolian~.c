@@ -92,6 +92,7 @@ static void aeolian_tilde_model(t_aeolian_tilde *x)
 {
     char err[8];
     aero_aeolian_set_texture(&x->x_core, NULL, err, sizeof(err));
+    x->x_base.has_file = 0;
 }
 
 /* pose|place ax ay az bx by bz [ux uy uz]: the stick's ends, and the

@@ -6,6 +6,7 @@
 #include "aero_air.h"
 
 #include <limits.h>
+#include <sys/stat.h>
 
 /* --- the table ----------------------------------------------------------- */
 
@@ -497,6 +498,8 @@ int aero_pd_find_file(const t_canvas *canvas, const t_class *cls,
     if (n > e && !strcmp(name + n - e, ext))
         ext = "";
     int fd = canvas_open(canvas, name, ext, dir, &base, MAXPDSTRING, 1);
+    if (fd < 0 && *ext) /* "x.wav" given for a tree: found, then refused */
+        fd = canvas_open(canvas, name, "", dir, &base, MAXPDSTRING, 1);
     if (fd >= 0) {
         sys_close(fd);
         return snprintf(path, len, "%s/%s", dir, base) < (int)len ? 0 : -1;
@@ -526,28 +529,66 @@ int aero_pd_find_file(const t_canvas *canvas, const t_class *cls,
 
 /* --- textures -------------------------------------------------------------- */
 
+/* is `name` (as given: absolute, or next to the patch) a folder? */
+static int is_folder(const t_canvas *canvas, const char *name)
+{
+    char path[MAXPDSTRING];
+    struct stat st;
+    t_symbol *dir = canvas ? canvas_getdir((t_canvas *)canvas) : NULL;
+    if (name[0] == '/' || !dir || !*dir->s_name)
+        snprintf(path, sizeof(path), "%s", name);
+    else
+        snprintf(path, sizeof(path), "%s/%s", dir->s_name, name);
+    return stat(path, &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+/* what a refused file leaves: the file that plays, or the fallback */
+static const char *after_refusal(const aero_pd_base *b, const char *what,
+                                 const char *fallback, char *buf, size_t len)
+{
+    if (!b->has_file)
+        return fallback;
+    snprintf(buf, len, "the previous %s stays", what);
+    return buf;
+}
+
 void aero_pd_load_texture(aero_pd_base *b, t_class *cls, t_symbol *name,
                           aero_pd_set_texture set, void *core,
                           const char *fallback)
 {
-    char path[MAXPDSTRING], err[256];
-    if (aero_pd_find_texture(b->canvas, cls, name->s_name, path,
-                             sizeof(path))) {
+    char path[MAXPDSTRING], err[MAXPDSTRING + 256], kept[64];
+    const char *after = after_refusal(b, "texture", fallback, kept,
+                                      sizeof(kept));
+    int found = !aero_pd_find_texture(b->canvas, cls, name->s_name, path,
+                                      sizeof(path));
+    if ((found && is_folder(NULL, path)) ||
+        (!found && is_folder(b->canvas, name->s_name))) {
+        pd_error(b->owner, "%s: texture '%s' is a folder, not a texture "
+                 "file: %s", b->obj, found ? path : name->s_name, after);
+        return;
+    }
+    if (!found) {
         pd_error(b->owner, "%s: can't find texture '%s' (looked %s): %s",
-                 b->obj, name->s_name, path, fallback);
-        set(core, NULL, err, sizeof(err));
+                 b->obj, name->s_name, path, after);
         return;
     }
     aero_texture *t = calloc(1, sizeof(*t));
     if (!t || aero_texture_load(path, t, err, sizeof(err)) ||
         set(core, t, err, sizeof(err))) {
-        pd_error(b->owner, "%s: texture %s: %s: %s", b->obj, path,
-                 t ? err : "out of memory", fallback);
+        /* the loader's messages name the file; the core's do not */
+        if (t && strstr(err, path))
+            pd_error(b->owner, "%s: %s: %s", b->obj, err, after);
+        else
+            pd_error(b->owner, "%s: texture %s: %s: %s", b->obj, path,
+                     t ? err : "out of memory", after);
         if (t)
             aero_texture_free(t);
         free(t);
-        set(core, NULL, err, sizeof(err));
+        if (!b->has_file)
+            set(core, NULL, err, sizeof(err));
+        return;
     }
+    b->has_file = 1;
 }
 
 /* --- trees ------------------------------------------------------------------ */
@@ -566,13 +607,39 @@ static void tree_bad_line(void *ctx, int line, const char *message)
                  c->path, line, message);
 }
 
+/* a file that is not text: a NUL in its first bytes (a WAV, an image) */
+static int is_binary(const char *path)
+{
+    unsigned char buf[512];
+    FILE *f = fopen(path, "rb");
+    size_t n = f ? fread(buf, 1, sizeof(buf), f) : 0;
+    if (f)
+        fclose(f);
+    return memchr(buf, 0, n) != NULL;
+}
+
 int aero_pd_load_tree(aero_pd_base *b, t_class *cls, t_symbol *name,
                       aero_tree *t)
 {
-    char path[MAXPDSTRING], err[MAXPDSTRING + 100];
-    if (aero_pd_find_tree(b->canvas, cls, name->s_name, path, sizeof(path))) {
-        pd_error(b->owner, "%s: can't find tree '%s' (looked %s): silent",
-                 b->obj, name->s_name, path);
+    char path[MAXPDSTRING], err[MAXPDSTRING + 100], kept[64];
+    const char *after = after_refusal(b, "tree", "silent", kept,
+                                      sizeof(kept));
+    int found = !aero_pd_find_tree(b->canvas, cls, name->s_name, path,
+                                   sizeof(path));
+    if ((found && is_folder(NULL, path)) ||
+        (!found && is_folder(b->canvas, name->s_name))) {
+        pd_error(b->owner, "%s: tree '%s' is a folder, not a tree file: %s",
+                 b->obj, found ? path : name->s_name, after);
+        return -1;
+    }
+    if (!found) {
+        pd_error(b->owner, "%s: can't find tree '%s' (looked %s): %s",
+                 b->obj, name->s_name, path, after);
+        return -1;
+    }
+    if (is_binary(path)) {
+        pd_error(b->owner, "%s: %s is not a tree file (binary data; a tree is "
+                 "text, trees/README.md): %s", b->obj, path, after);
         return -1;
     }
     tree_lines lines = {b, path, 0};
@@ -582,9 +649,10 @@ int aero_pd_load_tree(aero_pd_base *b, t_class *cls, t_symbol *name,
         pd_error(b->owner, "%s: %s: %d more bad lines not shown", b->obj,
                  path, lines.count - AERO_PD_TREE_LINES_SHOWN);
     if (bad) {
-        pd_error(b->owner, "%s: %s: silent", b->obj, err);
+        pd_error(b->owner, "%s: %s: %s", b->obj, err, after);
         return -1;
     }
+    b->has_file = 1;
     return 0;
 }
 

@@ -156,6 +156,8 @@ typedef struct aero_pd_base {
     int clamped;      /* set by perform, reported once by the clock */
     int warned_clamp;
     int ceiling_hit;  /* set by perform: the output guard acted */
+    int has_file;     /* a texture or tree was loaded and plays: a refused
+                         file leaves it playing */
     int warned_ceiling;
     t_clock *clock;
     t_outlet *out[2];
@@ -267,10 +269,14 @@ double aero_pd_wind_message(aero_pd_base *b, aero_pd_wind *w, t_symbol *s,
                             int argc, const t_atom *argv);
 
 /* --- textures: one loader, one failure policy ------------------------------
- * A texture that can't be found or read is reported once (the name, the
- * places looked in, the reason) and the object falls back to what it plays
- * without one (`fallback`: "using the Strouhal/Reynolds model", "silent"):
- * it never keeps a texture the user asked to replace. The loaded texture
+ * A texture that can't be found or read, or that the core refuses, is
+ * reported once (the name, the places looked in or the reason) and changes
+ * nothing: the texture that played plays on (a performer's working state
+ * is not lost to a typing error), and the message says so; an object
+ * without one goes on with what it plays without one (`fallback`: "using
+ * the Strouhal/Reynolds model", "silent"), and says that. A folder is
+ * named as a folder. b->has_file is set when a texture was taken; a
+ * wrapper that drops its texture (`model`) clears it. The loaded texture
  * is malloc'd: the core takes it and releases it with free(). */
 typedef int (*aero_pd_set_texture)(void *core, aero_texture *t, char *err,
                                    size_t len);
@@ -284,9 +290,11 @@ void aero_pd_load_texture(aero_pd_base *b, t_class *cls, t_symbol *name,
  * reported with its line number and skipped, the first
  * AERO_PD_TREE_LINES_SHOWN of them, then how many more; a file that can't
  * be found or read, or holds no branch, is reported once, ending
- * "silent". Returns 0 with the tree in t, for the caller's core to take,
- * or -1 after the report: the caller clears its tree (it never keeps one
- * the user asked to replace). */
+ * "silent", or, when a tree plays (b->has_file), "the previous tree
+ * stays". A file that is not text (a WAV given for a tree) or a folder is
+ * named as such. Returns 0 with the tree in t, for the caller's core to
+ * take (has_file is then set), or -1 after the report: the caller keeps
+ * the tree it plays, if any. */
 #define AERO_PD_TREE_LINES_SHOWN 20
 
 int aero_pd_load_tree(aero_pd_base *b, t_class *cls, t_symbol *name,

@@ -81,6 +81,7 @@ static void cavity_tilde_model(t_cavity_tilde *x)
 {
     char err[8];
     aero_cavity_set_texture(&x->x_core, NULL, err, sizeof(err));
+    x->x_base.has_file = 0;
 }
 
 #define SIZE(def)                                                         \

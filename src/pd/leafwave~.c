@@ -59,10 +59,8 @@ static void leafwave_tilde_open(t_leafwave_tilde *x, t_symbol *name)
     aero_tree t;
     if (!x->x_ok)
         return;
-    if (aero_pd_load_tree(&x->x_base, leafwave_tilde_class, name, &t)) {
-        aero_leafwave_clear_tree(&x->x_core);
-        return;
-    }
+    if (aero_pd_load_tree(&x->x_base, leafwave_tilde_class, name, &t))
+        return; /* the tree that played, if any, plays on */
     int nleaves = t.nleaves;
     if (aero_leafwave_set_tree(&x->x_core, &t, err, sizeof(err))) {
         pd_error(x, OBJ ": %s: %s: silent", name->s_name, err);

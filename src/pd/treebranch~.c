@@ -43,10 +43,8 @@ static void treebranch_tilde_dsp(t_treebranch_tilde *x, t_signal **sp)
 static void treebranch_tilde_open(t_treebranch_tilde *x, t_symbol *name)
 {
     aero_tree t;
-    if (aero_pd_load_tree(&x->x_base, treebranch_tilde_class, name, &t)) {
-        aero_treebranch_set_tree(&x->x_core, NULL);
-        return;
-    }
+    if (aero_pd_load_tree(&x->x_base, treebranch_tilde_class, name, &t))
+        return; /* the tree that played, if any, plays on */
     if (aero_treebranch_set_tree(&x->x_core, &t))
         pd_error(x, OBJ ": %s: out of memory: silent", name->s_name);
 }

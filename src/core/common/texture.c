@@ -691,3 +691,28 @@ void aero_texture_crossfade(float *x, int channels, int len, int xfade)
         }
     }
 }
+
+/* --- the wrong kind of texture --------------------------------------------- */
+
+int aero_texture_wrong_kind(const aero_texture *t, const char *want,
+                            char *err, size_t errlen)
+{
+    static const char *const players[][2] = {
+        {"aeolian", "[aeolian~]"}, {"object", "[body~]"},
+        {"vortex", "[vortex~]"}, {"cavity", "[cavity~]"}};
+    const char *kind = t->head.kind, *player = NULL;
+    if (!strcmp(kind, want))
+        return 0;
+    for (size_t k = 0; k < sizeof players / sizeof *players; k++)
+        if (!strcmp(kind, players[k][0]))
+            player = players[k][1];
+    if (player)
+        snprintf(err, errlen, "not %s %s texture: it is %s %s texture, for "
+                 "%s", want[0] == 'a' || want[0] == 'o' ? "an" : "a", want,
+                 kind[0] == 'a' || kind[0] == 'o' ? "an" : "a", kind, player);
+    else
+        snprintf(err, errlen, "not %s %s texture (kind=%s)",
+                 want[0] == 'a' || want[0] == 'o' ? "an" : "a", want,
+                 kind[0] ? kind : "missing");
+    return -1;
+}

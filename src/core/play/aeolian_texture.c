@@ -263,10 +263,7 @@ int aero_aeolian_texture_set(aero_aeolian *a, aero_texture *t, char *err,
 {
     aero_aeolian_texture *s = a->texture;
     if (t) {
-        const char *kind = t->head.kind;
-        if (strcmp(kind, "aeolian")) {
-            snprintf(err, errlen, "not an aeolian texture (kind=%s)",
-                     kind[0] ? kind : "missing");
+        if (aero_texture_wrong_kind(t, "aeolian", err, errlen)) {
             return -1;
         }
         double v0 = t->head.v0;

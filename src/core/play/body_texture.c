@@ -124,15 +124,12 @@ int aero_body_set_texture(aero_body *s, aero_texture *t,
                                   char *err, size_t errlen)
 {
     if (t) {
-        const char *kind = t->head.kind, *sym = t->head.symmetry;
+        const char *sym = t->head.symmetry;
         double centre[3 * AERO_BODY_MAX_SOURCES];
         double v0 = t->head.v0;
         double d = t->head.diameter;
         int sphere;
-        if (strcmp(kind, "object")) {
-            snprintf(err, errlen, "not an object texture (kind=%s; aeolian "
-                     "textures are for [aeolian~])",
-                     kind[0] ? kind : "missing");
+        if (aero_texture_wrong_kind(t, "object", err, errlen)) {
             return -1;
         }
         if (strcmp(sym, "sphere") && strcmp(sym, "axis")) {

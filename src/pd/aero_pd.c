@@ -4,6 +4,7 @@
 #include "aero.h"
 
 #include "aero_air.h"
+#include "moving_player.h"
 
 #include <limits.h>
 #include <sys/stat.h>
@@ -386,6 +387,28 @@ void aero_pd_refused_list(const aero_pd_base *b, const char *name)
     pd_error(b->owner, "%s: %s out of range%s%s", b->obj, name, range, kept);
 }
 
+int aero_pd_seed_of(const aero_pd_base *b, t_float f, uint32_t *seed)
+{
+    if (!(f > -HUGE_VAL && f < HUGE_VAL)) {
+        aero_pd_refused(b, "seed", f);
+        return -1;
+    }
+    *seed = aero_pd_seed(f);
+    return 0;
+}
+
+double aero_pd_at_bound(const aero_pd_base *b, const char *name, t_float f)
+{
+    const aero_pd_rule *r = aero_pd_rule_of(b, name);
+    if (r && r->lo != r->hi) {
+        if ((float)f == (float)r->lo)
+            return r->lo;
+        if ((float)f == (float)r->hi)
+            return r->hi;
+    }
+    return f;
+}
+
 int aero_pd_whole_of(const aero_pd_base *b, const char *name, t_float f,
                      int *n)
 {
@@ -436,11 +459,11 @@ double aero_pd_wind_message(aero_pd_base *b, aero_pd_wind *w, t_symbol *s,
     double v[3];
     if (aero_pd_floats(b->owner, b->obj, s->s_name, argc, argv, 3, v))
         return -1.0;
-    if (!(fabs(v[0]) < 1e30 && fabs(v[1]) < 1e30 && fabs(v[2]) < 1e30)) {
+    double speed = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (!(speed <= AERO_MOVING_WIND_MAX)) { /* NaN fails too */
         aero_pd_refused_list(b, s->s_name);
         return -1.0;
     }
-    double speed = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     if (speed > 0.0)
         for (int k = 0; k < 3; k++)
             w->dir[k] = v[k] / speed;

@@ -226,13 +226,19 @@ void aero_pd_refused_list(const aero_pd_base *b, const char *name);
 int aero_pd_whole_of(const aero_pd_base *b, const char *name, t_float f,
                      int *n);
 
+/* A number from a patch checked against the rule of `name`: a float that
+ * rounds to the same single-precision value as the rule's lo or hi is
+ * that bound (Pd's 1e-05 is 9.99999975e-06 as a float, below the double
+ * 1e-05: the stated minimum must be accepted); any other value as it is. */
+double aero_pd_at_bound(const aero_pd_base *b, const char *name, t_float f);
+
 /* One message per setter: `prefix_msg(x, f)` hands f to
  * `setter(&x->core, f)` (0 accepted, -1 refused) and reports a refusal
  * from the rule of `msg`; `type` is the object's struct. */
 #define AERO_PD_SETTER(prefix, type, msg, core, setter)                    \
     static void prefix##_##msg(type *x, t_floatarg f)                      \
     {                                                                      \
-        if (setter(&x->core, f))                                           \
+        if (setter(&x->core, aero_pd_at_bound(&x->x_base, #msg, f)))      \
             aero_pd_refused(&x->x_base, #msg, f);                          \
     }
 
@@ -306,15 +312,22 @@ int aero_pd_load_tree(aero_pd_base *b, t_class *cls, t_symbol *name,
  * the patch is loaded: from $0 and the object's index in its canvas. */
 uint32_t aero_pd_default_seed(void);
 
-/* A number from a patch as a 32-bit seed: any finite value wraps; NaN,
- * infinities and beyond +-9.2e18 give 0 (converting those to an integer
- * type is undefined behaviour in C). */
+/* A number from a patch as a 32-bit seed, the one seed policy of every
+ * object: any finite number, its whole part modulo 2^32 (-5 is
+ * 4294967291, 1e30 is 0: fmod is exact, no conversion out of range); NaN
+ * and the infinities give 0 (aero_pd_seed_of refuses them). */
 static inline uint32_t aero_pd_seed(t_float f)
 {
-    if (!(f > -9.2e18f && f < 9.2e18f))
+    if (!(f > -HUGE_VAL && f < HUGE_VAL))
         return 0;
-    return (uint32_t)(int64_t)f;
+    return (uint32_t)(int64_t)fmod(trunc((double)f), 4294967296.0);
 }
+
+/* `seed f` of every object: 0 with *seed set; NaN or an infinity refused
+ * (-1 after the report, from the rule AERO_PD_SEED) */
+int aero_pd_seed_of(const struct aero_pd_base *b, t_float f, uint32_t *seed);
+#define AERO_PD_SEED                                                       \
+    AERO_PD_NOTE("any finite number, its whole part modulo 2^32")
 
 /* A number from a patch as a whole number in lo..hi: 0 with *n set, else
  * -1. NaN, infinities, fractions and numbers out of range are refused

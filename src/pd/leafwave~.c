@@ -9,6 +9,7 @@
  *   outlet(s) (signal): sound pressure at the listener (ears), Pa
  */
 #include "aero_pd.h"
+#include "moving_player.h"
 
 #include "leafwave.h"
 #include "aero_util.h"
@@ -80,7 +81,8 @@ static void leafwave_tilde_open(t_leafwave_tilde *x, t_symbol *name)
         int n = 0;                                                        \
         if (x->x_ok &&                                                    \
             ((whole && aero_pd_whole_of(&x->x_base, #msg, f, &n)) ||      \
-             call(&x->x_core, whole ? n : f)))                           \
+             call(&x->x_core,                                            \
+                  whole ? n : aero_pd_at_bound(&x->x_base, #msg, f))))   \
             aero_pd_refused(&x->x_base, #msg, f);                         \
     }
 
@@ -132,7 +134,9 @@ static void leafwave_tilde_octaves(t_leafwave_tilde *x, t_floatarg f)
 
 static void leafwave_tilde_seed(t_leafwave_tilde *x, t_floatarg f)
 {
-    if (x->x_ok && aero_leafwave_set_seed(&x->x_core, aero_pd_seed(f)))
+    uint32_t seed;
+    if (x->x_ok && !aero_pd_seed_of(&x->x_base, f, &seed) &&
+        aero_leafwave_set_seed(&x->x_core, seed))
         pd_error(x, OBJ ": out of memory restarting from seed %g", f);
 }
 
@@ -182,17 +186,19 @@ static const aero_pd_method leafwave_tilde_methods[] = {
     {"open", AERO_PD_SYMBOL, 0, (t_method)leafwave_tilde_open, 0, AERO_PD_NO_RULE},
     {"tree", AERO_PD_SYMBOL, 0, (t_method)leafwave_tilde_open, 0, AERO_PD_NO_RULE},
     {"wind", AERO_PD_LIST, 3, (t_method)leafwave_tilde_wind, 0,
-     AERO_PD_NOTE("finite")},
+     AERO_PD_RANGE_NOTE(0, AERO_MOVING_WIND_MAX, "m/s",
+                        "the vector's length")},
     {"listener", AERO_PD_LIST, 3, (t_method)leafwave_tilde_listener, 0, AERO_PD_NO_RULE},
     {"ears", AERO_PD_LIST, 6, (t_method)leafwave_tilde_listener, 0, AERO_PD_NO_RULE},
     {"mic", AERO_PD_LIST, 3, (t_method)leafwave_tilde_mic, 0,
-     AERO_PD_NOTE("a finite direction")},
+     AERO_PD_NOTE("a finite direction; 0 0 0 aims it at the tree")},
     {"k", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_k, 0,
      AERO_PD_RANGE_DEF(0, AERO_LEAFWAVE_MIC_K_MAX,
                        AERO_LEAFWAVE_MIC_K_DEFAULT, NULL)},
     {"gain", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_gain, 0,
      AERO_PD_GAIN},
-    {"seed", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_seed, 0, AERO_PD_NO_RULE},
+    {"seed", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_seed, 0,
+     AERO_PD_SEED},
     {"ramp", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_ramp, 0,
      AERO_PD_RAMP},
     {"stiffness", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_stiffness, 0,

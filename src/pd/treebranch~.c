@@ -7,6 +7,7 @@
  *   outlet 2 (signal, with -stereo): right ear, Pa
  */
 #include "aero_pd.h"
+#include "moving_player.h"
 
 #include "treebranch.h"
 
@@ -97,18 +98,17 @@ AERO_PD_SETTER(treebranch_tilde, t_treebranch_tilde, alpha, x_core,
 
 static void treebranch_tilde_seed(t_treebranch_tilde *x, t_floatarg f)
 {
-    if (!(f == f) || f < 0 || f > 4294967295.0) {
-        aero_pd_refused(&x->x_base, "seed", f);
+    uint32_t seed;
+    if (aero_pd_seed_of(&x->x_base, f, &seed))
         return;
-    }
-    if (aero_treebranch_set_seed(&x->x_core, (uint32_t)(int64_t)f))
+    if (aero_treebranch_set_seed(&x->x_core, seed))
         pd_error(x, OBJ ": out of memory restarting the tree: silent");
 }
 
 static const aero_pd_method treebranch_tilde_methods[] = {
     {"stereo", AERO_PD_SWITCH, 0, NULL, 0, AERO_PD_NO_RULE},
     {"seed", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_seed, 0,
-     AERO_PD_RANGE_NOTE(0, 4294967295.0, NULL, "2^32-1")},
+     AERO_PD_SEED},
     {"gain", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_gain, 0,
      AERO_PD_GAIN},
     {"stiffness", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_stiffness, 0,
@@ -125,12 +125,13 @@ static const aero_pd_method treebranch_tilde_methods[] = {
     {"ramp", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_ramp, 0,
      AERO_PD_RAMP},
     {"mic", AERO_PD_LIST, 3, (t_method)treebranch_tilde_mic, 0,
-     AERO_PD_NOTE("a finite direction")},
+     AERO_PD_NOTE("a finite direction; 0 0 0 aims it at the tree")},
     {"listener", AERO_PD_LIST, 3, (t_method)treebranch_tilde_listener, 0,
      AERO_PD_NO_RULE},
     {"ears", AERO_PD_LIST, 6, (t_method)treebranch_tilde_listener, 0, AERO_PD_NO_RULE},
     {"wind", AERO_PD_LIST, 3, (t_method)treebranch_tilde_wind, 0,
-     AERO_PD_NOTE("finite")},
+     AERO_PD_RANGE_NOTE(0, AERO_MOVING_WIND_MAX, "m/s",
+                        "the vector's length")},
     {"open", AERO_PD_SYMBOL, 0, (t_method)treebranch_tilde_open,
      AERO_PD_MESSAGE_ONLY, AERO_PD_NO_RULE},
 };

@@ -112,9 +112,19 @@ static void leafwave_tilde_set_tables(t_leafwave_tilde *x, int which,
     v[2] = oct;
     v[which] = f;
     if (aero_pd_whole_of(&x->x_base, "tables", v[1], &per) ||
-        aero_pd_whole_of(&x->x_base, "octaves", v[2], &oct) ||
-        aero_leafwave_set_tables(&x->x_core, v[0], per, oct))
+        aero_pd_whole_of(&x->x_base, "octaves", v[2], &oct)) {
         aero_pd_refused(&x->x_base, what, f);
+    } else if ((long)per * oct > AERO_LEAFWAVE_TABLES_MAX) {
+        /* each within its range, the product not: say the real limit */
+        pd_error(x, OBJ ": %s %g refused: %d tables per octave x %d octaves "
+                 "= %ld tables, at most %d in all (with %s %d: %s at most "
+                 "%d)", what, f, per, oct, (long)per * oct,
+                 AERO_LEAFWAVE_TABLES_MAX, which == 2 ? "tables" : "octaves",
+                 which == 2 ? per : oct, which == 2 ? "octaves" : "tables",
+                 AERO_LEAFWAVE_TABLES_MAX / (which == 2 ? per : oct));
+    } else if (aero_leafwave_set_tables(&x->x_core, v[0], per, oct)) {
+        aero_pd_refused(&x->x_base, what, f);
+    }
 }
 
 static void leafwave_tilde_fm(t_leafwave_tilde *x, t_floatarg f)

@@ -575,10 +575,19 @@ static const char *after_refusal(const aero_pd_base *b, const char *what,
     return buf;
 }
 
+void aero_pd_no_file(const aero_pd_base *b, const char *what,
+                     const char *message)
+{
+    if (!b->has_file && !b->file_tried)
+        post("%s: no %s given: silent until '%s NAME'", b->obj, what,
+             message);
+}
+
 void aero_pd_load_texture(aero_pd_base *b, t_class *cls, t_symbol *name,
                           aero_pd_set_texture set, void *core,
                           const char *fallback)
 {
+    b->file_tried = 1;
     char path[MAXPDSTRING], err[MAXPDSTRING + 256], kept[64];
     const char *after = after_refusal(b, "texture", fallback, kept,
                                       sizeof(kept));
@@ -644,6 +653,7 @@ static int is_binary(const char *path)
 int aero_pd_load_tree(aero_pd_base *b, t_class *cls, t_symbol *name,
                       aero_tree *t)
 {
+    b->file_tried = 1;
     char path[MAXPDSTRING], err[MAXPDSTRING + 100], kept[64];
     const char *after = after_refusal(b, "tree", "silent", kept,
                                       sizeof(kept));

@@ -158,6 +158,7 @@ typedef struct aero_pd_base {
     int ceiling_hit;  /* set by perform: the output guard acted */
     int has_file;     /* a texture or tree was loaded and plays: a refused
                          file leaves it playing */
+    int file_tried;   /* a texture or tree was asked for */
     int warned_ceiling;
     t_clock *clock;
     t_outlet *out[2];
@@ -305,6 +306,15 @@ void aero_pd_load_texture(aero_pd_base *b, t_class *cls, t_symbol *name,
 
 int aero_pd_load_tree(aero_pd_base *b, t_class *cls, t_symbol *name,
                       aero_tree *t);
+
+/* --- no file given ----------------------------------------------------------
+ * At the end of new, for an object that is silent without a file: when
+ * none was asked for, one line says so and how to give one, the same words
+ * from every object ("[body~]: no texture given: silent until 'texture
+ * NAME'"). Not an error: an object may be made first and fed a file
+ * later. */
+void aero_pd_no_file(const aero_pd_base *b, const char *what,
+                     const char *message);
 
 /* --- numbers from a patch ------------------------------------------------- */
 

@@ -175,6 +175,7 @@ static void *body_tilde_new(t_symbol *s, int argc, t_atom *argv)
         pd_error(x, OBJ ": out of memory for the delay lines: silent");
     aero_pd_pose_clock_init(&x->x_clock);
     aero_pd_parse_flags(&x->x_base, argc, argv);
+    aero_pd_no_file(&x->x_base, "texture", "texture");
     aero_pd_base_outlets(&x->x_base);
     return x;
 }

@@ -155,6 +155,7 @@ static void *treebranch_tilde_new(t_symbol *s, int argc, t_atom *argv)
     if (file)
         treebranch_tilde_open(x, file);
     aero_pd_parse_flags(&x->x_base, argc, argv);
+    aero_pd_no_file(&x->x_base, "tree", "open");
     aero_pd_base_outlets(&x->x_base);
     return x;
 }

@@ -375,7 +375,8 @@ chmod 600 "$HOSTILE"/unreadable.* 2>/dev/null
 # --- the hostile cases of issue 49: each input and the words it must get ---
 # One line per case: class | the object (its creation text) | messages at
 # load (after "; aero-speed 10" unless they set it) | what the log must
-# say ("!text": must not say) | the largest |sample| allowed, or -.
+# say ("!text": must not say) | the largest |sample| allowed, or - |
+# optionally, events "MS ; messages" separated by ','.
 # Files made here: F.wav is fire.wav with its first 1000 floats 3e38
 # (finite, impossible); T1.tree a tree whose second branch ends at
 # (1e30, 1e30, 1e30); folder.wav a folder. The Pd runs are short (0.5 s)
@@ -400,10 +401,11 @@ PYEOF
     echo "leaf 2 0 0.5 1.5 0 0.6 1.5 0.05 0.03"
 } >"$HOSTILE/T1.tree"
 rm -rf "$HOSTILE/folder.wav" && mkdir -p "$HOSTILE/folder.wav"
+head -c 1000 textures/cylinder.wav >"$HOSTILE/cut.wav"
 H=$ROOT/$HOSTILE
 hostile_cases="
 vortex~ | vortex~ -texture $H/F.wav -n 8 | ; aero-speed 8 | beyond what a flow of that speed can make | 1
-vortex~ | vortex~ -texture $H/F.wav -n 8 | ; aero-speed 8 | !F.wav: / | -
+aeolian~ | aeolian~ -texture $H/cut.wav | | !cut.wav: / | -
 vortex~ | vortex~ -texture fire -n 8 | ; aero-speed 8; aero-obj texture $H/F.wav | the previous texture stays | -
 treebranch~ | treebranch~ $H/T1.tree -listener 0 -5 0.5 | ; aero-speed 10 | farther from the tree's foot than any tree reaches | 101325
 aeolian~ | aeolian~ -d 10 -l 1000 -gain 120 -listener 0 0.5 0 | ; aero-speed 100 | output beyond 101325 Pa | 101325
@@ -419,14 +421,19 @@ aeolian~ | aeolian~ -texture $H/folder.wav | | is a folder, not a texture file |
 fieldsound~ | fieldsound~ -demo 1000 -sync | | the demo runs at 32 | -
 fieldsound~ | fieldsound~ -demo 1000 -sync | | !flag -demo ignored | -
 treebranch~ | treebranch~ small | ; aero-obj seed -5 | !out of range | -
-aeolian~ | aeolian~ | ; aero-obj seed -1e+30 | !out of range | -
+body~ | body~ -texture sphere -listener 0 2 0 | ; aero-speed 1e30 | Mach 0.3 | -
+treebranch~ | treebranch~ small | ; aero-speed 1e30 | Mach 0.3 | -
+aeolian~ | aeolian~ -texture cylinder | ; aero-speed 1e30; aero-obj pose 0 0 -0.1 0 0 0.1; aero-obj wind 5 0 0 | Mach 0.3 | -
+body~ | body~ -texture sphere -listener 0 2 0 | ; aero-speed 0 | Mach 0.3 | - | 100 ; aero-obj pose 0 0 0, 110 ; aero-obj pose 10 0 0, 120 ; aero-obj pose 20 0 0, 130 ; aero-obj pose 30 0 0
+body~ | body~ | | no texture given | -
+treebranch~ | treebranch~ | | no tree given | -
 fieldsound~ | fieldsound~ -demo 8 -sync | ; aero-obj log 5 | log 5 out of range (0..1 | -
 fieldsound~ | fieldsound~ -demo 8 -sync | ; aero-obj velocity 7 | velocity 7 out of range (0..1 | -
 fieldsound~ | fieldsound~ -demo 8 -sync | ; aero-obj speed 1e-30 | speed 1e-30 frames/s out of range (0.001.. | -
 "
 hostile_case_no=0
 printf '%s\n' "$hostile_cases" | grep -v '^[[:space:]]*$' >"$HOSTILE/cases.txt"
-while IFS='|' read -r c_cls c_obj c_init c_want c_peak; do
+while IFS='|' read -r c_cls c_obj c_init c_want c_peak c_events; do
     hostile_case_no=$((hostile_case_no + 1))
     c_cls=$(trim "$c_cls") c_obj=$(trim "$c_obj") c_init=$(trim "$c_init")
     c_want=$(trim "$c_want") c_peak=$(trim "$c_peak")
@@ -434,7 +441,16 @@ while IFS='|' read -r c_cls c_obj c_init c_want c_peak; do
     case "$c_obj $c_init $c_want" in *"${HOSTILE_CASES_ONLY:-}"*) ;; *) continue ;; esac
     case "$c_init" in *aero-speed*) ;; *) c_init="; aero-speed 10$c_init" ;; esac
     c_name="hostile-case-$hostile_case_no"
-    pd_render "$c_name" "$c_obj" 1 500 "$c_init"
+    set --
+    c_old_ifs=$IFS
+    IFS=','
+    for c_e in $c_events; do
+        IFS=$c_old_ifs
+        [ -n "$(trim "$c_e")" ] && set -- "$@" "$(trim "$c_e")"
+        IFS=','
+    done
+    IFS=$c_old_ifs
+    pd_render "$c_name" "$c_obj" 1 500 "$c_init" 0 "$@"
     c_log="$OUT/$c_name.log"
     if grep -a -q -e "couldn't create" "$c_log"; then
         fail "[$c_obj]: not created"

@@ -841,12 +841,12 @@ int aero_aeolian_texture_process(aero_aeolian *a, const float *speed,
             aero_pose_queue_pop(&s->queue);
             m = n - done < AERO_STICK_CHUNK ? n - done : AERO_STICK_CHUNK;
         }
-        /* the inlet's mean speed over the chunk (NaN counts as 0) */
+        /* the inlet's mean speed over the chunk (aero_speed_in) */
         double sp = 0.0;
         if (speed) {
             for (int j = 0; j < m; j++) {
                 float v = speed[done + j];
-                sp += v == v && v < 1e30f && v > -1e30f ? v : 0.0f;
+                sp += aero_speed_in(v);
             }
             sp /= m;
         }

@@ -616,10 +616,10 @@ int aero_body_process(aero_body *s, const float *speed,
         }
         double sp = 0.0, wind[3], ears[AERO_BODY_MAX_EARS][3], gain, alpha;
         double pace;
-        if (speed) { /* the inlet's mean over the chunk (NaN counts as 0) */
+        if (speed) { /* the inlet's mean over the chunk (aero_speed_in) */
             for (int j = 0; j < m; j++) {
                 float v = speed[done + j];
-                sp += v == v && v < 1e30f && v > -1e30f ? v : 0.0f;
+                sp += aero_speed_in(v);
             }
             sp /= m;
         }

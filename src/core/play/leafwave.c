@@ -221,10 +221,8 @@ static int wind_now(const aero_leafwave *lw, const float *speed, int n,
     if (speed && n > 0) {
         double sum = 0.0;
         for (int s = 0; s < n; s++)
-            sum += speed[s] == speed[s] ? speed[s] : 0.0;
+            sum += aero_speed_in(speed[s]); /* Inf: clamped and reported */
         u_in = sum / n;
-        if (!aero_is_finite(u_in))
-            u_in = 0.0;
     }
     double dir[3] = {lw->wind[0], lw->wind[1], lw->wind[2]};
     if (aero_dot3(lw->speed_dir, lw->speed_dir) > 0.0) {

@@ -616,14 +616,13 @@ void aero_treebranch_process(aero_treebranch *tb, float *out0, float *out1,
     }
 }
 
-/* the mean of a block of speeds; 0 when not finite or beyond 1e30 */
+/* the mean of a block of speeds, each as aero_speed_in takes it */
 static double block_mean(const float *in, int n)
 {
     double sum = 0.0;
     for (int i = 0; i < n; i++)
-        sum += in[i];
-    double mean = sum / n;
-    return mean == mean && fabs(mean) <= 1e30 ? mean : 0.0;
+        sum += aero_speed_in(in[i]);
+    return sum / n;
 }
 
 int aero_treebranch_process_speed(aero_treebranch *tb, const float *speed,

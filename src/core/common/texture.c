@@ -475,10 +475,16 @@ double aero_texture_ceiling(const aero_texture *t, int channel)
 }
 
 /* every sample within its channel's ceiling: 0, or -1 naming the first
-   one beyond */
+   one beyond; and the loop's cross-fade, when stated, within the file */
 static int check_ceiling(const aero_texture *t, const char *path, char *err,
                          size_t errlen)
 {
+    double xfade = aero_texture_getd(t, "xfade", 0.0);
+    if (!(xfade >= 0.0 && xfade <= t->frames)) {
+        snprintf(err, errlen, "%s: xfade=%g frames is not within the file's "
+                 "%d frames", path, xfade, t->frames);
+        return -1;
+    }
     for (int c = 0; c < t->channels; c++) {
         double lim = aero_texture_ceiling(t, c);
         for (long n = 0; n < t->frames; n++) {

@@ -2,6 +2,7 @@
 #ifndef AERO_UTIL_H
 #define AERO_UTIL_H
 
+#include "aero_air.h"
 #include "aero_ranges.h"
 
 #include <math.h>
@@ -77,19 +78,20 @@ static inline uint32_t aero_run_seed(uint32_t seed, int k)
 }
 
 /* neither NaN nor infinite (works without isfinite's C99 math macros) */
-/* A speed from a signal inlet, the one policy of every player: NaN is 0; a
-   value beyond +-AERO_SPEED_IN_MAX (1e30, an infinity) is that limit,
-   which the player then clamps to Mach 0.3 and reports once, as it does
-   any supersonic speed (never silence for a loud input). The limit, ten
-   times Mach 0.3 (1029 m/s), keeps squares and cubes of it finite in
-   float. */
-#define AERO_SPEED_IN_MAX 1029.0f
-static inline float aero_speed_in(float v)
+/* A speed from a signal inlet, the one policy of every player: NaN is 0;
+   a speed beyond Mach 0.3 (1e30, an infinity included) is clamped to it
+   and *clamped set, for the player's one report (never silence for a
+   loud input). */
+static inline float aero_speed_in(float v, int *clamped)
 {
+    const float lim = (float)(AERO_MACH_LIMIT * AERO_C0);
     if (!(v == v))
         return 0.0f;
-    return v > AERO_SPEED_IN_MAX ? AERO_SPEED_IN_MAX
-         : v < -AERO_SPEED_IN_MAX ? -AERO_SPEED_IN_MAX : v;
+    if (v > lim || v < -lim) {
+        *clamped = 1;
+        return v > 0.0f ? lim : -lim;
+    }
+    return v;
 }
 
 static inline int aero_is_finite(double v)

@@ -853,7 +853,7 @@ int aero_aeolian_texture_process(aero_aeolian *a, const float *speed,
         if (speed) {
             for (int j = 0; j < m; j++) {
                 float v = speed[done + j];
-                sp += aero_speed_in(v);
+                sp += aero_speed_in(v, &s->clamped);
             }
             sp /= m;
         }

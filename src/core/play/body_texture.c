@@ -619,7 +619,7 @@ int aero_body_process(aero_body *s, const float *speed,
         if (speed) { /* the inlet's mean over the chunk (aero_speed_in) */
             for (int j = 0; j < m; j++) {
                 float v = speed[done + j];
-                sp += aero_speed_in(v);
+                sp += aero_speed_in(v, &s->base.clamped);
             }
             sp /= m;
         }

@@ -267,7 +267,8 @@ static void aero_pd_guard_outputs(aero_pd_base *b, float *const *out, int n)
             hit |= aero_pd_guard(out[c], n);
     if (hit && !b->ceiling_hit) {
         b->ceiling_hit = 1;
-        clock_delay(b->clock, 0);
+        if (b->clock)
+            clock_delay(b->clock, 0);
     }
 }
 

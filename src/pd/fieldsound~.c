@@ -394,10 +394,8 @@ static void *fieldsound_tilde_new(t_symbol *s, int argc, t_atom *argv)
     t_fieldsound_tilde *x = (t_fieldsound_tilde *)pd_new(
         fieldsound_tilde_class);
     aero_pd_base_init(&x->x_base, x, &fieldsound_tilde_spec, argc, argv);
-    /* no flow to clamp: its report (the listener's speed, `done`) is
-       x_report's, so the base's flow-clamp clock goes */
-    clock_free(x->x_base.clock);
-    x->x_base.clock = NULL;
+    /* no flow to clamp (the listener's speed and `done` are x_report's);
+       the base's clock stays for the output guard's report */
     aero_field_params_default(&x->x_par);
     if (aero_fieldsound_init(&x->x_core, sys_getsr()))
         pd_error(x, OBJ ": sample rate %g not usable: 44100 Hz until the "

@@ -407,13 +407,6 @@ int aero_aeolian_texture_set(aero_aeolian *a, aero_texture *t, char *err,
                      "symmetry %d, %d frames)", v0, d, symmetry, t->frames);
             return -1;
         }
-        if (symmetry == 0 && t->directions > 1) {
-            snprintf(err, errlen, "symmetry=0 (a circle: one direction "
-                     "serves every angle) with %d directions; a shape that "
-                     "repeats every 360/K deg says symmetry=K",
-                     t->directions);
-            return -1;
-        }
         for (int k = 1; k < t->directions; k++)
             if (!(t->angles[k] > t->angles[k - 1])) {
                 snprintf(err, errlen, "angles are not increasing");

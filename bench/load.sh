@@ -14,7 +14,7 @@ mkdir -p "$DIR"
 PD=${PD:-$(command -v pd || command -v puredata)}
 awk 'BEGIN { for (i = 0; i < 200000; i++)
     printf "branch %d %d 0 0 %.4f 0.001 0 %.4f 0.05 0.05\n", i, i - 1,
-        i * 0.01, (i + 1) * 0.01 }' >"$DIR/chain.tree"
+        i * 0.0005, (i + 1) * 0.0005 }' >"$DIR/chain.tree"
 awk 'BEGIN { print "branch 0 -1 0 0 0 0 0 1 0.1 0.1"
     for (i = 0; i < 1000000; i++) print "leaf 0 0 0 0.5 0.05 0 0.5 0.1 0.05" }' \
     >"$DIR/spot.tree"

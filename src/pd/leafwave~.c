@@ -9,6 +9,7 @@
  *   outlet(s) (signal): sound pressure at the listener (ears), Pa
  */
 #include "aero_pd.h"
+#include "moving_player.h"
 
 #include "leafwave.h"
 #include "load_job.h"
@@ -174,11 +175,12 @@ static void leafwave_tilde_finish(t_leafwave_tilde *x)
     x->x_job = NULL;
     x->x_load = NULL;
     if (l->has_file && aero_pd_tree_report(&x->x_base, &l->read)) {
-        aero_leafwave_clear_tree(&x->x_core);
+        ; /* refused: the tree that played, if any, plays on */
     } else if (!l->ok) {
-        if (l->has_file) {
-            pd_error(x, OBJ ": %s: %s: silent", l->read.path, l->err);
-            aero_leafwave_clear_tree(&x->x_core);
+        if (l->has_file) { /* refused as the last was: that one plays on */
+            pd_error(x, OBJ ": %s: %s: %s", l->read.path, l->err,
+                     x->x_core.has_tree ? "the previous tree stays"
+                                        : "silent");
         } else {
             pd_error(x, OBJ ": %s: the old tables and neighbours stay",
                      l->err);
@@ -262,8 +264,7 @@ static void leafwave_tilde_start(t_leafwave_tilde *x, t_symbol *name,
     if (name) {
         if (aero_pd_tree_find(&x->x_base, leafwave_tilde_class, name,
                               &l->read)) {
-            free(l);
-            aero_leafwave_clear_tree(&x->x_core);
+            free(l); /* the tree that played, if any, plays on */
             return;
         }
         l->has_file = 1;
@@ -316,7 +317,8 @@ static void leafwave_tilde_rebuild(t_leafwave_tilde *x)
         int n = 0;                                                        \
         if (x->x_ok &&                                                    \
             ((whole && aero_pd_whole_of(&x->x_base, #msg, f, &n)) ||      \
-             call(&x->x_core, whole ? n : f)))                           \
+             call(&x->x_core,                                            \
+                  whole ? n : aero_pd_at_bound(&x->x_base, #msg, f))))   \
             aero_pd_refused(&x->x_base, #msg, f);                         \
     }
 
@@ -346,8 +348,21 @@ static void leafwave_tilde_set_tables(t_leafwave_tilde *x, int which,
     v[2] = x->x_want.octaves;
     v[which] = f;
     if (aero_pd_whole_of(&x->x_base, "tables", v[1], &per) ||
-        aero_pd_whole_of(&x->x_base, "octaves", v[2], &oct) ||
-        !aero_leafwave_tables_valid(v[0], per, oct) ||
+        aero_pd_whole_of(&x->x_base, "octaves", v[2], &oct)) {
+        aero_pd_refused(&x->x_base, what, f);
+        return;
+    }
+    if ((long)per * oct > AERO_LEAFWAVE_TABLES_MAX) {
+        /* each within its range, the product not: say the real limit */
+        pd_error(x, OBJ ": %s %g refused: %d tables per octave x %d octaves "
+                 "= %ld tables, at most %d in all (with %s %d: %s at most "
+                 "%d)", what, f, per, oct, (long)per * oct,
+                 AERO_LEAFWAVE_TABLES_MAX, which == 2 ? "tables" : "octaves",
+                 which == 2 ? per : oct, which == 2 ? "octaves" : "tables",
+                 AERO_LEAFWAVE_TABLES_MAX / (which == 2 ? per : oct));
+        return;
+    }
+    if (!aero_leafwave_tables_valid(v[0], per, oct) ||
         (x->x_creating &&
          aero_leafwave_set_tables(&x->x_core, v[0], per, oct))) {
         aero_pd_refused(&x->x_base, what, f);
@@ -389,11 +404,12 @@ static void leafwave_tilde_octaves(t_leafwave_tilde *x, t_floatarg f)
 
 static void leafwave_tilde_seed(t_leafwave_tilde *x, t_floatarg f)
 {
-    if (!x->x_ok)
+    uint32_t seed;
+    if (!x->x_ok || aero_pd_seed_of(&x->x_base, f, &seed))
         return;
-    if (x->x_creating && aero_leafwave_set_seed(&x->x_core, aero_pd_seed(f)))
+    if (x->x_creating && aero_leafwave_set_seed(&x->x_core, seed))
         pd_error(x, OBJ ": out of memory restarting from seed %g", f);
-    x->x_want.seed = aero_pd_seed(f);
+    x->x_want.seed = seed;
     leafwave_tilde_rebuild(x);
 }
 
@@ -443,17 +459,19 @@ static const aero_pd_method leafwave_tilde_methods[] = {
     {"open", AERO_PD_SYMBOL, 0, (t_method)leafwave_tilde_open, 0, AERO_PD_NO_RULE},
     {"tree", AERO_PD_SYMBOL, 0, (t_method)leafwave_tilde_open, 0, AERO_PD_NO_RULE},
     {"wind", AERO_PD_LIST, 3, (t_method)leafwave_tilde_wind, 0,
-     AERO_PD_NOTE("finite")},
+     AERO_PD_RANGE_NOTE(0, AERO_MOVING_WIND_MAX, "m/s",
+                        "the vector's length")},
     {"listener", AERO_PD_LIST, 3, (t_method)leafwave_tilde_listener, 0, AERO_PD_NO_RULE},
     {"ears", AERO_PD_LIST, 6, (t_method)leafwave_tilde_listener, 0, AERO_PD_NO_RULE},
     {"mic", AERO_PD_LIST, 3, (t_method)leafwave_tilde_mic, 0,
-     AERO_PD_NOTE("a finite direction")},
+     AERO_PD_NOTE("a finite direction; 0 0 0 aims it at the tree")},
     {"k", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_k, 0,
      AERO_PD_RANGE_DEF(0, AERO_LEAFWAVE_MIC_K_MAX,
                        AERO_LEAFWAVE_MIC_K_DEFAULT, NULL)},
     {"gain", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_gain, 0,
      AERO_PD_GAIN},
-    {"seed", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_seed, 0, AERO_PD_NO_RULE},
+    {"seed", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_seed, 0,
+     AERO_PD_SEED},
     {"ramp", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_ramp, 0,
      AERO_PD_RAMP},
     {"stiffness", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_stiffness, 0,

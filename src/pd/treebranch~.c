@@ -7,6 +7,7 @@
  *   outlet 2 (signal, with -stereo): right ear, Pa
  */
 #include "aero_pd.h"
+#include "moving_player.h"
 
 #include "treebranch.h"
 #include "load_job.h"
@@ -147,7 +148,7 @@ static void treebranch_tilde_finish(t_treebranch_tilde *x)
     x->x_job = NULL;
     x->x_load = NULL;
     if (l->has_file && aero_pd_tree_report(&x->x_base, &l->read)) {
-        aero_treebranch_set_tree(&x->x_core, NULL);
+        ; /* refused: the tree that played, if any, plays on */
     } else if (!l->ok && l->has_file) {
         pd_error(x, OBJ ": %s: out of memory: silent", l->read.path);
         aero_treebranch_set_tree(&x->x_core, NULL);
@@ -229,8 +230,7 @@ static void treebranch_tilde_start(t_treebranch_tilde *x, t_symbol *name,
     if (name) {
         if (aero_pd_tree_find(&x->x_base, treebranch_tilde_class, name,
                               &l->read)) {
-            free(l);
-            aero_treebranch_set_tree(&x->x_core, NULL);
+            free(l); /* the tree that played, if any, plays on */
             return;
         }
         l->has_file = 1;
@@ -317,11 +317,10 @@ AERO_PD_SETTER(treebranch_tilde, t_treebranch_tilde, alpha, x_core,
    flag) or without a tree, where it costs nothing */
 static void treebranch_tilde_seed(t_treebranch_tilde *x, t_floatarg f)
 {
-    if (!(f == f) || f < 0 || f > 4294967295.0) {
-        aero_pd_refused(&x->x_base, "seed", f);
+    uint32_t seed;
+    if (aero_pd_seed_of(&x->x_base, f, &seed))
         return;
-    }
-    x->x_want_seed = (uint32_t)(int64_t)f;
+    x->x_want_seed = seed;
     if (x->x_creating || (!x->x_job && !x->x_core.has_tree)) {
         if (aero_treebranch_set_seed(&x->x_core, x->x_want_seed))
             pd_error(x, OBJ ": out of memory restarting the tree: silent");
@@ -333,7 +332,7 @@ static void treebranch_tilde_seed(t_treebranch_tilde *x, t_floatarg f)
 static const aero_pd_method treebranch_tilde_methods[] = {
     {"stereo", AERO_PD_SWITCH, 0, NULL, 0, AERO_PD_NO_RULE},
     {"seed", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_seed, 0,
-     AERO_PD_RANGE_NOTE(0, 4294967295.0, NULL, "2^32-1")},
+     AERO_PD_SEED},
     {"gain", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_gain, 0,
      AERO_PD_GAIN},
     {"stiffness", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_stiffness, 0,
@@ -350,12 +349,13 @@ static const aero_pd_method treebranch_tilde_methods[] = {
     {"ramp", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_ramp, 0,
      AERO_PD_RAMP},
     {"mic", AERO_PD_LIST, 3, (t_method)treebranch_tilde_mic, 0,
-     AERO_PD_NOTE("a finite direction")},
+     AERO_PD_NOTE("a finite direction; 0 0 0 aims it at the tree")},
     {"listener", AERO_PD_LIST, 3, (t_method)treebranch_tilde_listener, 0,
      AERO_PD_NO_RULE},
     {"ears", AERO_PD_LIST, 6, (t_method)treebranch_tilde_listener, 0, AERO_PD_NO_RULE},
     {"wind", AERO_PD_LIST, 3, (t_method)treebranch_tilde_wind, 0,
-     AERO_PD_NOTE("finite")},
+     AERO_PD_RANGE_NOTE(0, AERO_MOVING_WIND_MAX, "m/s",
+                        "the vector's length")},
     {"open", AERO_PD_SYMBOL, 0, (t_method)treebranch_tilde_open,
      AERO_PD_MESSAGE_ONLY, AERO_PD_NO_RULE},
 };
@@ -383,6 +383,7 @@ static void *treebranch_tilde_new(t_symbol *s, int argc, t_atom *argv)
         treebranch_tilde_start(x, file, 1);
     aero_pd_parse_flags(&x->x_base, argc, argv);
     x->x_creating = 0;
+    aero_pd_no_file(&x->x_base, "tree", "open");
     aero_pd_base_outlets(&x->x_base);
     return x;
 }

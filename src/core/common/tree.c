@@ -185,6 +185,51 @@ static int parse_geometry(parser *p, int line, char **f, double v[8],
     return 0;
 }
 
+/* --- the physical ceiling of a tree's geometry -----------------------------
+ * Finite numbers no tree has (a corrupt or hostile file: a branch ending at
+ * 1e30 m) are refused line by line, like any bad record, against the sizes
+ * of the largest trees measured, with a margin (tree.h states the limits):
+ * the tallest trees, coast redwoods, reach about 116 m and cannot grow
+ * beyond 122-130 m (Koch et al. 2004), so every point lies within
+ * AERO_TREE_REACH_MAX of the origin (the tree's foot) and no branch is
+ * longer; the widest trunks measure about 11 m across at the ground
+ * (General Sherman; Van Pelt 2001); the longest leaves known, of raffia
+ * palms, are commonly given as about 25 m (no survey at hand to cite).
+ * 0, or -1 reported. */
+static int tree_physical_bounds(parser *p, int line, const double v[8],
+                                int leaf)
+{
+    for (int k = 0; k < 6; k++)
+        if (!(fabs(v[k]) <= AERO_TREE_REACH_MAX)) {
+            char num[64];
+            snprintf(num, sizeof num, "%g", v[k]);
+            report_line(p->report, p->ctx, line,
+                        "coordinate %s m is farther from the tree's foot than "
+                        "any tree reaches (at most " AERO_TREE_STR(
+                            AERO_TREE_REACH_MAX) " m)", num);
+            return -1;
+        }
+    double len = dist3(v, v + 3);
+    double size_max = leaf ? AERO_TREE_LEAF_MAX : AERO_TREE_DIAMETER_MAX;
+    if (!(len <= AERO_TREE_REACH_MAX) || !(v[6] <= size_max) ||
+        !(v[7] <= size_max)) {
+        char num[128];
+        snprintf(num, sizeof num, leaf ? "with a stalk of %g m and a blade of "
+                 "%g x %g m" : "of %g m, %g to %g m across", len, v[6], v[7]);
+        report_line(p->report, p->ctx, line,
+                    leaf ? "leaf %s: larger than any leaf (a stalk of at most "
+                           AERO_TREE_STR(AERO_TREE_REACH_MAX) " m, a blade "
+                           "of at most " AERO_TREE_STR(AERO_TREE_LEAF_MAX)
+                           " m)"
+                         : "branch %s: larger than any tree's (at most "
+                           AERO_TREE_STR(AERO_TREE_REACH_MAX) " m long, "
+                           AERO_TREE_STR(AERO_TREE_DIAMETER_MAX)
+                           " m across)", num);
+        return -1;
+    }
+    return 0;
+}
+
 /* branch <id> <parent id or -1> <ax ay az> <bx by bz> <d0> <d1> */
 static int parse_branch(parser *p, int line, char **f, int nf)
 {
@@ -211,7 +256,8 @@ static int parse_branch(parser *p, int line, char **f, int nf)
     }
     if (parse_geometry(p, line, f + 3, v,
                        "branch diameters must be positive%s",
-                       "branch has zero length (start = end)%s"))
+                       "branch has zero length (start = end)%s") ||
+        tree_physical_bounds(p, line, v, 0))
         return -1;
     if (find_branch(t, &p->ids, id) >= 0) {
         report_line(p->report, p->ctx, line, "branch id %s used twice", f[1]);
@@ -262,7 +308,8 @@ static int parse_leaf(parser *p, int line, char **f, int nf)
     }
     if (parse_geometry(p, line, f + 2, v,
                        "leaf length and width must be positive%s",
-                       "leaf stalk has zero length (start = end)%s"))
+                       "leaf stalk has zero length (start = end)%s") ||
+        tree_physical_bounds(p, line, v, 1))
         return -1;
     if (grow((void **)&t->leaves, &p->lcap, t->nleaves + 1,
              sizeof *t->leaves))
@@ -566,6 +613,10 @@ static int valid_shape(const aero_tree_shape *sh)
     return sh->depth >= 0 && sh->depth <= 12 && sh->leaves >= 0
         && sh->leaves <= 10000000 && sh->height > 0.0 && sh->diameter > 0.0
         && sh->leaf_length > 0.0 && sh->leaf_width > 0.0
+        && sh->height <= AERO_TREE_GENERATE_HEIGHT_MAX
+        && sh->diameter <= AERO_TREE_DIAMETER_MAX
+        && sh->leaf_length <= AERO_TREE_LEAF_MAX
+        && sh->leaf_width <= AERO_TREE_LEAF_MAX
         && aero_is_finite(sh->height) && aero_is_finite(sh->diameter)
         && aero_is_finite(sh->leaf_length) && aero_is_finite(sh->leaf_width);
 }

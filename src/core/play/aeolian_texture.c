@@ -391,10 +391,7 @@ int aero_aeolian_texture_set(aero_aeolian *a, aero_texture *t, char *err,
     double was_period = s->period, was_frames_per_cycle = s->frames_per_cycle;
     int was_mirror = s->mirror;
     if (t) {
-        const char *kind = t->head.kind;
-        if (strcmp(kind, "aeolian")) {
-            snprintf(err, errlen, "not an aeolian texture (kind=%s)",
-                     kind[0] ? kind : "missing");
+        if (aero_texture_wrong_kind(t, "aeolian", err, errlen)) {
             return -1;
         }
         double v0 = t->head.v0;
@@ -1163,12 +1160,12 @@ int aero_aeolian_texture_process(aero_aeolian *a, const float *speed,
             aero_pose_queue_pop(&s->queue);
             m = n - done < AERO_STICK_CHUNK ? n - done : AERO_STICK_CHUNK;
         }
-        /* the inlet's mean speed over the chunk (NaN counts as 0) */
+        /* the inlet's mean speed over the chunk (aero_speed_in) */
         double sp = 0.0;
         if (speed) {
             for (int j = 0; j < m; j++) {
                 float v = speed[done + j];
-                sp += v == v && v < 1e30f && v > -1e30f ? v : 0.0f;
+                sp += aero_speed_in(v, &s->clamped);
             }
             sp /= m;
         }

@@ -159,15 +159,12 @@ int aero_body_set_texture(aero_body *s, aero_texture *t,
 {
     int was_regions = s->regions;
     if (t) {
-        const char *kind = t->head.kind, *sym = t->head.symmetry;
+        const char *sym = t->head.symmetry;
         double centre[3 * AERO_BODY_MAX_SOURCES];
         double v0 = t->head.v0;
         double d = t->head.diameter;
         int sphere;
-        if (strcmp(kind, "object")) {
-            snprintf(err, errlen, "not an object texture (kind=%s; aeolian "
-                     "textures are for [aeolian~])",
-                     kind[0] ? kind : "missing");
+        if (aero_texture_wrong_kind(t, "object", err, errlen)) {
             return -1;
         }
         if (strcmp(sym, "sphere") && strcmp(sym, "axis")) {
@@ -772,10 +769,10 @@ int aero_body_process(aero_body *s, const float *speed,
         }
         double sp = 0.0, wind[3], ears[AERO_BODY_MAX_EARS][3], gain, alpha;
         double pace;
-        if (speed) { /* the inlet's mean over the chunk (NaN counts as 0) */
+        if (speed) { /* the inlet's mean over the chunk (aero_speed_in) */
             for (int j = 0; j < m; j++) {
                 float v = speed[done + j];
-                sp += v == v && v < 1e30f && v > -1e30f ? v : 0.0f;
+                sp += aero_speed_in(v, &s->base.clamped);
             }
             sp /= m;
         }

@@ -616,14 +616,13 @@ void aero_treebranch_process(aero_treebranch *tb, float *out0, float *out1,
     }
 }
 
-/* the mean of a block of speeds; 0 when not finite or beyond 1e30 */
-static double block_mean(const float *in, int n)
+/* the mean of a block of speeds, each as aero_speed_in takes it */
+static double block_mean(const float *in, int n, int *clamped)
 {
     double sum = 0.0;
     for (int i = 0; i < n; i++)
-        sum += in[i];
-    double mean = sum / n;
-    return mean == mean && fabs(mean) <= 1e30 ? mean : 0.0;
+        sum += aero_speed_in(in[i], clamped);
+    return sum / n;
 }
 
 int aero_treebranch_process_speed(aero_treebranch *tb, const float *speed,
@@ -632,9 +631,9 @@ int aero_treebranch_process_speed(aero_treebranch *tb, const float *speed,
     int clamped = 0;
     /* frames are ~10 ms apart: one speed a block is enough */
     if (speed && n > 0) {
-        double u = block_mean(speed, n);
-        if (u != tb->speed)
-            clamped = aero_treebranch_set_speed(tb, u) == 1;
+        double u = block_mean(speed, n, &clamped);
+        if (u != tb->speed && aero_treebranch_set_speed(tb, u) == 1)
+            clamped = 1;
     }
     aero_treebranch_process(tb, out0, out1, n);
     return clamped;

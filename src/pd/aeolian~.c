@@ -32,7 +32,9 @@ static int aeolian_tilde_process(void *obj, const float *in,
 {
     t_aeolian_tilde *x = obj;
     aero_pd_pose_clock_block(&x->x_clock);
-    return aero_aeolian_process(&x->x_core, in, out, n);
+    int clamped = aero_aeolian_process(&x->x_core, in, out, n);
+    aero_pd_near(&x->x_base, &x->x_core.near);
+    return clamped;
 }
 
 static void aeolian_tilde_dsp(t_aeolian_tilde *x, t_signal **sp)

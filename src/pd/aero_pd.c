@@ -204,6 +204,12 @@ static void base_report(aero_pd_base *b)
                  (double)AERO_PD_CEILING_PA);
         b->warned_ceiling = 1;
     }
+    if (b->near_hit && !b->warned_near) {
+        pd_error(b->owner, "%s: listener within %g m of the source: heard "
+                 "as at %g m (the far field does not hold closer)", b->obj,
+                 b->near_m, b->near_m);
+        b->warned_near = 1;
+    }
 }
 
 void aero_pd_base_init(aero_pd_base *b, void *owner, const aero_pd_spec *spec,

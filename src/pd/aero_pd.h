@@ -160,6 +160,10 @@ typedef struct aero_pd_base {
                          file leaves it playing */
     int file_tried;   /* a texture or tree was asked for */
     int warned_ceiling;
+    int near_hit;     /* set by perform: a listener within the near-field
+                         limit (aero_pd_near) */
+    double near_m;    /* that limit, m */
+    int warned_near;
     t_clock *clock;
     t_outlet *out[2];
     aero_pd_process process;
@@ -201,6 +205,20 @@ static inline void aero_pd_clamped(aero_pd_base *b)
 {
     if (!b->clamped) {
         b->clamped = 1;
+        clock_delay(b->clock, 0);
+    }
+}
+
+/* The near-field policy (aero_near_field, src/core/common/aero_util.h):
+ * called by an object's process with its core's record. The first time a
+ * listener came within the limit, it is reported once, from the clock:
+ * "[body~]: listener within 0.05 m of the source: heard as at 0.05 m (the
+ * far field does not hold closer)". */
+static inline void aero_pd_near(aero_pd_base *b, const aero_near *n)
+{
+    if (n->hit && !b->near_hit) {
+        b->near_hit = 1;
+        b->near_m = n->limit;
         clock_delay(b->clock, 0);
     }
 }

@@ -32,7 +32,9 @@ static int body_tilde_process(void *obj, const float *in, float *const *out,
 {
     t_body_tilde *x = obj;
     aero_pd_pose_clock_block(&x->x_clock);
-    return aero_body_process(&x->x_core, in, out, n);
+    int clamped = aero_body_process(&x->x_core, in, out, n);
+    aero_pd_near(&x->x_base, &x->x_core.base.near);
+    return clamped;
 }
 
 static void body_tilde_dsp(t_body_tilde *x, t_signal **sp)

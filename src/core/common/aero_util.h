@@ -106,6 +106,47 @@ static inline float aero_speed_in(float v, int *clamped)
     return v;
 }
 
+/* The one near-field policy (CONTRIBUTING.md, "One policy per kind of
+ * input"). The compact far-field laws (Curle 1955: p ~ r.g / r^2) do not
+ * hold closer to a source than about its size, `limit` m (each object
+ * states its own). A listener closer is heard as at `limit` along its own
+ * direction from the source: only the magnitude of r is clamped, so the
+ * level is the same on both sides of the source and continuous across the
+ * limit, and nothing changes for a listener at or beyond it. Exactly at the
+ * source (|r| below 1e-9 of the limit) the direction is undefined and
+ * `dir` (a unit vector, the source's lift) is taken: the loudest way of
+ * the dipole, so that a listener at a sounding source is never silent.
+ * r is the source-to-listener vector, changed in place; returns 1 when the
+ * policy acted (the object reports it once, `near` below). */
+typedef struct {
+    int hit;      /* a listener was within the limit */
+    double limit; /* the limit then, m */
+} aero_near;
+
+static inline int aero_near_field(double *r, double limit,
+                                  const double *dir, aero_near *near)
+{
+    double d2 = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+    if (!(d2 < limit * limit))
+        return 0;
+    double d = sqrt(d2), k;
+    if (d < 1e-9 * limit) {
+        r[0] = dir[0] * limit;
+        r[1] = dir[1] * limit;
+        r[2] = dir[2] * limit;
+    } else {
+        k = limit / d;
+        r[0] *= k;
+        r[1] *= k;
+        r[2] *= k;
+    }
+    if (!near->hit) {
+        near->hit = 1;
+        near->limit = limit;
+    }
+    return 1;
+}
+
 static inline int aero_is_finite(double v)
 {
     return v == v && v < 1e300 && v > -1e300;

@@ -71,6 +71,8 @@
 #define AERO_AEOLIAN_SOURCES_MAX 256 /* point sources of texture mode */
 #define AERO_AEOLIAN_ROLL_MAX 1e6    /* deg, either way */
 #define AERO_AEOLIAN_PHASE_WANDER_MAX 0.1
+/* model mode's near-field limit: a diameter, at least this (m) */
+#define AERO_AEOLIAN_NEAR_MIN 0.01
 
 /* defaults (gain and ramp: aero_ranges.h) */
 #define AERO_AEOLIAN_DIAMETER_DEFAULT 0.01 /* m */
@@ -167,6 +169,10 @@ typedef struct aero_aeolian {
     int sources;        /* 0: length / (3 d) */
     double exponent;
     double phase_wander;
+
+    /* a listener came within the near-field limit (aero_near_field:
+       model mode max(d, AERO_AEOLIAN_NEAR_MIN), texture mode d / 2) */
+    aero_near near;
 
     /* the modes */
     aero_aeolian_model model;

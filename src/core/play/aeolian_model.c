@@ -78,19 +78,21 @@ static void update_geometry(aero_aeolian *a)
         points = AERO_AEOLIAN_MAX_POINTS;
     if (points < 1)
         points = 1;
-    double r_min = fmax(d, 0.01); /* the compact-source law fails closer */
+    /* the compact-source law fails closer (the near-field policy,
+       aero_near_field): exactly at a segment, heard along +y, its lift */
+    double r_min = fmax(d, AERO_AEOLIAN_NEAR_MIN);
+    const double lift_dir[3] = {0.0, 1.0, 0.0};
     double distance_sum = 0;
     for (int e = 0; e < a->n_ears; e++) {
         const double *ear = m->ctl + AERO_AEO_EAR + 3 * e;
         double lift = 0, drag = 0;
         for (int j = 0; j < points; j++) {
             double z = ((j + 0.5) / points - 0.5) * l;
-            double dz = ear[2] - z;
-            double r2 = ear[0] * ear[0] + ear[1] * ear[1] + dz * dz;
-            if (r2 < r_min * r_min)
-                r2 = r_min * r_min;
-            lift += (ear[1] / r2) * (ear[1] / r2);
-            drag += (ear[0] / r2) * (ear[0] / r2);
+            double r[3] = {ear[0], ear[1], ear[2] - z};
+            aero_near_field(r, r_min, lift_dir, &a->near);
+            double r2 = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+            lift += (r[1] / r2) * (r[1] / r2);
+            drag += (r[0] / r2) * (r[0] / r2);
         }
         m->lift_geometry[e] = sqrt(lift * n_segments / points);
         m->drag_geometry[e] = sqrt(drag * n_segments / points);

@@ -734,7 +734,7 @@ static void re_factors(const aero_aeolian_texture *s, aero_aeolian_source *src,
     *level = src->law_level;
 }
 
-static int source_at(const aero_aeolian *a, const stick_frame *f, double u,
+static int source_at(aero_aeolian *a, const stick_frame *f, double u,
                      aero_aeolian_source *src, source_geometry *g)
 {
     const aero_aeolian_texture *s = a->texture;
@@ -781,9 +781,10 @@ static int source_at(const aero_aeolian *a, const stick_frame *f, double u,
     for (int e = 0; e < a->n_ears; e++) {
         double r[3] = {f->ears[e][0] - pos[0], f->ears[e][1] - pos[1],
                        f->ears[e][2] - pos[2]};
+        /* inside the body the far field does not hold: the near-field
+           policy (aero_near_field), exactly at the source along the lift */
+        aero_near_field(r, 0.5 * d, across, &a->near);
         double dist = sqrt(dot3(r, r));
-        if (dist < 0.5 * d) /* inside the body: the far field does not hold */
-            dist = 0.5 * d;
         /* Curle: (q - o).g / (4 pi c0 r^2), r = |q - o|: falls as 1/r */
         double k = 1.0 / (4.0 * AERO_PI * AERO_C0 * dist * dist);
         g->fx[e] = dot3(r, perp) * k;

@@ -515,7 +515,7 @@ static void follow_reynolds(const aero_body *s, int l, double v,
 
 /* per ear: the dipole's projection r . e_i / (4 pi c0 r^2) (Curle 1955)
    and the delay r / c0, from the source at pos */
-static void project_on_ears(const aero_body *s, const double (*ears)[3],
+static void project_on_ears(aero_body *s, const double (*ears)[3],
                             const double *pos, const double *e1,
                             const double *e2, const double *e3,
                             aero_body_geometry *g)
@@ -523,11 +523,13 @@ static void project_on_ears(const aero_body *s, const double (*ears)[3],
     for (int e = 0; e < s->base.n_ears; e++) {
         double r[3] = {ears[e][0] - pos[0], ears[e][1] - pos[1],
                        ears[e][2] - pos[2]};
+        /* inside the body the far field does not hold: the near-field
+           policy (aero_near_field), exactly at the source along e2, the
+           lift (across the flow and the axis) */
+        aero_near_field(r, AERO_BODY_NEAR * s->scale * s->tex_size, e2,
+                        &s->base.near);
         double dist = sqrt(aero_dot3(r, r)), k;
-        double near = 0.25 * s->scale * s->tex_size;
         double dmax = AERO_BODY_MAX_DELAY_S * s->base.sample_rate;
-        if (dist < near) /* inside the body: the far field does not hold */
-            dist = near;
         k = 1.0 / (4.0 * AERO_PI * AERO_C0 * dist * dist);
         g->proj[e][0] = aero_dot3(r, e1) * k;
         g->proj[e][1] = aero_dot3(r, e2) * k;

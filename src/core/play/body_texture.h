@@ -51,6 +51,9 @@
 #define AERO_BODY_MAX_SOURCES 64
 #define AERO_BODY_CHUNK 32
 #define AERO_BODY_MAX_DELAY_S 1.0
+/* the near-field limit (aero_near_field), times the texture's body size
+   and the scale: the far field does not hold inside the body */
+#define AERO_BODY_NEAR 0.25
 #define AERO_BODY_SCALE_MIN 1e-3 /* of the texture's body */
 #define AERO_BODY_SCALE_MAX 1e3
 #define AERO_BODY_SCALE_DEFAULT 1.0

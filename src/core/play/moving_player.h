@@ -37,6 +37,8 @@ typedef struct {
     aero_ramp gain;        /* linear */
     aero_arrivals arrivals; /* one ring per ear (arrivals.h) */
     int clamped;           /* a speed was clamped at Mach 0.3 */
+    aero_near near;        /* a listener came within the near-field limit
+                              (aero_near_field) */
     int sounding;          /* a source radiated in the player's last chunk
                               (the player sets it): the ears and the gain
                               glide; while nothing sounds they jump */

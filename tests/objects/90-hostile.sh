@@ -375,8 +375,9 @@ chmod 600 "$HOSTILE"/unreadable.* 2>/dev/null
 # --- the hostile cases of issue 49: each input and the words it must get ---
 # One line per case: class | the object (its creation text) | messages at
 # load (after "; aero-speed 10" unless they set it) | what the log must
-# say ("!text": must not say) | the largest |sample| allowed, or - |
-# optionally, events "MS ; messages" separated by ','.
+# say ("!text": must not say; "once:text": say exactly once) | the largest
+# |sample| allowed, or -, then optionally the lowest level allowed in dB
+# SPL (not silent) | optionally, events "MS ; messages" separated by ','.
 # Files made here: F.wav is fire.wav with its first 1000 floats 3e38
 # (finite, impossible); T1.tree a tree whose second branch ends at
 # (1e30, 1e30, 1e30); folder.wav a folder. The Pd runs are short (0.5 s)
@@ -433,6 +434,9 @@ treebranch~ | treebranch~ | | no tree given | -
 fieldsound~ | fieldsound~ -demo 8 -sync | ; aero-obj log 5 | log 5 out of range (0..1 | -
 fieldsound~ | fieldsound~ -demo 8 -sync | ; aero-obj velocity 7 | velocity 7 out of range (0..1 | -
 fieldsound~ | fieldsound~ -demo 8 -sync | ; aero-obj speed 1e-30 | speed 1e-30 frames/s out of range (0.001.. | -
+aeolian~ | aeolian~ -listener 0 0 0 | | once:listener within 0.01 m of the source: heard as at 0.01 m | - 40
+aeolian~ | aeolian~ -texture cylinder -n 1 -listener 0 0 0 | ; aero-obj pose 0 0 -0.1 0 0 0.1; aero-obj wind 5 0 0 | once:listener within 0.005 m of the source: heard as at 0.005 m | - 60
+body~ | body~ -texture sphere -listener 0 0 0 | | once:listener within 0.025 m of the source: heard as at 0.025 m | - 30
 "
 hostile_case_no=0
 printf '%s\n' "$hostile_cases" | grep -v '^[[:space:]]*$' >"$HOSTILE/cases.txt"
@@ -440,6 +444,8 @@ while IFS='|' read -r c_cls c_obj c_init c_want c_peak c_events; do
     hostile_case_no=$((hostile_case_no + 1))
     c_cls=$(trim "$c_cls") c_obj=$(trim "$c_obj") c_init=$(trim "$c_init")
     c_want=$(trim "$c_want") c_peak=$(trim "$c_peak")
+    c_floor=${c_peak#* } c_peak=${c_peak%% *}
+    [ "$c_floor" = "$c_peak" ] && c_floor=
     case "$c_cls" in *"$hostile_only"*) ;; *) continue ;; esac
     case "$c_obj $c_init $c_want" in *"${HOSTILE_CASES_ONLY:-}"*) ;; *) continue ;; esac
     case "$c_init" in *aero-speed*) ;; *) c_init="; aero-speed 10$c_init" ;; esac
@@ -466,6 +472,14 @@ while IFS='|' read -r c_cls c_obj c_init c_want c_peak c_events; do
             else
                 pass "[$c_obj] $c_init: does not say '${c_want#!}'"
             fi ;;
+        once:*) c_n=$(grep -a -F -e "${c_want#once:}" "$c_log" |
+                    grep -a -c -F -e "[$c_cls]")
+            if [ "$c_n" -eq 1 ]; then
+                pass "[$c_obj] $c_init: says once '${c_want#once:}'"
+            else
+                fail "[$c_obj] $c_init: says '${c_want#once:}' $c_n times; it says:"
+                grep -a -e "error" "$c_log" | head -4 | sed 's/^/        /'
+            fi ;;
         *) if grep -a -F -e "$c_want" "$c_log" | grep -a -q -F -e "[$c_cls]"; then
                 pass "[$c_obj] $c_init: says '$c_want'"
             else
@@ -474,6 +488,10 @@ while IFS='|' read -r c_cls c_obj c_init c_want c_peak c_events; do
             fi ;;
     esac
     [ "$c_peak" != "-" ] && judge $ANALYZE finite "$OUT/$c_name.wav" --max "$c_peak"
+    if [ -n "$c_floor" ]; then # not silent, and finite
+        judge $ANALYZE finite "$OUT/$c_name.wav"
+        judge $ANALYZE level "$OUT/$c_name.wav" --min "$c_floor"
+    fi
 done <"$HOSTILE/cases.txt"
 
 # an output in a folder that does not exist: refused before any work, by

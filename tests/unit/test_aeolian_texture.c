@@ -795,7 +795,59 @@ UNIT_TEST(blade_top)
                "%.3g, without %.3g (more than 10 x)", with, without);
 }
 
-UNIT_MAIN(UNIT_CASE(static_stick_pitch), UNIT_CASE(block_sizes),
+/* 10. The near-field policy (aero_util.h, aero_near_field; issue 49): a
+ * listener passing through a source along the lift (+y here: the stick
+ * along z, the wind along x). Curle's (1955) compact far field does not
+ * hold inside the body, d / 2 = 5 mm of this 1 cm stick: closer, the
+ * listener is heard as at 5 mm, so the level is flat there and continuous
+ * at the limit, and exactly at the source it is the same (heard along the
+ * lift), neither silent nor NaN. Beyond the limit nothing changes (1/r). */
+static double near_rms(double y, int *hit)
+{
+    const int n = 12000;
+    float *x = calloc(n, sizeof(float));
+    double f100[1] = {100.0}, wind[3] = {10.0, 0, 0};
+    double a[3] = {0, 0, -0.1}, b[3] = {0, 0, 0.1};
+    aero_aeolian s;
+    setup(&s, make_texture(1, f100, "0", "1", "0"), 1);
+    aero_aeolian_set_sources(&s, 1); /* one source, at the middle */
+    aero_aeolian_set_pose(&s, a, b, -1.0);
+    aero_aeolian_set_wind(&s, wind);
+    aero_aeolian_set_ears(&s, &(aero_ears){1, {{0.0, y, 0.0}}});
+    render(&s, x, n, 64);
+    double r = rms(x + 4800, n - 4800);
+    *hit = s.near.hit;
+    if (!isfinite(r))
+        r = -1.0;
+    aero_aeolian_free(&s);
+    free(x);
+    return r;
+}
+
+UNIT_TEST(listener_through_source)
+{
+    const double limit = 0.005; /* d / 2 */
+    int hit, far_hit;
+    double at_limit = near_rms(limit, &hit);
+    double outside = near_rms(2.0 * limit, &far_hit);
+    UNIT_NEAR_REL(20.0 * log10(at_limit / outside), 6.0206, 0.002,
+                  "beyond the limit, 1/r: 5 mm is 6 dB above 1 cm");
+    UNIT_CHECK(!far_hit, "a listener at 1 cm is not within the limit");
+    UNIT_NEAR_REL(near_rms(limit * (1.0 + 1e-6), &hit), at_limit, 1e-4,
+                  "continuous at the limit, from outside");
+    const double ys[] = {-0.004, -0.002, -0.0005, -1e-13, 0.0, 1e-13,
+                         0.0005, 0.002, 0.004};
+    for (size_t i = 0; i < sizeof(ys) / sizeof(ys[0]); i++) {
+        char what[96];
+        snprintf(what, sizeof what, "listener at y = %g m: heard as at the "
+                 "limit, 5 mm", ys[i]);
+        UNIT_NEAR_REL(near_rms(ys[i], &hit), at_limit, 1e-4, what);
+        UNIT_CHECK(hit, "... and the object knows it (to warn once)");
+    }
+}
+
+UNIT_MAIN(UNIT_CASE(listener_through_source),
+          UNIT_CASE(static_stick_pitch), UNIT_CASE(block_sizes),
           UNIT_CASE(doppler_approach), UNIT_CASE(level_with_speed),
           UNIT_CASE(incoherent_sources), UNIT_CASE(directions),
           UNIT_CASE(bad_values), UNIT_CASE(wrong_kind),

@@ -547,7 +547,53 @@ UNIT_TEST(poses_within_block)
     free(b);
 }
 
-UNIT_MAIN(UNIT_CASE(static_sphere_laws), UNIT_CASE(block_sizes),
+/* The near-field policy (aero_util.h, aero_near_field; issue 49): a
+ * listener passing through the sphere's source along its lift (+y: the
+ * wind along x, the axis z). Curle's (1955) compact far field does not
+ * hold inside the body, AERO_BODY_NEAR x its 0.1 m size = 25 mm: closer,
+ * the listener is heard as at 25 mm, so the level is flat there and
+ * continuous at the limit, and exactly at the source it is the same
+ * (heard along the lift), neither silent nor NaN. */
+static double near_rms(double y, float *buf, int n, int *hit)
+{
+    aero_body s;
+    setup(&s, sphere(1), 5);
+    aero_body_set_wind(&s, w10);
+    aero_body_set_ears(&s, &(aero_ears){1, {{0.0, y, 0.0}}});
+    render(&s, buf, n, 64);
+    *hit = s.base.near.hit;
+    aero_body_free(&s);
+    double r = rms(buf + n / 4, n - n / 4);
+    return isfinite(r) ? r : -1.0;
+}
+
+UNIT_TEST(listener_through_source)
+{
+    const int n = 12000;
+    const double limit = AERO_BODY_NEAR * 0.1;
+    float *a = calloc(n, sizeof(float));
+    int hit, far_hit;
+    double at_limit = near_rms(limit, a, n, &hit);
+    double outside = near_rms(2.0 * limit, a, n, &far_hit);
+    UNIT_NEAR_REL(20.0 * log10(at_limit / outside), 6.0206, 0.002,
+                  "beyond the limit, 1/r: 25 mm is 6 dB above 5 cm");
+    UNIT_CHECK(!far_hit, "a listener at 5 cm is not within the limit");
+    UNIT_NEAR_REL(near_rms(limit * (1.0 + 1e-6), a, n, &hit), at_limit,
+                  1e-4, "continuous at the limit, from outside");
+    const double ys[] = {-0.02, -0.01, -0.001, -1e-13, 0.0, 1e-13, 0.001,
+                         0.01, 0.02};
+    for (size_t i = 0; i < sizeof(ys) / sizeof(ys[0]); i++) {
+        char what[96];
+        snprintf(what, sizeof what, "listener at y = %g m: heard as at the "
+                 "limit, 25 mm", ys[i]);
+        UNIT_NEAR_REL(near_rms(ys[i], a, n, &hit), at_limit, 1e-4, what);
+        UNIT_CHECK(hit, "... and the object knows it (to warn once)");
+    }
+    free(a);
+}
+
+UNIT_MAIN(UNIT_CASE(listener_through_source),
+          UNIT_CASE(static_sphere_laws), UNIT_CASE(block_sizes),
           UNIT_CASE(doppler_approach), UNIT_CASE(whirled_sphere),
           UNIT_CASE(direction_interpolation), UNIT_CASE(regions_centres),
           UNIT_CASE(bad_input), UNIT_CASE(save_and_load),

@@ -24,6 +24,8 @@ static int cavity_tilde_process(void *obj, const float *in,
                                 float *const *out, int n)
 {
     t_cavity_tilde *x = obj;
+    /* the near-field policy: reported once (the last block's record) */
+    aero_pd_near(&x->x_base, &x->x_core.near);
     return aero_cavity_process(&x->x_core, in, out, n);
 }
 

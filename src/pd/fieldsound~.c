@@ -194,6 +194,8 @@ static int fieldsound_tilde_process(void *obj, const float *in,
                                     float *const *out, int n)
 {
     t_fieldsound_tilde *x = obj;
+    /* the near-field policy: reported once (the last block's record) */
+    aero_pd_near(&x->x_base, &x->x_core.near);
     (void)in;
     int playing = aero_fieldsound_process(&x->x_core, out[0], n);
     if ((x->x_was_playing && !playing &&

@@ -68,6 +68,8 @@ static int leafwave_tilde_process(void *obj, const float *in,
                                   float *const *out, int n)
 {
     t_leafwave_tilde *x = obj;
+    /* the near-field policy: reported once (the last block's record) */
+    aero_pd_near(&x->x_base, &x->x_core.near);
     if (!x->x_ok) {
         for (int e = 0; e < 2; e++)
             for (int i = 0; out[e] && i < n; i++)

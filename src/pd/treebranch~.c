@@ -61,6 +61,8 @@ static int treebranch_tilde_process(void *obj, const float *in,
                                     float *const *out, int n)
 {
     t_treebranch_tilde *x = obj;
+    /* the near-field policy: reported once (the last block's record) */
+    aero_pd_near(&x->x_base, &x->x_core.near);
     if (x->x_old) {
         /* the old core into scratch first (the inlet may alias out[0]),
            faded out under the new one in chunks */

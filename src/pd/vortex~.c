@@ -30,6 +30,8 @@ static int vortex_tilde_process(void *obj, const float *in,
                                 float *const *out, int n)
 {
     t_vortex_tilde *x = obj;
+    /* the near-field policy: reported once (the last block's record) */
+    aero_pd_near(&x->x_base, &x->x_core.near);
     return aero_vortex_process(&x->x_core, in, out, n);
 }
 

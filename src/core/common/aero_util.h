@@ -123,6 +123,16 @@ typedef struct {
     double limit; /* the limit then, m */
 } aero_near;
 
+/* records the first time a listener came within `limit` (an object that
+   holds its 1/r law at the limit and has no direction to keep) */
+static inline void aero_near_seen(aero_near *near, double limit)
+{
+    if (!near->hit) {
+        near->hit = 1;
+        near->limit = limit;
+    }
+}
+
 static inline int aero_near_field(double *r, double limit,
                                   const double *dir, aero_near *near)
 {
@@ -140,10 +150,7 @@ static inline int aero_near_field(double *r, double limit,
         r[1] *= k;
         r[2] *= k;
     }
-    if (!near->hit) {
-        near->hit = 1;
-        near->limit = limit;
-    }
+    aero_near_seen(near, limit);
     return 1;
 }
 

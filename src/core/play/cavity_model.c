@@ -261,10 +261,14 @@ static int advance_ramps(aero_cavity *m, int n)
     return 1;
 }
 
-static double listener_distance(const aero_cavity *m, double r_min)
+/* the near-field policy (aero_near_field): the opening's size sqrt(L W) */
+static double listener_distance(aero_cavity *m, double r_min)
 {
     const double *e = m->ctl + AERO_CAV_EAR;
-    return fmax(sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]), r_min);
+    double r = sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+    if (r < r_min)
+        aero_near_seen(&m->near, r_min);
+    return fmax(r, r_min);
 }
 
 /* Geometry, listener and level laws, when a control or the exponent has
@@ -694,6 +698,12 @@ static void process_texture(aero_cavity *m, const float *u, float *out,
     double r = listener_distance(m, sqrt(l * w));
     double radiation = w / (4.0 * AERO_PI * AERO_C0 * r * r) *
                        m->ctl[AERO_CAV_GAIN];
+    /* closer than sqrt(L W), heard as there along the listener's own
+       direction; exactly at the cavity along +y, out of the opening (the
+       wall's normal, where a listener of a cavity in a wall stands) */
+    const double out_of_wall[3] = {0.0, 1.0, 0.0};
+    double x[3] = {e[0], e[1], e[2]};
+    aero_near_field(x, sqrt(l * w), out_of_wall, &m->near);
     double inv_v0 = 1.0 / m->texture_v0;
     /* the speed law folded into the projection: (v/v0)^2 per sample, or
        (v/v0)^n once per chunk, gliding over it */
@@ -708,7 +718,7 @@ static void process_texture(aero_cavity *m, const float *u, float *out,
         p0 = m->speed_power;
         m->speed_power = p1;
     }
-    const float cx = (float)(e[0] * radiation), cy = (float)(e[1] * radiation);
+    const float cx = (float)(x[0] * radiation), cy = (float)(x[1] * radiation);
     const double step = t->rate / m->sample_rate * inv_v0 *
                         (m->texture_length > 0.0 ? m->texture_length / l : 1.0);
     const float *data = t->data;

@@ -90,6 +90,7 @@ typedef struct aero_cavity {
     double texture_v0;
     double texture_length; /* L0 the texture was made for, m (0: unknown) */
     double texture_pos;      /* frames */
+    aero_near near; /* a listener came within sqrt(L W) (aero_near_field) */
 } aero_cavity;
 
 /* Defaults: the AERO_CAVITY_*_DEFAULT above (L 2 cm, D 1 cm, W 5 cm,

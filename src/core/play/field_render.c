@@ -238,6 +238,8 @@ static int add_source(aero_fieldsound *r, const chunk *ch, int k)
         d0 = sqrt(e0[0] * e0[0] + e0[1] * e0[1] + e0[2] * e0[2]);
     }
     r->dist[k] = (float)d1;
+    if (d1 < dmin) /* the near-field policy (aero_near_field) */
+        aero_near_seen(&r->near, dmin);
     /* retarded frame time at both ends of the chunk: the radiation
      * leaving the source at frame u arrives D/c0 later */
     double u0 = ch->ph0 - ch->s0 * d0 * inv_c0;

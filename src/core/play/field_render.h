@@ -30,6 +30,7 @@ typedef struct aero_fieldsound {
     int direct;                    /* per-sample reference sum */
     int clamped;                   /* listener faster than Mach 0.3 */
     double acc[5 * (AERO_FIELD_CHUNK + 1)];
+    aero_near near; /* a listener came within min_distance of a source */
 } aero_fieldsound;
 
 /* Defaults: listener at (0, 0, 0) ... set it; speed = the data's rate

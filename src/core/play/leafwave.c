@@ -325,6 +325,8 @@ static void read_ear(aero_leafwave *lw, int e, int start_pos, float *out,
         r += (lw->ear[e][k] - lw->source[k]) * (lw->ear[e][k] - lw->source[k]);
     r = sqrt(r);
     double delay = clampd(r / AERO_C0 * lw->sample_rate, 1.0, max_delay);
+    if (r < MIN_DISTANCE) /* the near-field policy (aero_near_field) */
+        aero_near_seen(&lw->near, MIN_DISTANCE);
     double amp = lw->gain * mic_factor(lw, lw->ear[e]) /
                  (r > MIN_DISTANCE ? r : MIN_DISTANCE);
     if (!lw->render_primed) {

@@ -206,6 +206,7 @@ typedef struct aero_leafwave {
     double ramp_samples, ramp_left;
     double delay_prev[AERO_LEAF_MAX_EARS], amp_prev[AERO_LEAF_MAX_EARS];
     int render_primed;
+    aero_near near; /* a listener came within 0.1 m (aero_near_field) */
 } aero_leafwave;
 
 /* Defaults: no tree (silent), listener at (0, -10, 1.7) (ears at x = -0.1

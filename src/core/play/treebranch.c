@@ -538,7 +538,7 @@ static double ring_read(const aero_treebranch *tb, double pos)
 }
 
 /* delay (samples) and factor (gain / r times the mic) for an ear */
-static void ear_path(const aero_treebranch *tb, const double p[3],
+static void ear_path(aero_treebranch *tb, const double p[3],
                      double *delay, double *level)
 {
     double to_tree[3], r, cosmu = 1.0, s = 1.0;
@@ -548,8 +548,10 @@ static void ear_path(const aero_treebranch *tb, const double p[3],
     r = sqrt(aero_dot3(to_tree, to_tree));
     if (aero_dot3(tb->mic_dir, tb->mic_dir) > 0.0 && r > 0.0)
         cosmu = aero_dot3(tb->mic_dir, to_tree) / r;
-    if (r < MIN_DISTANCE)
+    if (r < MIN_DISTANCE) { /* the near-field policy (aero_near_field) */
+        aero_near_seen(&tb->near, MIN_DISTANCE);
         r = MIN_DISTANCE;
+    }
     if (r > MAX_DISTANCE)
         r = MAX_DISTANCE;
     *delay = r / AERO_C0 * tb->sample_rate;

@@ -92,6 +92,7 @@ typedef struct aero_treebranch {
     long ring_len;
     long long written, now;    /* samples made / samples output */
     double delay[2], level[2]; /* current, per ear: samples and factor */
+    aero_near near; /* a listener came within 0.1 m (aero_near_field) */
 } aero_treebranch;
 
 /* Defaults: no tree (silent), wind 0, the constants above with the mic

@@ -403,7 +403,10 @@ static void render_ear(aero_vortex *m, const block *b, int i, int e,
     double g0, g1, s0, ds, vs, vl;
     const float *qa = m->tab + (size_t)c * b->stride;
     const float *qb = m->nspeeds > 1 ? qa + b->stride : qa;
-    if (r1 < m->r_min) r1 = m->r_min;
+    if (r1 < m->r_min) { /* the near-field policy (aero_near_field) */
+        aero_near_seen(&m->near, m->r_min);
+        r1 = m->r_min;
+    }
     if (rs < m->r_min) rs = m->r_min;
     if (r0 < 0.0) {
         /* first block: start at the source's offset, delayed by the

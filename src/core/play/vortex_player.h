@@ -82,6 +82,7 @@ typedef struct aero_vortex {
                                    the last block (<0: not yet known) */
     double *rd;                 /* 2 n: read position for each ear, frames */
     double ear[6], ear_target[6]; /* mono uses ear 0 */
+    aero_near near;             /* a listener came within r_min */
 } aero_vortex;
 
 /* Defaults: the AERO_VORTEX_*_DEFAULT above (1 source, at the origin, no

@@ -209,10 +209,15 @@ static inline void aero_pd_clamped(aero_pd_base *b)
     }
 }
 
-/* The near-field policy (aero_near_field, src/core/common/aero_util.h):
- * called by an object's process with its core's record. The first time a
- * listener came within the limit, it is reported once, from the clock:
- * "[body~]: listener within 0.05 m of the source: heard as at 0.05 m (the
+/* --- a listener at the source: one near-field policy ---------------------
+ * Closer to a source than its near-field limit (about its size: the
+ * compact far field does not hold inside it), a listener is heard as at
+ * the limit along its own direction; exactly at the source, along the
+ * source's lift (aero_near_field, src/core/common/aero_util.h; the limits
+ * per object in docs/objects.md). Every object's process calls this with
+ * its core's record; the first time a listener came within the limit, it
+ * is reported once, from the clock (never from perform):
+ * "[body~]: listener within 0.025 m of the source: heard as at 0.025 m (the
  * far field does not hold closer)". */
 static inline void aero_pd_near(aero_pd_base *b, const aero_near *n)
 {

@@ -114,8 +114,9 @@ static inline float aero_speed_in(float v, int *clamped)
  * level is the same on both sides of the source and continuous across the
  * limit, and nothing changes for a listener at or beyond it. Exactly at the
  * source (|r| below 1e-9 of the limit) the direction is undefined and
- * `dir` (a unit vector, the source's lift) is taken: the loudest way of
- * the dipole, so that a listener at a sounding source is never silent.
+ * `dir` (a unit vector: the source's lift, or, for a cavity, the wall's
+ * normal) is taken: the loudest way of a lift dipole, so that a listener at a
+ * sounding source is never silent.
  * r is the source-to-listener vector, changed in place; returns 1 when the
  * policy acted (the object reports it once, `near` below). */
 typedef struct {

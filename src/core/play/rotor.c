@@ -1,0 +1,513 @@
+/* aero: a rotor's tones from Gutin's closed form per strip, heard from its
+ * moving hub (see rotor.h). */
+#include "rotor.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "aero_air.h"
+
+/* area of a NACA four-digit section: 0.685 t c (Abbott & von Doenhoff
+   1959), the strip's displaced volume per unit span */
+#define SECTION_AREA 0.685
+/* harmonics below this fraction of the strongest are not rendered */
+#define HARMONIC_FLOOR 1e-5
+#define TWO_PI (2.0 * AERO_PI)
+
+/* --- geometry ------------------------------------------------------------- */
+
+/* the strips: centres of equal annuli from the hub to the tip; one strip
+   at Gutin's (1936) effective radius 0.8 R. Thrust and drag per strip ~
+   r^2 dr (the local dynamic pressure), summing to the rotor's thrust and
+   torque over the B blades. */
+static void layout(aero_rotor *r)
+{
+    const int N = r->strips, B = r->blades;
+    const double R = r->radius, h = r->hub;
+    const double dr = R * (1.0 - h) / N;
+    double w_sum = 0.0, q_arm = 0.0;
+    for (int s = 0; s < N; s++) {
+        double rs = N == 1 ? 0.8 * R : R * (h + (1.0 - h) * (s + 0.5) / N);
+        r->strip[s].r = rs;
+        r->strip[s].thrust = rs * rs; /* weights for now */
+        w_sum += rs * rs;
+    }
+    for (int s = 0; s < N; s++) {
+        double w = r->strip[s].thrust / w_sum;
+        r->strip[s].thrust = r->thrust * w / B;
+        q_arm += w * r->strip[s].r;
+        r->strip[s].volume = SECTION_AREA * r->thickness * r->chord *
+                             r->chord * (N == 1 ? R * (1.0 - h) : dr);
+    }
+    /* the drag follows the same r^2 weights: D_s = Q w_s / (B sum w r) */
+    for (int s = 0; s < N; s++) {
+        double w = r->strip[s].r * r->strip[s].r / w_sum;
+        r->strip[s].drag = r->torque * w / (B * q_arm);
+    }
+}
+
+/* R(q) v for a unit quaternion q = (w, x, y, z) */
+static void turn(const double *q, const double *v, double *out)
+{
+    double u[3] = {q[1], q[2], q[3]}, t[3], c[3];
+    aero_cross3(u, v, t);
+    for (int i = 0; i < 3; i++)
+        t[i] *= 2.0;
+    aero_cross3(u, t, c);
+    for (int i = 0; i < 3; i++)
+        out[i] = v[i] + q[0] * t[i] + c[i];
+}
+
+/* --- life cycle ------------------------------------------------------------ */
+
+int aero_rotor_init(aero_rotor *r, double sample_rate, int n_ears,
+                    uint32_t seed)
+{
+    static const double unturned[7] = {0, 0, 0, 1, 0, 0, 0};
+    memset(r, 0, sizeof(*r));
+    r->blades = AERO_ROTOR_BLADES_DEFAULT;
+    r->strips = AERO_ROTOR_STRIPS_DEFAULT;
+    r->radius = AERO_ROTOR_RADIUS_DEFAULT;
+    r->chord = AERO_ROTOR_CHORD_DEFAULT;
+    r->thickness = AERO_ROTOR_THICKNESS_DEFAULT;
+    r->hub = AERO_ROTOR_HUB_DEFAULT;
+    r->thrust = AERO_ROTOR_THRUST_DEFAULT;
+    r->torque = AERO_ROTOR_TORQUE_DEFAULT;
+    r->design_rpm = AERO_ROTOR_DESIGN_DEFAULT;
+    layout(r);
+    memcpy(r->pose, unturned, sizeof(unturned));
+    aero_pose_path_jump(&r->path, 7, unturned);
+    return aero_moving_player_init(
+        &r->base,
+        sample_rate >= AERO_MOVING_SR_MIN && sample_rate <= AERO_MOVING_SR_MAX
+            ? sample_rate
+            : 48000.0,
+        n_ears, seed, AERO_ROTOR_CHUNK, AERO_ROTOR_MAX_DELAY_S);
+}
+
+void aero_rotor_free(aero_rotor *r)
+{
+    aero_moving_player_free(&r->base);
+}
+
+/* --- settings -------------------------------------------------------------- */
+
+int aero_rotor_set_sample_rate(aero_rotor *r, double sr)
+{
+    int k = aero_moving_player_set_sample_rate(&r->base, sr);
+    if (k == 1)
+        r->primed = 0; /* new rings: the tones start again from 0 */
+    return k < 0 ? -1 : 0;
+}
+
+/* a setting within lo..hi, then the strips laid out again */
+static int set_geometry(aero_rotor *r, double *field, double v, double lo,
+                        double hi)
+{
+    if (!(v >= lo && v <= hi))
+        return -1;
+    *field = v;
+    layout(r);
+    return 0;
+}
+
+static int set_whole(aero_rotor *r, int *field, double v, int lo, int hi)
+{
+    if (!(v >= lo && v <= hi) || v != floor(v))
+        return -1;
+    *field = (int)v;
+    layout(r);
+    return 0;
+}
+
+int aero_rotor_set_blades(aero_rotor *r, double blades)
+{
+    return set_whole(r, &r->blades, blades, AERO_ROTOR_BLADES_MIN,
+                     AERO_ROTOR_BLADES_MAX);
+}
+
+int aero_rotor_set_strips(aero_rotor *r, double strips)
+{
+    return set_whole(r, &r->strips, strips, AERO_ROTOR_STRIPS_MIN,
+                     AERO_ROTOR_STRIPS_MAX);
+}
+
+int aero_rotor_set_radius(aero_rotor *r, double m)
+{
+    return set_geometry(r, &r->radius, m, AERO_ROTOR_RADIUS_MIN,
+                        AERO_ROTOR_RADIUS_MAX);
+}
+
+int aero_rotor_set_chord(aero_rotor *r, double m)
+{
+    return set_geometry(r, &r->chord, m, AERO_ROTOR_CHORD_MIN,
+                        AERO_ROTOR_CHORD_MAX);
+}
+
+int aero_rotor_set_thickness(aero_rotor *r, double ratio)
+{
+    return set_geometry(r, &r->thickness, ratio, AERO_ROTOR_THICKNESS_MIN,
+                        AERO_ROTOR_THICKNESS_MAX);
+}
+
+int aero_rotor_set_hub(aero_rotor *r, double ratio)
+{
+    return set_geometry(r, &r->hub, ratio, AERO_ROTOR_HUB_MIN,
+                        AERO_ROTOR_HUB_MAX);
+}
+
+int aero_rotor_set_thrust(aero_rotor *r, double newton)
+{
+    return set_geometry(r, &r->thrust, newton, -AERO_ROTOR_THRUST_LIMIT,
+                        AERO_ROTOR_THRUST_LIMIT);
+}
+
+int aero_rotor_set_torque(aero_rotor *r, double newton_metre)
+{
+    return set_geometry(r, &r->torque, newton_metre,
+                        -AERO_ROTOR_TORQUE_LIMIT, AERO_ROTOR_TORQUE_LIMIT);
+}
+
+int aero_rotor_set_design(aero_rotor *r, double rpm)
+{
+    return set_geometry(r, &r->design_rpm, rpm, AERO_ROTOR_DESIGN_MIN,
+                        AERO_ROTOR_DESIGN_MAX);
+}
+
+int aero_rotor_set_gain_db(aero_rotor *r, double db)
+{
+    return aero_moving_player_set_gain_db(&r->base, db);
+}
+
+int aero_rotor_set_ramp_ms(aero_rotor *r, double ms)
+{
+    return aero_moving_player_set_ramp_ms(&r->base, ms);
+}
+
+int aero_rotor_set_wind(aero_rotor *r, const double w[3])
+{
+    return aero_moving_player_set_wind(&r->base, w);
+}
+
+int aero_rotor_set_ears(aero_rotor *r, const aero_ears *e)
+{
+    return aero_moving_player_set_ears(&r->base, e);
+}
+
+/* --- pose ------------------------------------------------------------------ */
+
+/* a valid pose p: position, quaternion normalised (the shorter way round
+   from the last) */
+static void apply_pose(aero_rotor *r, double *p, double interval_s)
+{
+    const double *to = r->path.to;
+    if (p[3] * to[3] + p[4] * to[4] + p[5] * to[5] + p[6] * to[6] < 0.0)
+        for (int i = 3; i < 7; i++)
+            p[i] = -p[i];
+    if (!r->pose_set || interval_s < 0.0 || interval_s > 0.5) {
+        aero_pose_path_jump(&r->path, 7, p);
+        memcpy(r->pose, p, 7 * sizeof(double));
+        r->pose_set = 1;
+        return;
+    }
+    if (!(interval_s >= 0.001))
+        interval_s = 0.001;
+    aero_pose_path_to(&r->path, p, interval_s * r->base.sample_rate);
+}
+
+int aero_rotor_set_pose_at(aero_rotor *r, const double pos[3],
+                           const double quat[4], double interval_s,
+                           int offset)
+{
+    aero_pose_event e, oldest;
+    double n = sqrt(quat[0] * quat[0] + quat[1] * quat[1] +
+                    quat[2] * quat[2] + quat[3] * quat[3]);
+    if (!aero_position_ok(pos) || !aero_finite_within(quat, 4, 1e6) ||
+        !(n > 1e-9) || !aero_is_finite(interval_s))
+        return -1;
+    for (int i = 0; i < 3; i++)
+        e.x[i] = pos[i];
+    for (int i = 0; i < 4; i++)
+        e.x[3 + i] = quat[i] / n;
+    e.has_extra = 0;
+    e.interval_s = interval_s;
+    e.offset = offset;
+    if (aero_pose_queue_push(&r->queue, &e, &oldest))
+        apply_pose(r, oldest.x, oldest.interval_s); /* full: at once */
+    return 0;
+}
+
+void aero_rotor_orientation(const aero_rotor *r, double quat[4])
+{
+    const aero_pose_event *e = aero_pose_queue_back(&r->queue);
+    for (int k = 0; k < 4; k++)
+        quat[k] = e ? e->x[3 + k] : r->path.to[3 + k];
+}
+
+/* the pose at the chunk's end on the path, the quaternion normalised */
+static void advance_pose(aero_rotor *r, int m)
+{
+    double n = 0.0;
+    aero_pose_path_advance(&r->path, m);
+    memcpy(r->pose, r->path.pos, sizeof(r->pose));
+    for (int i = 3; i < 7; i++)
+        n += r->pose[i] * r->pose[i];
+    n = sqrt(n);
+    for (int i = 3; i < 7; i++)
+        r->pose[i] = n > 1e-12 ? r->pose[i] / n : (i == 3);
+}
+
+/* --- Gutin's harmonics ------------------------------------------------------- */
+
+/* J_n(z), n >= 1, by Miller's backward recurrence (stable for the orders
+   above z that a subsonic tip gives) normalised by J_0 + 2 SUM J_2k = 1 */
+static double bessel_jn(int n, double z)
+{
+    if (!(z > 1e-9))
+        return 0.0;
+    int start = n + (int)sqrt(40.0 * (n + z)) + 10;
+    start += start & 1;
+    double next = 0.0, cur = 1e-30, norm = 0.0, jn = 0.0;
+    for (int k = start; k > 0; k--) {
+        double prev = 2.0 * k / z * cur - next; /* J_{k-1} */
+        next = cur;
+        cur = prev;
+        if (k - 1 == n)
+            jn = cur;
+        if (k - 1 > 0 && (k - 1) % 2 == 0)
+            norm += 2.0 * cur;
+        if (fabs(cur) > 1e200) { /* rescale all so far */
+            next *= 1e-200;
+            cur *= 1e-200;
+            norm *= 1e-200;
+            jn *= 1e-200;
+        }
+    }
+    norm += cur; /* J_0 */
+    return jn / norm;
+}
+
+/* the coefficients of cos(n Psi) and sin(n Psi), n = mB, of the tone at
+   distance d, direction (cos theta, sin theta, phi) in the rotor frame,
+   angular speed omega > 0 (rotor.h's formula) */
+static void harmonic_at(const aero_rotor *r, double omega, double ct,
+                        double st, double phi, double d, int m, double *c,
+                        double *s)
+{
+    const int B = r->blades, n = m * B;
+    const double load = (omega * 60.0 / TWO_PI) / r->design_rpm;
+    const double k2 = load * load; /* loading ~ rpm^2 */
+    double L = 0.0, Th = 0.0;
+    for (int q = 0; q < r->strips; q++) {
+        const aero_rotor_strip *sp = &r->strip[q];
+        double jn = bessel_jn(n, n * omega * sp->r * st / AERO_C0);
+        L += jn * k2 * (-sp->thrust * ct +
+                        sp->drag * AERO_C0 / (omega * sp->r));
+        Th += jn * sp->volume;
+    }
+    double K = n * omega * B / (4.0 * AERO_PI * AERO_C0 * d);
+    double th = n * omega * AERO_RHO * AERO_C0 * Th;
+    double g = n * (phi - 0.5 * AERO_PI);
+    double cg = cos(g), sg = sin(g);
+    *c = 2.0 * K * (-th * cg + L * sg);
+    *s = 2.0 * K * (-L * cg - th * sg);
+}
+
+double aero_rotor_harmonic_amplitude(const aero_rotor *r, int m,
+                                     double omega, double theta, double d)
+{
+    double c, s;
+    if (m < 1 || !(omega > 0.0) || !(d > 0.0))
+        return 0.0;
+    harmonic_at(r, omega, cos(theta), sin(theta), 0.0, d, m, &c, &s);
+    return hypot(c, s);
+}
+
+/* the coefficients of harmonics 1..h at an ear: all below the Nyquist
+   frequency, stopping past the strongest once they fall below
+   HARMONIC_FLOOR of it (a subsonic tip's harmonics fall geometrically) */
+static void ear_tones(const aero_rotor *r, double omega, const double *ear,
+                      const double *axes, aero_rotor_ear *out)
+{
+    const double nyq = 0.45 * r->base.sample_rate * TWO_PI;
+    const double w = fabs(omega);
+    double v[3], d, x, y, zc, ct, st, phi, best = 0.0;
+    int h_max;
+    for (int i = 0; i < 3; i++)
+        v[i] = ear[i] - r->pose[i];
+    d = sqrt(aero_dot3(v, v));
+    out->delay = d / AERO_C0 * r->base.sample_rate;
+    memset(out->c, 0, sizeof(out->c));
+    memset(out->s, 0, sizeof(out->s));
+    out->h = 0;
+    if (d < 1e-3)
+        d = 1e-3; /* the listener inside the hub */
+    x = aero_dot3(v, axes) / d;
+    y = aero_dot3(v, axes + 3) / d;
+    zc = aero_dot3(v, axes + 6) / d;
+    ct = zc > 1.0 ? 1.0 : zc < -1.0 ? -1.0 : zc;
+    st = sqrt(fmax(0.0, 1.0 - ct * ct));
+    phi = atan2(y, x);
+    if (omega < 0.0) /* turning the other way: the mirror image */
+        phi = -phi;
+    if (!(w > 1e-6))
+        return;
+    h_max = (int)(nyq / (w * r->blades));
+    if (h_max > AERO_ROTOR_HARMONICS_MAX)
+        h_max = AERO_ROTOR_HARMONICS_MAX;
+    for (int m = 1; m <= h_max; m++) {
+        double c1, s1;
+        harmonic_at(r, w, ct, st, phi, d, m, &c1, &s1);
+        double a = hypot(c1, s1);
+        out->c[m - 1] = c1;
+        out->s[m - 1] = omega < 0.0 ? -s1 : s1;
+        out->h = m;
+        if (a > best)
+            best = a;
+        else if (m > 2 && a < HARMONIC_FLOOR * best)
+            break;
+    }
+}
+
+/* --- processing ---------------------------------------------------------------- */
+
+/* a ramp's value after m samples (a chunk, or less where a pose splits
+   it) */
+static double ramp_after(aero_ramp *r, int m)
+{
+    if (r->left > 0.0)
+        aero_glide_values(&r->value, &r->target, 1,
+                          aero_glide_fraction(&r->left, m));
+    return r->value;
+}
+
+/* the tones of one ear over m samples: the coefficients and the delay
+   glide from then to now, the phase turns from psi0 by dpsi a sample */
+static void radiate(aero_rotor *r, const aero_rotor_ear *then,
+                    const aero_rotor_ear *now, double gain0, double gain1,
+                    double psi0, double dpsi, int e, int m)
+{
+    const int h = then->h > now->h ? then->h : now->h;
+    const double inv_m = 1.0 / m, B = r->blades;
+    float c[AERO_ROTOR_HARMONICS_MAX], s[AERO_ROTOR_HARMONICS_MAX];
+    float dc[AERO_ROTOR_HARMONICS_MAX], ds[AERO_ROTOR_HARMONICS_MAX];
+    float *ring = r->base.arrivals.ring[e];
+    const long mask = r->base.arrivals.mask;
+    const double ddelay = (now->delay - then->delay) * inv_m;
+    double at = (double)r->base.arrivals.head + then->delay;
+    /* e^{i B psi} and its turn per sample, in double: the rotation of
+       one chunk stays on the unit circle to 1e-15 */
+    double wr = cos(B * psi0), wi = sin(B * psi0);
+    const double tr = cos(B * dpsi), ti = sin(B * dpsi);
+    if (h == 0)
+        return;
+    for (int k = 0; k < h; k++) {
+        c[k] = (float)(gain0 * then->c[k]);
+        s[k] = (float)(gain0 * then->s[k]);
+        dc[k] = (float)((gain1 * now->c[k] - gain0 * then->c[k]) * inv_m);
+        ds[k] = (float)((gain1 * now->s[k] - gain0 * then->s[k]) * inv_m);
+    }
+    for (int j = 0; j < m; j++) {
+        /* harmonic k: e^{i (k+1) B psi} by repeated multiplication */
+        float zr = (float)wr, zi = (float)wi, ur = zr, ui = zi, v = 0.0f;
+        for (int k = 0; k < h; k++) {
+            v += c[k] * ur + s[k] * ui;
+            float nr = ur * zr - ui * zi;
+            ui = ur * zi + ui * zr;
+            ur = nr;
+            c[k] += dc[k];
+            s[k] += ds[k];
+        }
+        aero_arrivals_add_span(ring, mask, at, 1.0 + ddelay, v);
+        at += 1.0 + ddelay;
+        double nr = wr * tr - wi * ti;
+        wi = wr * ti + wi * tr;
+        wr = nr;
+    }
+}
+
+/* the rotor's axes in the world: e1, e2 and the thrust axis, from the
+   pose's quaternion */
+static void rotor_axes(const aero_rotor *r, double *axes)
+{
+    static const double unit[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (int k = 0; k < 3; k++)
+        turn(r->pose + 3, unit[k], axes + 3 * k);
+}
+
+/* the speed of rotation over a chunk, rad per sample, each sample's rpm
+   clamped to the tip Mach limit (NaN as 0); sets *clamped */
+static double chunk_turn(const aero_rotor *r, const float *rpm, int m,
+                         int *clamped)
+{
+    const double max_rpm = AERO_ROTOR_MACH_TIP_MAX * AERO_C0 /
+                           r->radius * 60.0 / TWO_PI;
+    double sum = 0.0;
+    if (!rpm)
+        return 0.0;
+    for (int j = 0; j < m; j++) {
+        double v = rpm[j];
+        if (!(v == v))
+            v = 0.0;
+        if (v > max_rpm || v < -max_rpm) {
+            v = v > 0.0 ? max_rpm : -max_rpm;
+            *clamped = 1;
+        }
+        sum += v;
+    }
+    return sum / m * TWO_PI / 60.0 / r->base.sample_rate;
+}
+
+/* one chunk of m samples */
+static void chunk(aero_rotor *r, const float *rpm, int m)
+{
+    aero_rotor_ear now[AERO_EARS_MAX];
+    double ear[3], axes[9], gain_then = r->base.gain.value, gain;
+    double dpsi = chunk_turn(r, rpm, m, &r->base.clamped);
+    double omega = dpsi * r->base.sample_rate;
+    advance_pose(r, m);
+    rotor_axes(r, axes);
+    for (int i = 0; i < 3; i++)
+        (void)ramp_after(&r->base.wind[i], m);
+    gain = ramp_after(&r->base.gain, m);
+    for (int e = 0; e < r->base.n_ears; e++) {
+        for (int i = 0; i < 3; i++)
+            ear[i] = ramp_after(&r->base.ear[3 * e + i], m);
+        ear_tones(r, omega, ear, axes, &now[e]);
+        if (!r->primed) { /* the first chunk: the tones from 0 */
+            r->then[e] = now[e];
+            memset(r->then[e].c, 0, sizeof(r->then[e].c));
+            memset(r->then[e].s, 0, sizeof(r->then[e].s));
+        }
+        radiate(r, &r->then[e], &now[e], gain_then, gain, r->psi, dpsi, e,
+                m);
+        r->then[e] = now[e];
+    }
+    r->primed = 1;
+    r->psi = fmod(r->psi + dpsi * m, TWO_PI);
+    if (r->psi < 0.0)
+        r->psi += TWO_PI;
+}
+
+int aero_rotor_process(aero_rotor *r, const float *rpm, float *const *out,
+                       int n)
+{
+    r->base.clamped = 0;
+    for (int done = 0; done < n;) {
+        int m = n - done < AERO_ROTOR_CHUNK ? n - done : AERO_ROTOR_CHUNK;
+        /* the poses due at this sample, then a chunk up to the next */
+        while ((m = aero_pose_queue_until(&r->queue, done, m)) == 0) {
+            aero_pose_event e = *aero_pose_queue_front(&r->queue);
+            aero_pose_queue_pop(&r->queue);
+            apply_pose(r, e.x, e.interval_s);
+            m = n - done < AERO_ROTOR_CHUNK ? n - done : AERO_ROTOR_CHUNK;
+        }
+        /* read this chunk of rpm before writing that of out (Pd may pass
+           the same buffer) */
+        chunk(r, rpm ? rpm + done : NULL, m);
+        aero_arrivals_take(&r->base.arrivals, out, done, m);
+        done += m;
+    }
+    aero_pose_queue_elapse(&r->queue, n);
+    return r->base.clamped;
+}

@@ -46,18 +46,6 @@ static void layout(aero_rotor *r)
     }
 }
 
-/* R(q) v for a unit quaternion q = (w, x, y, z) */
-static void turn(const double *q, const double *v, double *out)
-{
-    double u[3] = {q[1], q[2], q[3]}, t[3], c[3];
-    aero_cross3(u, v, t);
-    for (int i = 0; i < 3; i++)
-        t[i] *= 2.0;
-    aero_cross3(u, t, c);
-    for (int i = 0; i < 3; i++)
-        out[i] = v[i] + q[0] * t[i] + c[i];
-}
-
 /* --- life cycle ------------------------------------------------------------ */
 
 int aero_rotor_init(aero_rotor *r, double sample_rate, int n_ears,
@@ -352,9 +340,9 @@ static void ear_tones(const aero_rotor *r, double omega, const double *ear,
         phi = -phi;
     if (!(w > 1e-6))
         return;
-    h_max = (int)(nyq / (w * r->blades));
-    if (h_max > AERO_ROTOR_HARMONICS_MAX)
-        h_max = AERO_ROTOR_HARMONICS_MAX;
+    double below = nyq / (w * r->blades); /* harmonics under Nyquist */
+    h_max = below < AERO_ROTOR_HARMONICS_MAX ? (int)below
+                                             : AERO_ROTOR_HARMONICS_MAX;
     for (int m = 1; m <= h_max; m++) {
         double c1, s1;
         harmonic_at(r, w, ct, st, phi, d, m, &c1, &s1);
@@ -432,7 +420,7 @@ static void rotor_axes(const aero_rotor *r, double *axes)
 {
     static const double unit[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     for (int k = 0; k < 3; k++)
-        turn(r->pose + 3, unit[k], axes + 3 * k);
+        aero_quat_rotate(r->pose + 3, unit[k], axes + 3 * k);
 }
 
 /* the speed of rotation over a chunk, rad per sample, each sample's rpm

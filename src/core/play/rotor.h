@@ -148,6 +148,12 @@ int aero_rotor_set_ears(aero_rotor *r, const aero_ears *e);
 int aero_rotor_set_pose_at(aero_rotor *r, const double pos[3],
                            const double quat[4], double interval_s,
                            int offset);
+/* a rotation vector (axis times angle in degrees) as a unit quaternion */
+static inline void aero_rotor_quaternion_from_rotvec(const double r[3],
+                                                     double q[4])
+{
+    aero_quat_from_rotvec(r, q);
+}
 /* the orientation of the last pose given (w x y z) */
 void aero_rotor_orientation(const aero_rotor *r, double quat[4]);
 

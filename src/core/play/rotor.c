@@ -11,7 +11,7 @@
    1959), the strip's displaced volume per unit span */
 #define SECTION_AREA 0.685
 /* harmonics below this fraction of the strongest are not rendered */
-#define HARMONIC_FLOOR 1e-5
+#define HARMONIC_FLOOR 1e-4 /* -80 dB */
 #define TWO_PI (2.0 * AERO_PI)
 
 /* --- geometry ------------------------------------------------------------- */
@@ -25,6 +25,7 @@ static void layout(aero_rotor *r)
     const int N = r->strips, B = r->blades;
     const double R = r->radius, h = r->hub;
     const double dr = R * (1.0 - h) / N;
+    r->layout++; /* the strip sums are stale */
     double w_sum = 0.0, q_arm = 0.0;
     for (int s = 0; s < N; s++) {
         double rs = N == 1 ? 0.8 * R : R * (h + (1.0 - h) * (s + 0.5) / N);
@@ -247,12 +248,28 @@ static void advance_pose(aero_rotor *r, int m)
 
 /* --- Gutin's harmonics ------------------------------------------------------- */
 
-/* J_n(z), n >= 1, by Miller's backward recurrence (stable for the orders
-   above z that a subsonic tip gives) normalised by J_0 + 2 SUM J_2k = 1 */
+/* J_n(z), n >= 1: its power series where z^2/4 < (n + 1)/2 (each term
+   at most half the last: no cancellation; the low orders and slow tips
+   of most rotors), else Miller's backward recurrence (stable for the
+   orders above z that a subsonic tip gives), normalised by
+   J_0 + 2 SUM J_2k = 1 */
 static double bessel_jn(int n, double z)
 {
     if (!(z > 1e-9))
         return 0.0;
+    const double q = 0.25 * z * z;
+    if (q < 0.5 * (n + 1)) {
+        double term = 1.0, sum = 0.0;
+        for (int k = 1; k <= n; k++)
+            term *= 0.5 * z / k;
+        for (int k = 0; k < 60 && term != 0.0; k++) {
+            sum += term;
+            if (fabs(term) < 1e-8 * fabs(sum)) /* float output */
+                break;
+            term *= -q / ((k + 1.0) * (n + k + 1.0));
+        }
+        return sum;
+    }
     int start = n + (int)sqrt(40.0 * (n + z)) + 10;
     start += start & 1;
     double next = 0.0, cur = 1e-30, norm = 0.0, jn = 0.0;
@@ -275,28 +292,40 @@ static double bessel_jn(int n, double z)
     return jn / norm;
 }
 
+/* the strip sums of harmonic m (n = mB) at x = Omega sin(theta) into
+   slot m - 1 of u: J_n(n x r_s / c0) times each strip's thrust, drag and
+   volume */
+static void strip_sums(const aero_rotor *r, double x, int m,
+                       aero_rotor_sums *u)
+{
+    const int n = m * r->blades;
+    double t = 0.0, d = 0.0, v = 0.0;
+    for (int q = 0; q < r->strips; q++) {
+        const aero_rotor_strip *sp = &r->strip[q];
+        double jn = bessel_jn(n, n * x * sp->r / AERO_C0);
+        t -= jn * sp->thrust;
+        d += jn * sp->drag * AERO_C0 / sp->r;
+        v += jn * sp->volume;
+    }
+    u->thrust[m - 1] = t;
+    u->drag[m - 1] = d;
+    u->volume[m - 1] = v;
+}
+
 /* the coefficients of cos(n Psi) and sin(n Psi), n = mB, of the tone at
-   distance d, direction (cos theta, sin theta, phi) in the rotor frame,
-   angular speed omega > 0 (rotor.h's formula) */
-static void harmonic_at(const aero_rotor *r, double omega, double ct,
-                        double st, double phi, double d, int m, double *c,
-                        double *s)
+   distance d, cos(theta) ct in the rotor frame and e^{i g} = (cg, sg),
+   g = n (phi - pi/2), angular speed omega > 0, from the strip sums u
+   (rotor.h's formula) */
+static void harmonic_at(const aero_rotor *r, const aero_rotor_sums *u,
+                        double omega, double ct, double cg, double sg,
+                        double d, int m, double *c, double *s)
 {
     const int B = r->blades, n = m * B;
     const double load = (omega * 60.0 / TWO_PI) / r->design_rpm;
     const double k2 = load * load; /* loading ~ rpm^2 */
-    double L = 0.0, Th = 0.0;
-    for (int q = 0; q < r->strips; q++) {
-        const aero_rotor_strip *sp = &r->strip[q];
-        double jn = bessel_jn(n, n * omega * sp->r * st / AERO_C0);
-        L += jn * k2 * (-sp->thrust * ct +
-                        sp->drag * AERO_C0 / (omega * sp->r));
-        Th += jn * sp->volume;
-    }
+    double L = k2 * (u->thrust[m - 1] * ct + u->drag[m - 1] / omega);
     double K = n * omega * B / (4.0 * AERO_PI * AERO_C0 * d);
-    double th = n * omega * AERO_RHO * AERO_C0 * Th;
-    double g = n * (phi - 0.5 * AERO_PI);
-    double cg = cos(g), sg = sin(g);
+    double th = n * omega * AERO_RHO * AERO_C0 * u->volume[m - 1];
     *c = 2.0 * K * (-th * cg + L * sg);
     *s = 2.0 * K * (-L * cg - th * sg);
 }
@@ -305,17 +334,22 @@ double aero_rotor_harmonic_amplitude(const aero_rotor *r, int m,
                                      double omega, double theta, double d)
 {
     double c, s;
-    if (m < 1 || !(omega > 0.0) || !(d > 0.0))
+    aero_rotor_sums u;
+    if (m < 1 || m > AERO_ROTOR_HARMONICS_MAX || !(omega > 0.0) ||
+        !(d > 0.0))
         return 0.0;
-    harmonic_at(r, omega, cos(theta), sin(theta), 0.0, d, m, &c, &s);
+    double g = m * r->blades * -0.5 * AERO_PI;
+    strip_sums(r, omega * sin(theta), m, &u);
+    harmonic_at(r, &u, omega, cos(theta), cos(g), sin(g), d, m, &c, &s);
     return hypot(c, s);
 }
 
 /* the coefficients of harmonics 1..h at an ear: all below the Nyquist
    frequency, stopping past the strongest once they fall below
    HARMONIC_FLOOR of it (a subsonic tip's harmonics fall geometrically) */
-static void ear_tones(const aero_rotor *r, double omega, const double *ear,
-                      const double *axes, aero_rotor_ear *out)
+static void ear_tones(aero_rotor *r, double omega, const double *ear,
+                      const double *axes, aero_rotor_sums *u,
+                      aero_rotor_ear *out)
 {
     const double nyq = 0.45 * r->base.sample_rate * TWO_PI;
     const double w = fabs(omega);
@@ -343,9 +377,26 @@ static void ear_tones(const aero_rotor *r, double omega, const double *ear,
     double below = nyq / (w * r->blades); /* harmonics under Nyquist */
     h_max = below < AERO_ROTOR_HARMONICS_MAX ? (int)below
                                              : AERO_ROTOR_HARMONICS_MAX;
+    /* the strip sums, made again when Omega sin(theta) has moved */
+    if (u->layout != r->layout ||
+        !(fabs(w * st - u->key) <= AERO_ROTOR_SUMS_TOLERANCE * w * st)) {
+        u->h = 0;
+        u->key = w * st;
+        u->layout = r->layout;
+    }
+    /* e^{i m B (phi - pi/2)}, harmonic by harmonic */
+    const double g1 = r->blades * (phi - 0.5 * AERO_PI);
+    const double rc = cos(g1), rs = sin(g1);
+    double cg = 1.0, sg = 0.0;
     for (int m = 1; m <= h_max; m++) {
-        double c1, s1;
-        harmonic_at(r, w, ct, st, phi, d, m, &c1, &s1);
+        double c1, s1, t = cg * rc - sg * rs;
+        sg = cg * rs + sg * rc;
+        cg = t;
+        if (m > u->h) {
+            strip_sums(r, u->key, m, u);
+            u->h = m;
+        }
+        harmonic_at(r, u, w, ct, cg, sg, d, m, &c1, &s1);
         double a = hypot(c1, s1);
         out->c[m - 1] = c1;
         out->s[m - 1] = omega < 0.0 ? -s1 : s1;
@@ -370,47 +421,47 @@ static double ramp_after(aero_ramp *r, int m)
 }
 
 /* the tones of one ear over m samples: the coefficients and the delay
-   glide from then to now, the phase turns from psi0 by dpsi a sample */
+   glide from then to now, the phase turns from psi0 by dpsi a sample.
+   Each harmonic keeps its own phasor e^{i (k+1) B psi}, turned by its own
+   step (set exactly in double at each chunk): the harmonics are
+   independent, so the loop over them vectorises */
 static void radiate(aero_rotor *r, const aero_rotor_ear *then,
                     const aero_rotor_ear *now, double gain0, double gain1,
                     double psi0, double dpsi, int e, int m)
 {
+    enum { H = AERO_ROTOR_HARMONICS_MAX };
     const int h = then->h > now->h ? then->h : now->h;
     const double inv_m = 1.0 / m, B = r->blades;
-    float c[AERO_ROTOR_HARMONICS_MAX], s[AERO_ROTOR_HARMONICS_MAX];
-    float dc[AERO_ROTOR_HARMONICS_MAX], ds[AERO_ROTOR_HARMONICS_MAX];
+    float c[H], s[H], dc[H], ds[H], zr[H], zi[H], tr[H], ti[H];
     float *ring = r->base.arrivals.ring[e];
     const long mask = r->base.arrivals.mask;
     const double ddelay = (now->delay - then->delay) * inv_m;
     double at = (double)r->base.arrivals.head + then->delay;
-    /* e^{i B psi} and its turn per sample, in double: the rotation of
-       one chunk stays on the unit circle to 1e-15 */
-    double wr = cos(B * psi0), wi = sin(B * psi0);
-    const double tr = cos(B * dpsi), ti = sin(B * dpsi);
     if (h == 0)
         return;
     for (int k = 0; k < h; k++) {
+        double n = (k + 1) * B;
         c[k] = (float)(gain0 * then->c[k]);
         s[k] = (float)(gain0 * then->s[k]);
         dc[k] = (float)((gain1 * now->c[k] - gain0 * then->c[k]) * inv_m);
         ds[k] = (float)((gain1 * now->s[k] - gain0 * then->s[k]) * inv_m);
+        zr[k] = (float)cos(n * psi0);
+        zi[k] = (float)sin(n * psi0);
+        tr[k] = (float)cos(n * dpsi);
+        ti[k] = (float)sin(n * dpsi);
     }
     for (int j = 0; j < m; j++) {
-        /* harmonic k: e^{i (k+1) B psi} by repeated multiplication */
-        float zr = (float)wr, zi = (float)wi, ur = zr, ui = zi, v = 0.0f;
+        float v = 0.0f;
         for (int k = 0; k < h; k++) {
-            v += c[k] * ur + s[k] * ui;
-            float nr = ur * zr - ui * zi;
-            ui = ur * zi + ui * zr;
-            ur = nr;
+            v += c[k] * zr[k] + s[k] * zi[k];
+            float nr = zr[k] * tr[k] - zi[k] * ti[k];
+            zi[k] = zr[k] * ti[k] + zi[k] * tr[k];
+            zr[k] = nr;
             c[k] += dc[k];
             s[k] += ds[k];
         }
         aero_arrivals_add_span(ring, mask, at, 1.0 + ddelay, v);
         at += 1.0 + ddelay;
-        double nr = wr * tr - wi * ti;
-        wi = wr * ti + wi * tr;
-        wr = nr;
     }
 }
 
@@ -461,7 +512,7 @@ static void chunk(aero_rotor *r, const float *rpm, int m)
     for (int e = 0; e < r->base.n_ears; e++) {
         for (int i = 0; i < 3; i++)
             ear[i] = ramp_after(&r->base.ear[3 * e + i], m);
-        ear_tones(r, omega, ear, axes, &now[e]);
+        ear_tones(r, omega, ear, axes, &r->sums[e], &now[e]);
         if (!r->primed) { /* the first chunk: the tones from 0 */
             r->then[e] = now[e];
             memset(r->then[e].c, 0, sizeof(r->then[e].c));

@@ -45,7 +45,7 @@
 #include "moving_player.h"
 #include "pose_glide.h"
 
-#define AERO_ROTOR_CHUNK 32
+#define AERO_ROTOR_CHUNK 128
 #define AERO_ROTOR_MAX_DELAY_S 1.0
 #define AERO_ROTOR_HARMONICS_MAX 40 /* of the blade-passing frequency */
 #define AERO_ROTOR_MACH_TIP_MAX 0.9 /* rpm is clamped to this tip Mach */
@@ -92,6 +92,18 @@ typedef struct {
     int h; /* harmonics above the floor; those beyond are 0 */
 } aero_rotor_ear;
 
+/* an ear's strip sums of harmonics 1..h (rotor.c: the Bessel functions,
+   which depend on Omega sin(theta) alone), kept while that moves less
+   than AERO_ROTOR_SUMS_TOLERANCE */
+#define AERO_ROTOR_SUMS_TOLERANCE 2e-3
+typedef struct {
+    double key;        /* Omega sin(theta) they were made for */
+    int h, layout;     /* harmonics held; the layout they were made for */
+    double thrust[AERO_ROTOR_HARMONICS_MAX]; /* SUM J_n (-T_s) */
+    double drag[AERO_ROTOR_HARMONICS_MAX];   /* SUM J_n D_s c0 / r_s */
+    double volume[AERO_ROTOR_HARMONICS_MAX]; /* SUM J_n V_s */
+} aero_rotor_sums;
+
 typedef struct aero_rotor {
     /* sample rate, rings, ears, wind, gain, ramp, clamp */
     aero_moving_player base;
@@ -100,6 +112,8 @@ typedef struct aero_rotor {
     double radius, chord, thickness, hub;
     double thrust, torque, design_rpm;
     aero_rotor_strip strip[AERO_ROTOR_STRIPS_MAX];
+    int layout;          /* counts the layouts: the sums' key */
+    aero_rotor_sums sums[AERO_EARS_MAX];
 
     double rpm;          /* smoothed, clamped */
     double psi;          /* blade 0's azimuth, rad, in [0, 2 pi) */

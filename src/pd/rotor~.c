@@ -114,6 +114,8 @@ AERO_PD_SETTER(rotor_tilde, t_rotor_tilde, torque, x_core,
                aero_rotor_set_torque)
 AERO_PD_SETTER(rotor_tilde, t_rotor_tilde, design, x_core,
                aero_rotor_set_design)
+AERO_PD_SETTER(rotor_tilde, t_rotor_tilde, noise, x_core,
+               aero_rotor_set_noise_db)
 AERO_PD_SETTER(rotor_tilde, t_rotor_tilde, gain, x_core,
                aero_rotor_set_gain_db)
 AERO_PD_SETTER(rotor_tilde, t_rotor_tilde, ramp, x_core,
@@ -161,6 +163,10 @@ static const aero_pd_method rotor_tilde_methods[] = {
      AERO_PD_RANGE_NOTE_DEF(AERO_ROTOR_DESIGN_MIN, AERO_ROTOR_DESIGN_MAX,
                             AERO_ROTOR_DESIGN_DEFAULT, "rpm",
                             "thrust and torque scale as (rpm/design)^2")},
+    {"noise", AERO_PD_FLOAT, 0, (t_method)rotor_tilde_noise, 0,
+     AERO_PD_RANGE_NOTE_DEF(AERO_ROTOR_NOISE_DB_MIN, AERO_ROTOR_NOISE_DB_MAX,
+                            AERO_ROTOR_NOISE_DB_DEFAULT, "dB",
+                            "the blades' self-noise (Brooks et al. 1989)")},
     {"gain", AERO_PD_FLOAT, 0, (t_method)rotor_tilde_gain, 0, AERO_PD_GAIN},
     {"ramp", AERO_PD_FLOAT, 0, (t_method)rotor_tilde_ramp, 0, AERO_PD_RAMP},
     {"listener", AERO_PD_LIST, 3, (t_method)rotor_tilde_listener, 0,

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "aero_air.h"
+#include "airfoil_noise.h"
 
 /* area of a NACA four-digit section: 0.685 t c (Abbott & von Doenhoff
    1959), the strip's displaced volume per unit span */
@@ -13,6 +14,8 @@
 /* harmonics below this fraction of the strongest are not rendered */
 #define HARMONIC_FLOOR 1e-4 /* -80 dB */
 #define TWO_PI (2.0 * AERO_PI)
+
+static void noise_bank(aero_rotor *r);
 
 /* --- geometry ------------------------------------------------------------- */
 
@@ -63,15 +66,18 @@ int aero_rotor_init(aero_rotor *r, double sample_rate, int n_ears,
     r->thrust = AERO_ROTOR_THRUST_DEFAULT;
     r->torque = AERO_ROTOR_TORQUE_DEFAULT;
     r->design_rpm = AERO_ROTOR_DESIGN_DEFAULT;
+    r->noise_gain = pow(10.0, AERO_ROTOR_NOISE_DB_DEFAULT / 20.0);
     layout(r);
     memcpy(r->pose, unturned, sizeof(unturned));
     aero_pose_path_jump(&r->path, 7, unturned);
-    return aero_moving_player_init(
+    int k = aero_moving_player_init(
         &r->base,
         sample_rate >= AERO_MOVING_SR_MIN && sample_rate <= AERO_MOVING_SR_MAX
             ? sample_rate
             : 48000.0,
         n_ears, seed, AERO_ROTOR_CHUNK, AERO_ROTOR_MAX_DELAY_S);
+    noise_bank(r);
+    return k;
 }
 
 void aero_rotor_free(aero_rotor *r)
@@ -84,8 +90,10 @@ void aero_rotor_free(aero_rotor *r)
 int aero_rotor_set_sample_rate(aero_rotor *r, double sr)
 {
     int k = aero_moving_player_set_sample_rate(&r->base, sr);
-    if (k == 1)
-        r->primed = 0; /* new rings: the tones start again from 0 */
+    if (k == 1) {
+        r->primed = 0; /* new rings: the sound starts again from 0 */
+        noise_bank(r);
+    }
     return k < 0 ? -1 : 0;
 }
 
@@ -161,6 +169,14 @@ int aero_rotor_set_design(aero_rotor *r, double rpm)
 {
     return set_geometry(r, &r->design_rpm, rpm, AERO_ROTOR_DESIGN_MIN,
                         AERO_ROTOR_DESIGN_MAX);
+}
+
+int aero_rotor_set_noise_db(aero_rotor *r, double db)
+{
+    if (!(db >= AERO_ROTOR_NOISE_DB_MIN && db <= AERO_ROTOR_NOISE_DB_MAX))
+        return -1;
+    r->noise_gain = pow(10.0, db / 20.0);
+    return 0;
 }
 
 int aero_rotor_set_gain_db(aero_rotor *r, double db)
@@ -408,6 +424,279 @@ static void ear_tones(aero_rotor *r, double omega, const double *ear,
     }
 }
 
+/* --- broadband: the blades' self-noise ------------------------------------- */
+
+/* octave j's centre, the middle third of its three (IEC 61260's base-ten
+   series from 50 Hz: 63 Hz .. 16 kHz) */
+static double octave_hz(int j)
+{
+    return pow(10.0, (17 + 3 * j + 1) / 10.0);
+}
+
+/* the band-passes of the octaves under 0.45 sr, each two RBJ band-pass
+   stages (0 dB peak, Q 0.9: -3 dB at the octave's edges, skirts falling
+   12 dB per octave, so that a band's leakage into the next but one is
+   small), and the inverse of their leakage: leak[j][i] the
+   part of band-pass i's output power (white input) inside octave j, so
+   that gains solving leak g^2 = P give each octave its power P_j */
+static void noise_bank(aero_rotor *r)
+{
+    aero_rotor_noise *z = &r->noise;
+    const double sr = r->base.sample_rate, Q = 0.9;
+    enum { K = AERO_ROTOR_BANDS, F = 2048 };
+    double leak[K * K], inv[K * K];
+    int n = 0;
+    for (int i = 0; i < AERO_ROTOR_LANES; i++) {
+        z->b0[i] = z->a1[i] = z->a2[i] = z->gain[i] = 0.0f;
+        z->x1[i] = z->x2[i] = z->y1[i] = z->y2[i] = z->u1[i] = z->u2[i] = 0.0f;
+        z->rng[i] = aero_run_seed(r->base.rng, i) | 1u;
+    }
+    while (n < K && octave_hz(n) * sqrt(2.0) < 0.45 * sr)
+        n++;
+    z->bands = n;
+    for (int i = 0; i < n; i++) {
+        double w0 = TWO_PI * octave_hz(i) / sr, al = sin(w0) / (2.0 * Q);
+        z->b0[i] = (float)(al / (1.0 + al));
+        z->a1[i] = (float)(-2.0 * cos(w0) / (1.0 + al));
+        z->a2[i] = (float)((1.0 - al) / (1.0 + al));
+    }
+    memset(leak, 0, sizeof(leak));
+    for (int f = 0; f < F; f++) { /* the response on a grid to Nyquist */
+        double hz = (f + 0.5) * 0.5 * sr / F, w = TWO_PI * hz / sr;
+        int j = (int)floor(log2(hz / octave_hz(0)) + 0.5);
+        if (j < 0 || j >= n)
+            continue;
+        for (int i = 0; i < n; i++) {
+            double b0 = z->b0[i], a1 = z->a1[i], a2 = z->a2[i];
+            /* |b0 (1 - e^{-2iw})|^2 / |1 + a1 e^{-iw} + a2 e^{-2iw}|^2 */
+            double nr = 1.0 - cos(2 * w), ni = sin(2 * w);
+            double dr = 1.0 + a1 * cos(w) + a2 * cos(2 * w);
+            double di = -a1 * sin(w) - a2 * sin(2 * w);
+            double h2 = b0 * b0 * (nr * nr + ni * ni) / (dr * dr + di * di);
+            leak[j * K + i] += h2 * h2 / F; /* two stages */
+        }
+    }
+    /* Gauss-Jordan on the n x n block (diagonally dominant) */
+    for (int j = 0; j < n; j++)
+        for (int i = 0; i < n; i++)
+            inv[j * K + i] = i == j;
+    for (int c = 0; c < n; c++) {
+        double p = leak[c * K + c];
+        for (int i = 0; i < n; i++) {
+            leak[c * K + i] /= p;
+            inv[c * K + i] /= p;
+        }
+        for (int j = 0; j < n; j++) {
+            double f = leak[j * K + c];
+            if (j == c)
+                continue;
+            for (int i = 0; i < n; i++) {
+                leak[j * K + i] -= f * leak[c * K + i];
+                inv[j * K + i] -= f * inv[c * K + i];
+            }
+        }
+    }
+    memcpy(z->unmix, inv, sizeof(inv));
+    z->layout = -1; /* the spectrum is made again */
+}
+
+/* the span of one strip, m */
+static double strip_span(const aero_rotor *r)
+{
+    return r->radius * (1.0 - r->hub) / (r->strips == 1 ? 1 : r->strips);
+}
+
+/* strip q of one blade as an airfoil section (Brooks et al. 1989): tripped
+   (a rotor's blades in real air), a sharp trailing edge of the report's
+   NACA 0012 angle, a rounded tip on the outermost strip */
+static void strip_airfoil(const aero_rotor *r, int q, aero_airfoil *a)
+{
+    memset(a, 0, sizeof(*a));
+    a->chord = (float)r->chord;
+    a->span = (float)strip_span(r);
+    a->te_thickness = (float)(0.005 * r->chord);
+    a->te_angle_deg = 14.0f;
+    a->tripped = 1;
+    a->tip = q == r->strips - 1 ? AERO_AIRFOIL_TIP_ROUNDED
+                                : AERO_AIRFOIL_NO_TIP;
+}
+
+/* each strip's self-noise at 1 m straight above it (D_h = 1) at angular
+   speed w and axial inflow u, and the octave gains of their sum; made
+   again when the strips' speed moves by 2 % (the spectrum's shape moves
+   with log U) */
+static void noise_spectrum(aero_rotor *r, double w, double u)
+{
+    aero_rotor_noise *z = &r->noise;
+    enum { K = AERO_ROTOR_BANDS, T = AERO_ROTOR_THIRDS };
+    const double key = w * r->radius + fabs(u);
+    float hz[T], spl[AERO_BPM_MECHANISMS * T], tot[T];
+    double band[K], g2[K], sum = 0.0;
+    if (z->layout == r->layout && fabs(key - z->key) <= 0.02 * key)
+        return;
+    z->layout = r->layout;
+    z->key = key;
+    aero_third_octave_bands(50.0f, 20000.0f, hz, T);
+    memset(band, 0, sizeof(band));
+    for (int q = 0; q < r->strips; q++) {
+        const aero_rotor_strip *sp = &r->strip[q];
+        aero_airfoil a;
+        aero_airfoil_observer o = {1.0f, 90.0f, 90.0f};
+        double U = hypot(w * sp->r, u), load = (w * 60.0 / TWO_PI) /
+                                                r->design_rpm;
+        /* the model's range: Mach below 0.5 */
+        if (U > 0.45 * AERO_C0)
+            U = 0.45 * AERO_C0;
+        /* the angle of attack that carries the strip's thrust: thin
+           airfoil C_L = 2 pi alpha */
+        double cl = U > 1e-3 ? fabs(load * load * sp->thrust) /
+                                   (0.5 * AERO_RHO * U * U * strip_span(r)
+                                    * r->chord)
+                             : 0.0;
+        double alpha = cl / TWO_PI * 180.0 / AERO_PI;
+        aero_airfoil_flow f = {(float)U, (float)(alpha < 25.0 ? alpha : 25.0),
+                               (float)AERO_C0, (float)AERO_NU};
+        strip_airfoil(r, q, &a);
+        a.tip_alpha_deg = f.alpha_deg;
+        z->power[q] = 0.0;
+        z->mach[q] = U / AERO_C0;
+        if (U < 0.1 ||
+            aero_airfoil_noise_spectrum(&a, &f, &o, hz, T, spl) != 0)
+            continue;
+        aero_airfoil_noise_total(spl, T, tot);
+        for (int k = 0; k < T; k++) {
+            double p = 4e-10 * pow(10.0, 0.1 * tot[k]); /* (20 uPa)^2 */
+            z->power[q] += p;
+            band[k / 3] += p;
+        }
+    }
+    for (int j = 0; j < z->bands; j++)
+        sum += band[j];
+    for (int j = 0; j < z->bands; j++) {
+        g2[j] = 0.0;
+        for (int i = 0; i < z->bands; i++)
+            g2[j] += z->unmix[j * K + i] * (sum > 0.0 ? band[i] / sum : 0.0);
+    }
+    for (int j = 0; j < K; j++)
+        z->gain[j] = j < z->bands && g2[j] > 0.0 ? (float)sqrt(g2[j]) : 0.0f;
+    /* the lanes beyond the bands stay silent (zero gains and filters) */
+}
+
+/* the broadband's envelope at an ear over one blade passing: the
+ * strips' self-noise powers heard through Brooks et al.'s (1989)
+ * high-frequency directivity D_h (a half-plane's trailing edge, with the
+ * convective amplification of the strip's Mach number: loudest towards
+ * the blade's leading edge as it comes) and 1/r^2, summed over blades and
+ * strips (incoherent), at AERO_ROTOR_AZIMUTHS rotor positions; env: the
+ * amplitude's mean, then its cos and sin harmonics of B Psi */
+static void ear_envelope(const aero_rotor *r, double omega,
+                         const double *ear, const double *axes, double *env)
+{
+    enum { NA = AERO_ROTOR_AZIMUTHS };
+    const aero_rotor_noise *z = &r->noise;
+    const int B = r->blades;
+    const double sense = omega < 0.0 ? -1.0 : 1.0;
+    double a[NA];
+    for (int j = 0; j < NA; j++) {
+        double P = 0.0;
+        for (int b = 0; b < B; b++) {
+            double psi = TWO_PI * ((double)j / (B * NA) + (double)b / B);
+            double cp = cos(psi), sp = sin(psi), er[3], et[3], rel[3];
+            for (int i = 0; i < 3; i++) {
+                er[i] = cp * axes[i] + sp * axes[3 + i];
+                et[i] = sense * (-sp * axes[i] + cp * axes[3 + i]);
+                rel[i] = ear[i] - r->pose[i];
+            }
+            double vt = aero_dot3(rel, et), vr = aero_dot3(rel, er);
+            double vz = aero_dot3(rel, axes + 6), v2 = aero_dot3(rel, rel);
+            for (int q = 0; q < r->strips; q++) {
+                double rq = r->strip[q].r, y = vr - rq; /* from the strip */
+                double d2 = v2 - vr * vr + y * y, M = z->mach[q];
+                double d = sqrt(d2), ct = -vt / d; /* x: downstream */
+                double yz = y * y + vz * vz, s2 = yz > 0.0 ? vz * vz / yz : 0.0;
+                double c1 = 1.0 + 0.2 * M * ct;
+                if (!(d2 > 1e-6) || z->power[q] <= 0.0)
+                    continue;
+                P += z->power[q] * (1.0 - ct) * s2 /
+                     ((1.0 + M * ct) * c1 * c1) / d2;
+            }
+        }
+        a[j] = r->noise_gain * sqrt(P);
+    }
+    for (int k = 0; k <= AERO_ROTOR_ENVELOPE; k++) {
+        double c = 0.0, s = 0.0;
+        for (int j = 0; j < NA; j++) {
+            c += a[j] * cos(TWO_PI * k * j / NA);
+            s += a[j] * sin(TWO_PI * k * j / NA);
+        }
+        if (k == 0)
+            env[0] = c / NA;
+        else {
+            env[2 * k - 1] = 2.0 * c / NA;
+            env[2 * k] = 2.0 * s / NA;
+        }
+    }
+}
+
+/* m samples of the rotor's unit-power self-noise spectrum: each octave
+   band-pass fed its own white noise (the bands overlap: one noise through
+   all would add their outputs coherently where they overlap, and the
+   powers the gains were solved for would not add), weighted by its gain.
+   The bands are lanes of one loop (independent: it vectorises) */
+static void noise_chunk(aero_rotor *r, float *out, int m)
+{
+    enum { L = AERO_ROTOR_LANES };
+    aero_rotor_noise *z = &r->noise;
+    /* xorshift32 as a signed int, to unit variance: 2^-31 sqrt 3 */
+    const float amp = 1.7320508f / 2147483648.0f;
+    /* the lanes in locals: no aliasing with out, so the loop over the
+       lanes vectorises */
+    float b0[L], a1[L], a2[L], g[L], x1[L], x2[L], y1[L], y2[L], u1[L],
+        u2[L];
+    uint32_t rng[L];
+    memcpy(b0, z->b0, sizeof(b0));
+    memcpy(a1, z->a1, sizeof(a1));
+    memcpy(a2, z->a2, sizeof(a2));
+    memcpy(g, z->gain, sizeof(g));
+    memcpy(x1, z->x1, sizeof(x1));
+    memcpy(x2, z->x2, sizeof(x2));
+    memcpy(y1, z->y1, sizeof(y1));
+    memcpy(y2, z->y2, sizeof(y2));
+    memcpy(u1, z->u1, sizeof(u1));
+    memcpy(u2, z->u2, sizeof(u2));
+    memcpy(rng, z->rng, sizeof(rng));
+    for (int j = 0; j < m; j++) {
+        float lane[L], sum = 0.0f;
+        for (int i = 0; i < L; i++) {
+            uint32_t v = rng[i];
+            v ^= v << 13;
+            v ^= v >> 17;
+            v ^= v << 5;
+            rng[i] = v;
+            float x = amp * (float)(int32_t)v;
+            float y = b0[i] * (x - x2[i]) - a1[i] * y1[i] - a2[i] * y2[i];
+            float u = b0[i] * (y - y2[i]) - a1[i] * u1[i] - a2[i] * u2[i];
+            x2[i] = x1[i];
+            x1[i] = x;
+            y2[i] = y1[i];
+            y1[i] = y;
+            u2[i] = u1[i];
+            u1[i] = u;
+            lane[i] = g[i] * u;
+        }
+        for (int i = 0; i < L; i++) /* in order: no reassociation */
+            sum += lane[i];
+        out[j] = sum;
+    }
+    memcpy(z->x1, x1, sizeof(x1));
+    memcpy(z->x2, x2, sizeof(x2));
+    memcpy(z->y1, y1, sizeof(y1));
+    memcpy(z->y2, y2, sizeof(y2));
+    memcpy(z->u1, u1, sizeof(u1));
+    memcpy(z->u2, u2, sizeof(u2));
+    memcpy(z->rng, rng, sizeof(rng));
+}
+
 /* --- processing ---------------------------------------------------------------- */
 
 /* a ramp's value after m samples (a chunk, or less where a pose splits
@@ -427,7 +716,8 @@ static double ramp_after(aero_ramp *r, int m)
    independent, so the loop over them vectorises */
 static void radiate(aero_rotor *r, const aero_rotor_ear *then,
                     const aero_rotor_ear *now, double gain0, double gain1,
-                    double psi0, double dpsi, int e, int m)
+                    double psi0, double dpsi, const float *noise, int e,
+                    int m)
 {
     enum { H = AERO_ROTOR_HARMONICS_MAX };
     const int h = then->h > now->h ? then->h : now->h;
@@ -437,8 +727,16 @@ static void radiate(aero_rotor *r, const aero_rotor_ear *then,
     const long mask = r->base.arrivals.mask;
     const double ddelay = (now->delay - then->delay) * inv_m;
     double at = (double)r->base.arrivals.head + then->delay;
-    if (h == 0)
-        return;
+    /* the broadband's envelope: its harmonics k B psi, k = 0..2 */
+    float ev[5], dev[5], er, ei, etr, eti;
+    for (int k = 0; k < 5; k++) {
+        ev[k] = (float)(gain0 * then->env[k]);
+        dev[k] = (float)((gain1 * now->env[k] - gain0 * then->env[k]) * inv_m);
+    }
+    er = (float)cos(B * psi0);
+    ei = (float)sin(B * psi0);
+    etr = (float)cos(B * dpsi);
+    eti = (float)sin(B * dpsi);
     for (int k = 0; k < h; k++) {
         double n = (k + 1) * B;
         c[k] = (float)(gain0 * then->c[k]);
@@ -451,12 +749,20 @@ static void radiate(aero_rotor *r, const aero_rotor_ear *then,
         ti[k] = (float)sin(n * dpsi);
     }
     for (int j = 0; j < m; j++) {
-        float v = 0.0f;
+        float e2r = er * er - ei * ei, e2i = 2.0f * er * ei;
+        float env = ev[0] + ev[1] * er + ev[2] * ei + ev[3] * e2r +
+                    ev[4] * e2i;
+        float v = (env > 0.0f ? env : 0.0f) * noise[j];
+        float nr = er * etr - ei * eti;
+        ei = er * eti + ei * etr;
+        er = nr;
+        for (int k = 0; k < 5; k++)
+            ev[k] += dev[k];
         for (int k = 0; k < h; k++) {
             v += c[k] * zr[k] + s[k] * zi[k];
-            float nr = zr[k] * tr[k] - zi[k] * ti[k];
+            float wr = zr[k] * tr[k] - zi[k] * ti[k];
             zi[k] = zr[k] * ti[k] + zi[k] * tr[k];
-            zr[k] = nr;
+            zr[k] = wr;
             c[k] += dc[k];
             s[k] += ds[k];
         }
@@ -501,25 +807,30 @@ static double chunk_turn(const aero_rotor *r, const float *rpm, int m,
 static void chunk(aero_rotor *r, const float *rpm, int m)
 {
     aero_rotor_ear now[AERO_EARS_MAX];
-    double ear[3], axes[9], gain_then = r->base.gain.value, gain;
+    double ear[3], axes[9], wind[3], gain_then = r->base.gain.value, gain;
     double dpsi = chunk_turn(r, rpm, m, &r->base.clamped);
     double omega = dpsi * r->base.sample_rate;
+    float noise[AERO_ROTOR_CHUNK];
     advance_pose(r, m);
     rotor_axes(r, axes);
     for (int i = 0; i < 3; i++)
-        (void)ramp_after(&r->base.wind[i], m);
+        wind[i] = ramp_after(&r->base.wind[i], m);
+    noise_spectrum(r, fabs(omega), aero_dot3(wind, axes + 6));
+    noise_chunk(r, noise, m);
     gain = ramp_after(&r->base.gain, m);
     for (int e = 0; e < r->base.n_ears; e++) {
         for (int i = 0; i < 3; i++)
             ear[i] = ramp_after(&r->base.ear[3 * e + i], m);
         ear_tones(r, omega, ear, axes, &r->sums[e], &now[e]);
-        if (!r->primed) { /* the first chunk: the tones from 0 */
+        ear_envelope(r, omega, ear, axes, now[e].env);
+        if (!r->primed) { /* the first chunk: the sound from 0 */
             r->then[e] = now[e];
             memset(r->then[e].c, 0, sizeof(r->then[e].c));
             memset(r->then[e].s, 0, sizeof(r->then[e].s));
+            memset(r->then[e].env, 0, sizeof(r->then[e].env));
         }
-        radiate(r, &r->then[e], &now[e], gain_then, gain, r->psi, dpsi, e,
-                m);
+        radiate(r, &r->then[e], &now[e], gain_then, gain, r->psi, dpsi,
+                noise, e, m);
         r->then[e] = now[e];
     }
     r->primed = 1;

@@ -75,6 +75,10 @@
 #define AERO_ROTOR_DESIGN_MIN 1.0 /* rpm */
 #define AERO_ROTOR_DESIGN_MAX 1e5
 #define AERO_ROTOR_DESIGN_DEFAULT 6000.0
+/* the blades' self-noise against Brooks et al.'s (1989) level, dB */
+#define AERO_ROTOR_NOISE_DB_MIN -200.0
+#define AERO_ROTOR_NOISE_DB_MAX 40.0
+#define AERO_ROTOR_NOISE_DB_DEFAULT 0.0
 
 /* one strip's geometry */
 typedef struct {
@@ -84,10 +88,20 @@ typedef struct {
     double volume; /* displaced volume, m^3 */
 } aero_rotor_strip;
 
+/* the broadband: octave bands 63 Hz .. 16 kHz, an envelope of harmonics
+   0..AERO_ROTOR_ENVELOPE of the blade passing, sampled at
+   AERO_ROTOR_AZIMUTHS positions over one blade passing */
+#define AERO_ROTOR_BANDS 9
+#define AERO_ROTOR_THIRDS (3 * AERO_ROTOR_BANDS)
+#define AERO_ROTOR_ENVELOPE 2
+#define AERO_ROTOR_AZIMUTHS 8
+
 /* what one ear hears, at a chunk's end: the coefficients of cos(n Psi)
-   and sin(n Psi) per harmonic, and the hub's delay in samples */
+   and sin(n Psi) per harmonic, the broadband's envelope (its mean, then
+   cos and sin of k B Psi), and the hub's delay in samples */
 typedef struct {
     double c[AERO_ROTOR_HARMONICS_MAX], s[AERO_ROTOR_HARMONICS_MAX];
+    double env[2 * AERO_ROTOR_ENVELOPE + 1];
     double delay;
     int h; /* harmonics above the floor; those beyond are 0 */
 } aero_rotor_ear;
@@ -104,6 +118,27 @@ typedef struct {
     double volume[AERO_ROTOR_HARMONICS_MAX]; /* SUM J_n V_s */
 } aero_rotor_sums;
 
+/* the blades' self-noise (Brooks et al. 1989, airfoil_noise.h): each
+   strip's level at 1 m straight above its trailing edge, the spectrum's
+   shape as gains of a bank of octave band-passes fed one white noise */
+#define AERO_ROTOR_LANES 12 /* the bands padded for SIMD (zero gains) */
+typedef struct {
+    /* per band (lane): b0 (b2 = -b0), a1, a2, gain (unit total power),
+       its own white noise's state, the two stages' x1 x2 y1 y2 / y1 y2 */
+    float b0[AERO_ROTOR_LANES], a1[AERO_ROTOR_LANES], a2[AERO_ROTOR_LANES];
+    float gain[AERO_ROTOR_LANES];
+    uint32_t rng[AERO_ROTOR_LANES];
+    float x1[AERO_ROTOR_LANES], x2[AERO_ROTOR_LANES];
+    float y1[AERO_ROTOR_LANES], y2[AERO_ROTOR_LANES];
+    float u1[AERO_ROTOR_LANES], u2[AERO_ROTOR_LANES];
+    double unmix[AERO_ROTOR_BANDS * AERO_ROTOR_BANDS]; /* band leakage^-1 */
+    int bands;                        /* under Nyquist */
+    double power[AERO_ROTOR_STRIPS_MAX]; /* Pa^2 at 1 m, D_h = 1, a blade */
+    double mach[AERO_ROTOR_STRIPS_MAX];
+    double key;                       /* the speed they were made for */
+    int layout;
+} aero_rotor_noise;
+
 typedef struct aero_rotor {
     /* sample rate, rings, ears, wind, gain, ramp, clamp */
     aero_moving_player base;
@@ -111,9 +146,11 @@ typedef struct aero_rotor {
     int blades, strips;
     double radius, chord, thickness, hub;
     double thrust, torque, design_rpm;
+    double noise_gain;   /* linear, of the self-noise */
     aero_rotor_strip strip[AERO_ROTOR_STRIPS_MAX];
     int layout;          /* counts the layouts: the sums' key */
     aero_rotor_sums sums[AERO_EARS_MAX];
+    aero_rotor_noise noise;
 
     double rpm;          /* smoothed, clamped */
     double psi;          /* blade 0's azimuth, rad, in [0, 2 pi) */
@@ -149,6 +186,7 @@ int aero_rotor_set_strips(aero_rotor *r, double strips);
 int aero_rotor_set_thrust(aero_rotor *r, double newton);
 int aero_rotor_set_torque(aero_rotor *r, double newton_metre);
 int aero_rotor_set_design(aero_rotor *r, double rpm);
+int aero_rotor_set_noise_db(aero_rotor *r, double db);
 int aero_rotor_set_gain_db(aero_rotor *r, double db);
 int aero_rotor_set_ramp_ms(aero_rotor *r, double ms);
 int aero_rotor_set_wind(aero_rotor *r, const double w[3]);

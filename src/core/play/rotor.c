@@ -588,8 +588,11 @@ static void noise_spectrum(aero_rotor *r, double w, double u)
  * convective amplification of the strip's Mach number: loudest towards
  * the blade's leading edge as it comes) and 1/r^2, summed over blades and
  * strips (incoherent), at AERO_ROTOR_AZIMUTHS rotor positions; env: the
- * amplitude's mean, then its cos and sin harmonics of B Psi */
-static void ear_envelope(const aero_rotor *r, double omega,
+ * amplitude's mean, then its cos and sin harmonics of B Psi. Each strip's
+ * chord lies along the air's flow past it (its motion and the inflow u
+ * along the axis: a turbine's blades are pitched into the wind), its
+ * normal = span x chord */
+static void ear_envelope(const aero_rotor *r, double omega, double u,
                          const double *ear, const double *axes, double *env)
 {
     enum { NA = AERO_ROTOR_AZIMUTHS };
@@ -612,8 +615,13 @@ static void ear_envelope(const aero_rotor *r, double omega,
             for (int q = 0; q < r->strips; q++) {
                 double rq = r->strip[q].r, y = vr - rq; /* from the strip */
                 double d2 = v2 - vr * vr + y * y, M = z->mach[q];
-                double d = sqrt(d2), ct = -vt / d; /* x: downstream */
-                double yz = y * y + vz * vz, s2 = yz > 0.0 ? vz * vz / yz : 0.0;
+                /* the chord downstream: (-Omega r e_t + u a) / |W|, the
+                   normal (span x chord) (-Omega r a - u e_t) / |W| */
+                double wt = fabs(omega) * rq, W = hypot(wt, u);
+                double cw = W > 0.0 ? -wt / W : -1.0, aw = W > 0.0 ? u / W : 0.0;
+                double vx = cw * vt + aw * vz, vn = cw * vz - aw * vt;
+                double d = sqrt(d2), ct = vx / d;
+                double yz = y * y + vn * vn, s2 = yz > 0.0 ? vn * vn / yz : 0.0;
                 double c1 = 1.0 + 0.2 * M * ct;
                 if (!(d2 > 1e-6) || z->power[q] <= 0.0)
                     continue;
@@ -815,14 +823,15 @@ static void chunk(aero_rotor *r, const float *rpm, int m)
     rotor_axes(r, axes);
     for (int i = 0; i < 3; i++)
         wind[i] = ramp_after(&r->base.wind[i], m);
-    noise_spectrum(r, fabs(omega), aero_dot3(wind, axes + 6));
+    double u_axis = aero_dot3(wind, axes + 6);
+    noise_spectrum(r, fabs(omega), u_axis);
     noise_chunk(r, noise, m);
     gain = ramp_after(&r->base.gain, m);
     for (int e = 0; e < r->base.n_ears; e++) {
         for (int i = 0; i < 3; i++)
             ear[i] = ramp_after(&r->base.ear[3 * e + i], m);
         ear_tones(r, omega, ear, axes, &r->sums[e], &now[e]);
-        ear_envelope(r, omega, ear, axes, now[e].env);
+        ear_envelope(r, omega, u_axis, ear, axes, now[e].env);
         if (!r->primed) { /* the first chunk: the sound from 0 */
             r->then[e] = now[e];
             memset(r->then[e].c, 0, sizeof(r->then[e].c));

@@ -24,7 +24,7 @@ static const aerotex_command *const commands[] = {
     &aerotex_aeolian_command, &aerotex_cavity_command,
     &aerotex_vortex_command, &aerotex_object_command, &aerotex_info_command,
     &aerotex_tree_command, &aerotex_field_demo_command,
-    &aerotex_auralize_command};
+    &aerotex_auralize_command, &aerotex_airfoil_command};
 #define NCOMMANDS (int)(sizeof commands / sizeof commands[0])
 
 static void usage(FILE *f)

@@ -83,7 +83,7 @@ typedef struct aerotex_command {
 extern const aerotex_command aerotex_aeolian_command, aerotex_cavity_command,
     aerotex_vortex_command, aerotex_object_command, aerotex_info_command,
     aerotex_tree_command, aerotex_field_demo_command,
-    aerotex_auralize_command;
+    aerotex_auralize_command, aerotex_airfoil_command;
 
 /* the table's defaults, then cmd->init, into job (cmd->job_size bytes) */
 void aerotex_defaults(const aerotex_command *cmd, void *job);

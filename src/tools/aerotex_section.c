@@ -112,6 +112,54 @@ static int make_shape(aeolian_job *j, aero_shape2d *shape, char *desc,
     return 0;
 }
 
+/* A thin polygon (thickness at most 0.3 of its extent along x) is a
+ * blade: its texture carries the section as the airfoil self-noise model
+ * reads it (Brooks et al. 1989; the player's band above the band limit,
+ * src/core/play/blade_noise.h): the chord (the extent along x), the
+ * trailing edge's thickness (the span across y of the vertices within
+ * 0.5 % of the chord of the rearmost) and its angle Psi (between the two
+ * edges that meet there). 1 for a blade, else 0. */
+static int blade_geometry(const aero_shape2d *s, double *chord, double *h,
+                          double *psi)
+{
+    int n = s->npts, last = 0, first, end;
+    double xmin = 1e30, xmax = -1e30, ymin = 1e30, ymax = -1e30;
+    if (s->kind != AERO_SHAPE_POLYGON || n < 3)
+        return 0;
+    for (int i = 0; i < n; i++) {
+        xmin = fmin(xmin, s->px[i]);
+        ymin = fmin(ymin, s->py[i]);
+        ymax = fmax(ymax, s->py[i]);
+        if (s->px[i] > xmax) {
+            xmax = s->px[i];
+            last = i;
+        }
+    }
+    *chord = xmax - xmin;
+    if (!(*chord > 0) || ymax - ymin > 0.3 * *chord)
+        return 0;
+    /* the trailing edge: the run of vertices around the rearmost */
+    double tol = 0.005 * *chord, lo = 1e30, hi = -1e30;
+    first = end = last;
+    while (s->px[(first + n - 1) % n] >= xmax - tol && (first + n - 1) % n != last)
+        first = (first + n - 1) % n;
+    while (s->px[(end + 1) % n] >= xmax - tol && (end + 1) % n != first)
+        end = (end + 1) % n;
+    for (int i = first;; i = (i + 1) % n) {
+        lo = fmin(lo, s->py[i]);
+        hi = fmax(hi, s->py[i]);
+        if (i == end)
+            break;
+    }
+    *h = hi - lo;
+    int before = (first + n - 1) % n, after = (end + 1) % n;
+    double ux = s->px[before] - s->px[first], uy = s->py[before] - s->py[first];
+    double vx = s->px[after] - s->px[end], vy = s->py[after] - s->py[end];
+    double c = (ux * vx + uy * vy) / (hypot(ux, uy) * hypot(vx, vy));
+    *psi = acos(c < -1 ? -1 : c > 1 ? 1 : c) * 180.0 / AERO_PI;
+    return 1;
+}
+
 /* the core's parameters for direction alpha */
 static aero_aeolian_flow_params flow_params(const aeolian_job *j,
                                             const aero_shape2d *shape,
@@ -519,6 +567,14 @@ static int write_texture(aeolian_job *j, const direction *r, const char *desc)
     for (int k = 0; k < nd; k++)
         tex.angles[k] = r[k].alpha;
     describe(j, r, desc, &tex);
+    if (j->blade) {
+        aero_texture_setd(&tex, "blade_chord", j->blade_chord);
+        aero_texture_setd(&tex, "blade_te_thickness", j->blade_te);
+        aero_texture_setd(&tex, "blade_te_angle", j->blade_psi);
+        /* the model's turbulent boundary layer: the laminar edge-on wake
+           is the texture's own (textures/README.md, sword.wav) */
+        aero_texture_set(&tex, "blade_boundary_layer", "tripped");
+    }
     status = aerotex_job_save(&j->job, &tex);
     if (!status)
         report(j, r, desc, tex.frames);
@@ -556,6 +612,9 @@ int aerotex_section_run(const aerotex_command *cmd, int argc, char **argv)
         return 2;
     memset(&shape, 0, sizeof shape);
     status = make_shape(&j, &shape, desc, sizeof desc);
+    if (!status && !j.cavity)
+        j.blade = blade_geometry(&shape, &j.blade_chord, &j.blade_te,
+                                 &j.blade_psi);
     if (!status)
         status = check_flow(&j, &shape);
     if (!status) {

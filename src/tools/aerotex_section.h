@@ -29,6 +29,8 @@ typedef struct {
                              band limited at what the grid resolves,
                              band_limit.h) or BAND_LIMIT_OFF */
     double band_pass, band_stop; /* its roll-off, Hz (0: none applied) */
+    int blade;            /* a thin polygon: the texture says its section */
+    double blade_chord, blade_te, blade_psi; /* m, m, deg */
 } aeolian_job;
 
 enum { SPAN3D_NONE, SPAN3D_CIRCLE, SPAN3D_URANS };

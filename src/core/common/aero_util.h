@@ -67,6 +67,18 @@ static inline double aero_uniform(uint32_t *state)
     return (double)(int32_t)aero_xorshift32(state) * (1.0 / 2147483648.0);
 }
 
+/* h scrambled (Murmur3's 32-bit finaliser), never 0: a generator started
+   from it lies far in the xorshift cycle from one started at h */
+static inline uint32_t aero_scramble32(uint32_t h)
+{
+    h ^= h >> 16;
+    h *= 0x85ebca6bu;
+    h ^= h >> 13;
+    h *= 0xc2b2ae35u;
+    h ^= h >> 16;
+    return h ? h : 1;
+}
+
 /* the seed of run k (0, 1, ...) of several independent runs made from one
    user seed, such as a texture's directions or speeds: the seed scrambled
    by 2^32 over the golden ratio, then a prime step per run, so that

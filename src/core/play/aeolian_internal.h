@@ -6,6 +6,7 @@
 
 #include "aeolian.h"
 #include "arrivals.h"
+#include "blade_noise.h"
 #include "pose_glide.h"
 
 /* --- model mode (aeolian_model.c) ------------------------------------------ */
@@ -35,6 +36,7 @@ typedef struct {
     double inc;          /* frames per sample at the last chunk's end */
     double angle;        /* flow angle in the body frame at that end, deg */
     double amp;          /* amplitude factor at that end */
+    double namp;         /* its blade noise's gain at that end */
     double fx[AERO_AEOLIAN_MAX_EARS], fy[AERO_AEOLIAN_MAX_EARS]; /* Curle, 1/m */
     double delay[AERO_AEOLIAN_MAX_EARS]; /* samples */
     double sign;         /* side of the mirror fold (-1: mirrored) */
@@ -78,6 +80,11 @@ struct aero_aeolian_texture {
     double reference[3]; /* body x axis, kept normal to the stick axis */
 
     aero_aeolian_source src[AERO_AEOLIAN_SOURCES_MAX];
+
+    /* a blade texture's top above its band limit (blade_noise.h): the
+       bank and one voice per source, or NULL for any other texture */
+    aero_blade_noise *blade;
+    aero_blade_voice *voices; /* AERO_AEOLIAN_SOURCES_MAX, after *blade */
 };
 
 /* the texture mode's state, made from the object's settings when first

@@ -144,13 +144,7 @@ static double stick_length(const double *pose)
    another place in the xorshift cycle (Murmur3's finaliser) */
 static uint32_t source_generator(aero_aeolian_texture *s)
 {
-    uint32_t h = aero_xorshift32(&s->rng);
-    h ^= h >> 16;
-    h *= 0x85ebca6bu;
-    h ^= h >> 13;
-    h *= 0xc2b2ae35u;
-    h ^= h >> 16;
-    return h ? h : 1;
+    return aero_scramble32(aero_xorshift32(&s->rng));
 }
 
 /* a random offset of the texture and a generator of its own for the
@@ -162,6 +156,11 @@ static void seed_source(aero_aeolian_texture *s, aero_aeolian_source *src)
     src->rng = source_generator(s);
     src->wander_from = src->wander = 0.0;
     src->wander_left = 0;
+    /* the blade's noise from the source's own generator, no draw of the
+       player's (every other texture plays as before, sample for sample) */
+    if (s->voices)
+        aero_blade_voice_reset(&s->voices[src - s->src],
+                               src->rng ^ 0x5bd1e995u);
 }
 
 /* a new source: nothing carried over */
@@ -244,18 +243,93 @@ int aero_aeolian_texture_make(aero_aeolian *a)
     return 0;
 }
 
+/* the blade's noise bank and voices, made for a blade texture and
+   dropped for any other */
+static void drop_blade(aero_aeolian_texture *s)
+{
+    free(s->blade);
+    s->blade = NULL;
+    s->voices = NULL;
+}
+
 void aero_aeolian_texture_free(aero_aeolian *a)
 {
     aero_aeolian_texture *s = a->texture;
     if (!s)
         return;
     aero_arrivals_free(&s->arrivals);
+    drop_blade(s);
     if (s->texture) {
         aero_texture_free(s->texture);
         free(s->texture);
     }
     free(s);
     a->texture = NULL;
+}
+
+/* A blade section's metadata (aerotex writes it for a blade polygon,
+ * textures/README.md): chord, trailing-edge thickness and angle, and
+ * whether its boundary layer is taken as tripped. The shipped sword.wav
+ * was made before these keys: its section (sword.poly, lenticular, chord
+ * 40 mm, sharp edges whose sides meet at 27.3 deg: what aerotex writes
+ * for it) is read as such.
+ * 1 for a blade (out filled), else 0. */
+static int read_blade(const aero_texture *t, aero_airfoil *out)
+{
+    char buf[32];
+    double chord = aero_texture_getd(t, "blade_chord", 0.0);
+    const char *bl = aero_texture_get(t, "blade_boundary_layer", buf,
+                                      sizeof buf);
+    memset(out, 0, sizeof(*out));
+    if (!(aero_texture_getd(t, "band_limit_stop", 0.0) > 0.0))
+        return 0; /* the texture holds its whole band */
+    if (chord > 0.0) {
+        out->chord = (float)chord;
+        out->te_thickness =
+            (float)aero_texture_getd(t, "blade_te_thickness", 0.0);
+        out->te_angle_deg = (float)aero_texture_getd(t, "blade_te_angle",
+                                                     14.0);
+        out->tripped = !bl || strcmp(bl, "untripped") != 0;
+    } else if (!strcmp(t->head.shape, "polygon sword.poly")) {
+        out->chord = (float)t->head.diameter;
+        out->te_thickness = 0.0f;
+        out->te_angle_deg = 27.3f;
+        out->tripped = 1;
+    } else
+        return 0;
+    out->span = 1.0f;
+    out->tip = AERO_AIRFOIL_NO_TIP;
+    return 1;
+}
+
+typedef struct {
+    aero_blade_noise bank;
+    aero_blade_voice voice[AERO_AEOLIAN_SOURCES_MAX];
+} blade_block;
+
+/* the bank for texture t when it is a blade's, else none (out of
+   memory: none, the texture plays alone) */
+static void set_blade(aero_aeolian *a, const aero_texture *t)
+{
+    aero_aeolian_texture *s = a->texture;
+    aero_airfoil section;
+    double sr = a->sample_rate >= 1000 ? a->sample_rate : 48000.0;
+    if (!t || !read_blade(t, &section)) {
+        drop_blade(s);
+        return;
+    }
+    if (!s->blade) {
+        blade_block *b = calloc(1, sizeof(*b));
+        if (!b)
+            return;
+        s->blade = &b->bank;
+        s->voices = b->voice;
+    }
+    if (aero_blade_noise_init(s->blade, &section, t->head.v0,
+                              aero_texture_getd(t, "band_limit_pass", 0.0),
+                              aero_texture_getd(t, "band_limit_stop", 0.0),
+                              sr) != 0)
+        drop_blade(s); /* metadata it cannot use: the texture alone */
 }
 
 int aero_aeolian_texture_set(aero_aeolian *a, aero_texture *t, char *err,
@@ -304,6 +378,7 @@ int aero_aeolian_texture_set(aero_aeolian *a, aero_texture *t, char *err,
         free(s->texture);
     }
     s->texture = t;
+    set_blade(a, t);
     /* sources restart from random offsets of the new texture */
     for (int i = 0; i < AERO_AEOLIAN_SOURCES_MAX; i++)
         start_source(s, &s->src[i]);
@@ -323,6 +398,8 @@ int aero_aeolian_texture_sample_rate(aero_aeolian *a, double sr)
     if (alloc_rings(a, sr))
         return -1;
     s->ring_rate = sr;
+    if (s->blade && aero_blade_noise_set_rate(s->blade, sr) != 0)
+        drop_blade(s);
     for (int i = 0; i < AERO_AEOLIAN_SOURCES_MAX; i++)
         s->src[i].primed = 0; /* the rings are new */
     return 0;
@@ -535,6 +612,9 @@ typedef struct {
     double inc, angle, amp;
     double fx[AERO_STICK_MAX_EARS], fy[AERO_STICK_MAX_EARS];
     double delay[AERO_STICK_MAX_EARS];
+    /* a blade's noise: the flow speed normal to the stick, the source's
+       span and the gain its noise is heard with */
+    double speed, span, namp;
 } source_geometry;
 
 typedef struct {
@@ -599,13 +679,17 @@ static int source_at(const aero_aeolian *a, const stick_frame *f, double u,
         /* g = dF/dt: the force scales with C_L', its rate with St */
         g->amp = pow(ratio, a->exponent) * pitch * level *
                  f->seg_len * f->gain;
+        g->namp = f->gain;
     } else { /* no flow: silent, keep the direction */
         perp[0] = f->xb[0];
         perp[1] = f->xb[1];
         perp[2] = f->xb[2];
         g->angle = 0.0;
         g->amp = 0.0;
+        g->namp = 0.0;
     }
+    g->speed = v;
+    g->span = f->seg_len;
     double across[3];
     cross3(f->axis, perp, across); /* y of the flow frame */
     for (int e = 0; e < a->n_ears; e++) {
@@ -753,11 +837,12 @@ static void read_texture(aero_aeolian *a, aero_aeolian_source *src,
 
 /* the chunk's texture projected for each ear (Curle's dipole, its
  * coefficients gliding from `then` to `now`) and added into the ear's ring
- * at its arrival time */
+ * at its arrival time; a blade's noise (NULL: none) with it, projected
+ * on the lift's direction */
 static void radiate(aero_aeolian *a, const source_geometry *then,
                     const source_geometry *now, double w0, double w1,
                     double sign_then, double sign_now, int m,
-                    float tex[4][AERO_STICK_CHUNK])
+                    float tex[4][AERO_STICK_CHUNK], const float *noise)
 {
     aero_aeolian_texture *s = a->texture;
     const double inv_m = 1.0 / m;
@@ -770,6 +855,9 @@ static void radiate(aero_aeolian *a, const source_geometry *then,
             cf[k] = (float)c[k];
             dcf[k] = (float)((cend[k] - c[k]) * inv_m);
         }
+        float cn = (float)(then->namp * then->fy[e]);
+        const float dcn = (float)((now->namp * now->fy[e] -
+                                   then->namp * then->fy[e]) * inv_m);
         const double delay = then->delay[e];
         const double ddelay = (now->delay[e] - delay) * inv_m;
         float *ring = s->arrivals.ring[e];
@@ -778,6 +866,10 @@ static void radiate(aero_aeolian *a, const source_geometry *then,
         for (int j = 0; j < m; j++) {
             float v = cf[0] * tex[0][j] + cf[1] * tex[1][j] +
                       cf[2] * tex[2][j] + cf[3] * tex[3][j];
+            if (noise) {
+                v += cn * noise[j];
+                cn += dcn;
+            }
             aero_arrivals_add_span(ring, mask, at, 1.0 + ddelay, v);
             cf[0] += dcf[0];
             cf[1] += dcf[1];
@@ -786,6 +878,26 @@ static void radiate(aero_aeolian *a, const source_geometry *then,
             at += 1.0 + ddelay;
         }
     }
+}
+
+/* a blade's noise for the chunk: its bands aimed at the model's spectrum
+ * for the source's speed, angle of attack (the flow's angle to the chord,
+ * 0 edge-on, folded to 0-90 deg: either edge may trail) and span, heard
+ * at the texture's pitch; NULL for any other texture */
+static const float *blade_noise(aero_aeolian *a, aero_aeolian_source *src,
+                                const source_geometry *g, int m,
+                                float *noise)
+{
+    aero_aeolian_texture *s = a->texture;
+    if (!s->blade)
+        return NULL;
+    aero_blade_voice *v = &s->voices[src - s->src];
+    double alpha = fabs(remainder(g->angle, 180.0));
+    double scale = g->inc * a->sample_rate / s->tex_rate;
+    aero_blade_voice_target(s->blade, v, g->speed, alpha, g->span, scale,
+                            current_diameter(a) / s->tex_diameter);
+    aero_blade_voice_render(s->blade, v, noise, m);
+    return noise;
 }
 
 /* one source over a chunk of m samples: texture read, Curle projection,
@@ -802,11 +914,13 @@ static void render_source(aero_aeolian *a, aero_aeolian_source *src,
     if (!src->primed) { /* first chunk: start where it ends, amplitude 0 */
         then = *g;
         then.amp = 0.0;
+        then.namp = 0.0;
         src->primed = 1;
     } else {
         then.inc = src->inc;
         then.angle = src->angle;
         then.amp = src->amp;
+        then.namp = src->namp;
         for (int e = 0; e < a->n_ears; e++) {
             then.fx[e] = src->fx[e];
             then.fy[e] = src->fy[e];
@@ -818,12 +932,14 @@ static void render_source(aero_aeolian *a, aero_aeolian_source *src,
     double w0 = pair_weight(&p, folded_then, s->mirror ? 0.0 : s->period);
 
     /* the texture once for all ears: x, y of both directions */
-    float tex[4][AERO_STICK_CHUNK];
+    float tex[4][AERO_STICK_CHUNK], noise[AERO_STICK_CHUNK];
     read_texture(a, src, &p, then.inc, g->inc, m, tex);
-    radiate(a, &then, g, w0, w1, sign_then, sign_now, m, tex);
+    radiate(a, &then, g, w0, w1, sign_then, sign_now, m, tex,
+            blade_noise(a, src, g, m, noise));
     src->inc = g->inc;
     src->angle = g->angle;
     src->amp = g->amp;
+    src->namp = g->namp;
     for (int e = 0; e < a->n_ears; e++) {
         src->fx[e] = g->fx[e];
         src->fy[e] = g->fy[e];

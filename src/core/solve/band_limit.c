@@ -13,13 +13,6 @@ void aero_band_limit_grid(double v0, double h, double *f_pass,
     *f_stop = v0 / (AERO_BAND_LIMIT_CELLS_STOP * h);
 }
 
-double aero_band_limit_gain(double f, double f_pass, double f_stop)
-{
-    if (f <= f_pass) return 1.0;
-    if (f >= f_stop) return 0.0;
-    return 0.5 + 0.5 * cos(AERO_PI * (f - f_pass) / (f_stop - f_pass));
-}
-
 int aero_band_limit_apply(float *x, int n, int stride, double rate,
                           double f_pass, double f_stop)
 {

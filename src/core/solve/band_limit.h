@@ -30,6 +30,10 @@
 #ifndef AERO_BAND_LIMIT_H
 #define AERO_BAND_LIMIT_H
 
+#include <math.h>
+
+#include "aero_air.h"
+
 /* cells per wavelength at the ends of the roll-off (above) */
 #define AERO_BAND_LIMIT_CELLS_PASS 16.0
 #define AERO_BAND_LIMIT_CELLS_STOP 8.0
@@ -39,8 +43,17 @@ void aero_band_limit_grid(double v0, double h, double *f_pass,
                           double *f_stop);
 
 /* the gain at f (Hz): 1 up to f_pass, 0 from f_stop, a raised cosine
-   between */
-double aero_band_limit_gain(double f, double f_pass, double f_stop);
+   between (inline: the players weigh a blade's noise by it without the
+   FFT code, blade_noise.h) */
+static inline double aero_band_limit_gain(double f, double f_pass,
+                                          double f_stop)
+{
+    if (f <= f_pass)
+        return 1.0;
+    if (f >= f_stop)
+        return 0.0;
+    return 0.5 + 0.5 * cos(AERO_PI * (f - f_pass) / (f_stop - f_pass));
+}
 
 /* x[k * stride], k < n (one loop of a texture channel at rate Hz), band
    limited in place; 0 < f_pass < f_stop. 0, or -1 (bad arguments or out

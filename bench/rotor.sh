@@ -13,7 +13,7 @@ SECONDS_RENDERED=${BENCH_SECONDS:-10}
 N=${BENCH_DRONES:-25}
 RATE=48000
 
-rotor_patch() { # NAME DRONES
+rotor_patch() { # NAME DRONES [FLAGS]
     {
         echo "#N canvas 0 50 450 300 10;"
         echo "#X obj 10 10 loadbang;"                                  # 0
@@ -31,7 +31,7 @@ rotor_patch() { # NAME DRONES
             echo "#X obj 200 60 expr 6000 + 600*sin(\\\$f1*0.7 + $i);"
             echo "#X msg 200 80 \\\$1 100;"
             echo "#X obj 200 100 line~;"
-            echo "#X obj 200 120 rotor~ -listener $(( i % 4 - 2 ))e-1 5 0;"
+            echo "#X obj 200 120 rotor~ -listener $(( i % 4 - 2 ))e-1 5 0 ${3:-};"
             i=$((i + 1))
         done
         echo "#X connect 0 0 1 0;"
@@ -69,11 +69,14 @@ bbest() {
 }
 rotor_patch rt-empty 0
 rotor_patch rt-drones "$N"
+rotor_patch rt-tones "$N" "-noise -200"
 e=$(bbest rt-empty)
 d=$(bbest rt-drones)
-awk -v n="$N" -v sec="$SECONDS_RENDERED" -v e="$e" -v d="$d" -v r=$RATE 'BEGIN {
-    per = (d - e) / n / sec
+t=$(bbest rt-tones)
+awk -v n="$N" -v sec="$SECONDS_RENDERED" -v e="$e" -v d="$d" -v t="$t" -v r=$RATE 'BEGIN {
+    per = (d - e) / n / sec; pt = (t - e) / n / sec
     printf "[rotor~] %d drones (4 rotors x 2 blades each), %d s at %d Hz, Pd batch mode, mono\n", n, sec, r
-    printf "  empty patch %8.3f s CPU, drones %8.3f s\n", e, d
+    printf "  empty patch %8.3f s CPU, drones %8.3f s, tones alone %8.3f s\n", e, d, t
     printf "  one drone: %.1f us per second of sound, %.3f %% of one core\n", 1e6 * per, 100 * per
+    printf "  its tones alone (-noise -200): %.1f us, %.3f %% of one core\n", 1e6 * pt, 100 * pt
 }' | tee "$DIR/rotor.txt"

@@ -824,14 +824,22 @@ static void chunk(aero_rotor *r, const float *rpm, int m)
     for (int i = 0; i < 3; i++)
         wind[i] = ramp_after(&r->base.wind[i], m);
     double u_axis = aero_dot3(wind, axes + 6);
-    noise_spectrum(r, fabs(omega), u_axis);
-    noise_chunk(r, noise, m);
+    /* -noise at its floor: the tones alone, without the noise's cost */
+    const int hiss = r->noise_gain > 1e-9;
+    if (hiss) {
+        noise_spectrum(r, fabs(omega), u_axis);
+        noise_chunk(r, noise, m);
+    } else
+        memset(noise, 0, sizeof(noise));
     gain = ramp_after(&r->base.gain, m);
     for (int e = 0; e < r->base.n_ears; e++) {
         for (int i = 0; i < 3; i++)
             ear[i] = ramp_after(&r->base.ear[3 * e + i], m);
         ear_tones(r, omega, ear, axes, &r->sums[e], &now[e]);
-        ear_envelope(r, omega, u_axis, ear, axes, now[e].env);
+        if (hiss)
+            ear_envelope(r, omega, u_axis, ear, axes, now[e].env);
+        else
+            memset(now[e].env, 0, sizeof(now[e].env));
         if (!r->primed) { /* the first chunk: the sound from 0 */
             r->then[e] = now[e];
             memset(r->then[e].c, 0, sizeof(r->then[e].c));

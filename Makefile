@@ -491,7 +491,8 @@ DEB_PACKAGES += gcc-mingw-w64-x86-64-win32 gcc-mingw-w64-x86-64-posix \
 platform:
 	@case " $(PLATFORMS) " in *" $(P) "*) ;; *) \
 	    echo "make platform P=PLATFORM, one of: $(PLATFORMS)" >&2; exit 2 ;; esac
-	@sh platforms/deps.sh $(P)
+	@$(MAKE) --no-print-directory -s $(VENDORED)/fftw-3.3.10.tar.gz $(VENDORED)/libsndfile-1.2.0.tar.gz
+	@AERO_VENDOR=$(abspath $(VENDORED)) sh platforms/deps.sh $(P)
 	@$(if $(filter windows-%,$(P)),sh platforms/pd.sh $(P) single >/dev/null)
 	@$(MAKE) --no-print-directory -f platforms/platform.mk P=$(P)
 windows:
@@ -509,7 +510,7 @@ platforms:
 #                   (platforms/deps.sh wasm, cached), the scene patches,
 #                   abstractions, textures and trees the page loads into
 #                   the module's file system
-#   make web-serve  serves build/web/ on http://localhost:8000/
+#   make web-serve  serves build/web/ on http://127.0.0.1:8000/ (PORT=)
 #   make check-web  the page in headless Chromium against native renders
 #                   (tests/web/run.sh)
 # Debian's emscripten works offline from its own cache (EM_CACHE unset);
@@ -519,6 +520,8 @@ DEB_PACKAGES += emscripten chromium nodejs
 # which conflicts with Debian's npm) is installed
 DEB_PACKAGES += $(if $(shell command -v npm),,npm)
 WEB = $(BUILD)/web
+# where the outside source archives are looked for first; missing ones are
+# fetched and every one is checked (platforms/vendor.sh, docs/building.md)
 VENDOR ?= ../shared/vendor
 EMCC = NODE_PATH=/usr/share/nodejs nice -n 10 emcc
 EMAR = NODE_PATH=/usr/share/nodejs emar
@@ -549,17 +552,28 @@ web.page = $(wildcard web/*.html web/*.js web/*.css)
 # platforms/deps.sh wasm: links in build/deps/wasm to the cached libraries
 # (whose times are the cache's: a stamp says when they were linked)
 WASM_DEPS_STAMP = $(WASM_DEPS)/.linked
-$(WASM_DEPS_STAMP): platforms/deps.sh platforms/deps/fftw.sh platforms/deps/sndfile.sh
-	NODE_PATH=/usr/share/nodejs AERO_VENDOR=$(abspath $(VENDOR)) \
+# build/vendor/: links to the archives as platforms/vendor.sh finds or
+# fetches them, each checked against its pinned SHA-256 when linked (make
+# reads a link's time as its archive's: they are order-only prerequisites,
+# so that an archive's date never rebuilds what it built)
+VENDORED = $(BUILD)/vendor
+$(VENDORED)/%.tar.gz:
+	@mkdir -p $(dir $@)
+	a=$$(VENDOR=$(abspath $(VENDOR)) sh platforms/vendor.sh $*.tar.gz) && \
+	    ln -sf "$$a" $@
+$(WASM_DEPS_STAMP): platforms/deps.sh platforms/deps/fftw.sh platforms/deps/sndfile.sh \
+    | $(VENDORED)/fftw-3.3.10.tar.gz $(VENDORED)/libsndfile-1.2.0.tar.gz
+	NODE_PATH=/usr/share/nodejs AERO_VENDOR=$(abspath $(VENDORED)) \
 	    nice -n 10 sh platforms/deps.sh wasm
 	touch $@
 
 # libpd's own Makefile with emcc: the static library only, no extras (pd~
 # forks), no utils
-$(WASM_LIBPD)/libs/libpd.a:
+$(WASM_LIBPD)/libs/libpd.a: | $(VENDORED)/libpd-0.16.1.tar.gz \
+    $(VENDORED)/pure-data-0.56-5.tar.gz
 	rm -rf $(WASM_LIBPD) && mkdir -p $(WASM_LIBPD)/pure-data
-	tar xzf $(VENDOR)/libpd-0.16.1.tar.gz -C $(WASM_LIBPD) --strip-components=1
-	tar xzf $(VENDOR)/pure-data-0.56-5.tar.gz -C $(WASM_LIBPD)/pure-data \
+	tar xzf $(VENDORED)/libpd-0.16.1.tar.gz -C $(WASM_LIBPD) --strip-components=1
+	tar xzf $(VENDORED)/pure-data-0.56-5.tar.gz -C $(WASM_LIBPD)/pure-data \
 	    --strip-components=1
 	env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL NODE_PATH=/usr/share/nodejs \
 	    nice -n 10 make -C $(WASM_LIBPD) -j2 CC=emcc AR=emar STATIC=true \
@@ -598,10 +612,12 @@ web: $(WEB)/aero.js $(web.data) $(web.page)
 	cp abstractions/*.pd $(WEB)/aero/abstractions/
 	cp $(web.textures) $(WEB)/aero/textures/
 	cp $(web.trees) $(WEB)/aero/trees/
-	@echo "web: $(WEB)/ (make web-serve, then open http://localhost:8000/)"
+	@echo "web: $(WEB)/ (make web-serve, then open http://127.0.0.1:$(PORT)/)"
 
+# on this machine only (127.0.0.1), on port PORT (make web-serve PORT=8080)
+PORT ?= 8000
 web-serve: web
-	cd $(WEB) && python3 -m http.server 8000
+	python3 -m http.server $(PORT) --bind 127.0.0.1 --directory $(WEB)
 
 # only what it uses natively: the core for the native host, the analyser
 check-web:

@@ -36,7 +36,7 @@ set -e
 PLATFORM=${1:?usage: sh platforms/pd.sh PLATFORM [single|double]}
 PRECISION=${2:-single}
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
-ARCHIVE=${PD_ARCHIVE:-$ROOT/../shared/vendor/pure-data-0.56-5.tar.gz}
+ARCHIVE=${PD_ARCHIVE:-$(sh "$ROOT/platforms/vendor.sh" pure-data-0.56-5.tar.gz)}
 CACHE=${AERO_CACHE:-$HOME/.cache/aero}
 
 case $PRECISION in

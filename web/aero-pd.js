@@ -80,14 +80,15 @@ export class AeroPd {
 
 // renders SECONDS of a scene patch offline in a fresh Pd (a fresh one so
 // that Pd's process state, e.g. [noise~]'s seed, is as in a fresh native
-// Pd): { left, right } Float32Arrays, after MESSAGES at time 0
+// Pd): { left, right } Float32Arrays, after MESSAGES at time 0; EXTRA
+// frames more; PROGRESS(fraction) now and then
 export async function renderScene(wasm, files, patch, messages, seconds, rate,
-                                  print) {
+                                  print, progress = () => {}, extra = 0) {
   const pd = await AeroPd.create(wasm, rate, print);
   pd.addFiles(files);
   pd.open(patch);
   for (const msg of messages) pd.send(msg);
-  const ticks = Math.floor(seconds * rate / BLOCK);
+  const ticks = Math.floor(seconds * rate / BLOCK) + Math.ceil(extra / BLOCK);
   const left = new Float32Array(ticks * BLOCK);
   const right = new Float32Array(ticks * BLOCK);
   const chunk = 32;
@@ -98,6 +99,7 @@ export async function renderScene(wasm, files, patch, messages, seconds, rate,
       left[t * BLOCK + i] = out[2 * i];
       right[t * BLOCK + i] = out[2 * i + 1];
     }
+    if (t % (chunk * 8) === 0) progress(t / ticks);
   }
   pd.close();
   return { left, right };

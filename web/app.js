@@ -1,9 +1,10 @@
 // The page: scenes (scenes.js) played live by a Pd in an AudioWorklet
-// (worklet.js), rendered offline on the main thread by a fresh Pd
-// (aero-pd.js), a live spectrogram. window.aero exposes the renders to
-// tests (tests/web) and benchmarks.
+// (worklet.js, through the master limiter of limiter.js), rendered offline
+// by a fresh Pd in a worker (render-worker.js), a live spectrogram and a
+// level meter. window.aero exposes the renders, the levels and the state
+// to tests (tests/web) and benchmarks.
 import { SCENES, controlMessages } from './scenes.js';
-import { AeroPd, renderScene, wavBytes, BLOCK } from './aero-pd.js';
+import { AeroPd, wavBytes, BLOCK } from './aero-pd.js';
 
 const $ = id => document.getElementById(id);
 const ABSTRACTIONS = ['draft', 'fence', 'fire', 'swing', 'throw', 'tree',
@@ -11,12 +12,17 @@ const ABSTRACTIONS = ['draft', 'fence', 'fire', 'swing', 'throw', 'tree',
 const dB = x => Math.pow(10, x / 20);
 
 const state = {
-  scene: SCENES[0],
+  scene: SCENES[0],  // the scene shown: the latest one clicked
+  playingScene: null, // the scene the worklet says it plays
   values: {},        // scene id -> { control id -> value }
-  files: {},         // path -> ArrayBuffer, fetched once
+  files: {},         // path -> Promise of ArrayBuffer, fetched once
   wasm: null,        // aero.wasm bytes (for the worklet)
   module: null,      // and compiled (for renders on this thread)
   ctx: null, node: null, analyser: null, playing: false,
+  starting: null,    // the one start of the AudioContext, while it runs
+  levels: { peak: 0, input: 0, reduction: 1, limited: 0 }, // since reset
+  recording: null,   // { l: [], r: [] } chunks while recording
+  renderWorker: null,
 };
 
 function unsupported(text) {
@@ -34,13 +40,18 @@ async function fetchBytes(path) {
   return r.arrayBuffer();
 }
 
-// the files a scene needs, fetched once: { path: ArrayBuffer }
+// the files a scene needs, fetched once (one fetch per file however often
+// asked): { path: ArrayBuffer }
 async function sceneFiles(scene) {
   const paths = ['scenes/' + scene.patch, ...ABSTRACTIONS, ...scene.data];
-  await Promise.all(paths.filter(p => !state.files[p]).map(async p => {
-    state.files[p] = await fetchBytes('aero/' + p);
-  }));
-  return Object.fromEntries(paths.map(p => [p, state.files[p]]));
+  for (const p of paths) {
+    if (!state.files[p]) {
+      state.files[p] = fetchBytes('aero/' + p);
+      state.files[p].catch(() => { delete state.files[p]; });
+    }
+  }
+  const bytes = await Promise.all(paths.map(p => state.files[p]));
+  return Object.fromEntries(paths.map((p, i) => [p, bytes[i]]));
 }
 
 function values(scene) {
@@ -51,12 +62,20 @@ function values(scene) {
 }
 
 function post(msg) { if (state.node) state.node.port.postMessage(msg); }
-function sendAll(messages) { for (const m of messages) post({ send: m }); }
+// messages to the scene shown, once the worklet has it (until then the
+// scene's message carries the controls' values)
+function sendAll(messages) {
+  if (state.postedScene !== state.scene) return;
+  for (const m of messages) post({ send: m });
+}
 function sceneGain() { return dB(Number($('gain').value)); }
 
 // --- live sound ---------------------------------------------------------------
+// One AudioContext for the page's life, made by the first Play; the one
+// worklet in it plays the scene the latest click chose.
 async function startAudio() {
   const ctx = new AudioContext();
+  state.ctx = ctx;
   await ctx.audioWorklet.addModule('worklet.js');
   const node = new AudioWorkletNode(ctx, 'aero', {
     numberOfInputs: 0, numberOfOutputs: 1, outputChannelCount: [2],
@@ -68,6 +87,9 @@ async function startAudio() {
       if (d.ready) resolve();
       if (d.error) { console.warn('aero: ' + d.error); status('Error: ' + d.error); reject(new Error(d.error)); }
       if (d.print) logPd(d.print);
+      if (d.meter) showMeter(d.meter);
+      if (d.opened) opened(d.opened);
+      if (d.recorded) recorded(d.recorded, d.last);
     };
   });
   const analyser = ctx.createAnalyser();
@@ -75,36 +97,155 @@ async function startAudio() {
   analyser.smoothingTimeConstant = 0;
   node.connect(analyser);
   analyser.connect(ctx.destination);
-  Object.assign(state, { ctx, node, analyser });
+  Object.assign(state, { node, analyser });
   await ready;
   drawSpectrogram();
 }
 
-async function loadLive(scene) {
-  if (!state.node) return;
-  post({ files: await sceneFiles(scene) });
-  post({ open: scene.patch });
-  post({ gain: sceneGain() });
-  sendAll(controlMessages(scene, values(scene)));
+// the worklet plays scene ID now: the status line says what plays
+function opened(id) {
+  state.playingScene = SCENES.find(s => s.id === id);
+  showStatus();
 }
 
+function showStatus() {
+  if (state.starting) status('Starting Pd in the audio thread ...');
+  else if (!state.ctx) status('Ready: press Play.');
+  else if (!state.playing) status('Stopped.');
+  else if (!state.playingScene || state.playingScene !== state.scene) status(`Loading ${state.scene.title} ...`);
+  else status(`Playing ${state.playingScene.title} at ${state.ctx.sampleRate} Hz`);
+}
+
+// Scene switching has one owner: each call takes a ticket; after its files
+// arrive, only the latest ticket is sent to the worklet, so whatever
+// arrives late, the scene heard is the one clicked last. The worklet fades
+// out, opens it with its gain already set, and fades in.
+let ticket = 0;
+async function loadLive(scene) {
+  const mine = ++ticket;
+  if (!state.node) return;
+  showStatus();
+  const files = await sceneFiles(scene);
+  if (mine !== ticket || !state.node) return;
+  state.postedScene = scene;
+  state.node.port.postMessage({ scene: { id: scene.id, files, open: scene.patch,
+    gain: sceneGain(), messages: controlMessages(scene, values(scene)) } });
+}
+
+// Play and Pause: one change at a time; clicks while one runs (a
+// double-click on Play while Pd starts) do nothing more, so there is one
+// AudioContext and the button and status line say what it does
 async function togglePlay() {
   const button = $('play');
+  if (state.busy) return;
+  state.busy = true;
+  button.disabled = true;
+  button.setAttribute('aria-busy', 'true');
   try {
     if (!state.ctx) {
-      status('Starting Pd in the audio thread ...');
-      await startAudio();
-      await loadLive(state.scene);
+      state.starting = startAudio();
+      showStatus();
+      await state.starting;
+      state.starting = null;
+      loadLive(state.scene).catch(err => status('Cannot load: ' + err.message));
     }
     if (state.playing) await state.ctx.suspend();
     else await state.ctx.resume();
     state.playing = !state.playing;
-    button.textContent = state.playing ? 'Stop' : 'Play';
-    button.setAttribute('aria-pressed', String(state.playing));
-    status(state.playing ? `Playing ${state.scene.title} at ${state.ctx.sampleRate} Hz` : 'Stopped');
   } catch (err) {
+    state.starting = null;
     status('Cannot start audio: ' + err.message);
+    return;
+  } finally {
+    state.busy = false;
+    button.disabled = false;
+    button.removeAttribute('aria-busy');
   }
+  button.textContent = state.playing ? 'Pause' : 'Play';
+  button.setAttribute('aria-pressed', String(state.playing));
+  showStatus();
+}
+
+// --- the level meter: the output's true peak (dBTP) and rms; the limiter
+// light turns on when the limiter reduced the output and stays on until
+// clicked
+const toDb = v => (v > 0 ? 20 * Math.log10(v) : -Infinity);
+let peakHold = { db: -Infinity, t: 0 };
+function showMeter(m) {
+  const L = state.levels;
+  L.peak = Math.max(L.peak, m.peak);
+  L.input = Math.max(L.input, m.input);
+  L.reduction = Math.min(L.reduction, m.reduction);
+  L.limited += m.limited;
+  L.scene = m.scene;
+  L.scenePeak = m.scenePeak;
+  const db = toDb(m.peak), now = performance.now();
+  if (db > peakHold.db || now - peakHold.t > 1500) peakHold = { db, t: now };
+  const pos = d => `${Math.max(0, Math.min(100, (d + 60) / 60 * 100))}%`;
+  $('meter-bar').style.width = pos(toDb(m.rms) + 3);
+  $('meter-peak').style.left = pos(peakHold.db);
+  $('meter').setAttribute('aria-valuenow', Math.max(-60, db).toFixed(1));
+  $('meter-text').textContent = `${Number.isFinite(peakHold.db) ? peakHold.db.toFixed(1) : '-inf'} dBTP`;
+  if (m.reduction < 0.999) {
+    const led = $('limit-led');
+    led.dataset.on = 'true';
+    led.textContent = `limiter ${toDb(Math.min(m.reduction, Number(led.dataset.worst || 1))).toFixed(1)} dB`;
+    led.dataset.worst = String(Math.min(m.reduction, Number(led.dataset.worst || 1)));
+  }
+}
+
+function resetLevels() {
+  state.levels = { peak: 0, input: 0, reduction: 1, limited: 0 };
+  const led = $('limit-led');
+  led.dataset.on = 'false';
+  delete led.dataset.worst;
+  led.textContent = 'limiter';
+}
+
+// --- record what I play: the limiter's output, as heard, into a WAV -----
+function toggleRecord() {
+  const button = $('record');
+  if (!state.node) { status('Press Play first: the recording is what plays.'); return; }
+  if (!state.recording) {
+    state.recording = { l: [], r: [], t0: performance.now() };
+    state.node.port.postMessage({ record: true });
+    button.textContent = 'Stop recording';
+    button.setAttribute('aria-pressed', 'true');
+    status('Recording what plays ...');
+  } else {
+    state.node.port.postMessage({ record: false });
+    button.textContent = 'Record what I play';
+    button.setAttribute('aria-pressed', 'false');
+  }
+}
+
+function recorded([l, r], last) {
+  const rec = state.recording;
+  if (!rec) return;
+  rec.l.push(l);
+  rec.r.push(r);
+  if (!last) return;
+  state.recording = null;
+  const join = parts => {
+    const out = new Float32Array(parts.reduce((n, p) => n + p.length, 0));
+    let o = 0;
+    for (const p of parts) { out.set(p, o); o += p.length; }
+    return out;
+  };
+  const left = join(rec.l), right = join(rec.r);
+  offer(wavBytes(left, right, state.ctx.sampleRate), `aero-${state.scene.id}-recording.wav`);
+  status(`Recorded ${(left.length / state.ctx.sampleRate).toFixed(1)} s: aero-${state.scene.id}-recording.wav`);
+}
+
+// a WAV to download: the link shown and clicked
+function offer(bytes, name) {
+  const a = $('download');
+  if (a.href) URL.revokeObjectURL(a.href);
+  a.href = URL.createObjectURL(new Blob([bytes], { type: 'audio/wav' }));
+  a.download = name;
+  a.textContent = name;
+  a.hidden = false;
+  a.click();
 }
 
 // Pd's messages: errors (Pd prefixes them with "error") go to the console
@@ -119,22 +260,62 @@ function logPd(text) {
   else console.debug('Pd: ' + line);
 }
 
-// --- the spectrogram: a column per animation frame, 30 Hz - 12 kHz on a
-// log axis (the scenes' tones span 30 Hz to several kHz), dB as colour --
-const SPEC_LO = 30, SPEC_HI = 12000;
+// --- the spectrogram: 30 Hz - 12 kHz on a log axis (the scenes' tones
+// span 30 Hz to several kHz), dB as colour, COLS_PER_S columns per second
+// of audio time (so the time axis is true whatever the frame rate); a
+// frequency axis on the left, a time axis (seconds before now) below
+const SPEC_LO = 30, SPEC_HI = 12000, COLS_PER_S = 50;
+const AXIS_LEFT = 52, AXIS_BOTTOM = 24;
+function drawAxes(g, W, H, plotH) {
+  g.fillStyle = '#000';
+  g.fillRect(0, 0, AXIS_LEFT, H);
+  g.fillRect(0, plotH, W, H - plotH);
+  g.fillStyle = '#ccc';
+  g.strokeStyle = '#888';
+  g.font = '13px system-ui, sans-serif';
+  g.textBaseline = 'middle';
+  g.textAlign = 'right';
+  for (const f of [50, 100, 200, 500, 1000, 2000, 5000, 10000]) {
+    const y = (plotH - 1) * (1 - Math.log(f / SPEC_LO) / Math.log(SPEC_HI / SPEC_LO));
+    g.fillText(f >= 1000 ? `${f / 1000}k` : String(f), AXIS_LEFT - 8, y);
+    g.beginPath(); g.moveTo(AXIS_LEFT - 5, y + 0.5); g.lineTo(AXIS_LEFT, y + 0.5); g.stroke();
+  }
+  g.save();
+  g.translate(11, plotH / 2);
+  g.rotate(-Math.PI / 2);
+  g.textAlign = 'center';
+  g.fillText('Hz', 0, 0);
+  g.restore();
+  g.textAlign = 'center';
+  g.textBaseline = 'top';
+  const span = (W - AXIS_LEFT) / COLS_PER_S;
+  for (let t = 0; t <= span; t += 2) {
+    const x = W - 1 - t * COLS_PER_S;
+    g.fillText(t === 0 ? '0 s' : `-${t}`, Math.max(AXIS_LEFT + 8, Math.min(W - 12, x)), plotH + 5);
+    g.beginPath(); g.moveTo(x + 0.5, plotH); g.lineTo(x + 0.5, plotH + 4); g.stroke();
+  }
+}
+
 function drawSpectrogram() {
   const canvas = $('spectrogram'), g = canvas.getContext('2d');
+  const W = canvas.width, H = canvas.height, plotH = H - AXIS_BOTTOM, plotW = W - AXIS_LEFT;
   const bins = new Float32Array(state.analyser.frequencyBinCount);
   const hzPerBin = state.ctx.sampleRate / state.analyser.fftSize;
   // the FFT bin of each pixel row, bottom = SPEC_LO
-  const rowBin = Array.from({ length: canvas.height }, (_, y) => Math.min(bins.length - 1,
-    Math.round(SPEC_LO * Math.pow(SPEC_HI / SPEC_LO, (canvas.height - 1 - y) / (canvas.height - 1)) / hzPerBin)));
-  const column = g.createImageData(1, canvas.height);
+  const rowBin = Array.from({ length: plotH }, (_, y) => Math.min(bins.length - 1,
+    Math.round(SPEC_LO * Math.pow(SPEC_HI / SPEC_LO, (plotH - 1 - y) / (plotH - 1)) / hzPerBin)));
+  const column = g.createImageData(1, plotH);
+  g.fillStyle = '#000';
+  g.fillRect(0, 0, W, H);
+  drawAxes(g, W, H, plotH);
+  let col = Math.floor(state.ctx.currentTime * COLS_PER_S);
   const frame = () => {
-    if (state.playing) {
+    const now = Math.floor(state.ctx.currentTime * COLS_PER_S);
+    const n = Math.min(plotW, now - col);
+    if (state.playing && n > 0) {
       state.analyser.getFloatFrequencyData(bins);
-      g.drawImage(canvas, -1, 0);
-      for (let y = 0; y < canvas.height; y++) {
+      g.drawImage(canvas, AXIS_LEFT + n, 0, plotW - n, plotH, AXIS_LEFT, 0, plotW - n, plotH);
+      for (let y = 0; y < plotH; y++) {
         const v = Math.max(0, Math.min(1, (bins[rowBin[y]] + 110) / 80));
         const i = 4 * y;
         column.data[i] = 255 * Math.min(1, v * 2);
@@ -142,23 +323,46 @@ function drawSpectrogram() {
         column.data[i + 2] = 120 * (1 - v) * (v > 0.02);
         column.data[i + 3] = 255;
       }
-      g.putImageData(column, canvas.width - 1, 0);
+      for (let k = 0; k < n; k++) g.putImageData(column, W - 1 - k, 0);
     }
+    col = now;
     requestAnimationFrame(frame);
   };
   requestAnimationFrame(frame);
 }
 
-// --- offline renders (main thread, a fresh Pd each) --------------------------
+// --- offline renders: a fresh Pd in a worker each ------------------------
 const printQuiet = text => logPd(text);
+
+// runs one render in a worker (render-worker.js): { left, right };
+// PROGRESS(fraction); the worker is state.renderWorker while it runs
+// (cancelRender ends it)
+function renderInWorker(job, progress = () => {}) {
+  return new Promise((resolve, reject) => {
+    const w = new Worker('render-worker.js', { type: 'module' });
+    state.renderWorker = w;
+    w.cancel = () => { w.terminate(); reject(new Error('cancelled')); };
+    w.onmessage = e => {
+      const d = e.data;
+      if (d.progress !== undefined) progress(d.progress);
+      if (d.print) logPd(d.print + '\n');
+      if (d.error) { w.terminate(); reject(new Error(d.error)); }
+      if (d.left) { w.terminate(); resolve(d); }
+    };
+    w.onerror = e => { w.terminate(); reject(new Error(e.message || 'the render worker failed')); };
+    w.postMessage(job);
+  }).finally(() => { state.renderWorker = null; });
+}
 
 // renders scene ID for SECONDS at RATE with control VALUES (default: the
 // page's current ones): { left, right } in pascals, before the gain
-async function render(id, seconds, rate = 48000, vals) {
+async function render(id, seconds, rate = 48000, vals, opts = {}) {
   const scene = SCENES.find(s => s.id === id);
   const files = await sceneFiles(scene);
-  return renderScene(state.module, files, scene.patch,
-    controlMessages(scene, vals ?? values(scene)), seconds, rate, printQuiet);
+  const { progress, ...job } = opts; // a function does not cross to the worker
+  return renderInWorker({ wasm: state.module, files, patch: scene.patch,
+    messages: controlMessages(scene, vals ?? values(scene)), seconds, rate, ...job },
+    progress);
 }
 
 // the cost of scene ID per 128-frame block (two Pd blocks, as the
@@ -181,28 +385,37 @@ async function blockCost(id, rate = 48000, blocks = 400, reps = 7) {
   return best;
 }
 
+// Render WAV: the scene as the page plays it (its gain, the limiter) in a
+// worker, with progress and Cancel; the page stays live meanwhile
 async function renderDownload() {
   const seconds = Math.max(1, Math.min(60, Number($('seconds').value) || 5));
-  const scene = state.scene, button = $('render');
+  const scene = state.scene, button = $('render'), bar = $('render-progress');
   button.disabled = true;
+  bar.value = 0;
+  bar.hidden = false;
+  $('render-cancel').hidden = false;
   status(`Rendering ${seconds} s of ${scene.title} ...`);
   try {
     const t0 = performance.now();
-    const { left, right } = await render(scene.id, seconds);
-    const blob = new Blob([wavBytes(left, right, 48000, sceneGain())], { type: 'audio/wav' });
-    const a = $('download');
-    if (a.href) URL.revokeObjectURL(a.href);
-    a.href = URL.createObjectURL(blob);
-    a.download = `aero-${scene.id}.wav`;
-    a.textContent = `aero-${scene.id}.wav`;
-    a.hidden = false;
-    a.click();
-    status(`Rendered ${seconds} s in ${((performance.now() - t0) / 1000).toFixed(1)} s: ${a.download}`);
+    const { left, right } = await render(scene.id, seconds, 48000, undefined, {
+      gain: sceneGain(), limit: true,
+      progress: p => {
+        bar.value = p;
+        status(`Rendering ${seconds} s of ${scene.title}: ${Math.round(100 * p)} %`);
+      } });
+    offer(wavBytes(left, right, 48000), `aero-${scene.id}.wav`);
+    status(`Rendered ${seconds} s in ${((performance.now() - t0) / 1000).toFixed(1)} s: aero-${scene.id}.wav`);
   } catch (err) {
-    status('Render failed: ' + err.message);
+    status(err.message === 'cancelled' ? 'Render cancelled.' : 'Render failed: ' + err.message);
   } finally {
     button.disabled = false;
+    bar.hidden = true;
+    $('render-cancel').hidden = true;
   }
+}
+
+function cancelRender() {
+  if (state.renderWorker) state.renderWorker.cancel();
 }
 
 // --- the scene panel ---------------------------------------------------------
@@ -220,18 +433,32 @@ function showScene(scene) {
     const id = `c-${c.id}`;
     const label = Object.assign(document.createElement('label'), { htmlFor: id,
       textContent: c.label });
-    const input = Object.assign(document.createElement('input'), { id, type: 'range',
-      min: c.min, max: c.max, step: c.step, value: vals[c.id] });
+    // a choice among named values (c.options: [[value, name], ...]) or a
+    // slider
+    let input;
+    if (c.options) {
+      input = Object.assign(document.createElement('select'), { id });
+      for (const [v, name] of c.options) {
+        input.append(Object.assign(document.createElement('option'), { value: v, textContent: name }));
+      }
+      input.value = String(vals[c.id]);
+    } else {
+      input = Object.assign(document.createElement('input'), { id, type: 'range',
+        min: c.min, max: c.max, step: c.step, value: vals[c.id] });
+    }
     input.dataset.control = c.id;
     const out = document.createElement('output');
     out.htmlFor = id;
-    const show = () => { out.textContent = `${vals[c.id]} ${c.unit}`; };
+    const show = () => { out.textContent = c.options ? '' : `${vals[c.id]} ${c.unit}`; };
     show();
-    input.addEventListener('input', () => {
+    const changed = () => {
+      if (vals[c.id] === Number(input.value)) return;
       vals[c.id] = Number(input.value);
       show();
       sendAll(c.send(vals[c.id], vals));
-    });
+    };
+    input.addEventListener('input', changed);
+    input.addEventListener('change', changed);
     box.append(label, input, out);
   }
   const actions = $('actions');
@@ -304,7 +531,7 @@ function setupSwingPad() {
     if (!drag) return;
     status(`Swing by hand: the tip reached ${drag.top.toFixed(1)} m/s`);
     drag = null;
-    post({ send: ['aero-scene', 'ramp', 5] });
+    sendAll([['aero-scene', 'ramp', 5]]);
   };
   pad.addEventListener('pointerup', end);
   pad.addEventListener('pointercancel', end);
@@ -348,14 +575,19 @@ async function main() {
   }
   $('play').addEventListener('click', togglePlay);
   $('render').addEventListener('click', renderDownload);
+  $('render-cancel').addEventListener('click', cancelRender);
+  $('record').addEventListener('click', toggleRecord);
+  $('limit-led').addEventListener('click', resetLevels);
   setupSwingPad();
   setupGain();
   status('Loading Pd (aero.wasm) ...');
   state.wasm = await fetchBytes('aero.wasm');
   state.module = await WebAssembly.compile(state.wasm);
   showScene(SCENES[0]);
-  status('Ready: press Play.');
-  window.aero = { SCENES, render, blockCost, wav: wavBytes, state, ready: true };
+  showStatus();
+  const c = $('spectrogram');
+  drawAxes(c.getContext('2d'), c.width, c.height, c.height - AXIS_BOTTOM);
+  window.aero = { SCENES, render, blockCost, wav: wavBytes, state, resetLevels, ready: true };
 }
 
 main().catch(err => { console.error(err); status('Error: ' + err.message); });

@@ -32,8 +32,10 @@ export const SCENES = [
       ...wind(12, 0.4),
       // 0: every wire; 1-4: that wire alone (3, 6, 12, 25 mm), the others
       // 200 dB down
-      { id: 'solo', label: 'Solo wire (0 = all)', unit: '', min: 0, max: 4,
-        step: 1, value: 0, send: v => WIRES.map((w, i) =>
+      { id: 'solo', label: 'Solo wire', unit: '', value: 0,
+        options: [[0, 'All four'], [1, '3 mm wire'], [2, '6 mm rod'],
+          [3, '12 mm rod'], [4, '25 mm rod']],
+        send: v => WIRES.map((w, i) =>
           [`aero-wire${i + 1}`, 'gain', v === 0 || v === i + 1 ? 0 : -200]) },
       { id: 'lx', label: 'Listener x', unit: 'm', min: -5, max: 5, step: 0.1,
         value: 0, group: 'listener',
@@ -45,7 +47,7 @@ export const SCENES = [
     actions: [{ label: 'Squall', send: [['aero-scene', 'squall']] }],
   },
   {
-    id: 'fence', title: 'Fence', patch: 'fence.pd', gain: 10, data: [],
+    id: 'fence', title: 'Fence', patch: 'fence.pd', gain: 20, data: [],
     text: 'Six fence wires of 3 to 7 mm, 1.5 m apart, 3 m away, in one ' +
       'gusting wind: six Aeolian tones at St U / d that rise and fall ' +
       'together with the gusts, each from its own place in the stereo ' +
@@ -54,7 +56,7 @@ export const SCENES = [
     actions: [{ label: 'Squall', send: [['aero-scene', 'squall']] }],
   },
   {
-    id: 'draft', title: 'Window draft', patch: 'draft.pd', gain: 12, data: [],
+    id: 'draft', title: 'Window draft', patch: 'draft.pd', gain: 7, data: [],
     text: 'Air across a 2 cm window gap 16 cm deep. The shear layer over the ' +
       'gap oscillates at the Rossiter modes f_n = U/L (n - 0.25)/(M + 1/0.57); ' +
       'the gap\'s depth resonates as a quarter-wave tube with end ' +
@@ -68,7 +70,7 @@ export const SCENES = [
     actions: [{ label: 'Squall', send: [['aero-scene', 'squall']] }],
   },
   {
-    id: 'sword', title: 'Sword swing', patch: 'sword.pd', gain: 18,
+    id: 'sword', title: 'Sword swing', patch: 'sword.pd', gain: 20,
     data: ['textures/sword.wav'], swing: true, blade: 0.8,
     text: 'A sword swung in first person. The blade plays a sound texture ' +
       'computed by aero\'s flow solver for its cross-section (Dobashi et ' +
@@ -84,7 +86,7 @@ export const SCENES = [
     actions: [{ label: 'Swing', send: [['aero-scene', 'swing']] }],
   },
   {
-    id: 'club', title: 'Club swing', patch: 'club.pd', gain: 26,
+    id: 'club', title: 'Club swing', patch: 'club.pd', gain: 43,
     data: ['textures/cylinder.wav'], swing: true, blade: 0.6,
     text: 'A club: a 4 cm rod 60 cm long, swung in first person with the ' +
       'circular cylinder\'s texture. A thick rod sheds at a lower ' +
@@ -94,7 +96,7 @@ export const SCENES = [
     actions: [{ label: 'Swing', send: [['aero-scene', 'swing']] }],
   },
   {
-    id: 'throw', title: 'Thrown stick', patch: 'throw.pd', gain: 6,
+    id: 'throw', title: 'Thrown stick', patch: 'throw.pd', gain: 19,
     data: ['textures/cylinder.wav'],
     text: 'A 50 cm stick thrown past the listener at 15 m/s, spinning end ' +
       'over end. Its tips move faster than its centre, so they whoosh ' +
@@ -111,7 +113,7 @@ export const SCENES = [
     actions: [{ label: 'Throw', send: [['aero-scene', 'throw']] }],
   },
   {
-    id: 'whirl', title: 'Whirled ball', patch: 'whirl.pd', gain: 14,
+    id: 'whirl', title: 'Whirled ball', patch: 'whirl.pd', gain: 49,
     data: ['textures/sphere.wav', 'textures/cylinder.wav'],
     text: 'A 5 cm ball whirled overhead on a cord. The ball plays the 3D ' +
       'sphere texture (the force on each region of the sphere from aero\'s ' +
@@ -125,13 +127,13 @@ export const SCENES = [
         step: 0.05, value: 1.2, send: v => [['aero-scene', 'radius', v]] },
     ],
     actions: [
-      { label: 'Stop', send: [['aero-scene', 'whirl', 0]] },
-      { label: 'Start', send: [['aero-scene', 'whirl', 1]] },
+      { label: 'Stop whirling', send: [['aero-scene', 'whirl', 0]] },
+      { label: 'Whirl again', send: [['aero-scene', 'whirl', 1]] },
     ],
   },
   {
     id: 'fire', title: 'Campfire, flamethrower, explosion', patch: 'fire.pd',
-    gain: -8, data: ['textures/fire.wav'],
+    gain: -6, data: ['textures/fire.wav'],
     text: 'Flames: combustion noise of the heat release (a monopole, its ' +
       'power following the fuel burnt: 30 kW for a 40 cm fire) plus vortex ' +
       'sound, with a flickering flame speed, crackle, hiss and lapping. ' +
@@ -153,7 +155,7 @@ export const SCENES = [
     ],
   },
   {
-    id: 'tree', title: 'Tree in gusts', patch: 'tree.pd', gain: 14,
+    id: 'tree', title: 'Tree in gusts', patch: 'tree.pd', gain: 12,
     data: ['trees/medium.tree'],
     text: 'A tree 8 m away: each of its 126 branches sings its own Aeolian ' +
       'tone (St U / d for its diameter) and its 4860 leaves rustle as they ' +

@@ -16,8 +16,8 @@ case "$variant" in
     multi) flags="STATIC=true MULTI=true" ;;
     *) echo "build-libpd: unknown variant '$variant' (single, multi)" >&2; exit 2 ;;
 esac
-libpd_tgz=$vendor/libpd-0.16.1.tar.gz
-pd_tgz=$vendor/pure-data-0.56-5.tar.gz
+libpd_tgz=$(VENDOR=$vendor sh platforms/vendor.sh libpd-0.16.1.tar.gz 2>/dev/null || echo "$vendor/libpd-0.16.1.tar.gz")
+pd_tgz=$(VENDOR=$vendor sh platforms/vendor.sh pure-data-0.56-5.tar.gz 2>/dev/null || echo "$vendor/pure-data-0.56-5.tar.gz")
 if [ ! -f "$libpd_tgz" ] || [ ! -f "$pd_tgz" ]; then
     echo "libpd: $libpd_tgz or $pd_tgz absent: skipped"
     exit 77

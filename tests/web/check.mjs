@@ -8,11 +8,14 @@
 //   - moves a control as a user would (the wires scene: the 25 mm rod
 //     alone, no gusts, the wind-speed slider at 12 then 24 m/s) and renders
 //     OUT/wires-u12.wav and OUT/wires-u24.wav;
-//   - with BENCH set, measures the time per 128-frame block of each scene.
+//   - with BENCH set, measures the time per 128-frame block of each scene;
+//   - then the page as a sound designer uses it (usability(), below):
+//     levels, races, renders, the phone, the small things.
 // Prints "ok"/"FAIL" lines; run.sh counts them and judges the WAVs.
 //   node check.mjs URL OUT SECONDS [bench]
 import { chromium } from 'playwright-core';
 import { writeFileSync } from 'node:fs';
+import { usability } from './usability.mjs';
 
 const [url, out, secondsArg, bench] = process.argv.slice(2);
 const seconds = Number(secondsArg);
@@ -47,6 +50,8 @@ try {
   // live: Play starts Pd in the AudioWorklet; let it run a second
   await page.click('#play');
   await page.waitForFunction(() => window.aero.state.playing, null, { timeout: 60000 });
+  await page.waitForFunction(() => window.aero.state.playingScene, null, { timeout: 30000 })
+    .catch(() => {});
   await page.waitForTimeout(1500);
   const live = await page.evaluate(() => {
     const { ctx, analyser } = window.aero.state;
@@ -98,6 +103,7 @@ try {
   // keyboard: the sword scene chosen and swung from the keyboard alone
   await page.focus('#scenes button[data-id="sword"]');
   await page.keyboard.press('Enter');
+  await page.waitForTimeout(300);
   await page.focus('#swingpad');
   await page.keyboard.press('Shift+ArrowLeft');
   const swung = await page.textContent('#status');
@@ -106,6 +112,8 @@ try {
   // the mouse: a drag across the swing pad moves the blade live
   await page.click('#play');
   await page.waitForFunction(() => window.aero.state.playing, null, { timeout: 30000 });
+  await page.waitForFunction(() => window.aero.state.playingScene?.id === 'sword', null,
+    { timeout: 30000 });
   const pad = await page.locator('#swingpad').boundingBox();
   await page.mouse.move(pad.x + 10, pad.y + pad.height / 2);
   await page.mouse.down();
@@ -136,6 +144,8 @@ try {
 } catch (err) {
   say(false, `the page: ${err.message.split('\n')[0]}`);
 }
+await page.close();
+if (!bench) await usability(browser, url, out, say, errors);
 say(errors.length === 0, `no console error (${errors.length})`);
 for (const e of errors.slice(0, 10)) console.log(`        ${e}`);
 await browser.close();

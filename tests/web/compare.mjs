@@ -4,29 +4,7 @@
 // 2 pi (RATE/2) t), eps = 2^-24. Prints the largest difference relative to
 // the peak and to the bound; "ok" when within it everywhere and the lengths
 // match, else "FAIL"
-import { readFileSync } from 'node:fs';
-
-function floats(path) {
-  const b = readFileSync(path);
-  const v = new DataView(b.buffer, b.byteOffset, b.byteLength);
-  let channels = 0, bits = 0, format = 0;
-  for (let o = 12; o + 8 <= b.length;) {
-    const id = b.toString('latin1', o, o + 4), size = v.getUint32(o + 4, true);
-    if (id === 'fmt ') {
-      format = v.getUint16(o + 8, true); channels = v.getUint16(o + 10, true);
-      bits = v.getUint16(o + 22, true);
-      if (format === 0xfffe) format = v.getUint16(o + 32, true);
-    } else if (id === 'data') {
-      if (format !== 3 || bits !== 32) throw new Error(`${path}: not 32-bit float`);
-      const n = Math.min(size, b.length - o - 8) / 4;
-      const x = new Float32Array(n);
-      for (let i = 0; i < n; i++) x[i] = v.getFloat32(o + 8 + 4 * i, true);
-      return { x, channels };
-    }
-    o += 8 + size + (size & 1);
-  }
-  throw new Error(`${path}: no data chunk`);
-}
+import { floats } from './wav.mjs';
 
 const [a, b, rateArg] = process.argv.slice(2);
 const rate = Number(rateArg), eps = 2 ** -24;

@@ -32,7 +32,8 @@ judge() { # a command's exit status; its own output says what it measured
         failed=$((failed + 1)); echo "  $line"
     fi
 }
-section() { echo; echo "== $*"; }
+START=$(date +%s)
+section() { echo; echo "== $* (at $(( $(date +%s) - START )) s)"; }
 rm -rf "$OUT"
 mkdir -p "$OUT"
 
@@ -56,6 +57,37 @@ for s in $scenes; do
         "$OUT/native-$s.wav" 2>"$OUT/native-$s.log" || fail "native render of $s"
 done
 
+# --- levels: the master limiter, each scene's loudness ---------------------
+section "levels: the master limiter (-1 dBTP) and each scene's default loudness"
+judge_all() { # every "ok"/"FAIL" line of a command counted
+    "$@" >"$OUT/judge.log" 2>&1
+    while IFS= read -r line; do
+        case "$line" in
+            ok*) passed=$((passed + 1)); echo "  $line" ;;
+            FAIL*) failed=$((failed + 1)); echo "  $line" ;;
+            *) echo "  $line" ;;
+        esac
+    done <"$OUT/judge.log"
+}
+judge_all node tests/web/limiter.mjs
+# the first 10 s of each scene at its defaults, natively (the same samples
+# as the page's, checked below for the first SECONDS)
+for s in $scenes; do
+    "$OUT/render-native" -data "$ROOT" -path "$ROOT/abstractions" \
+        -seconds 10 -settle 0 "web/scenes/$s.pd" "$OUT/loud-$s.wav" \
+        2>"$OUT/loud-$s.log" || fail "native 10 s render of $s"
+done
+judge_all node tests/web/loudness.mjs $RATE "$OUT"/loud-*.wav
+
+# examples/web-embed (checked below) compiles meanwhile: the page's checks
+# mostly wait on the audio clock. At -O1: the same steps and code, built in
+# about 9 s where -O3's whole-module optimisation took nearly 3 min on the
+# loaded 2-core machine; this checks that the steps work, not its speed
+rm -rf "$OUT/embed" && mkdir -p "$OUT/embed"
+cp examples/web-embed/* "$OUT/embed/"
+(cd "$OUT/embed" && AERO="$ROOT" OPT=-O1 nice sh build.sh) >"$OUT/embed.log" 2>&1 &
+embed_build=$!
+
 # --- the page in Chromium ---------------------------------------------------
 section "the page in Chromium (headless, playwright-core)"
 (cd tests/web && [ -d node_modules/playwright-core ] ||
@@ -66,17 +98,11 @@ port=$(python3 -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1", 0)); p
 python3 -m http.server "$port" --bind 127.0.0.1 --directory build/web \
     >"$OUT/server.log" 2>&1 &
 server=$!
-trap 'kill $server 2>/dev/null' EXIT INT TERM
+trap 'kill $server $embed_build 2>/dev/null' EXIT INT TERM
 sleep 1
-node tests/web/check.mjs "http://127.0.0.1:$port/" "$OUT" "$SECONDS_RENDER" \
-    ${BENCH:+bench} >"$OUT/browser.log" 2>&1
-while IFS= read -r line; do
-    case "$line" in
-        ok*) passed=$((passed + 1)); echo "  $line" ;;
-        FAIL*) failed=$((failed + 1)); echo "  $line" ;;
-        *) echo "  $line" ;;
-    esac
-done <"$OUT/browser.log"
+judge_all node tests/web/check.mjs "http://127.0.0.1:$port/" "$OUT" "$SECONDS_RENDER" \
+    ${BENCH:+bench}
+cp "$OUT/judge.log" "$OUT/browser.log"
 kill $server 2>/dev/null
 
 # --- the same samples ----------------------------------------------------------
@@ -146,6 +172,52 @@ judge build/aero-analyze peakratio --fmin 50 --fmax 1000 --nfft 32768 \
     "$OUT/wires-u12.wav" "$OUT/wires-u24.wav" --expect "$(law ratio)" --tol 0.02
 judge build/aero-analyze leveldiff "$OUT/wires-u12.wav" "$OUT/wires-u24.wav" \
     --expect "$(law level)" --tol 1
+
+# --- examples/web-embed: docs/web.md's embedding, from its steps alone ----
+section "examples/web-embed built in an empty folder from its README's steps"
+if wait $embed_build; then
+    pass "examples/web-embed: AERO=... sh build.sh after make web builds embed.js and embed.wasm"
+    python3 -m http.server "$port" --bind 127.0.0.1 --directory "$OUT/embed" \
+        >"$OUT/server-embed.log" 2>&1 &
+    server=$!
+    sleep 1
+    judge_all node tests/web/embed.mjs "http://127.0.0.1:$port/"
+    kill $server 2>/dev/null
+else
+    tail -20 "$OUT/embed.log"
+    fail "examples/web-embed: its build.sh failed ($OUT/embed.log)"
+fi
+
+# --- the small things outside the page ------------------------------------
+section "make web-serve and docs/web.md"
+serve=$(make -n --no-print-directory web-serve PORT=8123 2>/dev/null | grep http.server)
+case "$serve" in
+    *"--bind 127.0.0.1"*8123*|*8123*"--bind 127.0.0.1"*) pass "make web-serve PORT=8123: $serve" ;;
+    *) fail "make web-serve does not bind 127.0.0.1 on PORT= ($serve)" ;;
+esac
+# each texture's size as docs/web.md states it (gzip -9, kB) within 3 %
+for t in sword fire; do
+    kb=$(gzip -9c "textures/$t.wav" | wc -c | awk '{printf "%.0f", $1 / 1000}')
+    said=$(sed -n "s/.*the $t's texture \([0-9]*\) kB.*/\1/p" docs/web.md | tr -d '\n')
+    awk -v a="$kb" -v b="$said" -v t="$t" 'BEGIN { ok = b != "" && (a - b) / a < 0.03 && (b - a) / a < 0.03
+        printf "%s  docs/web.md: the %s texture %s kB, measured %s kB (gzip -9)\n", ok ? "ok   " : "FAIL ", t, b, a
+        exit !ok }' && passed=$((passed + 1)) || failed=$((failed + 1))
+done
+
+# platforms/vendor.sh (make web's archives): a verified archive in VENDOR
+# is used as it is, a damaged copy is refused before anything is fetched
+section "platforms/vendor.sh: the source archives checked against their pinned SHA-256"
+got=$(VENDOR="$VENDOR" sh platforms/vendor.sh libpd-0.16.1.tar.gz 2>&1)
+[ "$got" = "$VENDOR/libpd-0.16.1.tar.gz" ] && pass "vendor.sh: libpd-0.16.1.tar.gz found in VENDOR ($got)" ||
+    fail "vendor.sh: libpd-0.16.1.tar.gz in VENDOR not used ($got)"
+mkdir -p "$OUT/bad-vendor"
+head -c 100000 "$VENDOR/libpd-0.16.1.tar.gz" >"$OUT/bad-vendor/libpd-0.16.1.tar.gz"
+if got=$(VENDOR="$OUT/bad-vendor" sh platforms/vendor.sh libpd-0.16.1.tar.gz 2>&1); then
+    fail "vendor.sh: a truncated libpd-0.16.1.tar.gz was accepted"
+else
+    case "$got" in *refused*) pass "vendor.sh: a truncated copy is refused: ${got%%(*}" ;;
+        *) fail "vendor.sh: a truncated copy failed without saying why ($got)" ;; esac
+fi
 
 echo
 echo "$passed passed, $failed failed"

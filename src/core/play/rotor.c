@@ -523,8 +523,12 @@ static void strip_airfoil(const aero_rotor *r, int q, aero_airfoil *a)
 
 /* each strip's self-noise at 1 m straight above it (D_h = 1) at angular
    speed w and axial inflow u, and the octave gains of their sum; made
-   again when the strips' speed moves by 2 % (the spectrum's shape moves
-   with log U) */
+   again when the strips' speed moves by AERO_ROTOR_NOISE_TOLERANCE (the
+   spectrum's shape moves with log U: its frequencies lag by at most that
+   part, a twelfth of an octave). In between, the powers follow the
+   speed as U^5 and the Mach numbers as U (z->scale), the trailing edge's
+   law (Brooks et al. 1989: SPL with 10 log M^5), so the level does not
+   lag */
 static void noise_spectrum(aero_rotor *r, double w, double u)
 {
     aero_rotor_noise *z = &r->noise;
@@ -532,10 +536,14 @@ static void noise_spectrum(aero_rotor *r, double w, double u)
     const double key = w * r->radius + fabs(u);
     float hz[T], spl[AERO_BPM_MECHANISMS * T], tot[T];
     double band[K], g2[K], sum = 0.0;
-    if (z->layout == r->layout && fabs(key - z->key) <= 0.02 * key)
+    if (z->layout == r->layout &&
+        fabs(key - z->key) <= AERO_ROTOR_NOISE_TOLERANCE * key) {
+        z->scale = z->key > 0.0 ? key / z->key : 1.0;
         return;
+    }
     z->layout = r->layout;
     z->key = key;
+    z->scale = 1.0;
     aero_third_octave_bands(50.0f, 20000.0f, hz, T);
     memset(band, 0, sizeof(band));
     for (int q = 0; q < r->strips; q++) {
@@ -592,6 +600,9 @@ static void noise_spectrum(aero_rotor *r, double w, double u)
  * chord lies along the air's flow past it (its motion and the inflow u
  * along the axis: a turbine's blades are pitched into the wind), its
  * normal = span x chord */
+/* ear_envelope's table of cos (2 pi k / 8) holds for 8 azimuths */
+typedef char aero_rotor_azimuths_are_8[AERO_ROTOR_AZIMUTHS == 8 ? 1 : -1];
+
 static void ear_envelope(const aero_rotor *r, double omega, double u,
                          const double *ear, const double *axes, double *env)
 {
@@ -599,34 +610,48 @@ static void ear_envelope(const aero_rotor *r, double omega, double u,
     const aero_rotor_noise *z = &r->noise;
     const int B = r->blades;
     const double sense = omega < 0.0 ? -1.0 : 1.0;
-    double a[NA];
+    /* cos and sin of multiples of 2 pi / NA (NA = 8) */
+    static const double c8[8] = {1.0, 0.70710678118654752, 0.0,
+                                 -0.70710678118654752, -1.0,
+                                 -0.70710678118654752, 0.0,
+                                 0.70710678118654752};
+    const double s5 = z->scale * z->scale * z->scale * z->scale * z->scale;
+    double a[NA], rel[3], cws[AERO_ROTOR_STRIPS_MAX], aws[AERO_ROTOR_STRIPS_MAX],
+        Ms[AERO_ROTOR_STRIPS_MAX], Ps[AERO_ROTOR_STRIPS_MAX];
+    for (int i = 0; i < 3; i++)
+        rel[i] = ear[i] - r->pose[i];
+    const double vz = aero_dot3(rel, axes + 6), v2 = aero_dot3(rel, rel);
+    /* each strip's chord downstream: (-Omega r e_t + u a) / |W|, the
+       normal (span x chord) (-Omega r a - u e_t) / |W| */
+    for (int q = 0; q < r->strips; q++) {
+        double wt = fabs(omega) * r->strip[q].r, W = hypot(wt, u);
+        cws[q] = W > 0.0 ? -wt / W : -1.0;
+        aws[q] = W > 0.0 ? u / W : 0.0;
+        Ms[q] = z->mach[q] * z->scale;
+        Ps[q] = z->power[q] * s5;
+    }
     for (int j = 0; j < NA; j++) {
         double P = 0.0;
         for (int b = 0; b < B; b++) {
             double psi = TWO_PI * ((double)j / (B * NA) + (double)b / B);
-            double cp = cos(psi), sp = sin(psi), er[3], et[3], rel[3];
+            double cp = cos(psi), sp = sin(psi), er[3], et[3];
             for (int i = 0; i < 3; i++) {
                 er[i] = cp * axes[i] + sp * axes[3 + i];
                 et[i] = sense * (-sp * axes[i] + cp * axes[3 + i]);
-                rel[i] = ear[i] - r->pose[i];
             }
             double vt = aero_dot3(rel, et), vr = aero_dot3(rel, er);
-            double vz = aero_dot3(rel, axes + 6), v2 = aero_dot3(rel, rel);
             for (int q = 0; q < r->strips; q++) {
                 double rq = r->strip[q].r, y = vr - rq; /* from the strip */
-                double d2 = v2 - vr * vr + y * y, M = z->mach[q];
-                /* the chord downstream: (-Omega r e_t + u a) / |W|, the
-                   normal (span x chord) (-Omega r a - u e_t) / |W| */
-                double wt = fabs(omega) * rq, W = hypot(wt, u);
-                double cw = W > 0.0 ? -wt / W : -1.0, aw = W > 0.0 ? u / W : 0.0;
-                double vx = cw * vt + aw * vz, vn = cw * vz - aw * vt;
-                double d = sqrt(d2), ct = vx / d;
-                double yz = y * y + vn * vn, s2 = yz > 0.0 ? vn * vn / yz : 0.0;
-                double c1 = 1.0 + 0.2 * M * ct;
-                if (!(d2 > 1e-6) || z->power[q] <= 0.0)
+                double d2 = v2 - vr * vr + y * y, M = Ms[q];
+                double vx = cws[q] * vt + aws[q] * vz;
+                double vn = cws[q] * vz - aws[q] * vt;
+                double yz = y * y + vn * vn;
+                if (!(d2 > 1e-6) || !(yz > 0.0) || Ps[q] <= 0.0)
                     continue;
-                P += z->power[q] * (1.0 - ct) * s2 /
-                     ((1.0 + M * ct) * c1 * c1) / d2;
+                /* D_h / d^2 with sin^2 = vn^2 / yz, in one division */
+                double ct = vx / sqrt(d2), c1 = 1.0 + 0.2 * M * ct;
+                P += Ps[q] * (1.0 - ct) * vn * vn /
+                     ((1.0 + M * ct) * c1 * c1 * d2 * yz);
             }
         }
         a[j] = r->noise_gain * sqrt(P);
@@ -634,8 +659,8 @@ static void ear_envelope(const aero_rotor *r, double omega, double u,
     for (int k = 0; k <= AERO_ROTOR_ENVELOPE; k++) {
         double c = 0.0, s = 0.0;
         for (int j = 0; j < NA; j++) {
-            c += a[j] * cos(TWO_PI * k * j / NA);
-            s += a[j] * sin(TWO_PI * k * j / NA);
+            c += a[j] * c8[(k * j) % NA];
+            s += a[j] * c8[(k * j + 6) % NA]; /* sin x = cos(x - pi/2) */
         }
         if (k == 0)
             env[0] = c / NA;
@@ -673,9 +698,12 @@ static void noise_chunk(aero_rotor *r, float *out, int m)
     memcpy(u1, z->u1, sizeof(u1));
     memcpy(u2, z->u2, sizeof(u2));
     memcpy(rng, z->rng, sizeof(rng));
+    /* the lanes in use: the bands rounded up to four (a SIMD register);
+       at 44.1 and 48 kHz 8 of the 12 (the lanes beyond are silent) */
+    const int n = (z->bands + 3) / 4 * 4 < L ? (z->bands + 3) / 4 * 4 : L;
     for (int j = 0; j < m; j++) {
         float lane[L], sum = 0.0f;
-        for (int i = 0; i < L; i++) {
+        for (int i = 0; i < n; i++) {
             uint32_t v = rng[i];
             v ^= v << 13;
             v ^= v >> 17;
@@ -692,7 +720,7 @@ static void noise_chunk(aero_rotor *r, float *out, int m)
             u1[i] = u;
             lane[i] = g[i] * u;
         }
-        for (int i = 0; i < L; i++) /* in order: no reassociation */
+        for (int i = 0; i < n; i++) /* in order: no reassociation */
             sum += lane[i];
         out[j] = sum;
     }
@@ -741,20 +769,30 @@ static void radiate(aero_rotor *r, const aero_rotor_ear *then,
         ev[k] = (float)(gain0 * then->env[k]);
         dev[k] = (float)((gain1 * now->env[k] - gain0 * then->env[k]) * inv_m);
     }
-    er = (float)cos(B * psi0);
-    ei = (float)sin(B * psi0);
-    etr = (float)cos(B * dpsi);
-    eti = (float)sin(B * dpsi);
+    /* e^{i n psi0} and e^{i n dpsi} for n = (k+1) B as powers of the
+       first, in double (each product's rounding 1e-16: 40 of them far
+       below float's) instead of four cos and sin a harmonic */
+    const double z1r = cos(B * psi0), z1i = sin(B * psi0);
+    const double t1r = cos(B * dpsi), t1i = sin(B * dpsi);
+    double znr = z1r, zni = z1i, tnr = t1r, tni = t1i;
+    er = (float)z1r;
+    ei = (float)z1i;
+    etr = (float)t1r;
+    eti = (float)t1i;
     for (int k = 0; k < h; k++) {
-        double n = (k + 1) * B;
         c[k] = (float)(gain0 * then->c[k]);
         s[k] = (float)(gain0 * then->s[k]);
         dc[k] = (float)((gain1 * now->c[k] - gain0 * then->c[k]) * inv_m);
         ds[k] = (float)((gain1 * now->s[k] - gain0 * then->s[k]) * inv_m);
-        zr[k] = (float)cos(n * psi0);
-        zi[k] = (float)sin(n * psi0);
-        tr[k] = (float)cos(n * dpsi);
-        ti[k] = (float)sin(n * dpsi);
+        zr[k] = (float)znr;
+        zi[k] = (float)zni;
+        tr[k] = (float)tnr;
+        ti[k] = (float)tni;
+        double a = znr * z1r - zni * z1i, b = tnr * t1r - tni * t1i;
+        zni = znr * z1i + zni * z1r;
+        znr = a;
+        tni = tnr * t1i + tni * t1r;
+        tnr = b;
     }
     for (int j = 0; j < m; j++) {
         float e2r = er * er - ei * ei, e2i = 2.0f * er * ei;
@@ -836,10 +874,15 @@ static void chunk(aero_rotor *r, const float *rpm, int m)
         for (int i = 0; i < 3; i++)
             ear[i] = ramp_after(&r->base.ear[3 * e + i], m);
         ear_tones(r, omega, ear, axes, &r->sums[e], &now[e]);
-        if (hiss)
+        /* the envelope every AERO_ROTOR_ENVELOPE_CHUNKS chunks (5.3 ms at
+           48 kHz), held between: it moves with the geometry and the
+           speed, slowly against a chunk, and costs more than the tones */
+        if (!hiss)
+            memset(now[e].env, 0, sizeof(now[e].env));
+        else if (r->envelope_due <= 0 || !r->primed)
             ear_envelope(r, omega, u_axis, ear, axes, now[e].env);
         else
-            memset(now[e].env, 0, sizeof(now[e].env));
+            memcpy(now[e].env, r->then[e].env, sizeof(now[e].env));
         if (!r->primed) { /* the first chunk: the sound from 0 */
             r->then[e] = now[e];
             memset(r->then[e].c, 0, sizeof(r->then[e].c));
@@ -850,6 +893,9 @@ static void chunk(aero_rotor *r, const float *rpm, int m)
                 noise, e, m);
         r->then[e] = now[e];
     }
+    r->envelope_due = r->envelope_due <= 0 || !r->primed
+                          ? AERO_ROTOR_ENVELOPE_CHUNKS - 1
+                          : r->envelope_due - 1;
     r->primed = 1;
     r->psi = fmod(r->psi + dpsi * m, TWO_PI);
     if (r->psi < 0.0)

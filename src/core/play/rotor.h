@@ -95,6 +95,10 @@ typedef struct {
 #define AERO_ROTOR_THIRDS (3 * AERO_ROTOR_BANDS)
 #define AERO_ROTOR_ENVELOPE 2
 #define AERO_ROTOR_AZIMUTHS 8
+#define AERO_ROTOR_ENVELOPE_CHUNKS 2 /* chunks between two envelopes */
+/* the part of the speed by which it moves before the self-noise spectrum is
+   made again (its frequencies lag by at most that part) */
+#define AERO_ROTOR_NOISE_TOLERANCE 0.06
 
 /* what one ear hears, at a chunk's end: the coefficients of cos(n Psi)
    and sin(n Psi) per harmonic, the broadband's envelope (its mean, then
@@ -136,6 +140,7 @@ typedef struct {
     double power[AERO_ROTOR_STRIPS_MAX]; /* Pa^2 at 1 m, D_h = 1, a blade */
     double mach[AERO_ROTOR_STRIPS_MAX];
     double key;                       /* the speed they were made for */
+    double scale; /* the speed since, (key now / key): powers as U^5 */
     int layout;
 } aero_rotor_noise;
 
@@ -165,6 +170,7 @@ typedef struct aero_rotor {
 
     aero_rotor_ear then[AERO_EARS_MAX]; /* at the last chunk's end */
     int primed;
+    int envelope_due; /* chunks until the broadband's envelope is made again */
 } aero_rotor;
 
 /* 0, or -1 when out of memory. Defaults: the AERO_ROTOR_*_DEFAULT values,

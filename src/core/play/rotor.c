@@ -454,6 +454,7 @@ static void noise_bank(aero_rotor *r)
     while (n < K && octave_hz(n) * sqrt(2.0) < 0.45 * sr)
         n++;
     z->bands = n;
+    z->cached = z->next = z->have = 0; /* the spectra kept: other bands */
     for (int i = 0; i < n; i++) {
         double w0 = TWO_PI * octave_hz(i) / sr, al = sin(w0) / (2.0 * Q);
         z->b0[i] = (float)(al / (1.0 + al));
@@ -522,28 +523,13 @@ static void strip_airfoil(const aero_rotor *r, int q, aero_airfoil *a)
 }
 
 /* each strip's self-noise at 1 m straight above it (D_h = 1) at angular
-   speed w and axial inflow u, and the octave gains of their sum; made
-   again when the strips' speed moves by AERO_ROTOR_NOISE_TOLERANCE (the
-   spectrum's shape moves with log U: its frequencies lag by at most that
-   part, a twelfth of an octave). In between, the powers follow the
-   speed as U^5 and the Mach numbers as U (z->scale), the trailing edge's
-   law (Brooks et al. 1989: SPL with 10 log M^5), so the level does not
-   lag */
-static void noise_spectrum(aero_rotor *r, double w, double u)
+   speed w and axial inflow u, and the octave gains of their sum */
+static void noise_spectrum_make(aero_rotor *r, double w, double u)
 {
     aero_rotor_noise *z = &r->noise;
     enum { K = AERO_ROTOR_BANDS, T = AERO_ROTOR_THIRDS };
-    const double key = w * r->radius + fabs(u);
     float hz[T], spl[AERO_BPM_MECHANISMS * T], tot[T];
     double band[K], g2[K], sum = 0.0;
-    if (z->layout == r->layout &&
-        fabs(key - z->key) <= AERO_ROTOR_NOISE_TOLERANCE * key) {
-        z->scale = z->key > 0.0 ? key / z->key : 1.0;
-        return;
-    }
-    z->layout = r->layout;
-    z->key = key;
-    z->scale = 1.0;
     aero_third_octave_bands(50.0f, 20000.0f, hz, T);
     memset(band, 0, sizeof(band));
     for (int q = 0; q < r->strips; q++) {
@@ -588,6 +574,53 @@ static void noise_spectrum(aero_rotor *r, double w, double u)
     for (int j = 0; j < K; j++)
         z->gain[j] = j < z->bands && g2[j] > 0.0 ? (float)sqrt(g2[j]) : 0.0f;
     /* the lanes beyond the bands stay silent (zero gains and filters) */
+}
+
+/* the self-noise spectrum at angular speed w and axial inflow u: made at
+   the nearest speed of a grid of ratio 1 + AERO_ROTOR_NOISE_TOLERANCE
+   (its shape moves with log U: its frequencies are off by at most half a
+   step), kept for AERO_ROTOR_SPECTRA grid steps; the powers follow the
+   speed from the grid's as U^5 and the Mach numbers as U (z->scale), the
+   trailing edge's law (Brooks et al. 1989: SPL with 10 log M^5), so the
+   level is not off */
+static void noise_spectrum(aero_rotor *r, double w, double u)
+{
+    aero_rotor_noise *z = &r->noise;
+    const double key = w * r->radius + fabs(u);
+    const double ln_step = log1p(AERO_ROTOR_NOISE_TOLERANCE);
+    if (z->layout != r->layout) {
+        z->layout = r->layout;
+        z->cached = z->next = z->have = 0;
+    }
+    if (!(key > 1e-6)) { /* still: silent, not kept */
+        noise_spectrum_make(r, w, u);
+        z->scale = 1.0;
+        z->have = 0;
+        return;
+    }
+    const int step = (int)floor(log(key) / ln_step + 0.5);
+    const double kq = exp(step * ln_step), f = kq / key;
+    z->scale = key / kq;
+    if (z->have && z->step == step)
+        return;
+    z->have = 1;
+    z->step = step;
+    for (int i = 0; i < z->cached; i++)
+        if (z->cache_step[i] == step) {
+            memcpy(z->gain, z->cache_gain[i], sizeof(z->gain));
+            memcpy(z->power, z->cache_power[i], sizeof(z->power));
+            memcpy(z->mach, z->cache_mach[i], sizeof(z->mach));
+            return;
+        }
+    noise_spectrum_make(r, w * f, u * f);
+    int i = z->next;
+    z->next = (z->next + 1) % AERO_ROTOR_SPECTRA;
+    if (z->cached < AERO_ROTOR_SPECTRA)
+        z->cached++;
+    z->cache_step[i] = step;
+    memcpy(z->cache_gain[i], z->gain, sizeof(z->gain));
+    memcpy(z->cache_power[i], z->power, sizeof(z->power));
+    memcpy(z->cache_mach[i], z->mach, sizeof(z->mach));
 }
 
 /* the broadband's envelope at an ear over one blade passing: the

@@ -96,8 +96,8 @@ typedef struct {
 #define AERO_ROTOR_ENVELOPE 2
 #define AERO_ROTOR_AZIMUTHS 8
 #define AERO_ROTOR_ENVELOPE_CHUNKS 2 /* chunks between two envelopes */
-/* the part of the speed by which it moves before the self-noise spectrum is
-   made again (its frequencies lag by at most that part) */
+/* the self-noise spectrum is made at speeds on a grid of this ratio (its
+   frequencies off by at most half of it: 3 %, a 24th of an octave) */
 #define AERO_ROTOR_NOISE_TOLERANCE 0.06
 
 /* what one ear hears, at a chunk's end: the coefficients of cos(n Psi)
@@ -126,6 +126,7 @@ typedef struct {
    strip's level at 1 m straight above its trailing edge, the spectrum's
    shape as gains of a bank of octave band-passes fed one white noise */
 #define AERO_ROTOR_LANES 12 /* the bands padded for SIMD (zero gains) */
+#define AERO_ROTOR_SPECTRA 8 /* self-noise spectra kept per rotor */
 typedef struct {
     /* per band (lane): b0 (b2 = -b0), a1, a2, gain (unit total power),
        its own white noise's state, the two stages' x1 x2 y1 y2 / y1 y2 */
@@ -139,9 +140,13 @@ typedef struct {
     int bands;                        /* under Nyquist */
     double power[AERO_ROTOR_STRIPS_MAX]; /* Pa^2 at 1 m, D_h = 1, a blade */
     double mach[AERO_ROTOR_STRIPS_MAX];
-    double key;                       /* the speed they were made for */
-    double scale; /* the speed since, (key now / key): powers as U^5 */
-    int layout;
+    double scale; /* the speed against the grid's: powers as U^5 */
+    int layout, step, have; /* the grid step held, whether any */
+    /* the spectra made, by grid step (a drone's rotors move among a few) */
+    int cached, next, cache_step[AERO_ROTOR_SPECTRA];
+    float cache_gain[AERO_ROTOR_SPECTRA][AERO_ROTOR_LANES];
+    double cache_power[AERO_ROTOR_SPECTRA][AERO_ROTOR_STRIPS_MAX];
+    double cache_mach[AERO_ROTOR_SPECTRA][AERO_ROTOR_STRIPS_MAX];
 } aero_rotor_noise;
 
 typedef struct aero_rotor {

@@ -12,9 +12,13 @@
 #                   sources) in build/deken/
 #   make check-packages  the packages' contents, and the Linux ones loaded
 #                   and played in a minimal Debian with only Pd
-#   make platform P=windows-amd64|linux-amd64|linux-arm64|linux-armv7
+#   make platform P=windows-amd64|linux-amd64|linux-arm64|linux-armv7|darwin
 #                   the library folder for that platform in build/P/aero/,
 #                   cross-compiled, FFTW and libsndfile linked statically
+#                   (darwin: universal arm64 + x86_64 macOS binaries)
+#   make check-macos  the macOS binaries' structure (Mach-O, exports,
+#                   imports, signature, minos) and their compiler's code
+#                   run on Linux against the gcc build
 #   make check-gui  the help patches drawn by the Pd GUI (part of check)
 #   make check-arm  aero's arm64 and armv7 packages in Pd under qemu-user
 #   make check-libpd  aero inside libpd 0.16.1 (single, multi-instance,
@@ -185,6 +189,8 @@ DEB_PACKAGES = puredata-core puredata-dev pd-lib-builder libfftw3-dev \
 DEB_PACKAGES += puredata-gui xvfb xauth imagemagick fonts-dejavu-core
 deps:
 	@sh tests/deps.sh $(DEB_PACKAGES)
+	@sh platforms/zig.sh >/dev/null 2>&1 || echo "aero: Zig for the macOS builds" \
+	    "not installed (npm offline?): make platform P=darwin fetches it" >&2
 
 # --- platforms: arm (linux-arm64, linux-armv7) under qemu-user ---------------
 #   make check-arm  the staged arm packages (make platform P=linux-arm64,
@@ -250,6 +256,10 @@ textures:
 #   (Linux-arm64-32) *.pd_linux        (Linux-armv7-32) *.pd_linux
 #   (Windows-amd64-32) *.windows-amd64-32.dll
 #   (Windows-amd64-64) *.windows-amd64-64.dll
+#   (Darwin-arm64-32)(Darwin-amd64-32) *.d_fat
+#   (Darwin-arm64-64)(Darwin-amd64-64) *.darwin-fat-64.so
+# (macOS: one package for both CPUs, its binaries universal, one (ARCH) per
+# CPU in the name as deken's filename format has it for such packages)
 # and (Sources) (git archive of HEAD); each with its .dek.txt (the objects
 # with the DESCRIPTION of their help patch's META) and .sha256.
 # One package per platform, not one multi-platform ("fat") package, which
@@ -270,7 +280,7 @@ textures:
 AERO_VERSION = $(shell sed -n 's/^\#X text [0-9]* [0-9]* VERSION \([0-9][0-9.]*\).*/\1/p' \
     help/aero-meta.pd | head -n 1)
 DEKEN_DIR = $(BUILD)/deken
-DEKEN_PLATFORMS ?= linux-amd64 linux-arm64 linux-armv7 windows-amd64
+DEKEN_PLATFORMS ?= linux-amd64 linux-arm64 linux-armv7 windows-amd64 darwin
 DEB_PACKAGES += unzip # the packaging test unpacks the .dek files
 DEB_PACKAGES += debootstrap # the clean Debian of check-packages
 deken:
@@ -475,33 +485,59 @@ clean-robust:
 #   make platform P=PLATFORM   build/PLATFORM/aero/: every external, the
 #                  single-binary library, help, abstractions, textures,
 #                  trees, meta, LICENSE, README (a deken package's folder);
-#                  PLATFORM is linux-amd64, windows-amd64, linux-arm64 or
-#                  linux-armv7 (platforms/platform.mk says what each holds)
-#   make windows | linux-amd64 | linux-arm64 | linux-armv7   the same
+#                  PLATFORM is linux-amd64, windows-amd64, linux-arm64,
+#                  linux-armv7 or darwin (macOS, universal; darwin-arm64 and
+#                  darwin-amd64 are its two halves, binaries only)
+#                  (platforms/platform.mk says what each holds)
+#   make windows | linux-amd64 | linux-arm64 | linux-armv7 | darwin   the same
 # FFTW and libsndfile are linked statically, built once per machine by
 # platforms/deps.sh (cached in ${AERO_CACHE:-~/.cache/aero}); the Windows
 # externals link pd.dll's import library from Pd for Windows
 # (platforms/pd.sh, cached the same way).
 # ============================================================================
-PLATFORMS = linux-amd64 windows-amd64 linux-arm64 linux-armv7
+PLATFORMS = linux-amd64 windows-amd64 linux-arm64 linux-armv7 darwin \
+    darwin-arm64 darwin-amd64
 DEB_PACKAGES += gcc-mingw-w64-x86-64-win32 gcc-mingw-w64-x86-64-posix \
     gcc-aarch64-linux-gnu libc6-dev-arm64-cross \
     gcc-arm-linux-gnueabihf libc6-dev-armhf-cross
-.PHONY: platform platforms windows linux-amd64 linux-arm64 linux-armv7
+.PHONY: platform platforms windows linux-amd64 linux-arm64 linux-armv7 darwin
 platform:
 	@case " $(PLATFORMS) " in *" $(P) "*) ;; *) \
 	    echo "make platform P=PLATFORM, one of: $(PLATFORMS)" >&2; exit 2 ;; esac
-	@$(MAKE) --no-print-directory -s $(VENDORED)/fftw-3.3.10.tar.gz $(VENDORED)/libsndfile-1.2.0.tar.gz
-	@AERO_VENDOR=$(abspath $(VENDORED)) sh platforms/deps.sh $(P)
+	@$(if $(filter darwin,$(P)),for a in arm64 amd64; do \
+	    $(MAKE) --no-print-directory platform P=darwin-$$a || exit 1; done,\
+	    $(MAKE) --no-print-directory -s $(VENDORED)/fftw-3.3.10.tar.gz \
+	        $(VENDORED)/libsndfile-1.2.0.tar.gz && \
+	    AERO_VENDOR=$(abspath $(VENDORED)) sh platforms/deps.sh $(P))
 	@$(if $(filter windows-%,$(P)),sh platforms/pd.sh $(P) single >/dev/null)
 	@$(MAKE) --no-print-directory -f platforms/platform.mk P=$(P)
 windows:
 	@$(MAKE) --no-print-directory platform P=windows-amd64
-linux-amd64 linux-arm64 linux-armv7:
+linux-amd64 linux-arm64 linux-armv7 darwin:
 	@$(MAKE) --no-print-directory platform P=$@
 platforms:
-	@for p in $(PLATFORMS); do \
+	@for p in $(filter-out darwin-%,$(PLATFORMS)); do \
 	    $(MAKE) --no-print-directory platform P=$$p || exit 1; done
+
+# --- macOS: universal arm64 + x86_64 binaries, built and checked here ------
+#   make platform P=darwin  (above) build/darwin/aero/: NAME.d_fat and
+#                   NAME.darwin-fat-64.so, and build/darwin/aerotex;
+#                   Zig 0.11's zig cc (platforms/zig.sh, from npm, cached),
+#                   linked by LLVM's ld64.lld
+#   make check-macos  tests/macos/check.sh: every binary's Mach-O structure,
+#                   exports, imports, libraries, minos and arm64 signature
+#                   read with LLVM's tools, and the same compiler's code
+#                   run on Linux (unit tests, the platform runner against
+#                   the gcc build). No macOS runs here.
+DEB_PACKAGES += llvm-14 lld-14
+.PHONY: check-macos
+check-macos:
+	@$(MAKE) --no-print-directory deps
+	@$(MAKE) --no-print-directory -s all lib >$(BUILD).log 2>&1 || \
+	    { cat $(BUILD).log; exit 1; }
+	@mkdir -p $(BUILD) && $(MAKE) --no-print-directory -s platform P=darwin \
+	    >$(BUILD)/platform-darwin.log 2>&1 || { cat $(BUILD)/platform-darwin.log; exit 1; }
+	@sh tests/macos/check.sh
 
 # --- web: aero in the browser (libpd + aero compiled to WebAssembly) --------
 #   make web        build/web/: the page of web/, libpd 0.16.1 (Pd 0.56-5)

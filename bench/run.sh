@@ -146,6 +146,8 @@ done
 sh bench/treebranch.sh
 # [leafwave~] on the paper's large tree, and both tree objects together
 sh bench/leafwave.sh
+# loading huge trees: the 200,000-branch chain, 1,000,000 leaves at one spot
+sh bench/load.sh
 # vortex sound: texture set and [vortex~] per volume
 [ -f bench/vortex.sh ] && sh bench/vortex.sh
 # 3D object textures: sphere and club, and [body~] per body

@@ -2,8 +2,8 @@
  * [treebranch~] and [leafwave~]). Invariants of a tree that loaded: at
  * least one branch; every parent index earlier than its child or -1;
  * every leaf on an existing branch; every number finite, every size > 0,
- * every branch and stalk of non-zero length (what trees/README.md promises
- * of a loaded tree). A small tree that loaded is then handed to the two
+ * every branch and stalk of non-zero length, every point and size within
+ * what a tree can have (what trees/README.md promises of a loaded tree). A small tree that loaded is then handed to the two
  * objects' cores and rendered for a few blocks: the output stays finite.
  * Seeds: trees/small.tree and fuzz/seeds/tree/. */
 /* aero-fuzz: seeds trees/small.tree */
@@ -23,6 +23,14 @@ static void count_line(void *ctx, int line, const char *message)
 static int finite3(const double *v)
 {
     return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]);
+}
+
+/* within the physical ceiling of a tree (tree.h) */
+static int within3(const double *v)
+{
+    return fabs(v[0]) <= AERO_TREE_REACH_MAX &&
+           fabs(v[1]) <= AERO_TREE_REACH_MAX &&
+           fabs(v[2]) <= AERO_TREE_REACH_MAX;
 }
 
 static int same3(const double *a, const double *b)
@@ -114,6 +122,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         FUZZ_REQUIRE(isfinite(b->d0) && isfinite(b->d1) && b->d0 > 0 &&
                          b->d1 > 0,
                      "branch %d: bad diameters", i);
+        FUZZ_REQUIRE(within3(b->a) && within3(b->b) &&
+                         b->d0 <= AERO_TREE_DIAMETER_MAX &&
+                         b->d1 <= AERO_TREE_DIAMETER_MAX,
+                     "branch %d: larger than any tree", i);
         for (int j = 0; j < i && j < 64; j++)
             FUZZ_REQUIRE(t.branches[j].id != b->id, "branch %d: id %d twice",
                          i, b->id);
@@ -127,6 +139,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         FUZZ_REQUIRE(isfinite(f->length) && isfinite(f->width) &&
                          f->length > 0 && f->width > 0,
                      "leaf %d: bad blade", i);
+        FUZZ_REQUIRE(within3(f->s) && within3(f->e) &&
+                         f->length <= AERO_TREE_LEAF_MAX &&
+                         f->width <= AERO_TREE_LEAF_MAX,
+                     "leaf %d: larger than any leaf", i);
         FUZZ_REQUIRE(f->along >= 0 && f->along <= 1, "leaf %d: along %g", i,
                      f->along);
     }

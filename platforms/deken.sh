@@ -4,8 +4,10 @@
 # `make platform P=PLATFORM`), and the (Sources) package from git.
 #   sh platforms/deken.sh DEKEN_DIR VERSION PLATFORM...
 # PLATFORM is Pd's name (linux-amd64, linux-arm64, linux-armv7,
-# windows-amd64); each package is named as deken names it,
-# aero[vVERSION](OS-CPU-FLOATSIZE).dek, and holds the folder aero/ with
+# windows-amd64) or darwin (macOS, universal binaries); each package is
+# named as deken names it, aero[vVERSION](OS-CPU-FLOATSIZE).dek, with one
+# (OS-CPU-FLOATSIZE) per CPU its binaries hold (darwin:
+# (Darwin-arm64-32)(Darwin-amd64-32)), and holds the folder aero/ with
 # that platform's binaries of that float size and everything that is not
 # a binary (help, abstractions, textures, trees, aero-meta.pd, LICENSE,
 # README.md). Beside each: NAME.dek.txt, the object list (one
@@ -26,13 +28,15 @@ binary_ext() {
         linux-amd64:64) echo linux-amd64-64.so ;;
         windows-amd64:32) echo windows-amd64-32.dll ;;
         windows-amd64:64) echo windows-amd64-64.dll ;;
+        darwin:32) echo d_fat ;;
+        darwin:64) echo darwin-fat-64.so ;;
     esac
 }
-deken_arch() { # linux-amd64 -> Linux-amd64
-    os=${1%%-*} cpu=${1#*-}
-    case "$os" in
-        linux) echo "Linux-$cpu" ;;
-        windows) echo "Windows-$cpu" ;;
+deken_archs() { # PLATFORM FLOATSIZE: linux-amd64 32 -> (Linux-amd64-32)
+    case "$1" in
+        linux-*) echo "(Linux-${1#*-}-$2)" ;;
+        windows-*) echo "(Windows-${1#*-}-$2)" ;;
+        darwin) echo "(Darwin-arm64-$2)(Darwin-amd64-$2)" ;;
         *) echo "deken.sh: unknown platform $1" >&2; return 1 ;;
     esac
 }
@@ -40,7 +44,7 @@ deken_arch() { # linux-amd64 -> Linux-amd64
 # OS's) is single precision only
 float_sizes() {
     case "$1" in
-        linux-amd64 | windows-amd64) echo "32 64" ;;
+        linux-amd64 | windows-amd64 | darwin) echo "32 64" ;;
         *) echo 32 ;;
     esac
 }
@@ -53,7 +57,7 @@ for p in "$@"; do
     fi
     for fs in $(float_sizes "$p"); do
         ext=$(binary_ext "$p" "$fs")
-        dek="$name($(deken_arch "$p")-$fs).dek"
+        dek="$name$(deken_archs "$p" "$fs").dek"
         rm -f "$dir/$dek"
         # the list of files, binaries only of this package's kind; zip
         # reads it from stdin (-@), names relative to build/PLATFORM

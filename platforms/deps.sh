@@ -1,13 +1,15 @@
 #!/bin/sh
 # aero: the static libraries the packaged externals link, for one platform:
 #   sh platforms/deps.sh PLATFORM      (linux-amd64 windows-amd64 linux-arm64
-#                                       linux-armv7; wasm with emcc)
+#                                       linux-armv7 darwin-arm64 darwin-amd64;
+#                                       wasm with emcc)
 # builds, from the archives in ../shared/vendor (AERO_VENDOR overrides):
 #   libfftw3f.a   FFTW 3.3.10, single precision, its threads API inside
 #                 (fftwf_make_planner_thread_safe): pthreads, or win32
 #                 threads on Windows, none for wasm (platforms/deps/fftw.sh)
 #   libfftw3.a    the same in double precision (aerotex's bandwidth
-#                 extension), where aerotex is built (Windows)
+#                 extension), where aerotex is built (Windows, macOS); the
+#                 externals of both float sizes link libfftw3f.a only
 #   libsndfile.a  libsndfile 1.2.0 without external codecs: WAV, AIFF and
 #                 the other formats it reads itself (platforms/deps/sndfile.sh)
 # all position-independent with their symbols hidden (nothing of them is
@@ -40,10 +42,18 @@ linux-amd64) CC=gcc AR=ar ;;
 linux-arm64) CC=aarch64-linux-gnu-gcc AR=aarch64-linux-gnu-ar ;;
 linux-armv7) CC=arm-linux-gnueabihf-gcc AR=arm-linux-gnueabihf-ar ;;
 windows-amd64) CC=x86_64-w64-mingw32-gcc AR=x86_64-w64-mingw32-ar DOUBLE=yes ;;
+# macOS 11 and later: Zig's clang and its own Mach-O tools (platforms/zig.sh)
+darwin-arm64|darwin-amd64)
+    ZIG=$(sh "$ROOT/platforms/zig.sh")
+    ZIG_GLOBAL_CACHE_DIR=${ZIG_GLOBAL_CACHE_DIR:-${AERO_CACHE:-$HOME/.cache/aero}/zig-cache}
+    export ZIG_GLOBAL_CACHE_DIR
+    arch=aarch64
+    [ "$P" = darwin-amd64 ] && arch=x86_64
+    CC="$ZIG cc -target $arch-macos.11.0" AR="$ZIG ar --format=darwin" DOUBLE=yes ;;
 wasm) CC=emcc AR=emar ;;
 *) echo "deps.sh: unknown platform '$P'" >&2; exit 2 ;;
 esac
-command -v "$CC" >/dev/null || { echo "deps.sh: $CC not found (make deps)" >&2; exit 1; }
+command -v "${CC%% *}" >/dev/null || { echo "deps.sh: $CC not found (make deps)" >&2; exit 1; }
 # Position-independent (linked into shared objects; -fPIC means nothing to
 # PE) and hidden. armhf: Debian's defaults (ARMv7-A, VFPv3-D16, Thumb-2),
 # which every Pi from the 2 on runs.

@@ -69,7 +69,7 @@ EOF
 }
 
 case $P in
-linux-amd64|windows-amd64) FFTW_SIMD=sse2 ;;
+linux-amd64|windows-amd64|darwin-amd64) FFTW_SIMD=sse2 ;;
 *) FFTW_SIMD=none ;;
 esac
 

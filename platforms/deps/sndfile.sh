@@ -97,8 +97,10 @@ sndfile_config() { # config.h on stdout
 #define _FILE_OFFSET_BITS 64
 #define SIZEOF_OFF_T 8
 #define HAVE_DECL_S_IRGRP 1
+#ifndef __APPLE__ /* macOS has neither (its own is machine/endian.h) */
 #define HAVE_BYTESWAP_H 1
 #define HAVE_ENDIAN_H 1
+#endif
 #define HAVE_FSYNC 1
 #define HAVE_FTRUNCATE 1
 #define HAVE_GETPAGESIZE 1

@@ -62,7 +62,9 @@ AERO_PD_SETTER(aeolian_tilde, t_aeolian_tilde, exponent, x_core,
 
 static void aeolian_tilde_seed(t_aeolian_tilde *x, t_floatarg f)
 {
-    aero_aeolian_set_seed(&x->x_core, aero_pd_seed(f));
+    uint32_t seed;
+    if (!aero_pd_seed_of(&x->x_base, f, &seed))
+        aero_aeolian_set_seed(&x->x_core, seed);
 }
 
 static void aeolian_tilde_listener(t_aeolian_tilde *x, t_symbol *s, int argc,
@@ -92,6 +94,7 @@ static void aeolian_tilde_model(t_aeolian_tilde *x)
 {
     char err[8];
     aero_aeolian_set_texture(&x->x_core, NULL, err, sizeof(err));
+    x->x_base.has_file = 0;
 }
 
 /* pose|place ax ay az bx by bz [ux uy uz]: the stick's ends, and the
@@ -148,7 +151,8 @@ static const aero_pd_method aeolian_tilde_methods[] = {
     {"length", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_length, 0, LENGTH},
     {"gain", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_gain, 0,
      AERO_PD_GAIN},
-    {"seed", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_seed, 0, AERO_PD_NO_RULE},
+    {"seed", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_seed, 0,
+     AERO_PD_SEED},
     {"ramp", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_ramp, 0,
      AERO_PD_RAMP},
     {"listener", AERO_PD_LIST, 3, (t_method)aeolian_tilde_listener, 0, AERO_PD_NO_RULE},

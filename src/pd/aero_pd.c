@@ -4,8 +4,10 @@
 #include "aero.h"
 
 #include "aero_air.h"
+#include "moving_player.h"
 
 #include <limits.h>
+#include <sys/stat.h>
 
 /* --- the table ----------------------------------------------------------- */
 
@@ -195,6 +197,13 @@ static void base_report(aero_pd_base *b)
                  AERO_MACH_LIMIT * AERO_C0);
         b->warned_clamp = 1;
     }
+    if (b->ceiling_hit && !b->warned_ceiling) {
+        pd_error(b->owner, "%s: output beyond %g Pa (1 atm, 194 dB SPL: no "
+                 "sound in air reaches it) clamped, NaN set to 0: a corrupt "
+                 "file or a runaway state (this is reported once)", b->obj,
+                 (double)AERO_PD_CEILING_PA);
+        b->warned_ceiling = 1;
+    }
 }
 
 void aero_pd_base_init(aero_pd_base *b, void *owner, const aero_pd_spec *spec,
@@ -235,6 +244,34 @@ void aero_pd_base_free(aero_pd_base *b)
 
 /* --- perform ---------------------------------------------------------------- */
 
+/* the last guard (aero_pd.h): 1 when it changed a sample */
+static int aero_pd_guard(float *out, int n)
+{
+    const float c = AERO_PD_CEILING_PA;
+    int hit = 0;
+    for (int i = 0; i < n; i++) {
+        float y = out[i];
+        if (!(y >= -c && y <= c)) { /* NaN fails both */
+            out[i] = y > c ? c : y < -c ? -c : 0.0f;
+            hit = 1;
+        }
+    }
+    return hit;
+}
+
+static void aero_pd_guard_outputs(aero_pd_base *b, float *const *out, int n)
+{
+    int hit = 0;
+    for (int c = 0; c < 2; c++)
+        if (out[c])
+            hit |= aero_pd_guard(out[c], n);
+    if (hit && !b->ceiling_hit) {
+        b->ceiling_hit = 1;
+        if (b->clock)
+            clock_delay(b->clock, 0);
+    }
+}
+
 static t_int *aero_pd_perform(t_int *w)
 {
     aero_pd_base *b = (aero_pd_base *)(w[1]);
@@ -245,6 +282,7 @@ static t_int *aero_pd_perform(t_int *w)
     float *out[2] = {pd_out[0], pd_out[1]};
     if (b->process(b->owner, in, out, n))
         aero_pd_clamped(b);
+    aero_pd_guard_outputs(b, out, n);
 #else
     float *f_in = b->scratch, *out[2] = {b->scratch + n, NULL};
     if (pd_out[1])
@@ -253,6 +291,7 @@ static t_int *aero_pd_perform(t_int *w)
         f_in[i] = (float)in[i];
     if (b->process(b->owner, in ? f_in : NULL, out, n))
         aero_pd_clamped(b);
+    aero_pd_guard_outputs(b, out, n);
     for (int c = 0; c < 2; c++)
         for (int i = 0; pd_out[c] && i < n; i++)
             pd_out[c][i] = out[c][i];
@@ -349,6 +388,28 @@ void aero_pd_refused_list(const aero_pd_base *b, const char *name)
     pd_error(b->owner, "%s: %s out of range%s%s", b->obj, name, range, kept);
 }
 
+int aero_pd_seed_of(const aero_pd_base *b, t_float f, uint32_t *seed)
+{
+    if (!(f > -HUGE_VAL && f < HUGE_VAL)) {
+        aero_pd_refused(b, "seed", f);
+        return -1;
+    }
+    *seed = aero_pd_seed(f);
+    return 0;
+}
+
+double aero_pd_at_bound(const aero_pd_base *b, const char *name, t_float f)
+{
+    const aero_pd_rule *r = aero_pd_rule_of(b, name);
+    if (r && r->lo != r->hi) {
+        if ((float)f == (float)r->lo)
+            return r->lo;
+        if ((float)f == (float)r->hi)
+            return r->hi;
+    }
+    return f;
+}
+
 int aero_pd_whole_of(const aero_pd_base *b, const char *name, t_float f,
                      int *n)
 {
@@ -399,11 +460,11 @@ double aero_pd_wind_message(aero_pd_base *b, aero_pd_wind *w, t_symbol *s,
     double v[3];
     if (aero_pd_floats(b->owner, b->obj, s->s_name, argc, argv, 3, v))
         return -1.0;
-    if (!(fabs(v[0]) < 1e30 && fabs(v[1]) < 1e30 && fabs(v[2]) < 1e30)) {
+    double speed = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (!(speed <= AERO_MOVING_WIND_MAX)) { /* NaN fails too */
         aero_pd_refused_list(b, s->s_name);
         return -1.0;
     }
-    double speed = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     if (speed > 0.0)
         for (int k = 0; k < 3; k++)
             w->dir[k] = v[k] / speed;
@@ -461,6 +522,8 @@ int aero_pd_find_file(const t_canvas *canvas, const t_class *cls,
     if (n > e && !strcmp(name + n - e, ext))
         ext = "";
     int fd = canvas_open(canvas, name, ext, dir, &base, MAXPDSTRING, 1);
+    if (fd < 0 && *ext) /* "x.wav" given for a tree: found, then refused */
+        fd = canvas_open(canvas, name, "", dir, &base, MAXPDSTRING, 1);
     if (fd >= 0) {
         sys_close(fd);
         return snprintf(path, len, "%s/%s", dir, base) < (int)len ? 0 : -1;
@@ -490,66 +553,174 @@ int aero_pd_find_file(const t_canvas *canvas, const t_class *cls,
 
 /* --- textures -------------------------------------------------------------- */
 
+/* is `name` (as given: absolute, or next to the patch) a folder? */
+static int is_folder(const t_canvas *canvas, const char *name)
+{
+    char path[MAXPDSTRING];
+    struct stat st;
+    t_symbol *dir = canvas ? canvas_getdir((t_canvas *)canvas) : NULL;
+    if (name[0] == '/' || !dir || !*dir->s_name)
+        snprintf(path, sizeof(path), "%s", name);
+    else
+        snprintf(path, sizeof(path), "%s/%s", dir->s_name, name);
+    return stat(path, &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+/* what a refused file leaves: the file that plays, or the fallback */
+static const char *after_refusal(const aero_pd_base *b, const char *what,
+                                 const char *fallback, char *buf, size_t len)
+{
+    if (!b->has_file)
+        return fallback;
+    snprintf(buf, len, "the previous %s stays", what);
+    return buf;
+}
+
+void aero_pd_no_file(const aero_pd_base *b, const char *what,
+                     const char *message)
+{
+    if (!b->has_file && !b->file_tried)
+        post("%s: no %s given: silent until '%s NAME'", b->obj, what,
+             message);
+}
+
 void aero_pd_load_texture(aero_pd_base *b, t_class *cls, t_symbol *name,
                           aero_pd_set_texture set, void *core,
                           const char *fallback)
 {
-    char path[MAXPDSTRING], err[256];
-    if (aero_pd_find_texture(b->canvas, cls, name->s_name, path,
-                             sizeof(path))) {
+    b->file_tried = 1;
+    char path[MAXPDSTRING], err[MAXPDSTRING + 256], kept[64];
+    const char *after = after_refusal(b, "texture", fallback, kept,
+                                      sizeof(kept));
+    int found = !aero_pd_find_texture(b->canvas, cls, name->s_name, path,
+                                      sizeof(path));
+    if ((found && is_folder(NULL, path)) ||
+        (!found && is_folder(b->canvas, name->s_name))) {
+        pd_error(b->owner, "%s: texture '%s' is a folder, not a texture "
+                 "file: %s", b->obj, found ? path : name->s_name, after);
+        return;
+    }
+    if (!found) {
         pd_error(b->owner, "%s: can't find texture '%s' (looked %s): %s",
-                 b->obj, name->s_name, path, fallback);
-        set(core, NULL, err, sizeof(err));
+                 b->obj, name->s_name, path, after);
         return;
     }
     aero_texture *t = calloc(1, sizeof(*t));
     if (!t || aero_texture_load(path, t, err, sizeof(err)) ||
         set(core, t, err, sizeof(err))) {
-        pd_error(b->owner, "%s: texture %s: %s: %s", b->obj, path,
-                 t ? err : "out of memory", fallback);
+        /* the loader's messages name the file; the core's do not */
+        if (t && strstr(err, path))
+            pd_error(b->owner, "%s: %s: %s", b->obj, err, after);
+        else
+            pd_error(b->owner, "%s: texture %s: %s: %s", b->obj, path,
+                     t ? err : "out of memory", after);
         if (t)
             aero_texture_free(t);
         free(t);
-        set(core, NULL, err, sizeof(err));
+        if (!b->has_file)
+            set(core, NULL, err, sizeof(err));
+        return;
     }
+    b->has_file = 1;
 }
 
 /* --- trees ------------------------------------------------------------------ */
 
-typedef struct {
-    const aero_pd_base *b;
-    const char *path;
-    int count;
-} tree_lines;
-
+/* the bad lines of a read, kept for the report (the read may run in a
+   worker, which must not call Pd) */
 static void tree_bad_line(void *ctx, int line, const char *message)
 {
-    tree_lines *c = ctx;
-    if (++c->count <= AERO_PD_TREE_LINES_SHOWN)
-        pd_error(c->b->owner, "%s: %s:%d: %s (line skipped)", c->b->obj,
-                 c->path, line, message);
+    aero_pd_tree_file *r = ctx;
+    if (r->count < AERO_PD_TREE_LINES_SHOWN) {
+        r->line[r->count] = line;
+        snprintf(r->message[r->count], sizeof(r->message[0]), "%s", message);
+    }
+    r->count++;
+}
+
+/* a file that is not text: a NUL in its first bytes (a WAV, an image) */
+static int is_binary(const char *path)
+{
+    unsigned char buf[512];
+    FILE *f = fopen(path, "rb");
+    size_t n = f ? fread(buf, 1, sizeof(buf), f) : 0;
+    if (f)
+        fclose(f);
+    return memchr(buf, 0, n) != NULL;
+}
+
+int aero_pd_tree_find(aero_pd_base *b, t_class *cls, t_symbol *name,
+                      aero_pd_tree_file *r)
+{
+    char kept[64];
+    const char *after = after_refusal(b, "tree", "silent", kept, sizeof(kept));
+    memset(r, 0, sizeof(*r));
+    b->file_tried = 1;
+    int found = !aero_pd_find_tree(b->canvas, cls, name->s_name, r->path,
+                                   sizeof(r->path));
+    if ((found && is_folder(NULL, r->path)) ||
+        (!found && is_folder(b->canvas, name->s_name))) {
+        pd_error(b->owner, "%s: tree '%s' is a folder, not a tree file: %s",
+                 b->obj, found ? r->path : name->s_name, after);
+        return -1;
+    }
+    if (!found) {
+        pd_error(b->owner, "%s: can't find tree '%s' (looked %s): %s",
+                 b->obj, name->s_name, r->path, after);
+        return -1;
+    }
+    if (is_binary(r->path)) {
+        pd_error(b->owner, "%s: %s is not a tree file (binary data; a tree is "
+                 "text, trees/README.md): %s", b->obj, r->path, after);
+        return -1;
+    }
+    return 0;
+}
+
+int aero_pd_tree_read(aero_pd_tree_file *r, aero_tree *t)
+{
+    r->bad = aero_tree_load(r->path, t, tree_bad_line, r, r->err,
+                            sizeof(r->err));
+    return r->bad;
+}
+
+int aero_pd_tree_report(aero_pd_base *b, const aero_pd_tree_file *r)
+{
+    char kept[64];
+    const char *after = after_refusal(b, "tree", "silent", kept, sizeof(kept));
+    int shown = r->count < AERO_PD_TREE_LINES_SHOWN
+        ? r->count : AERO_PD_TREE_LINES_SHOWN;
+    for (int i = 0; i < shown; i++)
+        pd_error(b->owner, "%s: %s:%d: %s (line skipped)", b->obj, r->path,
+                 r->line[i], r->message[i]);
+    if (r->count > AERO_PD_TREE_LINES_SHOWN)
+        pd_error(b->owner, "%s: %s: %d more bad lines not shown", b->obj,
+                 r->path, r->count - AERO_PD_TREE_LINES_SHOWN);
+    if (r->bad) {
+        pd_error(b->owner, "%s: %s: %s", b->obj, r->err, after);
+        return -1;
+    }
+    b->has_file = 1;
+    return 0;
 }
 
 int aero_pd_load_tree(aero_pd_base *b, t_class *cls, t_symbol *name,
                       aero_tree *t)
 {
-    char path[MAXPDSTRING], err[MAXPDSTRING + 100];
-    if (aero_pd_find_tree(b->canvas, cls, name->s_name, path, sizeof(path))) {
-        pd_error(b->owner, "%s: can't find tree '%s' (looked %s): silent",
-                 b->obj, name->s_name, path);
+    aero_pd_tree_file *r = malloc(sizeof(*r));
+    int bad;
+    if (!r) {
+        pd_error(b->owner, "%s: out of memory reading a tree: silent",
+                 b->obj);
         return -1;
     }
-    tree_lines lines = {b, path, 0};
-    int bad = aero_tree_load(path, t, tree_bad_line, &lines, err,
-                             sizeof(err));
-    if (lines.count > AERO_PD_TREE_LINES_SHOWN)
-        pd_error(b->owner, "%s: %s: %d more bad lines not shown", b->obj,
-                 path, lines.count - AERO_PD_TREE_LINES_SHOWN);
-    if (bad) {
-        pd_error(b->owner, "%s: %s: silent", b->obj, err);
-        return -1;
+    bad = aero_pd_tree_find(b, cls, name, r);
+    if (!bad) {
+        aero_pd_tree_read(r, t);
+        bad = aero_pd_tree_report(b, r);
     }
-    return 0;
+    free(r);
+    return bad;
 }
 
 /* --- numbers --------------------------------------------------------------- */

@@ -155,6 +155,11 @@ typedef struct aero_pd_base {
     int stereo;       /* created with -stereo: two outlets, `ears` */
     int clamped;      /* set by perform, reported once by the clock */
     int warned_clamp;
+    int ceiling_hit;  /* set by perform: the output guard acted */
+    int has_file;     /* a texture or tree was loaded and plays: a refused
+                         file leaves it playing */
+    int file_tried;   /* a texture or tree was asked for */
+    int warned_ceiling;
     t_clock *clock;
     t_outlet *out[2];
     aero_pd_process process;
@@ -179,6 +184,16 @@ void aero_pd_base_free(aero_pd_base *b);
  * chunk of its input before it writes that chunk of its output). */
 void aero_pd_dsp(aero_pd_base *b, t_signal **sp, int inlet,
                  aero_pd_process process);
+
+/* The last guard at every object's output (aero_pd_guard, called by the
+ * one perform routine on every block): no sample leaves an aero object
+ * beyond AERO_PD_CEILING_PA, and NaN or an infinity leaves as 0. An
+ * acoustic pressure amplitude beyond the ambient pressure, 101325 Pa
+ * (194 dB SPL re 20 uPa), would need a negative absolute pressure in the
+ * rarefaction: no sound in air reaches it, at any distance (Beranek and
+ * Mellow 2012). A value there is a fault (a corrupt file, a runaway
+ * state), so it is clamped and reported once per object. */
+#define AERO_PD_CEILING_PA 101325.0f
 
 /* Called by perform when the core clamped a speed above Mach 0.3: the
  * warning is posted once, from the clock (never from perform). */
@@ -212,13 +227,19 @@ void aero_pd_refused_list(const aero_pd_base *b, const char *name);
 int aero_pd_whole_of(const aero_pd_base *b, const char *name, t_float f,
                      int *n);
 
+/* A number from a patch checked against the rule of `name`: a float that
+ * rounds to the same single-precision value as the rule's lo or hi is
+ * that bound (Pd's 1e-05 is 9.99999975e-06 as a float, below the double
+ * 1e-05: the stated minimum must be accepted); any other value as it is. */
+double aero_pd_at_bound(const aero_pd_base *b, const char *name, t_float f);
+
 /* One message per setter: `prefix_msg(x, f)` hands f to
  * `setter(&x->core, f)` (0 accepted, -1 refused) and reports a refusal
  * from the rule of `msg`; `type` is the object's struct. */
 #define AERO_PD_SETTER(prefix, type, msg, core, setter)                    \
     static void prefix##_##msg(type *x, t_floatarg f)                      \
     {                                                                      \
-        if (setter(&x->core, f))                                           \
+        if (setter(&x->core, aero_pd_at_bound(&x->x_base, #msg, f)))      \
             aero_pd_refused(&x->x_base, #msg, f);                          \
     }
 
@@ -255,10 +276,14 @@ double aero_pd_wind_message(aero_pd_base *b, aero_pd_wind *w, t_symbol *s,
                             int argc, const t_atom *argv);
 
 /* --- textures: one loader, one failure policy ------------------------------
- * A texture that can't be found or read is reported once (the name, the
- * places looked in, the reason) and the object falls back to what it plays
- * without one (`fallback`: "using the Strouhal/Reynolds model", "silent"):
- * it never keeps a texture the user asked to replace. The loaded texture
+ * A texture that can't be found or read, or that the core refuses, is
+ * reported once (the name, the places looked in or the reason) and changes
+ * nothing: the texture that played plays on (a performer's working state
+ * is not lost to a typing error), and the message says so; an object
+ * without one goes on with what it plays without one (`fallback`: "using
+ * the Strouhal/Reynolds model", "silent"), and says that. A folder is
+ * named as a folder. b->has_file is set when a texture was taken; a
+ * wrapper that drops its texture (`model`) clears it. The loaded texture
  * is malloc'd: the core takes it and releases it with free(). */
 typedef int (*aero_pd_set_texture)(void *core, aero_texture *t, char *err,
                                    size_t len);
@@ -272,13 +297,40 @@ void aero_pd_load_texture(aero_pd_base *b, t_class *cls, t_symbol *name,
  * reported with its line number and skipped, the first
  * AERO_PD_TREE_LINES_SHOWN of them, then how many more; a file that can't
  * be found or read, or holds no branch, is reported once, ending
- * "silent". Returns 0 with the tree in t, for the caller's core to take,
- * or -1 after the report: the caller clears its tree (it never keeps one
- * the user asked to replace). */
+ * "silent", or, when a tree plays (b->has_file), "the previous tree
+ * stays". A file that is not text (a WAV given for a tree) or a folder is
+ * named as such. Returns 0 with the tree in t, for the caller's core to
+ * take (has_file is then set), or -1 after the report: the caller keeps
+ * the tree it plays, if any. */
 #define AERO_PD_TREE_LINES_SHOWN 20
 
 int aero_pd_load_tree(aero_pd_base *b, t_class *cls, t_symbol *name,
                       aero_tree *t);
+
+/* The same in three steps, so that the reading can run in a worker
+ * thread: find (Pd's thread: the search path; -1 reported), read (any
+ * thread: no Pd call; the bad lines are kept), report (Pd's thread: the
+ * same words as aero_pd_load_tree; 0, or -1 when the read failed). */
+typedef struct {
+    char path[MAXPDSTRING];
+    char err[MAXPDSTRING + 100];
+    int bad, count;
+    int line[AERO_PD_TREE_LINES_SHOWN];
+    char message[AERO_PD_TREE_LINES_SHOWN][256];
+} aero_pd_tree_file;
+int aero_pd_tree_find(aero_pd_base *b, t_class *cls, t_symbol *name,
+                      aero_pd_tree_file *r);
+int aero_pd_tree_read(aero_pd_tree_file *r, aero_tree *t);
+int aero_pd_tree_report(aero_pd_base *b, const aero_pd_tree_file *r);
+
+/* --- no file given ----------------------------------------------------------
+ * At the end of new, for an object that is silent without a file: when
+ * none was asked for, one line says so and how to give one, the same words
+ * from every object ("[body~]: no texture given: silent until 'texture
+ * NAME'"). Not an error: an object may be made first and fed a file
+ * later. */
+void aero_pd_no_file(const aero_pd_base *b, const char *what,
+                     const char *message);
 
 /* --- numbers from a patch ------------------------------------------------- */
 
@@ -286,15 +338,22 @@ int aero_pd_load_tree(aero_pd_base *b, t_class *cls, t_symbol *name,
  * the patch is loaded: from $0 and the object's index in its canvas. */
 uint32_t aero_pd_default_seed(void);
 
-/* A number from a patch as a 32-bit seed: any finite value wraps; NaN,
- * infinities and beyond +-9.2e18 give 0 (converting those to an integer
- * type is undefined behaviour in C). */
+/* A number from a patch as a 32-bit seed, the one seed policy of every
+ * object: any finite number, its whole part modulo 2^32 (-5 is
+ * 4294967291, 1e30 is 0: fmod is exact, no conversion out of range); NaN
+ * and the infinities give 0 (aero_pd_seed_of refuses them). */
 static inline uint32_t aero_pd_seed(t_float f)
 {
-    if (!(f > -9.2e18f && f < 9.2e18f))
+    if (!(f > -HUGE_VAL && f < HUGE_VAL))
         return 0;
-    return (uint32_t)(int64_t)f;
+    return (uint32_t)(int64_t)fmod(trunc((double)f), 4294967296.0);
 }
+
+/* `seed f` of every object: 0 with *seed set; NaN or an infinity refused
+ * (-1 after the report, from the rule AERO_PD_SEED) */
+int aero_pd_seed_of(const struct aero_pd_base *b, t_float f, uint32_t *seed);
+#define AERO_PD_SEED                                                       \
+    AERO_PD_NOTE("any finite number, its whole part modulo 2^32")
 
 /* A number from a patch as a whole number in lo..hi: 0 with *n set, else
  * -1. NaN, infinities, fractions and numbers out of range are refused

@@ -121,7 +121,9 @@ AERO_PD_SETTER(body_tilde, t_body_tilde, ramp, x_core,
 
 static void body_tilde_seed(t_body_tilde *x, t_floatarg f)
 {
-    aero_body_set_seed(&x->x_core, aero_pd_seed(f));
+    uint32_t seed;
+    if (!aero_pd_seed_of(&x->x_base, f, &seed))
+        aero_body_set_seed(&x->x_core, seed);
 }
 
 /* --- creation -------------------------------------------------------------- */
@@ -147,7 +149,8 @@ static const aero_pd_method body_tilde_methods[] = {
      AERO_PD_GAIN},
     {"ramp", AERO_PD_FLOAT, 0, (t_method)body_tilde_ramp, 0,
      AERO_PD_RAMP},
-    {"seed", AERO_PD_FLOAT, 0, (t_method)body_tilde_seed, 0, AERO_PD_NO_RULE},
+    {"seed", AERO_PD_FLOAT, 0, (t_method)body_tilde_seed, 0,
+     AERO_PD_SEED},
     {"listener", AERO_PD_LIST, 3, (t_method)body_tilde_listener, 0, AERO_PD_NO_RULE},
     {"ears", AERO_PD_LIST, 6, (t_method)body_tilde_listener, 0, AERO_PD_NO_RULE},
     {"wind", AERO_PD_LIST, 3, (t_method)body_tilde_wind, 0,
@@ -172,6 +175,7 @@ static void *body_tilde_new(t_symbol *s, int argc, t_atom *argv)
         pd_error(x, OBJ ": out of memory for the delay lines: silent");
     aero_pd_pose_clock_init(&x->x_clock);
     aero_pd_parse_flags(&x->x_base, argc, argv);
+    aero_pd_no_file(&x->x_base, "texture", "texture");
     aero_pd_base_outlets(&x->x_base);
     return x;
 }

@@ -51,7 +51,9 @@ AERO_PD_SETTER(cavity_tilde, t_cavity_tilde, exponent, x_core,
 
 static void cavity_tilde_seed(t_cavity_tilde *x, t_floatarg f)
 {
-    aero_cavity_set_seed(&x->x_core, aero_pd_seed(f));
+    uint32_t seed;
+    if (!aero_pd_seed_of(&x->x_base, f, &seed))
+        aero_cavity_set_seed(&x->x_core, seed);
 }
 
 static void cavity_tilde_listener(t_cavity_tilde *x, t_symbol *s, int argc,
@@ -81,6 +83,7 @@ static void cavity_tilde_model(t_cavity_tilde *x)
 {
     char err[8];
     aero_cavity_set_texture(&x->x_core, NULL, err, sizeof(err));
+    x->x_base.has_file = 0;
 }
 
 #define SIZE(def)                                                         \
@@ -100,7 +103,8 @@ static const aero_pd_method cavity_tilde_methods[] = {
      AERO_PD_GAIN},
     {"ramp", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_ramp, 0,
      AERO_PD_RAMP},
-    {"seed", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_seed, 0, AERO_PD_NO_RULE},
+    {"seed", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_seed, 0,
+     AERO_PD_SEED},
     {"exponent", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_exponent, 0,
      AERO_PD_RANGE_DEF(0, AERO_CAVITY_EXPONENT_MAX,
                        AERO_CAVITY_EXPONENT_DEFAULT, NULL)},

@@ -9,6 +9,7 @@
  *   outlet 2: progress <0..1>, ready <active vertices> <seconds>, done
  */
 #include "aero_pd.h"
+#include "s_stuff.h" /* audio_isopen */
 
 #include "field_job.h"
 
@@ -153,10 +154,16 @@ static void fieldsound_tilde_prepare(t_fieldsound_tilde *x)
         use_demo = &demo;
     }
     x->x_reported_progress = 0;
+    /* -sync blocks Pd's thread: only without an audio device (batch
+       renders, tests), where no one hears the wait; with audio running
+       it would be a dropout of the whole Pd, so the worker prepares */
+    int block = x->x_sync && !audio_isopen();
     post(OBJ ": preprocessing %s (%d frames of %dx%dx%d)%s",
          fieldsound_tilde_name(x, name, sizeof name), info->frames,
-         info->nx, info->ny, info->nz, x->x_sync ? " in Pd's thread" : "");
-    x->x_job = aero_field_job_start(info, use_demo, &x->x_par, !x->x_sync);
+         info->nx, info->ny, info->nz,
+         block ? " in Pd's thread"
+               : x->x_sync ? " in a worker (-sync: audio is running)" : "");
+    x->x_job = aero_field_job_start(info, use_demo, &x->x_par, !block);
     if (!x->x_job) {
         pd_error(x, OBJ ": out of memory");
         return;
@@ -225,7 +232,11 @@ static void fieldsound_tilde_demo(t_fieldsound_tilde *x, t_symbol *s,
     if (argc >= 1) {
         if (argv[0].a_type != A_FLOAT ||
             aero_pd_whole(atom_getfloat(argv), 4, 128, &size)) {
+            /* the demo still runs, at 32^3: not "flag -demo ignored" */
+            const char *flag = x->x_base.flag;
+            x->x_base.flag = NULL;
             aero_pd_refused(&x->x_base, "demo", atom_getfloat(argv));
+            x->x_base.flag = flag;
             size = 32;
         }
     }
@@ -326,14 +337,24 @@ static void fieldsound_tilde_vscale(t_fieldsound_tilde *x, t_floatarg f)
 static void fieldsound_tilde_log(t_fieldsound_tilde *x, t_floatarg f)
 {
     aero_field_params p = x->x_par;
-    p.log_input = f != 0;
+    int on;
+    if (aero_pd_whole_of(&x->x_base, "log", f, &on)) {
+        aero_pd_refused(&x->x_base, "log", f);
+        return;
+    }
+    p.log_input = on;
     fieldsound_tilde_reparam(x, &p);
 }
 
 static void fieldsound_tilde_velocity(t_fieldsound_tilde *x, t_floatarg f)
 {
     aero_field_params p = x->x_par;
-    p.use_velocity = f != 0;
+    int on;
+    if (aero_pd_whole_of(&x->x_base, "velocity", f, &on)) {
+        aero_pd_refused(&x->x_base, "velocity", f);
+        return;
+    }
+    p.use_velocity = on;
     fieldsound_tilde_reparam(x, &p);
 }
 
@@ -344,7 +365,7 @@ static const aero_pd_method fieldsound_tilde_methods[] = {
     {"listener", AERO_PD_LIST, 3, (t_method)fieldsound_tilde_listener, 0,
      AERO_PD_NO_RULE},
     {"speed", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_speed, 0,
-     AERO_PD_RANGE_NOTE(0, AERO_FIELD_SPEED_MAX, "frames/s", "above 0")},
+     AERO_PD_RANGE(AERO_FIELD_SPEED_MIN, AERO_FIELD_SPEED_MAX, "frames/s")},
     {"gain", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_gain, 0,
      AERO_PD_GAIN},
     {"ramp", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_ramp, 0,
@@ -355,11 +376,13 @@ static const aero_pd_method fieldsound_tilde_methods[] = {
     {"map", AERO_PD_LIST, 4, (t_method)fieldsound_tilde_map, 0, AERO_PD_NO_RULE},
     {"zero", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_zero, 0, AERO_PD_NO_RULE},
     {"vscale", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_vscale, 0, AERO_PD_NO_RULE},
-    {"log", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_log, 0, AERO_PD_NO_RULE},
+    {"log", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_log, 0,
+     AERO_PD_RANGE_NOTE(0, 1, NULL, "0 off, 1 on")},
     {"velocity", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_velocity, 0,
-     AERO_PD_NO_RULE},
+     AERO_PD_RANGE_NOTE(0, 1, NULL, "0 off, 1 on")},
     {"demo", AERO_PD_LIST, 1, (t_method)fieldsound_tilde_demo, 0,
-     AERO_PD_RANGE_NOTE(4, 128, "vertices", "a whole number; using 32")},
+     AERO_PD_RANGE_NOTE(4, 128, "vertices", "a whole number; the demo runs "
+                        "at 32 vertices")},
     {"open", AERO_PD_SYMBOL, 0, (t_method)fieldsound_tilde_open,
      AERO_PD_MESSAGE_ONLY, AERO_PD_NO_RULE},
     {"play", AERO_PD_BANG, 0, (t_method)fieldsound_tilde_play,
@@ -378,10 +401,8 @@ static void *fieldsound_tilde_new(t_symbol *s, int argc, t_atom *argv)
     t_fieldsound_tilde *x = (t_fieldsound_tilde *)pd_new(
         fieldsound_tilde_class);
     aero_pd_base_init(&x->x_base, x, &fieldsound_tilde_spec, argc, argv);
-    /* no flow to clamp: its report (the listener's speed, `done`) is
-       x_report's, so the base's flow-clamp clock goes */
-    clock_free(x->x_base.clock);
-    x->x_base.clock = NULL;
+    /* no flow to clamp (the listener's speed and `done` are x_report's);
+       the base's clock stays for the output guard's report */
     aero_field_params_default(&x->x_par);
     if (aero_fieldsound_init(&x->x_core, sys_getsr()))
         pd_error(x, OBJ ": sample rate %g not usable: 44100 Hz until the "

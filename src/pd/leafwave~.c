@@ -9,11 +9,16 @@
  *   outlet(s) (signal): sound pressure at the listener (ears), Pa
  */
 #include "aero_pd.h"
+#include "moving_player.h"
 
 #include "leafwave.h"
+#include "load_job.h"
 #include "aero_util.h"
 
 #include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
 
 static t_class *leafwave_tilde_class;
 
@@ -24,9 +29,40 @@ typedef struct _leafwave_tilde {
     aero_pd_wind x_wind;
     aero_leafwave x_core;
     int x_ok; /* the core is initialised */
+    /* A tree file read, or the tables / reach / seed changed: a new core
+       is built in a worker (load_job.h) and swapped in by the clock with
+       a fade; the old core plays meanwhile. */
+    int x_creating;           /* in new(): the setters act at once */
+    aero_leafwave_rebuild x_want; /* the tables, reach and seed asked */
+    struct lw_load *x_load;
+    aero_load_job *x_job;
+    t_symbol *x_next;         /* the latest 'open' asked during a load */
+    t_clock *x_poll;
+    double x_logical, x_real; /* when the job started: logical, real (s) */
+    aero_leafwave *x_old;     /* the core fading out, or NULL */
+    int x_fade, x_fade_len;   /* samples of the fade done, its length */
+    int x_fade_seen;          /* x_fade at the last poll */
 } t_leafwave_tilde;
 
+typedef struct lw_load {
+    int has_file;             /* else a rebuild of the live tree, if any */
+    aero_pd_tree_file read;
+    aero_tree live;           /* the live core's tree (shared, read-only) */
+    int has_live, owns_live;  /* owns: its object was deleted meanwhile */
+    aero_leafwave snap;       /* the live core's numbers at the start */
+    aero_leafwave_rebuild want;
+    aero_leafwave core;       /* built in the worker */
+    int ok, nleaves;
+    char err[256];
+} lw_load;
+
 #define OBJ "[leafwave~]"
+
+#define FADE_MS 10.0   /* the old core fades out over this after a swap */
+#define WAIT_MS 20.0   /* a job is swapped in this late, or later */
+#define POLL_MS 5.0
+#define SMALL_FILE (2L << 20) /* bytes: read at creation (the shipped
+                                 trees) */
 
 static int leafwave_tilde_process(void *obj, const float *in,
                                   float *const *out, int n)
@@ -37,6 +73,29 @@ static int leafwave_tilde_process(void *obj, const float *in,
             for (int i = 0; out[e] && i < n; i++)
                 out[e][i] = 0;
         return 0;
+    }
+    if (x->x_old) {
+        /* the old core into scratch first (the inlet may alias out[0]),
+           faded out under the new one in chunks */
+        float a[2][64];
+        int clamped = 0;
+        for (int done = 0; done < n;) {
+            int m = n - done < 64 ? n - done : 64;
+            float *ao[2] = {a[0], a[1]};
+            float *no[2] = {out[0] + done, out[1] ? out[1] + done : NULL};
+            aero_leafwave_process(x->x_old, in ? in + done : NULL, ao, m);
+            clamped |= aero_leafwave_process(&x->x_core,
+                                             in ? in + done : NULL, no, m);
+            for (int i = 0; i < m; i++) {
+                float g = x->x_fade < x->x_fade_len
+                    ? 1.0f - (float)x->x_fade / x->x_fade_len : 0.0f;
+                x->x_fade++;
+                for (int e = 0; e < x->x_core.n_ears && e < 2; e++)
+                    no[e][i] += g * a[e][i];
+            }
+            done += m;
+        }
+        return clamped;
     }
     /* the inlet is the speed along the wind's direction; the core takes
        the block's mean and reports a clamp */
@@ -52,24 +111,200 @@ static void leafwave_tilde_dsp(t_leafwave_tilde *x, t_signal **sp)
 
 /* --- the tree file ------------------------------------------------------ */
 
-/* file I/O and the neighbour search here, in the message domain */
-static void leafwave_tilde_open(t_leafwave_tilde *x, t_symbol *name)
+static int leafwave_tilde_build(void *arg)
 {
-    char err[256];
-    aero_tree t;
-    if (!x->x_ok)
+    lw_load *l = arg;
+    aero_tree t, *tp = NULL;
+    if (l->has_file) {
+        if (aero_pd_tree_read(&l->read, &t))
+            return -1;
+        tp = &t;
+    } else if (l->has_live) {
+        if (aero_tree_copy(&t, &l->live)) {
+            snprintf(l->err, sizeof(l->err), "out of memory");
+            return -1;
+        }
+        tp = &t;
+    }
+    l->nleaves = tp ? tp->nleaves : 0;
+    if (aero_leafwave_build(&l->core, &l->snap, &l->want, tp, l->err,
+                            sizeof(l->err)))
+        return -1;
+    l->ok = 1;
+    return 0;
+}
+
+/* a job's leftovers (load_job.h: also from the worker, when abandoned) */
+static void leafwave_tilde_drop_load(void *arg)
+{
+    lw_load *l = arg;
+    if (l->ok)
+        aero_leafwave_free(&l->core);
+    if (l->owns_live)
+        aero_tree_free(&l->live);
+    free(l);
+}
+
+static void leafwave_tilde_drop_old(t_leafwave_tilde *x)
+{
+    if (x->x_old) {
+        aero_leafwave_free(x->x_old);
+        free(x->x_old);
+        x->x_old = NULL;
+    }
+}
+
+static int leafwave_tilde_wants_rebuild(const t_leafwave_tilde *x)
+{
+    const aero_leafwave *c = &x->x_core;
+    const aero_leafwave_rebuild *w = &x->x_want;
+    return w->fm != c->fm || w->per_octave != c->tables_per_octave ||
+        w->octaves != c->octaves || w->reach != c->reach ||
+        w->seed != c->seed;
+}
+
+static void leafwave_tilde_start(t_leafwave_tilde *x, t_symbol *name,
+                                 int now);
+
+/* the finished job: its report, then the new core swapped in (the old one
+   fades out); then the next job, if one was asked meanwhile */
+static void leafwave_tilde_finish(t_leafwave_tilde *x)
+{
+    lw_load *l = x->x_load;
+    aero_load_job_finish(x->x_job);
+    x->x_job = NULL;
+    x->x_load = NULL;
+    if (l->has_file && aero_pd_tree_report(&x->x_base, &l->read)) {
+        ; /* refused: the tree that played, if any, plays on */
+    } else if (!l->ok) {
+        if (l->has_file) { /* refused as the last was: that one plays on */
+            pd_error(x, OBJ ": %s: %s: %s", l->read.path, l->err,
+                     x->x_core.has_tree ? "the previous tree stays"
+                                        : "silent");
+        } else {
+            pd_error(x, OBJ ": %s: the old tables and neighbours stay",
+                     l->err);
+            x->x_want.fm = x->x_core.fm;
+            x->x_want.per_octave = x->x_core.tables_per_octave;
+            x->x_want.octaves = x->x_core.octaves;
+            x->x_want.reach = x->x_core.reach;
+            x->x_want.seed = x->x_core.seed;
+        }
+    } else {
+        /* what changed while it was built */
+        aero_leafwave_set_sample_rate(&l->core, x->x_core.sample_rate);
+        aero_leafwave_copy_settings(&l->core, &x->x_core);
+        leafwave_tilde_drop_old(x);
+        x->x_old = malloc(sizeof(*x->x_old));
+        if (x->x_old)
+            aero_leafwave_move(x->x_old, &x->x_core);
+        else
+            aero_leafwave_free(&x->x_core);
+        aero_leafwave_move(&x->x_core, &l->core);
+        x->x_fade = x->x_fade_seen = 0;
+        x->x_fade_len = (int)(FADE_MS * 0.001 * x->x_core.sample_rate);
+        if (l->has_file && l->nleaves == 0)
+            pd_error(x, OBJ ": tree %s has no leaves: silent", l->read.path);
+    }
+    leafwave_tilde_drop_load(l);
+    if (x->x_next) {
+        t_symbol *next = x->x_next;
+        x->x_next = NULL;
+        leafwave_tilde_start(x, next, 0);
+    } else if (leafwave_tilde_wants_rebuild(x)) {
+        leafwave_tilde_start(x, NULL, 0);
+    }
+}
+
+/* Pd's logical time running well ahead of the real one: batch mode (or
+   no audio device), where nobody hears a wait and renders must not
+   depend on how fast the worker was */
+static int leafwave_tilde_batch(const t_leafwave_tilde *x)
+{
+    double logical = clock_gettimesince(x->x_logical) * 0.001;
+    return sys_getrealtime() - x->x_real < 0.5 * logical;
+}
+
+static void leafwave_tilde_poll(t_leafwave_tilde *x)
+{
+    /* faded out, or not fading at all (DSP is off) */
+    if (x->x_old && (x->x_fade >= x->x_fade_len ||
+                     x->x_fade == x->x_fade_seen))
+        leafwave_tilde_drop_old(x);
+    x->x_fade_seen = x->x_fade;
+    if (x->x_job && (aero_load_job_done(x->x_job) ||
+                     leafwave_tilde_batch(x)))
+        leafwave_tilde_finish(x);
+    if (x->x_job || x->x_old)
+        clock_delay(x->x_poll, POLL_MS);
+}
+
+/* Starts a job: the tree file `name`, or (NULL) the live tree again with
+   the tables, reach and seed asked. The clock swaps the new core in
+   WAIT_MS later, or as soon after as it is ready (in batch mode it waits
+   for it then: the same logical time in every run). `now` (creation): a
+   file under SMALL_FILE is read here at once, so a patch plays its tree
+   from the first block. A job asked while one runs follows it. */
+static void leafwave_tilde_start(t_leafwave_tilde *x, t_symbol *name,
+                                 int now)
+{
+    struct stat st;
+    if (x->x_job) {
+        if (name)
+            x->x_next = name; /* the latest wins; a rebuild follows anyway */
         return;
-    if (aero_pd_load_tree(&x->x_base, leafwave_tilde_class, name, &t)) {
+    }
+    lw_load *l = calloc(1, sizeof(*l));
+    if (!l) {
+        pd_error(x, OBJ ": out of memory: silent");
         aero_leafwave_clear_tree(&x->x_core);
         return;
     }
-    int nleaves = t.nleaves;
-    if (aero_leafwave_set_tree(&x->x_core, &t, err, sizeof(err))) {
-        pd_error(x, OBJ ": %s: %s: silent", name->s_name, err);
+    int small = 0;
+    if (name) {
+        if (aero_pd_tree_find(&x->x_base, leafwave_tilde_class, name,
+                              &l->read)) {
+            free(l); /* the tree that played, if any, plays on */
+            return;
+        }
+        l->has_file = 1;
+        small = stat(l->read.path, &st) == 0 && st.st_size < SMALL_FILE;
+    } else if (x->x_core.has_tree) {
+        /* the arrays stay the live core's: not replaced while this runs */
+        l->live = x->x_core.tree;
+        l->has_live = 1;
+    }
+    l->snap = x->x_core; /* its numbers only are read */
+    l->want = x->x_want;
+    x->x_load = l;
+    x->x_job = aero_load_job_start(leafwave_tilde_build, l, !(now && small));
+    if (!x->x_job) {
+        x->x_load = NULL;
+        free(l);
+        pd_error(x, OBJ ": out of memory: silent");
         return;
     }
-    if (nleaves == 0)
-        pd_error(x, OBJ ": tree %s has no leaves: silent", name->s_name);
+    if (now && small) {
+        leafwave_tilde_finish(x);
+        leafwave_tilde_drop_old(x); /* nothing played yet: no fade */
+        return;
+    }
+    x->x_logical = clock_getlogicaltime();
+    x->x_real = sys_getrealtime();
+    clock_delay(x->x_poll, WAIT_MS);
+}
+
+static void leafwave_tilde_open(t_leafwave_tilde *x, t_symbol *name)
+{
+    if (x->x_ok)
+        leafwave_tilde_start(x, name, x->x_creating);
+}
+
+/* a rebuild with x_want: at once in new() (the flags), else in a job */
+static void leafwave_tilde_rebuild(t_leafwave_tilde *x)
+{
+    if (!x->x_creating)
+        leafwave_tilde_start(x, NULL, 0);
 }
 
 /* --- messages (each also a creation flag of the same name) -------------- */
@@ -82,7 +317,8 @@ static void leafwave_tilde_open(t_leafwave_tilde *x, t_symbol *name)
         int n = 0;                                                        \
         if (x->x_ok &&                                                    \
             ((whole && aero_pd_whole_of(&x->x_base, #msg, f, &n)) ||      \
-             call(&x->x_core, whole ? n : f)))                           \
+             call(&x->x_core,                                            \
+                  whole ? n : aero_pd_at_bound(&x->x_base, #msg, f))))   \
             aero_pd_refused(&x->x_base, #msg, f);                         \
     }
 
@@ -96,10 +332,10 @@ SETTER(coupling, aero_leafwave_set_coupling, 0)
 SETTER(flutter, aero_leafwave_set_flutter, 0)
 SETTER(hit, aero_leafwave_set_hit, 0)
 SETTER(rub, aero_leafwave_set_rub, 0)
-SETTER(reach, aero_leafwave_set_reach, 0)
 SETTER(voices, aero_leafwave_set_voices, 1)
 
-/* fm (which 0), tables per octave (1) or octaves (2): the other two stay */
+/* fm (which 0), tables per octave (1) or octaves (2): the other two stay
+   (as last asked) */
 static void leafwave_tilde_set_tables(t_leafwave_tilde *x, int which,
                                       t_float f, const char *what)
 {
@@ -107,14 +343,48 @@ static void leafwave_tilde_set_tables(t_leafwave_tilde *x, int which,
     int per, oct;
     if (!x->x_ok)
         return;
-    aero_leafwave_tables(&x->x_core, &v[0], &per, &oct);
-    v[1] = per;
-    v[2] = oct;
+    v[0] = x->x_want.fm;
+    v[1] = x->x_want.per_octave;
+    v[2] = x->x_want.octaves;
     v[which] = f;
     if (aero_pd_whole_of(&x->x_base, "tables", v[1], &per) ||
-        aero_pd_whole_of(&x->x_base, "octaves", v[2], &oct) ||
-        aero_leafwave_set_tables(&x->x_core, v[0], per, oct))
+        aero_pd_whole_of(&x->x_base, "octaves", v[2], &oct)) {
         aero_pd_refused(&x->x_base, what, f);
+        return;
+    }
+    if ((long)per * oct > AERO_LEAFWAVE_TABLES_MAX) {
+        /* each within its range, the product not: say the real limit */
+        pd_error(x, OBJ ": %s %g refused: %d tables per octave x %d octaves "
+                 "= %ld tables, at most %d in all (with %s %d: %s at most "
+                 "%d)", what, f, per, oct, (long)per * oct,
+                 AERO_LEAFWAVE_TABLES_MAX, which == 2 ? "tables" : "octaves",
+                 which == 2 ? per : oct, which == 2 ? "octaves" : "tables",
+                 AERO_LEAFWAVE_TABLES_MAX / (which == 2 ? per : oct));
+        return;
+    }
+    if (!aero_leafwave_tables_valid(v[0], per, oct) ||
+        (x->x_creating &&
+         aero_leafwave_set_tables(&x->x_core, v[0], per, oct))) {
+        aero_pd_refused(&x->x_base, what, f);
+        return;
+    }
+    x->x_want.fm = v[0];
+    x->x_want.per_octave = per;
+    x->x_want.octaves = oct;
+    leafwave_tilde_rebuild(x);
+}
+
+static void leafwave_tilde_reach(t_leafwave_tilde *x, t_floatarg f)
+{
+    if (!x->x_ok)
+        return;
+    if (!aero_leafwave_reach_valid(f) ||
+        (x->x_creating && aero_leafwave_set_reach(&x->x_core, f))) {
+        aero_pd_refused(&x->x_base, "reach", f);
+        return;
+    }
+    x->x_want.reach = f;
+    leafwave_tilde_rebuild(x);
 }
 
 static void leafwave_tilde_fm(t_leafwave_tilde *x, t_floatarg f)
@@ -134,8 +404,13 @@ static void leafwave_tilde_octaves(t_leafwave_tilde *x, t_floatarg f)
 
 static void leafwave_tilde_seed(t_leafwave_tilde *x, t_floatarg f)
 {
-    if (x->x_ok && aero_leafwave_set_seed(&x->x_core, aero_pd_seed(f)))
+    uint32_t seed;
+    if (!x->x_ok || aero_pd_seed_of(&x->x_base, f, &seed))
+        return;
+    if (x->x_creating && aero_leafwave_set_seed(&x->x_core, seed))
         pd_error(x, OBJ ": out of memory restarting from seed %g", f);
+    x->x_want.seed = seed;
+    leafwave_tilde_rebuild(x);
 }
 
 static void leafwave_tilde_wind(t_leafwave_tilde *x, t_symbol *s, int argc,
@@ -184,17 +459,19 @@ static const aero_pd_method leafwave_tilde_methods[] = {
     {"open", AERO_PD_SYMBOL, 0, (t_method)leafwave_tilde_open, 0, AERO_PD_NO_RULE},
     {"tree", AERO_PD_SYMBOL, 0, (t_method)leafwave_tilde_open, 0, AERO_PD_NO_RULE},
     {"wind", AERO_PD_LIST, 3, (t_method)leafwave_tilde_wind, 0,
-     AERO_PD_NOTE("finite")},
+     AERO_PD_RANGE_NOTE(0, AERO_MOVING_WIND_MAX, "m/s",
+                        "the vector's length")},
     {"listener", AERO_PD_LIST, 3, (t_method)leafwave_tilde_listener, 0, AERO_PD_NO_RULE},
     {"ears", AERO_PD_LIST, 6, (t_method)leafwave_tilde_listener, 0, AERO_PD_NO_RULE},
     {"mic", AERO_PD_LIST, 3, (t_method)leafwave_tilde_mic, 0,
-     AERO_PD_NOTE("a finite direction")},
+     AERO_PD_NOTE("a finite direction; 0 0 0 aims it at the tree")},
     {"k", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_k, 0,
      AERO_PD_RANGE_DEF(0, AERO_LEAFWAVE_MIC_K_MAX,
                        AERO_LEAFWAVE_MIC_K_DEFAULT, NULL)},
     {"gain", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_gain, 0,
      AERO_PD_GAIN},
-    {"seed", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_seed, 0, AERO_PD_NO_RULE},
+    {"seed", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_seed, 0,
+     AERO_PD_SEED},
     {"ramp", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_ramp, 0,
      AERO_PD_RAMP},
     {"stiffness", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_stiffness, 0,
@@ -245,6 +522,8 @@ static void *leafwave_tilde_new(t_symbol *s, int argc, t_atom *argv)
     t_leafwave_tilde *x = (t_leafwave_tilde *)pd_new(leafwave_tilde_class);
     aero_pd_base_init(&x->x_base, x, &leafwave_tilde_spec, argc, argv);
     aero_pd_wind_init(&x->x_wind);
+    x->x_poll = clock_new(x, (t_method)leafwave_tilde_poll);
+    x->x_creating = 1;
     x->x_ok = aero_leafwave_init(&x->x_core, sys_getsr(),
                                  x->x_base.stereo ? 2 : 1,
                                  aero_pd_default_seed()) == 0;
@@ -254,10 +533,18 @@ static void *leafwave_tilde_new(t_symbol *s, int argc, t_atom *argv)
        the tables are set by the flags first, so the tree is built once */
     t_symbol *file = aero_pd_first_symbol(&argc, &argv);
     aero_pd_parse_flags(&x->x_base, argc, argv);
+    if (x->x_ok) {
+        x->x_want.fm = x->x_core.fm;
+        x->x_want.per_octave = x->x_core.tables_per_octave;
+        x->x_want.octaves = x->x_core.octaves;
+        x->x_want.reach = x->x_core.reach;
+        x->x_want.seed = x->x_core.seed;
+    }
     if (file)
         leafwave_tilde_open(x, file);
     else
         post(OBJ ": no tree file given: silent until 'open <file>'");
+    x->x_creating = 0;
     aero_pd_base_outlets(&x->x_base);
     return x;
 }
@@ -265,6 +552,17 @@ static void *leafwave_tilde_new(t_symbol *s, int argc, t_atom *argv)
 static void leafwave_tilde_free(t_leafwave_tilde *x)
 {
     aero_pd_base_free(&x->x_base);
+    clock_free(x->x_poll);
+    if (x->x_job) {
+        /* not waited for: the worker drops what it made when done; the
+           live tree it may still be copying becomes the job's */
+        if (x->x_load->has_live) {
+            x->x_load->owns_live = 1;
+            memset(&x->x_core.tree, 0, sizeof(x->x_core.tree));
+        }
+        aero_load_job_abandon(x->x_job, leafwave_tilde_drop_load);
+    }
+    leafwave_tilde_drop_old(x);
     if (x->x_ok)
         aero_leafwave_free(&x->x_core);
 }

@@ -7,8 +7,14 @@
  *   outlet 2 (signal, with -stereo): right ear, Pa
  */
 #include "aero_pd.h"
+#include "moving_player.h"
 
 #include "treebranch.h"
+#include "load_job.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
 
 static t_class *treebranch_tilde_class;
 
@@ -18,14 +24,66 @@ typedef struct _treebranch_tilde {
     aero_pd_base x_base;
     aero_pd_wind x_wind;
     aero_treebranch x_core;
+    /* a tree loading in a worker (load_job.h): read and a new core built
+       there, swapped in by the clock with a fade; the old core plays
+       meanwhile */
+    struct tb_load *x_load;
+    aero_load_job *x_job;
+    t_symbol *x_next;         /* the latest 'open' asked during a load */
+    int x_creating;           /* in new(): a seed acts at once */
+    uint32_t x_want_seed;     /* the seed asked (a job builds it) */
+    t_clock *x_poll;
+    double x_logical, x_real; /* when the load started: logical, real (s) */
+    aero_treebranch *x_old;   /* the core fading out, or NULL */
+    int x_fade, x_fade_len;   /* samples of the fade done, its length */
+    int x_fade_seen;          /* x_fade at the last poll */
 } t_treebranch_tilde;
 
+typedef struct tb_load {
+    int has_file;             /* else the live tree again (a new seed) */
+    aero_pd_tree_file read;
+    aero_tree live;           /* the live core's tree (shared, read-only) */
+    int has_live, owns_live;  /* owns: its object was deleted meanwhile */
+    aero_treebranch snap;     /* the live core's numbers at the start */
+    aero_treebranch core;     /* built in the worker */
+    int ok;
+} tb_load;
+
 #define OBJ "[treebranch~]"
+
+#define FADE_MS 10.0   /* the old core fades out over this after a swap */
+#define WAIT_MS 20.0   /* a load is swapped in this late, or later */
+#define POLL_MS 5.0
+#define SMALL_FILE (2L << 20) /* bytes: read at creation (the shipped
+                                 trees; ~0.1 s for 2 MB) */
 
 static int treebranch_tilde_process(void *obj, const float *in,
                                     float *const *out, int n)
 {
     t_treebranch_tilde *x = obj;
+    if (x->x_old) {
+        /* the old core into scratch first (the inlet may alias out[0]),
+           faded out under the new one in chunks */
+        float a[2][64];
+        for (int done = 0; done < n;) {
+            int m = n - done < 64 ? n - done : 64;
+            aero_treebranch_process_speed(x->x_old, in ? in + done : NULL,
+                                          a[0], out[1] ? a[1] : NULL, m);
+            aero_treebranch_process_speed(&x->x_core, in ? in + done : NULL,
+                                          out[0] + done,
+                                          out[1] ? out[1] + done : NULL, m);
+            for (int i = 0; i < m; i++) {
+                float g = x->x_fade < x->x_fade_len
+                    ? 1.0f - (float)x->x_fade / x->x_fade_len : 0.0f;
+                x->x_fade++;
+                out[0][done + i] += g * a[0][i];
+                if (out[1])
+                    out[1][done + i] += g * a[1][i];
+            }
+            done += m;
+        }
+        return 0;
+    }
     /* the inlet is the speed along the wind's direction; the core takes
        the block's mean and reports a clamp */
     return aero_treebranch_process_speed(&x->x_core, in, out[0], out[1], n);
@@ -39,16 +97,173 @@ static void treebranch_tilde_dsp(t_treebranch_tilde *x, t_signal **sp)
     aero_pd_dsp(&x->x_base, sp, 1, treebranch_tilde_process);
 }
 
-/* file I/O here, in the message domain, never in perform */
-static void treebranch_tilde_open(t_treebranch_tilde *x, t_symbol *name)
+/* ---- the tree file: read and built in a worker --------------------------- */
+
+static int treebranch_tilde_build(void *arg)
 {
+    tb_load *l = arg;
     aero_tree t;
-    if (aero_pd_load_tree(&x->x_base, treebranch_tilde_class, name, &t)) {
+    if (l->has_file ? aero_pd_tree_read(&l->read, &t)
+                    : aero_tree_copy(&t, &l->live))
+        return -1;
+    if (aero_treebranch_init(&l->core, l->snap.sample_rate, l->snap.seed) ||
+        aero_treebranch_copy_settings(&l->core, &l->snap) ||
+        aero_treebranch_set_tree(&l->core, &t)) {
+        aero_tree_free(&t);
+        return -1;
+    }
+    l->ok = 1;
+    return 0;
+}
+
+/* a job's leftovers (load_job.h: also from the worker, when abandoned) */
+static void treebranch_tilde_drop_load(void *arg)
+{
+    tb_load *l = arg;
+    if (l->ok)
+        aero_treebranch_free(&l->core);
+    if (l->owns_live)
+        aero_tree_free(&l->live);
+    free(l);
+}
+
+static void treebranch_tilde_drop_old(t_treebranch_tilde *x)
+{
+    if (x->x_old) {
+        aero_treebranch_free(x->x_old);
+        free(x->x_old);
+        x->x_old = NULL;
+    }
+}
+
+static void treebranch_tilde_start(t_treebranch_tilde *x, t_symbol *name,
+                                   int now);
+
+/* the finished load: its report, then the new core swapped in (the old
+   one fades out) */
+static void treebranch_tilde_finish(t_treebranch_tilde *x)
+{
+    tb_load *l = x->x_load;
+    aero_load_job_finish(x->x_job);
+    x->x_job = NULL;
+    x->x_load = NULL;
+    if (l->has_file && aero_pd_tree_report(&x->x_base, &l->read)) {
+        ; /* refused: the tree that played, if any, plays on */
+    } else if (!l->ok && l->has_file) {
+        pd_error(x, OBJ ": %s: out of memory: silent", l->read.path);
+        aero_treebranch_set_tree(&x->x_core, NULL);
+    } else if (!l->ok) {
+        pd_error(x, OBJ ": out of memory restarting the tree: silent");
+        aero_treebranch_set_tree(&x->x_core, NULL);
+        x->x_want_seed = x->x_core.seed;
+    } else {
+        /* what changed while it loaded */
+        aero_treebranch_set_sample_rate(&l->core, x->x_core.sample_rate);
+        aero_treebranch_copy_settings(&l->core, &x->x_core);
+        treebranch_tilde_drop_old(x);
+        x->x_old = malloc(sizeof(*x->x_old));
+        if (x->x_old)
+            aero_treebranch_move(x->x_old, &x->x_core);
+        else
+            aero_treebranch_free(&x->x_core);
+        aero_treebranch_move(&x->x_core, &l->core);
+        x->x_fade = x->x_fade_seen = 0;
+        x->x_fade_len = (int)(FADE_MS * 0.001 * x->x_core.sample_rate);
+    }
+    treebranch_tilde_drop_load(l);
+    if (x->x_next) {
+        t_symbol *next = x->x_next;
+        x->x_next = NULL;
+        treebranch_tilde_start(x, next, 0);
+    } else if (x->x_want_seed != x->x_core.seed) {
+        if (x->x_core.has_tree)
+            treebranch_tilde_start(x, NULL, 0);
+        else
+            aero_treebranch_set_seed(&x->x_core, x->x_want_seed);
+    }
+}
+
+/* Pd's logical time running well ahead of the real one: batch mode (or
+   no audio device), where nobody hears a wait and renders must not
+   depend on how fast the worker was */
+static int treebranch_tilde_batch(const t_treebranch_tilde *x)
+{
+    double logical = clock_gettimesince(x->x_logical) * 0.001;
+    return sys_getrealtime() - x->x_real < 0.5 * logical;
+}
+
+static void treebranch_tilde_poll(t_treebranch_tilde *x)
+{
+    /* faded out, or not fading at all (DSP is off) */
+    if (x->x_old && (x->x_fade >= x->x_fade_len ||
+                     x->x_fade == x->x_fade_seen))
+        treebranch_tilde_drop_old(x);
+    x->x_fade_seen = x->x_fade;
+    if (x->x_job && (aero_load_job_done(x->x_job) ||
+                     treebranch_tilde_batch(x)))
+        treebranch_tilde_finish(x);
+    if (x->x_job || x->x_old)
+        clock_delay(x->x_poll, POLL_MS);
+}
+
+/* Starts reading `name` in the worker; the clock swaps the new core in
+   WAIT_MS after the message, or as soon after as it is ready (in batch
+   mode it waits for it then: the same logical time in every run).
+   `now` (creation): a file under SMALL_FILE is read here at once, so a
+   patch plays its tree from the first block. */
+static void treebranch_tilde_start(t_treebranch_tilde *x, t_symbol *name,
+                                   int now)
+{
+    struct stat st;
+    if (x->x_job) {
+        if (name)
+            x->x_next = name; /* the latest wins; a new seed follows */
+        return;
+    }
+    tb_load *l = calloc(1, sizeof(*l));
+    if (!l) {
+        pd_error(x, OBJ ": out of memory: silent");
         aero_treebranch_set_tree(&x->x_core, NULL);
         return;
     }
-    if (aero_treebranch_set_tree(&x->x_core, &t))
-        pd_error(x, OBJ ": %s: out of memory: silent", name->s_name);
+    int small = 0;
+    if (name) {
+        if (aero_pd_tree_find(&x->x_base, treebranch_tilde_class, name,
+                              &l->read)) {
+            free(l); /* the tree that played, if any, plays on */
+            return;
+        }
+        l->has_file = 1;
+        small = stat(l->read.path, &st) == 0 && st.st_size < SMALL_FILE;
+    } else {
+        /* the arrays stay the live core's: not replaced while this runs */
+        l->live = x->x_core.tree;
+        l->has_live = 1;
+    }
+    l->snap = x->x_core; /* its numbers only are read */
+    l->snap.seed = x->x_want_seed;
+    x->x_load = l;
+    x->x_job = aero_load_job_start(treebranch_tilde_build, l,
+                                   !(now && small));
+    if (!x->x_job) {
+        x->x_load = NULL;
+        free(l);
+        pd_error(x, OBJ ": out of memory: silent");
+        return;
+    }
+    if (now && small) {
+        treebranch_tilde_finish(x);
+        treebranch_tilde_drop_old(x); /* nothing played yet: no fade */
+        return;
+    }
+    x->x_logical = clock_getlogicaltime();
+    x->x_real = sys_getrealtime();
+    clock_delay(x->x_poll, WAIT_MS);
+}
+
+static void treebranch_tilde_open(t_treebranch_tilde *x, t_symbol *name)
+{
+    treebranch_tilde_start(x, name, 0);
 }
 
 static void treebranch_tilde_wind(t_treebranch_tilde *x, t_symbol *s,
@@ -97,20 +312,27 @@ AERO_PD_SETTER(treebranch_tilde, t_treebranch_tilde, beta, x_core,
 AERO_PD_SETTER(treebranch_tilde, t_treebranch_tilde, alpha, x_core,
                aero_treebranch_set_alpha)
 
+/* a new seed restarts the motion of every branch: in a job (a copy of
+   the tree and a new core) when there is a tree, but at once in new() (the
+   flag) or without a tree, where it costs nothing */
 static void treebranch_tilde_seed(t_treebranch_tilde *x, t_floatarg f)
 {
-    if (!(f == f) || f < 0 || f > 4294967295.0) {
-        aero_pd_refused(&x->x_base, "seed", f);
+    uint32_t seed;
+    if (aero_pd_seed_of(&x->x_base, f, &seed))
         return;
+    x->x_want_seed = seed;
+    if (x->x_creating || (!x->x_job && !x->x_core.has_tree)) {
+        if (aero_treebranch_set_seed(&x->x_core, x->x_want_seed))
+            pd_error(x, OBJ ": out of memory restarting the tree: silent");
+    } else {
+        treebranch_tilde_start(x, NULL, 0);
     }
-    if (aero_treebranch_set_seed(&x->x_core, (uint32_t)(int64_t)f))
-        pd_error(x, OBJ ": out of memory restarting the tree: silent");
 }
 
 static const aero_pd_method treebranch_tilde_methods[] = {
     {"stereo", AERO_PD_SWITCH, 0, NULL, 0, AERO_PD_NO_RULE},
     {"seed", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_seed, 0,
-     AERO_PD_RANGE_NOTE(0, 4294967295.0, NULL, "2^32-1")},
+     AERO_PD_SEED},
     {"gain", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_gain, 0,
      AERO_PD_GAIN},
     {"stiffness", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_stiffness, 0,
@@ -127,12 +349,13 @@ static const aero_pd_method treebranch_tilde_methods[] = {
     {"ramp", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_ramp, 0,
      AERO_PD_RAMP},
     {"mic", AERO_PD_LIST, 3, (t_method)treebranch_tilde_mic, 0,
-     AERO_PD_NOTE("a finite direction")},
+     AERO_PD_NOTE("a finite direction; 0 0 0 aims it at the tree")},
     {"listener", AERO_PD_LIST, 3, (t_method)treebranch_tilde_listener, 0,
      AERO_PD_NO_RULE},
     {"ears", AERO_PD_LIST, 6, (t_method)treebranch_tilde_listener, 0, AERO_PD_NO_RULE},
     {"wind", AERO_PD_LIST, 3, (t_method)treebranch_tilde_wind, 0,
-     AERO_PD_NOTE("finite")},
+     AERO_PD_RANGE_NOTE(0, AERO_MOVING_WIND_MAX, "m/s",
+                        "the vector's length")},
     {"open", AERO_PD_SYMBOL, 0, (t_method)treebranch_tilde_open,
      AERO_PD_MESSAGE_ONLY, AERO_PD_NO_RULE},
 };
@@ -148,14 +371,19 @@ static void *treebranch_tilde_new(t_symbol *s, int argc, t_atom *argv)
         (t_treebranch_tilde *)pd_new(treebranch_tilde_class);
     aero_pd_base_init(&x->x_base, x, &treebranch_tilde_spec, argc, argv);
     aero_pd_wind_init(&x->x_wind);
+    x->x_poll = clock_new(x, (t_method)treebranch_tilde_poll);
+    x->x_creating = 1;
     if (aero_treebranch_init(&x->x_core, sys_getsr(), aero_pd_default_seed()))
         pd_error(x, OBJ ": out of memory: silent");
     aero_treebranch_set_stereo(&x->x_core, x->x_base.stereo);
+    x->x_want_seed = x->x_core.seed;
     /* the tree file: the first argument, when it is not a flag */
     t_symbol *file = aero_pd_first_symbol(&argc, &argv);
     if (file)
-        treebranch_tilde_open(x, file);
+        treebranch_tilde_start(x, file, 1);
     aero_pd_parse_flags(&x->x_base, argc, argv);
+    x->x_creating = 0;
+    aero_pd_no_file(&x->x_base, "tree", "open");
     aero_pd_base_outlets(&x->x_base);
     return x;
 }
@@ -163,6 +391,17 @@ static void *treebranch_tilde_new(t_symbol *s, int argc, t_atom *argv)
 static void treebranch_tilde_free(t_treebranch_tilde *x)
 {
     aero_pd_base_free(&x->x_base);
+    clock_free(x->x_poll);
+    if (x->x_job) {
+        /* not waited for: the worker drops what it made when done; the
+           live tree it may still be copying becomes the job's */
+        if (x->x_load->has_live) {
+            x->x_load->owns_live = 1;
+            memset(&x->x_core.tree, 0, sizeof(x->x_core.tree));
+        }
+        aero_load_job_abandon(x->x_job, treebranch_tilde_drop_load);
+    }
+    treebranch_tilde_drop_old(x);
     aero_treebranch_free(&x->x_core);
 }
 

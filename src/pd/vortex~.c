@@ -133,7 +133,9 @@ static void vortex_tilde_falloff(t_vortex_tilde *x, t_floatarg f)
 
 static void vortex_tilde_seed(t_vortex_tilde *x, t_floatarg f)
 {
-    aero_vortex_set_seed(&x->x_core, aero_pd_seed(f));
+    uint32_t seed;
+    if (!aero_pd_seed_of(&x->x_base, f, &seed))
+        aero_vortex_set_seed(&x->x_core, seed);
 }
 
 static const aero_pd_method vortex_tilde_methods[] = {
@@ -152,7 +154,8 @@ static const aero_pd_method vortex_tilde_methods[] = {
                             "Pa", "0 = off")},
     {"ramp", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_ramp, 0,
      AERO_PD_RAMP},
-    {"seed", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_seed, 0, AERO_PD_NO_RULE},
+    {"seed", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_seed, 0,
+     AERO_PD_SEED},
     {"power", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_power, 0,
      AERO_PD_RANGE_NOTE_DEF(0, AERO_COMBUSTION_POWER_KW_MAX,
                             AERO_COMBUSTION_POWER_KW_DEFAULT, "kW",

@@ -7,6 +7,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #define FIELD(job, o, type) ((type *)((char *)(job) + (o)->at))
 
@@ -163,6 +165,54 @@ void aerotex_defaults(const aerotex_command *cmd, void *job)
         cmd->init(job);
 }
 
+/* An output (-o FILE or DIR, --png DIR) is checked before any work: its
+   folder must exist and be writable, so a typing error fails at once, not
+   after a simulation of minutes. 0, or -1 reported. */
+static int check_output(const char *cmd, const char *opt, const char *path)
+{
+    char dir[4096];
+    struct stat st;
+    size_t n = strlen(path);
+    while (n > 1 && path[n - 1] == '/') /* "out/" is the folder out */
+        n--;
+    if (n >= sizeof(dir)) {
+        aerotex_error("%s: %s: path too long", cmd, opt);
+        return -1;
+    }
+    memcpy(dir, path, n);
+    dir[n] = 0;
+    char *slash = strrchr(dir, '/');
+    if (!slash)
+        strcpy(dir, ".");
+    else if (slash == dir)
+        dir[1] = 0;
+    else
+        *slash = 0;
+    if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
+        aerotex_error("%s: can't write '%s' (%s): the folder '%s' does not "
+                      "exist", cmd, path, opt, dir);
+        return -1;
+    }
+    if (access(dir, W_OK) != 0) {
+        aerotex_error("%s: can't write '%s' (%s): the folder '%s' is not "
+                      "writable", cmd, path, opt, dir);
+        return -1;
+    }
+    return 0;
+}
+
+static int check_outputs(const aerotex_command *cmd, void *job)
+{
+    for (const aerotex_option *o = cmd->options; o && o->name; o++)
+        if (o->kind == AEROTEX_TEXT &&
+            (!strcmp(o->name, "-o") || !strcmp(o->name, "--png"))) {
+            const char *path = *FIELD(job, o, const char *);
+            if (path && check_output(cmd->name, o->name, path))
+                return -1;
+        }
+    return 0;
+}
+
 int aerotex_parse(const aerotex_command *cmd, void *job, int argc,
                   char **argv)
 {
@@ -186,7 +236,7 @@ int aerotex_parse(const aerotex_command *cmd, void *job, int argc,
             return -1;
         }
     }
-    return 0;
+    return check_outputs(cmd, job);
 }
 
 /* " (default X)" for o, from the job after the defaults */

@@ -8,10 +8,17 @@
 #include <stdlib.h>
 #include <string.h>
 
+typedef struct {
+    const char *file;
+    int bad; /* lines skipped */
+} tree_report;
+
 static void print_report(void *ctx, int line, const char *message)
 {
-    fprintf(stderr, "aerotex: %s:%d: %s (line skipped)\n", (const char *)ctx,
-            line, message);
+    tree_report *r = ctx;
+    r->bad++;
+    fprintf(stderr, "aerotex: %s:%d: %s (line skipped)\n", r->file, line,
+            message);
 }
 
 static void describe(const aero_tree *t)
@@ -53,13 +60,14 @@ static const aerotex_option tree_options[] = {
      "leaves over the outermost branches", NULL, NULL},
     {"--seed", AEROTEX_SEED, "n", 1.0, 0, 0, AT(shape.seed), "the tree's seed",
      NULL, NULL},
-    {"--height", AEROTEX_POSITIVE, "m", 2.0, 0.0, 1000.0, AT(shape.height),
+    {"--height", AEROTEX_POSITIVE, "m", 2.0, 0.0,
+     AERO_TREE_GENERATE_HEIGHT_MAX, AT(shape.height),
      "trunk height", NULL, NULL},
-    {"--diameter", AEROTEX_POSITIVE, "m", 0.2, 0.0, 1000.0,
+    {"--diameter", AEROTEX_POSITIVE, "m", 0.2, 0.0, AERO_TREE_DIAMETER_MAX,
      AT(shape.diameter), "trunk diameter at the base", NULL, NULL},
-    {"--leaf-length", AEROTEX_POSITIVE, "m", 0.08, 0.0, 1000.0,
+    {"--leaf-length", AEROTEX_POSITIVE, "m", 0.08, 0.0, AERO_TREE_LEAF_MAX,
      AT(shape.leaf_length), "leaf length", NULL, NULL},
-    {"--leaf-width", AEROTEX_POSITIVE, "m", 0.05, 0.0, 1000.0,
+    {"--leaf-width", AEROTEX_POSITIVE, "m", 0.05, 0.0, AERO_TREE_LEAF_MAX,
      AT(shape.leaf_width), "leaf width", NULL, NULL},
     {"--check", AEROTEX_TEXT, "FILE.tree", NAN, 0, 0, AT(check),
      "instead: reads a tree, reports bad lines with\ntheir numbers, prints "
@@ -70,19 +78,21 @@ static const aerotex_option tree_options[] = {
      NULL},
     {NULL, 0, NULL, 0, 0, 0, 0, NULL, NULL, NULL}};
 
-/* --check FILE: the exit status */
+/* --check FILE: the exit status, 1 when a line was skipped (what
+   [treebranch~] and [leafwave~] would report) */
 static int check_tree(const char *file)
 {
     aero_tree t;
     char err[512];
-    if (aero_tree_load(file, &t, print_report, (void *)file, err,
-                       sizeof err)) {
+    tree_report r = {file, 0};
+    if (aero_tree_load(file, &t, print_report, &r, err, sizeof err)) {
         aerotex_error("%s", err);
         return 1;
     }
     describe(&t);
+    printf("bad_lines=%d\n", r.bad);
     aero_tree_free(&t);
-    return 0;
+    return r.bad ? 1 : 0;
 }
 
 static int tree_run(int argc, char **argv)

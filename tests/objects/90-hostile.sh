@@ -371,3 +371,123 @@ while IFS='|' read -r h_cls h_args h_nout h_file h_new h_msgs; do
 done <"$HOSTILE/table.txt"
 chmod 600 "$HOSTILE"/unreadable.* 2>/dev/null
 [ -d "$HOSTILE/unreadable" ] && chmod -R u+rwx "$HOSTILE/unreadable"
+
+# --- the hostile cases of issue 49: each input and the words it must get ---
+# One line per case: class | the object (its creation text) | messages at
+# load (after "; aero-speed 10" unless they set it) | what the log must
+# say ("!text": must not say) | the largest |sample| allowed, or - |
+# optionally, events "MS ; messages" separated by ','.
+# Files made here: F.wav is fire.wav with its first 1000 floats 3e38
+# (finite, impossible); T1.tree a tree whose second branch ends at
+# (1e30, 1e30, 1e30); folder.wav a folder. The Pd runs are short (0.5 s)
+# and at one rate. HOSTILE_CASES_ONLY=text narrows them down.
+section "hostile cases: physical ceilings and messages that say what happened"
+python3 - "$HOSTILE/F.wav" <<'PYEOF'
+import struct, sys
+d = bytearray(open("textures/fire.wav", "rb").read())
+p = 12
+while p + 8 <= len(d):
+    size = int.from_bytes(d[p + 4:p + 8], "little")
+    if d[p:p + 4] == b"data":
+        d[p + 8:p + 8 + 4000] = struct.pack("<f", 3e38) * 1000
+        break
+    p += 8 + size + (size & 1)
+open(sys.argv[1], "wb").write(d)
+PYEOF
+{
+    echo "branch 0 -1 0 0 0 0 0 1 0.05 0.04"
+    echo "branch 1 0 0 0 1 1e30 1e30 1e30 0.02 0.02"
+    echo "branch 2 0 0 0 1 0 1 2 0.02 0.02"
+    echo "leaf 2 0 0.5 1.5 0 0.6 1.5 0.05 0.03"
+} >"$HOSTILE/T1.tree"
+rm -rf "$HOSTILE/folder.wav" && mkdir -p "$HOSTILE/folder.wav"
+head -c 1000 textures/cylinder.wav >"$HOSTILE/cut.wav"
+# metadata that contradicts itself, same length as the shipped values
+sed 's/xfade=320/xfade=9e9/' textures/cylinder.wav >"$HOSTILE/xfade.wav"
+H=$ROOT/$HOSTILE
+hostile_cases="
+vortex~ | vortex~ -texture $H/F.wav -n 8 | ; aero-speed 8 | beyond what a flow of that speed can make | 1
+aeolian~ | aeolian~ -texture $H/cut.wav | | !cut.wav: / | -
+vortex~ | vortex~ -texture fire -n 8 | ; aero-speed 8; aero-obj texture $H/F.wav | the previous texture stays | -
+treebranch~ | treebranch~ $H/T1.tree -listener 0 -5 0.5 | ; aero-speed 10 | farther from the tree's foot than any tree reaches | 101325
+aeolian~ | aeolian~ -d 10 -l 1000 -gain 120 -listener 0 0.5 0 | ; aero-speed 100 | output beyond 101325 Pa | 101325
+aeolian~ | aeolian~ | ; aero-obj diameter 1e-05; aero-obj length 1e-05 | !out of range | -
+cavity~ | cavity~ | ; aero-obj length 0.0001 | !out of range | -
+vortex~ | vortex~ -texture fire | ; aero-obj strouhal 0.01 | !out of range | -
+leafwave~ | leafwave~ small | ; aero-obj flutter 0.01 | !out of range | -
+treebranch~ | treebranch~ small | ; aero-obj wind 1e30 0 0 | wind out of range (0..1029 m/s | -
+leafwave~ | leafwave~ small | ; aero-obj tables 128; aero-obj octaves 8 | at most 512 in all (with tables 128: octaves at most 4) | -
+body~ | body~ -texture fire | | it is a vortex texture, for [vortex~] | -
+treebranch~ | treebranch~ $ROOT/textures/sword.wav | | sword.wav is not a tree file | -
+aeolian~ | aeolian~ -texture $H/folder.wav | | is a folder, not a texture file | -
+fieldsound~ | fieldsound~ -demo 1000 -sync | | the demo runs at 32 | -
+fieldsound~ | fieldsound~ -demo 1000 -sync | | !flag -demo ignored | -
+treebranch~ | treebranch~ small | ; aero-obj seed -5 | !out of range | -
+body~ | body~ -texture sphere -listener 0 2 0 | ; aero-speed 1e30 | Mach 0.3 | -
+treebranch~ | treebranch~ small | ; aero-speed 1e30 | Mach 0.3 | -
+aeolian~ | aeolian~ -texture cylinder | ; aero-speed 1e30; aero-obj pose 0 0 -0.1 0 0 0.1; aero-obj wind 5 0 0 | Mach 0.3 | -
+body~ | body~ -texture sphere -listener 0 2 0 | ; aero-speed 0 | Mach 0.3 | - | 100 ; aero-obj pose 0 0 0, 110 ; aero-obj pose 10 0 0, 120 ; aero-obj pose 20 0 0, 130 ; aero-obj pose 30 0 0
+body~ | body~ | | no texture given | -
+aeolian~ | aeolian~ -texture $H/xfade.wav | | xfade=9e+09 frames is not within | -
+treebranch~ | treebranch~ | | no tree given | -
+fieldsound~ | fieldsound~ -demo 8 -sync | ; aero-obj log 5 | log 5 out of range (0..1 | -
+fieldsound~ | fieldsound~ -demo 8 -sync | ; aero-obj velocity 7 | velocity 7 out of range (0..1 | -
+fieldsound~ | fieldsound~ -demo 8 -sync | ; aero-obj speed 1e-30 | speed 1e-30 frames/s out of range (0.001.. | -
+"
+hostile_case_no=0
+printf '%s\n' "$hostile_cases" | grep -v '^[[:space:]]*$' >"$HOSTILE/cases.txt"
+while IFS='|' read -r c_cls c_obj c_init c_want c_peak c_events; do
+    hostile_case_no=$((hostile_case_no + 1))
+    c_cls=$(trim "$c_cls") c_obj=$(trim "$c_obj") c_init=$(trim "$c_init")
+    c_want=$(trim "$c_want") c_peak=$(trim "$c_peak")
+    case "$c_cls" in *"$hostile_only"*) ;; *) continue ;; esac
+    case "$c_obj $c_init $c_want" in *"${HOSTILE_CASES_ONLY:-}"*) ;; *) continue ;; esac
+    case "$c_init" in *aero-speed*) ;; *) c_init="; aero-speed 10$c_init" ;; esac
+    c_name="hostile-case-$hostile_case_no"
+    set --
+    c_old_ifs=$IFS
+    IFS=','
+    for c_e in $c_events; do
+        IFS=$c_old_ifs
+        [ -n "$(trim "$c_e")" ] && set -- "$@" "$(trim "$c_e")"
+        IFS=','
+    done
+    IFS=$c_old_ifs
+    pd_render "$c_name" "$c_obj" 1 500 "$c_init" 0 "$@"
+    c_log="$OUT/$c_name.log"
+    if grep -a -q -e "couldn't create" "$c_log"; then
+        fail "[$c_obj]: not created"
+        continue
+    fi
+    case "$c_want" in
+        !*) if grep -a -q -F -e "${c_want#!}" "$c_log"; then
+                fail "[$c_obj] $c_init: says '${c_want#!}':"
+                grep -a -F -e "${c_want#!}" "$c_log" | head -3 | sed 's/^/        /'
+            else
+                pass "[$c_obj] $c_init: does not say '${c_want#!}'"
+            fi ;;
+        *) if grep -a -F -e "$c_want" "$c_log" | grep -a -q -F -e "[$c_cls]"; then
+                pass "[$c_obj] $c_init: says '$c_want'"
+            else
+                fail "[$c_obj] $c_init: does not say '$c_want'; it says:"
+                grep -a -e "error" "$c_log" | head -4 | sed 's/^/        /'
+            fi ;;
+    esac
+    [ "$c_peak" != "-" ] && judge $ANALYZE finite "$OUT/$c_name.wav" --max "$c_peak"
+done <"$HOSTILE/cases.txt"
+
+# an output in a folder that does not exist: refused before any work, by
+# every aerotex command that writes (each names the folder)
+case "aerotex" in *"$hostile_only"*)
+for c_cmd in "aeolian" "cavity" "object --shape sphere" "vortex" "tree" \
+    "field-demo" "auralize /tmp --path /dev/null"; do
+    c_out=$(build/aerotex $c_cmd -o /nonexistent/x.wav 2>&1)
+    c_rc=$?
+    if [ "$c_rc" -ne 0 ] && printf '%s' "$c_out" |
+        grep -q -F "the folder '/nonexistent' does not exist"; then
+        pass "aerotex $c_cmd -o /nonexistent/x.wav: refused at once (exit $c_rc)"
+    else
+        fail "aerotex $c_cmd -o /nonexistent/x.wav: exit $c_rc, said: $(printf '%s' "$c_out" | tail -2)"
+    fi
+done ;;
+esac

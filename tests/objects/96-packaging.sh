@@ -14,7 +14,10 @@ fi
 classes=$(for c in src/pd/*~.c; do basename "$c" .c; done)
 abstractions=$(cd abstractions && ls *.pd | sed 's/\.pd$//')
 # PACKAGE:EXTENSION:FORMAT:CPU:FLOATSIZE; FORMAT/CPU as binutils name them
-# (objdump -f's file format for Windows, readelf -h's class and machine)
+# (objdump -f's file format for Windows, readelf -h's class and machine),
+# for macOS Mach-O and the architectures llvm-lipo names (PACKAGE is what
+# goes between the name's outer parentheses: several (ARCH) for a
+# universal package)
 packages=""
 for p in $platforms; do
     case "$p" in
@@ -28,6 +31,9 @@ Linux-armv7-32:pd_linux:ELF32:ARM:32" ;;
         windows-amd64) packages="$packages
 Windows-amd64-32:windows-amd64-32.dll:pei-x86-64:-:32
 Windows-amd64-64:windows-amd64-64.dll:pei-x86-64:-:64" ;;
+        darwin) packages="$packages
+Darwin-arm64-32)(Darwin-amd64-32:d_fat:Mach-O:arm64+x86_64:32
+Darwin-arm64-64)(Darwin-amd64-64:darwin-fat-64.so:Mach-O:arm64+x86_64:64" ;;
         *) fail "unknown platform $p in DEKEN_PLATFORMS" ;;
     esac
 done
@@ -38,6 +44,11 @@ foreign_libs() { # BINARY FORMAT
     if [ "$2" = pei-x86-64 ]; then
         objdump -p "$1" 2>/dev/null | awk '/DLL Name:/ { print $3 }' |
             grep -v -i -x -e kernel32.dll -e msvcrt.dll -e pd.dll
+    elif [ "$2" = Mach-O ]; then
+        # every slice's libraries; the first line of each is its own name
+        llvm-otool-14 -L -arch all "$1" 2>/dev/null | grep '^[[:space:]]' |
+            awk '{ print $1 }' | grep -v -x -e "$(basename "$1")" \
+                -e /usr/lib/libSystem.B.dylib | sort -u
     else
         readelf -d "$1" 2>/dev/null | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p' |
             grep -v -x -e libc.so.6 -e libm.so.6 -e libpthread.so.0 -e libdl.so.2 \
@@ -123,7 +134,17 @@ for pkg in $packages Sources; do
     for b in "$x"/aero/*."$ext"; do
         [ -f "$b" ] || continue
         n=$(basename "$b")
-        if [ "$format" = pei-x86-64 ]; then
+        if [ "$format" = Mach-O ]; then
+            # a universal binary holding exactly the package's CPUs;
+            # symbols without Mach-O's leading underscore, both slices
+            a=$(llvm-lipo-14 -archs "$b" 2>/dev/null | tr ' ' '\n' | grep . | LC_ALL=C sort | tr '\n' '+')
+            [ "$a" = "$(echo "$cpu" | tr '+' '\n' | LC_ALL=C sort | tr '\n' '+')" ] ||
+                wrong="$wrong $n:archs-$a"
+            imports=$(llvm-nm-14 -u -j "$b" 2>/dev/null | grep -v -e ':$' -e '^$' |
+                sed 's/^_//' | sort -u)
+            exports=$(llvm-nm-14 -g --defined-only -j "$b" 2>/dev/null |
+                grep -v -e ':$' -e '^$' | sed 's/^_//' | sort -u)
+        elif [ "$format" = pei-x86-64 ]; then
             objdump -f "$b" 2>/dev/null | grep -q "file format $format" ||
                 wrong="$wrong $n:not-$format"
             info=$(objdump -p "$b" 2>/dev/null)
@@ -196,11 +217,14 @@ fi
 # the package of this Pd's float size, unpacked into a fresh folder as
 # deken does: every help patch opens from there, with nothing else on the
 # path (externals, abstractions, textures and trees from the package)
+# (when the Linux amd64 packages are among those made)
 fs=${PD_FLOATSIZE:-32}
 unpacked=$OUT/deken-$fs
 rm -rf "$unpacked"
 mkdir -p "$unpacked"
-if unzip -q "$D/aero[v$version](Linux-amd64-$fs).dek" -d "$unpacked" 2>"$OUT/deken-unzip.log"; then
+if ! echo " $platforms " | grep -q " linux-amd64 "; then
+    :
+elif unzip -q "$D/aero[v$version](Linux-amd64-$fs).dek" -d "$unpacked" 2>"$OUT/deken-unzip.log"; then
     for p in "$unpacked"/aero/*-help.pd; do
         [ -f "$p" ] || continue
         log="$OUT/deken-$fs-$(basename "$p" .pd).log"

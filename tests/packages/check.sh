@@ -8,7 +8,7 @@
 #     in a minimal Debian 12 with only Pd.
 # Ends with `N passed, N failed` over both. Run from the repository root
 # after `make all lib double` (the negative control installs those).
-DEKEN_PLATFORMS=${DEKEN_PLATFORMS:-linux-amd64 linux-arm64 linux-armv7 windows-amd64}
+DEKEN_PLATFORMS=${DEKEN_PLATFORMS:-linux-amd64 linux-arm64 linux-armv7 windows-amd64 darwin}
 OUTDIR=build/tests/out-packages
 start=$(date +%s)
 mkdir -p build/tests

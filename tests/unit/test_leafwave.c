@@ -1,7 +1,7 @@
 /* unit tests of src/core/play/leafwave.c: the leaves of Matsuyama et al. 2005
  * (wave tables f_i = fm 2^(i/N), the per-pair state machine of fig. 12,
  * collisions as onsets, wind dependence, determinism by seed, neighbour lists
- * by hashing against brute force, 1/r and the cardioid microphone). */
+ * from the k-d tree against brute force, 1/r and the cardioid microphone). */
 #include "../../src/core/play/leafwave.h"
 #include "unit.h"
 #include "multi_instance.h"
@@ -464,7 +464,7 @@ UNIT_TEST(centroid_follows_size)
     aero_leafwave_free(&b);
 }
 
-/* the hashed neighbour lists equal a brute-force search */
+/* the k-d tree's neighbour lists equal a brute-force search */
 UNIT_TEST(neighbours)
 {
     aero_leafwave lw;
@@ -516,7 +516,7 @@ UNIT_TEST(neighbours)
         extra += in_list[k] && !want[k];
     }
     UNIT_CHECK(missing == 0 && extra == 0 && brute_pairs == lw.npairs,
-               "hashed neighbour lists = brute force: %d pairs, %d missing, "
+               "k-d tree neighbour lists = brute force: %d pairs, %d missing, "
                "%d extra", lw.npairs, missing, extra);
     free(in_list);
     free(want);
@@ -684,4 +684,56 @@ UNIT_TEST(multi_instance)
                         mi_drop);
 }
 
-UNIT_MAIN(UNIT_CASE(table_frequencies), UNIT_CASE(state_machine), UNIT_CASE(still_air), UNIT_CASE(collision_onset), UNIT_CASE(wind), UNIT_CASE(friction_rate), UNIT_CASE(seed), UNIT_CASE(in_step), UNIT_CASE(centroid_follows_size), UNIT_CASE(neighbours), UNIT_CASE(rendering), UNIT_CASE(bad_input), UNIT_CASE(multi_instance))
+/* 20,000 leaves at one spot (a hostile file): every leaf keeps exactly
+   its AERO_LEAF_MAX_NEIGHBOURS (all at distance 0, all within reach) and
+   the list has each pair once. A spatial hash put them all in one cell and
+   compared every leaf with every other: O(n^2). */
+UNIT_TEST(neighbours_one_spot)
+{
+    const int n = 20000;
+    aero_tree t;
+    aero_leafwave lw;
+    char err[256] = "";
+    memset(&t, 0, sizeof t);
+    t.nbranches = 1;
+    t.branches = calloc(1, sizeof *t.branches);
+    t.nleaves = n;
+    t.leaves = calloc((size_t)n, sizeof *t.leaves);
+    UNIT_CHECK(t.branches && t.leaves, "memory");
+    if (!t.branches || !t.leaves)
+        return;
+    t.branches[0].parent = -1;
+    t.branches[0].b[2] = 1.0;
+    t.branches[0].d0 = t.branches[0].d1 = 0.1;
+    for (int i = 0; i < n; i++) {
+        aero_leaf *l = &t.leaves[i];
+        l->s[2] = l->e[2] = 0.5;
+        l->e[1] = 0.05;
+        l->length = 0.1;
+        l->width = 0.05;
+        l->along = 0.5;
+    }
+    UNIT_CHECK(aero_leafwave_init(&lw, 48000.0, 1, 1) == 0, "init");
+    int rc = aero_leafwave_set_tree(&lw, &t, err, sizeof err);
+    UNIT_CHECK(rc == 0, "20,000 leaves at one spot load (%s)", err);
+    int *count = calloc((size_t)n, sizeof(int)), fewer = 0, repeats = 0;
+    for (int p = 0; rc == 0 && count && p < lw.npairs; p++) {
+        count[lw.pairs[p].i]++;
+        count[lw.pairs[p].j]++;
+        if (p > 0 && lw.pairs[p].i == lw.pairs[p - 1].i &&
+            lw.pairs[p].j == lw.pairs[p - 1].j)
+            repeats++;
+    }
+    for (int i = 0; rc == 0 && count && i < n; i++)
+        fewer += count[i] < AERO_LEAF_MAX_NEIGHBOURS;
+    UNIT_CHECK(rc == 0 && fewer == 0 && repeats == 0 &&
+                   lw.npairs >= n * AERO_LEAF_MAX_NEIGHBOURS / 2 &&
+                   lw.npairs <= n * AERO_LEAF_MAX_NEIGHBOURS,
+               "each leaf in at least %d pairs (%d leaves short), %d pairs, "
+               "%d repeated", AERO_LEAF_MAX_NEIGHBOURS, fewer, lw.npairs,
+               repeats);
+    free(count);
+    aero_leafwave_free(&lw);
+}
+
+UNIT_MAIN(UNIT_CASE(table_frequencies), UNIT_CASE(state_machine), UNIT_CASE(still_air), UNIT_CASE(collision_onset), UNIT_CASE(wind), UNIT_CASE(friction_rate), UNIT_CASE(seed), UNIT_CASE(in_step), UNIT_CASE(centroid_follows_size), UNIT_CASE(neighbours), UNIT_CASE(neighbours_one_spot), UNIT_CASE(rendering), UNIT_CASE(bad_input), UNIT_CASE(multi_instance))

@@ -221,4 +221,51 @@ UNIT_TEST(loop)
     free(x);
 }
 
-UNIT_MAIN(UNIT_CASE(round_trip), UNIT_CASE(bad_files), UNIT_CASE(resample), UNIT_CASE(loop))
+/* The physical ceiling (texture.c): every shipped texture loads, its
+   largest sample at least 100 times below its channel's bound (the bound
+   is generous, not tuned to admit them), and a finite but impossible
+   sample (3e38, a corrupt file) is refused naming its file and channel. */
+UNIT_TEST(ceiling)
+{
+    static const char *shipped[] = {"cavity", "club", "cylinder", "fire",
+                                    "sphere", "square", "sword"};
+    char path[256], err[512];
+    printf("physical ceiling\n");
+    for (int i = 0; i < (int)(sizeof shipped / sizeof *shipped); i++) {
+        aero_texture t;
+        double worst = 0.0;
+        snprintf(path, sizeof path, "textures/%s.wav", shipped[i]);
+        err[0] = 0;
+        if (aero_texture_load(path, &t, err, sizeof err)) {
+            UNIT_CHECK(0, "%s loads: %s", path, err);
+            continue;
+        }
+        for (int c = 0; c < t.channels; c++) {
+            double lim = aero_texture_ceiling(&t, c), peak = 0.0;
+            for (long n = 0; n < t.frames; n++) {
+                double y = fabs(t.data[(size_t)n * t.channels + c]);
+                peak = y > peak ? y : peak;
+            }
+            worst = peak / lim > worst ? peak / lim : worst;
+        }
+        printf("  %-9s largest sample / ceiling %.2e\n", shipped[i], worst);
+        UNIT_CHECK(worst < 0.01, "%s: largest sample / ceiling %g < 0.01",
+                   path, worst);
+        /* the same file with one impossible sample in channel 2 */
+        int two = t.channels > 1;
+        t.data[(size_t)5 * t.channels + two] = 3e38f;
+        snprintf(path, sizeof path, DIR "tex_ceiling_%s.wav", shipped[i]);
+        UNIT_CHECK(aero_texture_save(path, &t, err, sizeof err) == 0,
+                   "saved %s", path);
+        aero_texture_free(&t);
+        err[0] = 0;
+        UNIT_CHECK(aero_texture_load(path, &t, err, sizeof err) != 0 &&
+                       strstr(err, path) &&
+                       strstr(err, two ? "channel 2" : "channel 1"),
+                   "3e38 refused naming the file and channel: %s", err);
+        remove(path);
+    }
+}
+
+UNIT_MAIN(UNIT_CASE(round_trip), UNIT_CASE(bad_files), UNIT_CASE(resample),
+          UNIT_CASE(loop), UNIT_CASE(ceiling))

@@ -303,4 +303,118 @@ UNIT_TEST(round_trip_and_generator)
     }
 }
 
-UNIT_MAIN(UNIT_CASE(parse_good), UNIT_CASE(parse_bad_lines), UNIT_CASE(parse_empty), UNIT_CASE(long_line), UNIT_CASE(round_trip_and_generator))
+/* ids that are not the indices (each a multiple of 2^20, the last of a
+   20,000-branch chain first in no order): every parent, leaf and repeat
+   found by id (the parser looks ids up in a table, not by a search per
+   record: a 200,000-branch chain took a minute) */
+UNIT_TEST(parse_any_ids)
+{
+    const int n = 20000;
+    size_t cap = (size_t)n * 80 + 200, len = 0;
+    char *text = malloc(cap);
+    aero_tree t;
+    reports r = {0};
+    char err[256] = "";
+    int i, wrong = 0;
+    UNIT_CHECK(text != NULL, "memory");
+    if (!text)
+        return;
+    for (i = 0; i < n; i++) {
+        long id = (long)(n - i) * 1048576L % 2147483647L;
+        long parent = i ? (long)(n - i + 1) * 1048576L % 2147483647L : -1;
+        len += (size_t)snprintf(text + len, cap - len,
+                                "branch %ld %ld 0 0 %g 0 0 %g 0.1 0.1\n", id,
+                                parent, i * 0.005, (i + 1) * 0.005);
+    }
+    len += (size_t)snprintf(text + len, cap - len,
+                            "leaf %ld 0 0 0.5 0 0.1 0.5 0.1 0.05\n"
+                            "branch %ld -1 0 0 0 0 0 1 0.1 0.1\n",
+                            (long)n * 1048576L % 2147483647L,
+                            (long)5 * 1048576L % 2147483647L);
+    int rc = aero_tree_parse(text, &t, collect, &r, err, sizeof err);
+    UNIT_CHECK(rc == 0 && t.nbranches == n && t.nleaves == 1,
+               "a %d-branch chain with ids k 2^20 parses (rc %d, %d branches, "
+               "%d leaves)", n, rc, t.nbranches, t.nleaves);
+    for (i = 1; rc == 0 && i < n; i++)
+        if (t.branches[i].parent != i - 1)
+            wrong++;
+    UNIT_CHECK(rc == 0 && wrong == 0 && t.branches[0].parent == -1,
+               "every parent is the branch before (%d wrong)", wrong);
+    UNIT_CHECK(rc == 0 && t.leaves[0].branch == 0,
+               "the leaf is on the branch its id names (%d)",
+               rc == 0 ? t.leaves[0].branch : -1);
+    UNIT_CHECK(r.count == 1 && reported(&r, n + 2) &&
+                   strstr(r.last, "used twice") != NULL,
+               "a repeated id is reported on its line (%d reports, last: %s)",
+               r.count, r.last);
+    if (rc == 0)
+        aero_tree_free(&t);
+    free(text);
+}
+
+/* The physical ceiling (tree.c): finite sizes no tree has are refused line
+   by line, against the largest trees measured (the tallest ~116 m, Koch et
+   al. 2004; the widest trunk ~11 m, Van Pelt 2001), while the biggest real
+   tree still loads, and so do the shipped trees and the generator's
+   largest. */
+UNIT_TEST(physical_ceiling)
+{
+    const char *text =
+        "branch 0 -1 0 0 0 0 0 1 0.05 0.04\n"                    /* 1 ok */
+        "branch 1 0 0 0 1 1e30 1e30 1e30 0.02 0.02\n"            /* 2 far */
+        "branch 2 1 0 0 1 0 1 2 0.02 0.02\n"                     /* 3 parent */
+        "branch 3 0 0 0 1 0 0 10001 0.05 0.04\n"                 /* 4 long */
+        "branch 4 0 0 0 1 0 1 2 30 0.02\n"                       /* 5 wide */
+        "leaf 0 0 0 0.5 0.1 0 0.5 40 0.03\n"                     /* 6 blade */
+        "leaf 0 0 0 0.5 -250 0 0.5 0.05 0.03\n"                  /* 7 far */
+        /* a General Sherman: 84 m, 11 m at the foot; a 25 m leaf */
+        "branch 5 -1 10 0 0 10 0 84 11 1\n"                      /* 8 ok */
+        "leaf 5 10 0 50 12 0 50 25 2\n";                         /* 9 ok */
+    int bad[] = {2, 3, 4, 5, 6, 7};
+    aero_tree t;
+    reports r = {0};
+    char err[256] = "";
+    printf("physical ceiling\n");
+    UNIT_CHECK(aero_tree_parse(text, &t, collect, &r, err, sizeof err) == 0,
+               "loads: %s", err);
+    UNIT_CHECK(r.count == 6, "6 lines refused (got %d; last: %s)", r.count,
+               r.last);
+    for (int i = 0; i < 6; i++)
+        UNIT_CHECK(reported(&r, bad[i]), "line %d refused", bad[i]);
+    UNIT_CHECK(!reported(&r, 8) && !reported(&r, 9),
+               "the largest real tree and leaf load");
+    UNIT_CHECK(t.nbranches == 2 && t.nleaves == 1,
+               "2 branches and 1 leaf kept (got %d, %d)", t.nbranches,
+               t.nleaves);
+    aero_tree_free(&t);
+    static const char *shipped[] = {"trees/small.tree", "trees/medium.tree",
+                                    "trees/large.tree"};
+    for (int i = 0; i < 3; i++) {
+        reports s = {0};
+        UNIT_CHECK(aero_tree_load(shipped[i], &t, collect, &s, err,
+                                  sizeof err) == 0 && s.count == 0,
+                   "%s: no line refused (%d)", shipped[i], s.count);
+        aero_tree_free(&t);
+    }
+    /* the generator's largest tree, on a few seeds */
+    for (uint32_t seed = 1; seed <= 4; seed++) {
+        aero_tree_shape sh = {8, 2000, AERO_TREE_GENERATE_HEIGHT_MAX, 1.0,
+                              0.1, 0.05, seed};
+        double far = 0.0;
+        UNIT_CHECK(aero_tree_generate(&t, &sh) == 0, "generated");
+        for (int b = 0; b < t.nbranches; b++)
+            for (int k = 0; k < 3; k++) {
+                far = fabs(t.branches[b].a[k]) > far ? fabs(t.branches[b].a[k])
+                                                     : far;
+                far = fabs(t.branches[b].b[k]) > far ? fabs(t.branches[b].b[k])
+                                                     : far;
+            }
+        UNIT_CHECK(far <= AERO_TREE_REACH_MAX,
+                   "seed %u: the generator's farthest point %g m <= %d m",
+                   (unsigned)seed, far, AERO_TREE_REACH_MAX);
+        aero_tree_free(&t);
+    }
+}
+
+UNIT_MAIN(UNIT_CASE(parse_any_ids), UNIT_CASE(parse_good), UNIT_CASE(parse_bad_lines), UNIT_CASE(parse_empty), UNIT_CASE(long_line), UNIT_CASE(round_trip_and_generator),
+          UNIT_CASE(physical_ceiling))

@@ -2,6 +2,7 @@
 #ifndef AERO_UTIL_H
 #define AERO_UTIL_H
 
+#include "aero_air.h"
 #include "aero_ranges.h"
 
 #include <math.h>
@@ -89,6 +90,22 @@ static inline uint32_t aero_run_seed(uint32_t seed, int k)
 }
 
 /* neither NaN nor infinite (works without isfinite's C99 math macros) */
+/* A speed from a signal inlet, the one policy of every player: NaN is 0;
+   a speed beyond Mach 0.3 (1e30, an infinity included) is clamped to it
+   and *clamped set, for the player's one report (never silence for a
+   loud input). */
+static inline float aero_speed_in(float v, int *clamped)
+{
+    const float lim = (float)(AERO_MACH_LIMIT * AERO_C0);
+    if (!(v == v))
+        return 0.0f;
+    if (v > lim || v < -lim) {
+        *clamped = 1;
+        return v > 0.0f ? lim : -lim;
+    }
+    return v;
+}
+
 static inline int aero_is_finite(double v)
 {
     return v == v && v < 1e300 && v > -1e300;

@@ -354,6 +354,9 @@ static int read_speeds(aero_texture *t, int n, const char *path, char *err,
 
 /* the rest of a vortex texture's load (meta read; the file is reopened):
    one channel per speed, speeds= increasing and positive */
+static int check_ceiling(const aero_texture *t, const char *path, char *err,
+                         size_t errlen);
+
 static int load_vortex(const char *path, aero_texture *t, const SF_INFO *in,
                        char *err, size_t errlen)
 {
@@ -372,7 +375,8 @@ static int load_vortex(const char *path, aero_texture *t, const SF_INFO *in,
         snprintf(err, errlen, "can't read %s", path);
         goto fail;
     }
-    if (read_samples(f, t, path, err, errlen))
+    if (read_samples(f, t, path, err, errlen) ||
+        check_ceiling(t, path, err, errlen))
         goto fail;
     sf_close(f);
     return 0;
@@ -380,6 +384,132 @@ fail:
     if (f) sf_close(f);
     aero_texture_free(t);
     return -1;
+}
+
+/* --- the physical ceiling of a texture's samples ---------------------------
+ * A file holds finite floats that no flow could have made (a corrupt or
+ * hostile file: 3e38 is finite). Each sample is held to the most that the
+ * metadata's body and speed allow, times a margin; the shipped textures sit
+ * 120 (square.wav) to 20000 times below their bound (test_texture.c checks
+ * at least 100), a corrupt sample many decades above it.
+ *
+ * Force textures (aeolian, cavity: g = dF/dt per unit span, N/(m s);
+ * object: N/s per region): the force is at most 0.5 rho v0^2 A C_F with
+ * A = d (per unit span) or the body's frontal box d x (d + 2 max|centre|)
+ * (object), and C_F <= AERO_TEXTURE_FORCE_COEFF_MAX, five times the largest
+ * fluctuating force coefficients of bluff sections in the measured data
+ * (about 2: a square cylinder, Lyn et al. 1995; a plate broadside, Fage
+ * and Johansen 1927; a circular cylinder's peak lift, Norberg 2003). A
+ * signal band-limited to rate/2 changes at most pi rate times its largest
+ * value (Bernstein's inequality), so |g| <= pi rate F_max. d is the
+ * diameter (cavity: its length), 10 m when the file does not say (the
+ * largest body [aeolian~] takes).
+ *
+ * Vortex textures (Q(u, t), Pa at 1 m): Howe's compact vortex sound
+ * (Howe 2003) Q = rho / (12 pi c0^2) d3/dt3 INT y (y x omega) dy scales as
+ * rho u^4 L / (12 pi c0^2) for eddies of the box L at speed u; the margin
+ * AERO_TEXTURE_VORTEX_MARGIN covers eddies smaller than the box and the
+ * peaks of a turbulent signal (fire.wav peaks at 11 to 16 times the
+ * scaling). L is the metadata's box, 100 m when missing (the longest
+ * [vortex~] length). And no Q beyond 1 atm x 1 m (101325 Pa m): no sound
+ * in air exceeds the ambient pressure. */
+#define AERO_TEXTURE_FORCE_COEFF_MAX 10.0
+#define AERO_TEXTURE_VORTEX_MARGIN 1e4
+#define AERO_TEXTURE_AMBIENT_PA 101325.0
+
+/* the largest distance of an object texture's region centres from its
+   origin ("x,y,z;x,y,z..."), 0 when there are none */
+static double centres_reach(const char *c)
+{
+    double reach = 0.0;
+    while (c && *c && *c != '\n') {
+        double v[3] = {0, 0, 0};
+        for (int k = 0; k < 3; k++) {
+            char *end;
+            v[k] = strtod(c, &end);
+            if (end == c)
+                return reach;
+            c = end;
+            if (*c == ',')
+                c++;
+        }
+        double r = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        if (r > reach && r < 1e6)
+            reach = r;
+        if (*c == ';')
+            c++;
+    }
+    return reach;
+}
+
+double aero_texture_ceiling(const aero_texture *t, int channel)
+{
+    char kind[32];
+    double rho = aero_texture_getd(t, "rho", AERO_RHO);
+    if (!(rho > 0.0 && rho < 100.0))
+        rho = AERO_RHO;
+    if (!aero_texture_get(t, "kind", kind, sizeof kind))
+        kind[0] = '\0';
+    if (t->speeds) {
+        double c0 = aero_texture_getd(t, "c0", AERO_C0);
+        double box = aero_texture_getd(t, "box", 100.0);
+        double u = t->speeds[channel];
+        if (!(c0 > 1.0 && c0 < 1e4))
+            c0 = AERO_C0;
+        if (!(box > 0.0 && box <= 100.0))
+            box = 100.0;
+        double q = AERO_TEXTURE_VORTEX_MARGIN * rho * u * u * u * u * box /
+                   (12.0 * AERO_PI * c0 * c0);
+        return q < AERO_TEXTURE_AMBIENT_PA ? q : AERO_TEXTURE_AMBIENT_PA;
+    }
+    double v0 = aero_texture_getd(t, "v0", 0.0);
+    double d = aero_texture_getd(t, "diameter",
+                                 aero_texture_getd(t, "length", 10.0));
+    if (!(d > 0.0 && d <= 10.0))
+        d = 10.0;
+    double area = d;
+    if (!strcmp(kind, "object"))
+        area = d * (d + 2.0 * centres_reach(value_of(t, "centres")));
+    return AERO_PI * t->rate * 0.5 * rho * v0 * v0 * area *
+           AERO_TEXTURE_FORCE_COEFF_MAX;
+}
+
+/* every sample within its channel's ceiling: 0, or -1 naming the first
+   one beyond; and the loop's cross-fade, when stated, within the file */
+static int check_ceiling(const aero_texture *t, const char *path, char *err,
+                         size_t errlen)
+{
+    double xfade = aero_texture_getd(t, "xfade", 0.0);
+    if (!(xfade >= 0.0 && xfade <= t->frames)) {
+        snprintf(err, errlen, "%s: xfade=%g frames is not within the file's "
+                 "%d frames", path, xfade, t->frames);
+        return -1;
+    }
+    for (int c = 0; c < t->channels; c++) {
+        double lim = aero_texture_ceiling(t, c);
+        for (long n = 0; n < t->frames; n++) {
+            double y = t->data[(size_t)n * t->channels + c];
+            if (fabs(y) <= lim)
+                continue;
+            if (t->speeds)
+                snprintf(err, errlen, "%s: channel %d (%g m/s), frame %ld: "
+                         "%g Pa at 1 m is beyond what a flow of that speed "
+                         "can make (at most %.3g: Howe's vortex sound "
+                         "scaling; see texture.c)", path, c + 1,
+                         t->speeds[c], n, y, lim);
+            else
+                snprintf(err, errlen, "%s: channel %d, frame %ld: %g is "
+                         "beyond what its body at v0 = %g m/s can make (at "
+                         "most %.3g %s: a force coefficient of %g at every "
+                         "frequency up to rate/2; see texture.c)", path,
+                         c + 1, n, y,
+                         aero_texture_getd(t, "v0", 0.0), lim,
+                         strstr(t->meta, "kind=object") ? "N/s" : "N/(m s)",
+                         AERO_TEXTURE_FORCE_COEFF_MAX);
+            return -1;
+        }
+    }
+    return 0;
 }
 
 /* opens a texture file and copies its metadata into t->meta (one key per
@@ -483,6 +613,8 @@ int aero_texture_load(const char *path, aero_texture *t, char *err,
         snprintf(err, errlen, "%s: missing or bad v0", path);
         goto fail;
     }
+    if (check_ceiling(t, path, err, errlen))
+        goto fail;
     sf_close(f);
     return 0;
 fail:
@@ -564,4 +696,29 @@ void aero_texture_crossfade(float *x, int channels, int len, int xfade)
             x[a] = w * x[a] + (1.0f - w) * x[b];
         }
     }
+}
+
+/* --- the wrong kind of texture --------------------------------------------- */
+
+int aero_texture_wrong_kind(const aero_texture *t, const char *want,
+                            char *err, size_t errlen)
+{
+    static const char *const players[][2] = {
+        {"aeolian", "[aeolian~]"}, {"object", "[body~]"},
+        {"vortex", "[vortex~]"}, {"cavity", "[cavity~]"}};
+    const char *kind = t->head.kind, *player = NULL;
+    if (!strcmp(kind, want))
+        return 0;
+    for (size_t k = 0; k < sizeof players / sizeof *players; k++)
+        if (!strcmp(kind, players[k][0]))
+            player = players[k][1];
+    if (player)
+        snprintf(err, errlen, "not %s %s texture: it is %s %s texture, for "
+                 "%s", want[0] == 'a' || want[0] == 'o' ? "an" : "a", want,
+                 kind[0] == 'a' || kind[0] == 'o' ? "an" : "a", kind, player);
+    else
+        snprintf(err, errlen, "not %s %s texture (kind=%s)",
+                 want[0] == 'a' || want[0] == 'o' ? "an" : "a", want,
+                 kind[0] ? kind : "missing");
+    return -1;
 }

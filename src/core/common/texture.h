@@ -68,6 +68,15 @@ int aero_texture_init_speeds(aero_texture *t, int frames, int nspeeds,
 /* reads and validates a texture: 0, or -1 with a message in err */
 int aero_texture_load(const char *path, aero_texture *t, char *err,
                       size_t errlen);
+/* the largest |sample| a flow can put in channel `channel` of t, from its
+   metadata's body, speed and rate (texture.c says how and why): the
+   loader refuses a file with a sample beyond it */
+double aero_texture_ceiling(const aero_texture *t, int channel);
+/* 0 when t is of the kind `want` ("object"); else -1 with a message that
+   names its kind and the object that plays it ("not an object texture: it
+   is a vortex texture, for [vortex~]") */
+int aero_texture_wrong_kind(const aero_texture *t, const char *want,
+                            char *err, size_t errlen);
 /* writes it (float WAV, metadata in the comment): 0, or -1 with a message */
 int aero_texture_save(const char *path, const aero_texture *t, char *err,
                       size_t errlen);

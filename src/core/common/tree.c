@@ -37,18 +37,69 @@ static int grow(void **p, int *cap, int need, size_t elem)
     return 0;
 }
 
-/* index of the branch with this id, or -1. Ids written by aerotex are the
-   indices themselves, so that is tried first; otherwise a linear search
-   (load time only). */
-static int find_branch(const aero_tree *t, long id)
+/* ---- branch ids -> indices --------------------------------------------- */
+
+/* Ids are any non-negative integers, so a parser finds a branch by its id
+   in an open-addressing hash table (slot = index + 1, 0 empty), kept at
+   most half full: O(1) expected per lookup, so a file of n branches and
+   leaves parses in O(n) whatever its ids (a linear search per record made a
+   200,000-branch chain take a minute). */
+typedef struct {
+    int *slot;
+    unsigned mask; /* table size - 1, a power of two; 0 before the first */
+    int count;
+} id_index;
+
+/* Murmur3's finaliser (aero_scramble32): every bit of the id moves every
+   bit of the slot, so regular ids (multiples of a power of two, a chain
+   counting by 1000) spread like any others */
+static unsigned id_hash(long id, unsigned mask)
 {
-    int i;
-    if (id >= 0 && id < t->nbranches && t->branches[id].id == id)
-        return (int)id;
-    for (i = 0; i < t->nbranches; i++)
+    return aero_scramble32((uint32_t)id) & mask;
+}
+
+/* index of the branch with this id, or -1 */
+static int find_branch(const aero_tree *t, const id_index *ix, long id)
+{
+    unsigned h;
+    if (!ix->mask)
+        return -1;
+    for (h = id_hash(id, ix->mask); ix->slot[h]; h = (h + 1) & ix->mask) {
+        int i = ix->slot[h] - 1;
         if (t->branches[i].id == id)
             return i;
+    }
     return -1;
+}
+
+static void id_put(const aero_tree *t, id_index *ix, int i)
+{
+    unsigned h = id_hash(t->branches[i].id, ix->mask);
+    while (ix->slot[h])
+        h = (h + 1) & ix->mask;
+    ix->slot[h] = i + 1;
+}
+
+/* branch i (already in t) into the index; 0 or -1 (out of memory) */
+static int id_add(const aero_tree *t, id_index *ix, int i)
+{
+    if (2u * (unsigned)(ix->count + 1) > ix->mask) {
+        unsigned size = ix->mask ? 2u * (ix->mask + 1) : 64u, k;
+        int *old = ix->slot;
+        unsigned oldsize = ix->mask ? ix->mask + 1 : 0;
+        int *slot = calloc(size, sizeof *slot);
+        if (!slot)
+            return -1;
+        ix->slot = slot;
+        ix->mask = size - 1;
+        for (k = 0; k < oldsize; k++)
+            if (old[k])
+                id_put(t, ix, old[k] - 1);
+        free(old);
+    }
+    id_put(t, ix, i);
+    ix->count++;
+    return 0;
 }
 
 /* ---- parsing ------------------------------------------------------------ */
@@ -105,6 +156,7 @@ static double project_along(const double a[3], const double b[3],
 typedef struct {
     aero_tree *t;
     int bcap, lcap;
+    id_index ids;
     aero_tree_report report;
     void *ctx;
 } parser;
@@ -128,6 +180,51 @@ static int parse_geometry(parser *p, int line, char **f, double v[8],
     }
     if (!(dist3(v, v + 3) > 0.0)) {
         report_line(p->report, p->ctx, line, zero, "");
+        return -1;
+    }
+    return 0;
+}
+
+/* --- the physical ceiling of a tree's geometry -----------------------------
+ * Finite numbers no tree has (a corrupt or hostile file: a branch ending at
+ * 1e30 m) are refused line by line, like any bad record, against the sizes
+ * of the largest trees measured, with a margin (tree.h states the limits):
+ * the tallest trees, coast redwoods, reach about 116 m and cannot grow
+ * beyond 122-130 m (Koch et al. 2004), so every point lies within
+ * AERO_TREE_REACH_MAX of the origin (the tree's foot) and no branch is
+ * longer; the widest trunks measure about 11 m across at the ground
+ * (General Sherman; Van Pelt 2001); the longest leaves known, of raffia
+ * palms, are commonly given as about 25 m (no survey at hand to cite).
+ * 0, or -1 reported. */
+static int tree_physical_bounds(parser *p, int line, const double v[8],
+                                int leaf)
+{
+    for (int k = 0; k < 6; k++)
+        if (!(fabs(v[k]) <= AERO_TREE_REACH_MAX)) {
+            char num[64];
+            snprintf(num, sizeof num, "%g", v[k]);
+            report_line(p->report, p->ctx, line,
+                        "coordinate %s m is farther from the tree's foot than "
+                        "any tree reaches (at most " AERO_TREE_STR(
+                            AERO_TREE_REACH_MAX) " m)", num);
+            return -1;
+        }
+    double len = dist3(v, v + 3);
+    double size_max = leaf ? AERO_TREE_LEAF_MAX : AERO_TREE_DIAMETER_MAX;
+    if (!(len <= AERO_TREE_REACH_MAX) || !(v[6] <= size_max) ||
+        !(v[7] <= size_max)) {
+        char num[128];
+        snprintf(num, sizeof num, leaf ? "with a stalk of %g m and a blade of "
+                 "%g x %g m" : "of %g m, %g to %g m across", len, v[6], v[7]);
+        report_line(p->report, p->ctx, line,
+                    leaf ? "leaf %s: larger than any leaf (a stalk of at most "
+                           AERO_TREE_STR(AERO_TREE_REACH_MAX) " m, a blade "
+                           "of at most " AERO_TREE_STR(AERO_TREE_LEAF_MAX)
+                           " m)"
+                         : "branch %s: larger than any tree's (at most "
+                           AERO_TREE_STR(AERO_TREE_REACH_MAX) " m long, "
+                           AERO_TREE_STR(AERO_TREE_DIAMETER_MAX)
+                           " m across)", num);
         return -1;
     }
     return 0;
@@ -159,13 +256,14 @@ static int parse_branch(parser *p, int line, char **f, int nf)
     }
     if (parse_geometry(p, line, f + 3, v,
                        "branch diameters must be positive%s",
-                       "branch has zero length (start = end)%s"))
+                       "branch has zero length (start = end)%s") ||
+        tree_physical_bounds(p, line, v, 0))
         return -1;
-    if (find_branch(t, id) >= 0) {
+    if (find_branch(t, &p->ids, id) >= 0) {
         report_line(p->report, p->ctx, line, "branch id %s used twice", f[1]);
         return -1;
     }
-    if (ref >= 0 && (parent = find_branch(t, ref)) < 0) {
+    if (ref >= 0 && (parent = find_branch(t, &p->ids, ref)) < 0) {
         report_line(p->report, p->ctx, line,
                     "parent %s is not an earlier branch", f[2]);
         return -1;
@@ -180,6 +278,10 @@ static int parse_branch(parser *p, int line, char **f, int nf)
     memcpy(b->b, v + 3, sizeof b->b);
     b->d0 = v[6];
     b->d1 = v[7];
+    if (id_add(t, &p->ids, t->nbranches - 1)) {
+        t->nbranches--;
+        return -2;
+    }
     return 0;
 }
 
@@ -198,7 +300,7 @@ static int parse_leaf(parser *p, int line, char **f, int nf)
         return -1;
     }
     if (parse_long(f[1], &ref) || ref < 0 || ref > 2147483647L
-        || (bi = find_branch(t, ref)) < 0) {
+        || (bi = find_branch(t, &p->ids, ref)) < 0) {
         report_line(p->report, p->ctx, line,
                     "leaf on unknown branch '%s' (a branch id given above)",
                     f[1]);
@@ -206,7 +308,8 @@ static int parse_leaf(parser *p, int line, char **f, int nf)
     }
     if (parse_geometry(p, line, f + 2, v,
                        "leaf length and width must be positive%s",
-                       "leaf stalk has zero length (start = end)%s"))
+                       "leaf stalk has zero length (start = end)%s") ||
+        tree_physical_bounds(p, line, v, 1))
         return -1;
     if (grow((void **)&t->leaves, &p->lcap, t->nleaves + 1,
              sizeof *t->leaves))
@@ -285,11 +388,13 @@ int aero_tree_parse(const char *text, aero_tree *t, aero_tree_report report,
             continue;
         }
         if (parse_record(&p, line, f, nf) == -2) {
+            free(p.ids.slot);
             aero_tree_free(t);
             set_err(err, errlen, "out of memory%s", NULL);
             return -1;
         }
     }
+    free(p.ids.slot);
     if (t->nbranches == 0) {
         aero_tree_free(t);
         set_err(err, errlen, "no valid branch in the tree%s", NULL);
@@ -508,6 +613,10 @@ static int valid_shape(const aero_tree_shape *sh)
     return sh->depth >= 0 && sh->depth <= 12 && sh->leaves >= 0
         && sh->leaves <= 10000000 && sh->height > 0.0 && sh->diameter > 0.0
         && sh->leaf_length > 0.0 && sh->leaf_width > 0.0
+        && sh->height <= AERO_TREE_GENERATE_HEIGHT_MAX
+        && sh->diameter <= AERO_TREE_DIAMETER_MAX
+        && sh->leaf_length <= AERO_TREE_LEAF_MAX
+        && sh->leaf_width <= AERO_TREE_LEAF_MAX
         && aero_is_finite(sh->height) && aero_is_finite(sh->diameter)
         && aero_is_finite(sh->leaf_length) && aero_is_finite(sh->leaf_width);
 }
@@ -553,4 +662,28 @@ int aero_tree_generate(aero_tree *t, const aero_tree_shape *shape)
 oom:
     aero_tree_free(t);
     return -1;
+}
+
+int aero_tree_copy(aero_tree *dst, const aero_tree *src)
+{
+    memset(dst, 0, sizeof *dst);
+    if (src->nbranches > 0) {
+        dst->branches = malloc(sizeof *dst->branches * (size_t)src->nbranches);
+        if (!dst->branches)
+            return -1;
+        memcpy(dst->branches, src->branches,
+               sizeof *dst->branches * (size_t)src->nbranches);
+    }
+    if (src->nleaves > 0) {
+        dst->leaves = malloc(sizeof *dst->leaves * (size_t)src->nleaves);
+        if (!dst->leaves) {
+            aero_tree_free(dst);
+            return -1;
+        }
+        memcpy(dst->leaves, src->leaves,
+               sizeof *dst->leaves * (size_t)src->nleaves);
+    }
+    dst->nbranches = src->nbranches;
+    dst->nleaves = src->nleaves;
+    return 0;
 }

@@ -13,11 +13,27 @@
  * Ids are any non-negative integers, unique; a parent must appear before
  * its children. A bad line (unknown record, wrong field count, non-finite
  * or non-positive size, unknown parent or branch) is reported with its
- * line number through the report callback and skipped; the rest loads. */
+ * line number through the report callback and skipped; the rest loads.
+ * So is a record beyond the sizes of the largest trees measured (tree.c
+ * says whose): a point farther than AERO_TREE_REACH_MAX from the origin
+ * (the tree's foot), a branch or stalk longer than that, a branch wider
+ * than AERO_TREE_DIAMETER_MAX, a blade longer or wider than
+ * AERO_TREE_LEAF_MAX. */
 #ifndef AERO_TREE_H
 #define AERO_TREE_H
 #include <stddef.h>
 #include <stdint.h>
+
+#define AERO_TREE_HEIGHT_MAX 130   /* m: the tallest a tree can grow */
+#define AERO_TREE_REACH_MAX 200    /* m: 1.5 x that, for crowns and slopes */
+#define AERO_TREE_DIAMETER_MAX 20  /* m: ~2 x the widest trunk */
+#define AERO_TREE_LEAF_MAX 30      /* m: 1.2 x the longest leaf */
+/* the generator's crown spreads up to ~4.5 trunk heights from the foot
+   (measured over depths 0..8): a trunk of at most 40 m keeps every point
+   within AERO_TREE_REACH_MAX */
+#define AERO_TREE_GENERATE_HEIGHT_MAX 40
+#define AERO_TREE_STR_(x) #x
+#define AERO_TREE_STR(x) AERO_TREE_STR_(x)
 
 typedef struct {
     int id;
@@ -52,6 +68,8 @@ int aero_tree_parse(const char *text, aero_tree *t, aero_tree_report report,
 int aero_tree_save(const char *path, const aero_tree *t, char *err,
                    size_t errlen);
 void aero_tree_free(aero_tree *t);
+/* dst a copy of src (its own arrays); 0 or -1 (out of memory, dst empty) */
+int aero_tree_copy(aero_tree *dst, const aero_tree *src);
 
 /* a branch's frame: two unit vectors perpendicular to its unit axis e and
    to each other (the generator's and the motion's); x is horizontal
@@ -59,7 +77,9 @@ void aero_tree_free(aero_tree *t);
 void aero_tree_perpendiculars(const double e[3], double x[3], double y[3]);
 
 /* a generated tree (aerotex tree): recursive branching from a vertical
-   trunk of height `height` and base diameter `diameter`, `depth` levels of
+   trunk of height `height` (at most AERO_TREE_GENERATE_HEIGHT_MAX) and base
+   diameter `diameter` (at most AERO_TREE_DIAMETER_MAX; leaves at most
+   AERO_TREE_LEAF_MAX), `depth` levels of
    branching, about `leaves` leaves spread over the outermost branches,
    reproducible from seed; 0 or -1 */
 typedef struct {

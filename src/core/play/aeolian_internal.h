@@ -39,6 +39,7 @@ typedef struct {
     double namp;         /* its blade noise's gain at that end */
     double fx[AERO_AEOLIAN_MAX_EARS], fy[AERO_AEOLIAN_MAX_EARS]; /* Curle, 1/m */
     double delay[AERO_AEOLIAN_MAX_EARS]; /* samples */
+    double step[AERO_AEOLIAN_MAX_EARS];  /* arrival step over that chunk */
     double sign;         /* side of the mirror fold (-1: mirrored) */
     uint32_t rng;        /* its phase wander's generator */
     double wander_from;  /* phase rate offset at the last draw, and */
@@ -47,6 +48,10 @@ typedef struct {
     int wander_left;     /* samples until the next draw */
     double law_speed, law_diameter, law_pitch, law_level; /* Re law cache */
     int primed;
+    /* a ghost's amplitude and rate when it began to fade, and the
+       samples since */
+    double fade_amp, fade_inc, fade_samples;
+    double fade_rate[AERO_AEOLIAN_MAX_EARS]; /* its delays' rates then */
 } aero_aeolian_source;
 
 struct aero_aeolian_texture {
@@ -56,6 +61,9 @@ struct aero_aeolian_texture {
     int clamped;            /* a speed was clamped at Mach 0.3 */
     /* the gliding settings' values now */
     aero_aeolian_glide wind[3], ear[3 * AERO_AEOLIAN_MAX_EARS], gain, roll;
+    /* a source radiated in the last chunk: the ears' and the gain's
+       changes glide; while nothing sounds they jump (aeolian_texture.c) */
+    int sounding;
 
     /* the texture (owned) and what the player needs of it */
     aero_texture *texture;
@@ -84,7 +92,21 @@ struct aero_aeolian_texture {
     /* a blade texture's top above its band limit (blade_noise.h): the
        bank and one voice per source, or NULL for any other texture */
     aero_blade_noise *blade;
-    aero_blade_voice *voices; /* AERO_AEOLIAN_SOURCES_MAX, after *blade */
+    aero_blade_voice *voices; /* after *blade: one per source, then one per
+                                 ghost (2 AERO_AEOLIAN_SOURCES_MAX) */
+    /* the sources as they were when the stick jumped while sounding,
+       fading where they were (aeolian_texture.c) */
+    aero_aeolian_source ghost[AERO_AEOLIAN_SOURCES_MAX];
+    int n_ghosts;
+    double fade_in;      /* samples since the jump, as the ghosts fade */
+    /* after a texture change while sounding: the ghosts' texture (owned)
+       and what they read of it; they go on moving as they were */
+    aero_texture *ghost_texture;
+    double ghost_period, ghost_frames_per_cycle;
+    int ghost_mirror, ghost_moving;
+    /* and the old texture's noise bank, when it was a blade's (owned; NULL:
+       the ghosts' noise is the bank above, or none) */
+    aero_blade_noise *ghost_blade;
 };
 
 /* the texture mode's state, made from the object's settings when first
@@ -104,7 +126,7 @@ enum {
     AERO_AEO_SOURCES
 };
 /* gliding setting k (AERO_AEO_GAIN, _EAR + i, _WIND + i, _ROLL) changed:
-   its glide starts */
+   its glide starts (the ears and the gain: at once while nothing sounds) */
 void aero_aeolian_texture_retarget(aero_aeolian *a, int k);
 /* k (AERO_AEO_DIAMETER, _LENGTH, _SOURCES) changed: the source count and
    the default pose follow */

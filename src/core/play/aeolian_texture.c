@@ -53,12 +53,19 @@ static aero_aeolian_glide *glide_of(aero_aeolian_texture *s, int k)
 }
 
 /* setting k glides to its target in ~ the ramp time, in whole chunks (as
-   aero_ramp_to does) */
+   aero_ramp_to does). The ears and the gain go there at once while no
+   source sounds: nothing heard moves, and a listener placed as a stream
+   of poses begins (at load, at a spawn) is not still flying there, 2 m in
+   20 ms, when the sound starts; the Doppler rate that then stepped at the
+   glide's end was a click of a tenth of the signal (a sword whirled from
+   rest: click measure 45-80 at a chord of 90 deg, issue 48). */
 void aero_aeolian_texture_retarget(aero_aeolian *a, int k)
 {
     aero_aeolian_glide *g = glide_of(a->texture, k);
     double chunks = ceil(a->ramp_ms * 0.001 * a->sample_rate /
                          AERO_STICK_CHUNK);
+    if (!a->texture->sounding && k < AERO_AEO_WIND)
+        chunks = 0.0;
     if (!(chunks >= 1.0)) {
         g->value = target_of(a, k);
         g->left = 0.0;
@@ -223,6 +230,7 @@ int aero_aeolian_texture_make(aero_aeolian *a)
         return -1;
     }
     s->ring_rate = a->sample_rate;
+    s->fade_in = HUGE_VAL; /* no jump to fade in from */
     uint32_t seed = a->model.rng ^ 0x9e3779b9u;
     s->rng = seed ? seed : 1;
     s->gain.value = 1.0;
@@ -252,6 +260,48 @@ static void drop_blade(aero_aeolian_texture *s)
     s->voices = NULL;
 }
 
+/* The stick jumps while it sounds: what it sounded goes on where it was,
+   fading as a stopped stream's sound does (its velocity, hence its rate,
+   falling with VELOCITY_TAU_S, its amplitude as the rate to the exponent:
+   render_ghosts), and the sources start again from rest at the new place.
+   Moving the sounding sources with the stick instead jumped their delays
+   within a chunk, the tail of the old sound cut where the new place's
+   arrivals began (a step of a fifth of the signal, issue 48). */
+static void drop_ghost_texture(aero_aeolian_texture *s)
+{
+    if (s->ghost_texture) {
+        aero_texture_free(s->ghost_texture);
+        free(s->ghost_texture);
+        s->ghost_texture = NULL;
+    }
+    free(s->ghost_blade); /* its block, the bank first */
+    s->ghost_blade = NULL;
+    s->ghost_moving = 0;
+}
+
+static void leave_sound(aero_aeolian_texture *s)
+{
+    drop_ghost_texture(s);
+    for (int i = 0; i < s->n_sources; i++) {
+        s->ghost[i] = s->src[i];
+        s->ghost[i].fade_amp = s->src[i].amp;
+        s->ghost[i].fade_inc = s->src[i].inc;
+        s->ghost[i].fade_samples = 0.0;
+        for (int e = 0; e < AERO_AEOLIAN_MAX_EARS; e++) /* its delay's rate */
+            s->ghost[i].fade_rate[e] =
+                s->src[i].step[e] > 0.0 ? s->src[i].step[e] - 1.0 : 0.0;
+        s->src[i].amp = 0.0;
+        /* the blade's noise goes on with its ghost, filters and gains as
+           they were, and fades in again with the new source */
+        if (s->voices)
+            s->voices[AERO_AEOLIAN_SOURCES_MAX + i] = s->voices[i];
+        s->src[i].namp = 0.0;
+    }
+    s->n_ghosts = s->n_sources;
+    s->fade_in = 0.0;
+    memset(s->velocity, 0, sizeof(s->velocity));
+}
+
 void aero_aeolian_texture_free(aero_aeolian *a)
 {
     aero_aeolian_texture *s = a->texture;
@@ -259,6 +309,7 @@ void aero_aeolian_texture_free(aero_aeolian *a)
         return;
     aero_arrivals_free(&s->arrivals);
     drop_blade(s);
+    drop_ghost_texture(s);
     if (s->texture) {
         aero_texture_free(s->texture);
         free(s->texture);
@@ -304,7 +355,7 @@ static int read_blade(const aero_texture *t, aero_airfoil *out)
 
 typedef struct {
     aero_blade_noise bank;
-    aero_blade_voice voice[AERO_AEOLIAN_SOURCES_MAX];
+    aero_blade_voice voice[2 * AERO_AEOLIAN_SOURCES_MAX]; /* then ghosts' */
 } blade_block;
 
 /* the bank for texture t when it is a blade's, else none (out of
@@ -336,11 +387,11 @@ int aero_aeolian_texture_set(aero_aeolian *a, aero_texture *t, char *err,
                              size_t errlen)
 {
     aero_aeolian_texture *s = a->texture;
+    /* what the old texture's sources need to fade out reading it */
+    double was_period = s->period, was_frames_per_cycle = s->frames_per_cycle;
+    int was_mirror = s->mirror;
     if (t) {
-        const char *kind = t->head.kind;
-        if (strcmp(kind, "aeolian")) {
-            snprintf(err, errlen, "not an aeolian texture (kind=%s)",
-                     kind[0] ? kind : "missing");
+        if (aero_texture_wrong_kind(t, "aeolian", err, errlen)) {
             return -1;
         }
         double v0 = t->head.v0;
@@ -373,9 +424,30 @@ int aero_aeolian_texture_set(aero_aeolian *a, aero_texture *t, char *err,
                                   : 0.0;
         set_re_law(s, t, v0, d);
     }
-    if (s->texture) {
-        aero_texture_free(s->texture);
-        free(s->texture);
+    if (s->sounding && s->texture && t) {
+        /* a texture changed while sounding: the old sources fade out
+           reading the old texture, moving on as they were, as the new
+           ones fade in (fade_in); cutting them stepped the sound */
+        double velocity[6]; /* the stick goes on moving */
+        memcpy(velocity, s->velocity, sizeof(velocity));
+        leave_sound(s);
+        memcpy(s->velocity, velocity, sizeof(velocity));
+        s->ghost_texture = s->texture;
+        s->ghost_period = was_period;
+        s->ghost_mirror = was_mirror;
+        s->ghost_frames_per_cycle = was_frames_per_cycle;
+        s->ghost_moving = 1;
+        /* the ghosts keep the old texture's noise bank and voices */
+        s->ghost_blade = s->blade;
+        s->blade = NULL;
+        s->voices = NULL;
+    } else {
+        drop_ghost_texture(s);
+        s->n_ghosts = 0; /* they read the old texture */
+        if (s->texture) {
+            aero_texture_free(s->texture);
+            free(s->texture);
+        }
     }
     s->texture = t;
     set_blade(a, t);
@@ -402,6 +474,8 @@ int aero_aeolian_texture_sample_rate(aero_aeolian *a, double sr)
         drop_blade(s);
     for (int i = 0; i < AERO_AEOLIAN_SOURCES_MAX; i++)
         s->src[i].primed = 0; /* the rings are new */
+    s->n_ghosts = 0;
+    drop_ghost_texture(s);
     return 0;
 }
 
@@ -443,9 +517,13 @@ int aero_aeolian_texture_pose(aero_aeolian *a, const double end_a[3],
     double p[6] = {end_a[0], end_a[1], end_a[2], end_b[0], end_b[1], end_b[2]};
     if (!pose_ok(p))
         return -1;
-    /* the first pose, one after a pause (a new gesture) or a placement
-     * (interval < 0) jumps: there is nothing to move from */
-    if (!s->pose_set || interval_s < 0.0 || interval_s > 0.5) {
+    /* the first pose, one after a pause (a new gesture: the stream had
+     * ended) or a placement (interval < 0) jumps: there is nothing to move
+     * from */
+    if (!s->pose_set || interval_s < 0.0 || interval_s > 0.5 ||
+        aero_pose_path_ended(&s->path)) {
+        if (s->sounding)
+            leave_sound(s);
         aero_pose_path_jump(&s->path, 6, p);
         memset(s->pose_velocity, 0, sizeof(s->pose_velocity));
         if (!s->pose_set)
@@ -455,6 +533,14 @@ int aero_aeolian_texture_pose(aero_aeolian *a, const double end_a[3],
     }
     if (!(interval_s >= 0.001))
         interval_s = 0.001;
+    if (aero_pose_path_waited(&s->path, interval_s * a->sample_rate)) {
+        double from[6]; /* the gesture began at the last pose */
+        memcpy(from, s->path.to, sizeof(from));
+        if (s->sounding)
+            leave_sound(s);
+        aero_pose_path_jump(&s->path, 6, from);
+        memset(s->velocity, 0, sizeof(s->velocity));
+    }
     /* the velocity of the stream itself (its time stamps are exact): what
      * the air sees */
     double was = stick_length(s->path.to), now = stick_length(p);
@@ -842,7 +928,8 @@ static void read_texture(aero_aeolian *a, aero_aeolian_source *src,
 static void radiate(aero_aeolian *a, const source_geometry *then,
                     const source_geometry *now, double w0, double w1,
                     double sign_then, double sign_now, int m,
-                    float tex[4][AERO_STICK_CHUNK], const float *noise)
+                    float tex[4][AERO_STICK_CHUNK], const float *noise,
+                    double *step_last)
 {
     aero_aeolian_texture *s = a->texture;
     const double inv_m = 1.0 / m;
@@ -863,6 +950,8 @@ static void radiate(aero_aeolian *a, const source_geometry *then,
         float *ring = s->arrivals.ring[e];
         const long mask = s->arrivals.mask;
         double at = (double)s->arrivals.head + delay;
+        const double step = 1.0 + ddelay, last = step_last[e];
+        step_last[e] = step;
         for (int j = 0; j < m; j++) {
             float v = cf[0] * tex[0][j] + cf[1] * tex[1][j] +
                       cf[2] * tex[2][j] + cf[3] * tex[3][j];
@@ -870,7 +959,7 @@ static void radiate(aero_aeolian *a, const source_geometry *then,
                 v += cn * noise[j];
                 cn += dcn;
             }
-            aero_arrivals_add_span(ring, mask, at, 1.0 + ddelay, v);
+            aero_arrivals_add_chunk(ring, mask, at, step, last, j, m, v);
             cf[0] += dcf[0];
             cf[1] += dcf[1];
             cf[2] += dcf[2];
@@ -878,6 +967,15 @@ static void radiate(aero_aeolian *a, const source_geometry *then,
             at += 1.0 + ddelay;
         }
     }
+}
+
+/* a source's noise voice, or its ghost's (after the sources' own) */
+static aero_blade_voice *voice_of(aero_aeolian_texture *s,
+                                  const aero_aeolian_source *src)
+{
+    if (src >= s->ghost && src < s->ghost + AERO_AEOLIAN_SOURCES_MAX)
+        return &s->voices[AERO_AEOLIAN_SOURCES_MAX + (src - s->ghost)];
+    return &s->voices[src - s->src];
 }
 
 /* a blade's noise for the chunk: its bands aimed at the model's spectrum
@@ -891,7 +989,7 @@ static const float *blade_noise(aero_aeolian *a, aero_aeolian_source *src,
     aero_aeolian_texture *s = a->texture;
     if (!s->blade)
         return NULL;
-    aero_blade_voice *v = &s->voices[src - s->src];
+    aero_blade_voice *v = voice_of(s, src);
     double alpha = fabs(remainder(g->angle, 180.0));
     double scale = g->inc * a->sample_rate / s->tex_rate;
     aero_blade_voice_target(s->blade, v, g->speed, alpha, g->span, scale,
@@ -901,8 +999,8 @@ static const float *blade_noise(aero_aeolian *a, aero_aeolian_source *src,
 }
 
 /* one source over a chunk of m samples: texture read, Curle projection,
- * added into each ear's ring at its arrival time */
-static void render_source(aero_aeolian *a, aero_aeolian_source *src,
+ * added into each ear's ring at its arrival time; 1 if it sounded */
+static int render_source(aero_aeolian *a, aero_aeolian_source *src,
                           const source_geometry *g, int m)
 {
     aero_aeolian_texture *s = a->texture;
@@ -916,6 +1014,7 @@ static void render_source(aero_aeolian *a, aero_aeolian_source *src,
         then.amp = 0.0;
         then.namp = 0.0;
         src->primed = 1;
+        memset(src->step, 0, sizeof(src->step));
     } else {
         then.inc = src->inc;
         then.angle = src->angle;
@@ -935,7 +1034,7 @@ static void render_source(aero_aeolian *a, aero_aeolian_source *src,
     float tex[4][AERO_STICK_CHUNK], noise[AERO_STICK_CHUNK];
     read_texture(a, src, &p, then.inc, g->inc, m, tex);
     radiate(a, &then, g, w0, w1, sign_then, sign_now, m, tex,
-            blade_noise(a, src, g, m, noise));
+            blade_noise(a, src, g, m, noise), src->step);
     src->inc = g->inc;
     src->angle = g->angle;
     src->amp = g->amp;
@@ -945,6 +1044,107 @@ static void render_source(aero_aeolian *a, aero_aeolian_source *src,
         src->fy[e] = g->fy[e];
         src->delay[e] = g->delay[e];
     }
+    return then.amp != 0.0 || g->amp != 0.0;
+}
+
+/* the ghosts' next m samples, each at its own place, its velocity (so its
+   rate, and its amplitude as the velocity to the exponent) falling to 0
+   over GHOST_FADE_S on a half cosine: smooth where it begins and where it
+   ends, as a stopped stream's velocity falls (pose_glide.h, then
+   VELOCITY_TAU_S); 1 if one sounded */
+#define GHOST_FADE_S (4.0 * VELOCITY_TAU_S)
+
+/* the ghosts' fade at `t` samples after the jump: the velocity's fraction
+   to the exponent */
+static double ghost_fade(const aero_aeolian *a, double t)
+{
+    double span = GHOST_FADE_S * a->sample_rate;
+    if (!(t < span))
+        return 0.0;
+    return pow(0.5 + 0.5 * cos(AERO_PI * t / span), a->exponent);
+}
+
+/* the sources' amplitude factor at the end of the next m samples: they
+   fade in as the ghosts fade out (a stick in a wind sounds at once at its
+   new place) */
+static double fade_in(aero_aeolian *a, int m)
+{
+    aero_aeolian_texture *s = a->texture;
+    if (!(s->fade_in < GHOST_FADE_S * a->sample_rate))
+        return 1.0;
+    s->fade_in += m;
+    return 1.0 - ghost_fade(a, s->fade_in);
+}
+
+static int render_ghosts(aero_aeolian *a, int m)
+{
+    aero_aeolian_texture *s = a->texture;
+    const double span = GHOST_FADE_S * a->sample_rate;
+    int sounding = 0;
+    /* after a texture change they read the old one */
+    aero_texture *texture = s->texture;
+    double period = s->period, frames_per_cycle = s->frames_per_cycle;
+    int mirror = s->mirror;
+    if (s->ghost_texture) {
+        s->texture = s->ghost_texture;
+        s->period = s->ghost_period;
+        s->mirror = s->ghost_mirror;
+        s->frames_per_cycle = s->ghost_frames_per_cycle;
+    }
+    /* and the old texture's noise bank: none when it was not a blade's */
+    aero_blade_noise *blade = s->blade;
+    aero_blade_voice *voices = s->voices;
+    if (s->ghost_blade) {
+        s->blade = s->ghost_blade;
+        s->voices = ((blade_block *)(void *)s->ghost_blade)->voice;
+    } else if (s->ghost_texture) {
+        s->blade = NULL;
+        s->voices = NULL;
+    }
+    for (int i = 0; i < s->n_ghosts; i++) {
+        aero_aeolian_source *gh = &s->ghost[i];
+        if (!gh->primed || !(gh->fade_samples < span))
+            continue;
+        double v_then = gh->fade_samples < span
+                            ? 0.5 + 0.5 * cos(AERO_PI * gh->fade_samples / span)
+                            : 0.0;
+        gh->fade_samples += m;
+        double v = gh->fade_samples < span
+                       ? 0.5 + 0.5 * cos(AERO_PI * gh->fade_samples / span)
+                       : 0.0;
+        if (s->ghost_moving) /* a texture change: the stick goes on */
+            v = v_then = 1.0;
+        source_geometry g;
+        g.inc = gh->fade_inc * v;
+        g.angle = gh->angle;
+        g.amp = gh->fade_amp * ghost_fade(a, gh->fade_samples);
+        /* its noise fades as its texture does, its spectrum held */
+        g.namp = gh->namp * ghost_fade(a, gh->fade_samples);
+        g.speed = g.span = 0.0;
+        if (s->voices) {
+            const aero_blade_voice *bv = voice_of(s, gh);
+            g.speed = bv->law_speed;
+            g.span = bv->law_span;
+        }
+        for (int e = 0; e < a->n_ears; e++) {
+            g.fx[e] = gh->fx[e];
+            g.fy[e] = gh->fy[e];
+            /* it moves on as it slows: its delay's rate falls with v */
+            g.delay[e] = gh->delay[e] + gh->fade_rate[e] * 0.5 * (v_then + v) * m;
+        }
+        sounding |= render_source(a, gh, &g, m);
+    }
+    s->blade = blade;
+    s->voices = voices;
+    s->texture = texture;
+    s->period = period;
+    s->mirror = mirror;
+    s->frames_per_cycle = frames_per_cycle;
+    if (!sounding) {
+        s->n_ghosts = 0;
+        drop_ghost_texture(s);
+    }
+    return sounding;
 }
 
 int aero_aeolian_texture_process(aero_aeolian *a, const float *speed,
@@ -960,25 +1160,31 @@ int aero_aeolian_texture_process(aero_aeolian *a, const float *speed,
             aero_pose_queue_pop(&s->queue);
             m = n - done < AERO_STICK_CHUNK ? n - done : AERO_STICK_CHUNK;
         }
-        /* the inlet's mean speed over the chunk (NaN counts as 0) */
+        /* the inlet's mean speed over the chunk (aero_speed_in) */
         double sp = 0.0;
         if (speed) {
             for (int j = 0; j < m; j++) {
                 float v = speed[done + j];
-                sp += v == v && v < 1e30f && v > -1e30f ? v : 0.0f;
+                sp += aero_speed_in(v, &s->clamped);
             }
             sp /= m;
         }
         stick_frame f;
         advance_frame(a, m, sp, &f);
+        int sounding = 0;
         if (s->texture) {
+            double faded = fade_in(a, m);
             for (int i = 0; i < s->n_sources; i++) {
                 source_geometry g;
                 double u = (i + 0.5) / s->n_sources;
                 s->clamped |= source_at(a, &f, u, &s->src[i], &g);
-                render_source(a, &s->src[i], &g, m);
+                g.amp *= faded;
+                sounding |= render_source(a, &s->src[i], &g, m);
             }
         }
+        if (s->n_ghosts && s->texture)
+            sounding |= render_ghosts(a, m);
+        s->sounding = sounding;
         aero_arrivals_take(&s->arrivals, out, done, m);
         done += m;
     }

@@ -25,6 +25,16 @@ void aero_body_quaternion_from_rotvec(const double r[3], double q[4])
 
 /* --- life cycle ----------------------------------------------------------- */
 
+static void drop_ghost_texture(aero_body *s)
+{
+    if (s->ghost_texture) {
+        aero_texture_free(s->ghost_texture);
+        free(s->ghost_texture);
+        s->ghost_texture = NULL;
+    }
+    s->ghost_moving = 0;
+}
+
 static void restart_sources(aero_body *s)
 {
     for (int i = 0; i < AERO_BODY_MAX_SOURCES; i++) {
@@ -41,6 +51,7 @@ int aero_body_init(aero_body *s, double sample_rate,
     static const double unturned[7] = {0, 0, 0, 1, 0, 0, 0};
     memset(s, 0, sizeof(*s));
     s->scale = AERO_BODY_SCALE_DEFAULT;
+    s->fade_in = HUGE_VAL; /* no jump to fade in from */
     memcpy(s->pose, unturned, sizeof(unturned));
     aero_pose_path_jump(&s->path, 7, unturned);
     return aero_moving_player_init(
@@ -53,6 +64,7 @@ int aero_body_init(aero_body *s, double sample_rate,
 void aero_body_free(aero_body *s)
 {
     aero_moving_player_free(&s->base);
+    drop_ghost_texture(s);
     if (s->texture) {
         aero_texture_free(s->texture);
         free(s->texture);
@@ -108,19 +120,39 @@ static int parse_centres(const char *p, int n, double *centre)
     return *p == 0 || *p == '\n' ? 0 : -1;
 }
 
+/* The body jumps while it sounds: what it sounded goes on where it was,
+   fading as a stopped stream's sound does (render_ghosts), and the
+   sources start again from rest at the new place; moving the sounding
+   sources with it jumped their delays within a chunk (issue 48). */
+static void leave_sound(aero_body *s)
+{
+    drop_ghost_texture(s);
+    for (int l = 0; l < s->regions; l++) {
+        aero_body_source *src = &s->src[l], *gh = &s->ghost[l];
+        *gh = *src;
+        gh->fade_amp = src->then.amp;
+        gh->fade_inc = src->then.inc;
+        gh->fade_samples = 0.0;
+        for (int e = 0; e < AERO_BODY_MAX_EARS; e++) /* its delay's rate */
+            gh->fade_rate[e] = src->step[e] > 0.0 ? src->step[e] - 1.0 : 0.0;
+        src->then.amp = 0.0;
+        memset(src->velocity, 0, sizeof(src->velocity));
+    }
+    s->n_ghosts = s->regions;
+    s->fade_in = 0.0;
+}
+
 int aero_body_set_texture(aero_body *s, aero_texture *t,
                                   char *err, size_t errlen)
 {
+    int was_regions = s->regions;
     if (t) {
-        const char *kind = t->head.kind, *sym = t->head.symmetry;
+        const char *sym = t->head.symmetry;
         double centre[3 * AERO_BODY_MAX_SOURCES];
         double v0 = t->head.v0;
         double d = t->head.diameter;
         int sphere;
-        if (strcmp(kind, "object")) {
-            snprintf(err, errlen, "not an object texture (kind=%s; aeolian "
-                     "textures are for [aeolian~])",
-                     kind[0] ? kind : "missing");
+        if (aero_texture_wrong_kind(t, "object", err, errlen)) {
             return -1;
         }
         if (strcmp(sym, "sphere") && strcmp(sym, "axis")) {
@@ -158,6 +190,35 @@ int aero_body_set_texture(aero_body *s, aero_texture *t,
         memcpy(s->centre, centre, sizeof(double) * 3 * t->regions);
         s->re_law = !sphere && strip_re_law(s, t);
     }
+    if (s->base.sounding && s->texture && t) {
+        /* a texture changed while sounding: the old sources fade out
+           reading the old texture, moving on as they were, as the new
+           ones (at the body's speed) fade in; cutting them stepped the
+           sound */
+        double velocity[AERO_BODY_MAX_SOURCES][2][3];
+        for (int l = 0; l < AERO_BODY_MAX_SOURCES; l++) {
+            memcpy(velocity[l][0], s->src[l].velocity, sizeof(velocity[l][0]));
+            memcpy(velocity[l][1], s->src[l].stream_velocity,
+                   sizeof(velocity[l][1]));
+        }
+        int regions = s->regions;
+        s->regions = was_regions; /* the old sources */
+        leave_sound(s);
+        s->regions = regions;
+        s->ghost_texture = s->texture;
+        s->ghost_regions = was_regions;
+        s->ghost_moving = 1;
+        s->texture = t;
+        restart_sources(s);
+        for (int l = 0; l < AERO_BODY_MAX_SOURCES; l++) {
+            memcpy(s->src[l].velocity, velocity[l][0], sizeof(velocity[l][0]));
+            memcpy(s->src[l].stream_velocity, velocity[l][1],
+                   sizeof(velocity[l][1]));
+        }
+        return 0;
+    }
+    drop_ghost_texture(s);
+    s->n_ghosts = 0; /* they read the old texture */
     if (s->texture) {
         aero_texture_free(s->texture);
         free(s->texture);
@@ -174,9 +235,12 @@ int aero_body_set_texture(aero_body *s, aero_texture *t,
 int aero_body_set_sample_rate(aero_body *s, double sr)
 {
     int rc = aero_moving_player_set_sample_rate(&s->base, sr);
-    if (rc > 0)
+    if (rc > 0) {
         for (int i = 0; i < AERO_BODY_MAX_SOURCES; i++)
             s->src[i].primed = 0;
+        s->n_ghosts = 0;
+        drop_ghost_texture(s);
+    }
     return rc < 0 ? -1 : 0;
 }
 
@@ -243,7 +307,12 @@ static void apply_pose(aero_body *s, double *p, double interval_s)
     if (p[3] * to[3] + p[4] * to[4] + p[5] * to[5] + p[6] * to[6] < 0.0)
         for (int i = 3; i < 7; i++)
             p[i] = -p[i];
-    if (!s->pose_set || interval_s < 0.0 || interval_s > 0.5) {
+    /* the first pose, one after a pause (a new gesture: the stream had
+       ended) or a placement (interval < 0) jumps */
+    if (!s->pose_set || interval_s < 0.0 || interval_s > 0.5 ||
+        aero_pose_path_ended(&s->path)) {
+        if (s->base.sounding && s->texture)
+            leave_sound(s);
         aero_pose_path_jump(&s->path, 7, p);
         memcpy(s->pose, p, 7 * sizeof(double));
         for (int l = 0; l < AERO_BODY_MAX_SOURCES; l++)
@@ -253,6 +322,15 @@ static void apply_pose(aero_body *s, double *p, double interval_s)
     }
     if (!(interval_s >= 0.001))
         interval_s = 0.001;
+    if (aero_pose_path_waited(&s->path, interval_s * s->base.sample_rate)) {
+        double from[7]; /* the gesture began at the last pose */
+        memcpy(from, s->path.to, sizeof(from));
+        if (s->base.sounding && s->texture)
+            leave_sound(s);
+        aero_pose_path_jump(&s->path, 7, from);
+        for (int l = 0; l < AERO_BODY_MAX_SOURCES; l++)
+            memset(s->src[l].velocity, 0, sizeof(s->src[l].velocity));
+    }
     /* each region's velocity from the stream's own time stamps */
     for (int l = 0; l < s->regions; l++) {
         double a[3], b[3];
@@ -530,7 +608,7 @@ static void read_texture(aero_body *s, aero_body_source *src,
 static void radiate(aero_body *s, const aero_body_geometry *then,
                     const aero_body_geometry *g, double w_then,
                     double w_now, float (*tex)[AERO_BODY_CHUNK], int e,
-                    int m)
+                    int m, double *step_last)
 {
     const double inv_m = 1.0 / m;
     float cf[6], dcf[6];
@@ -538,6 +616,8 @@ static void radiate(aero_body *s, const aero_body_geometry *then,
     const long mask = s->base.arrivals.mask;
     const double ddelay = (g->delay[e] - then->delay[e]) * inv_m;
     double at = (double)s->base.arrivals.head + then->delay[e];
+    const double step = 1.0 + ddelay, last = step_last[e];
+    step_last[e] = step;
     for (int c = 0; c < 3; c++) {
         double a0 = then->amp * then->proj[e][c], a1 = g->amp * g->proj[e][c];
         double s0 = (1.0 - w_then) * a0, s1 = (1.0 - w_now) * a1;
@@ -553,16 +633,16 @@ static void radiate(aero_body *s, const aero_body_geometry *then,
             v += cf[q] * tex[q][j];
             cf[q] += dcf[q];
         }
-        aero_arrivals_add_span(ring, mask, at, 1.0 + ddelay, v);
+        aero_arrivals_add_chunk(ring, mask, at, step, last, j, m, v);
         at += 1.0 + ddelay;
     }
 }
 
-/* one source over a chunk of m samples */
-static void render(aero_body *s, int l, const aero_body_geometry *g,
-                   int m)
+/* one source (region l's, or its ghost) over a chunk of m samples; 1 if
+   it sounded */
+static int render(aero_body *s, aero_body_source *src, int l,
+                  const aero_body_geometry *g, int m)
 {
-    aero_body_source *src = &s->src[l];
     const aero_texture *t = s->texture;
     const int R = s->regions;
     aero_body_geometry then = src->primed ? src->then : *g;
@@ -572,6 +652,7 @@ static void render(aero_body *s, int l, const aero_body_geometry *g,
     if (!src->primed) { /* first chunk: amplitude from 0 */
         then.amp = 0.0;
         src->primed = 1;
+        memset(src->step, 0, sizeof(src->step));
     }
     /* the pair of the chunk's end serves its whole chunk */
     direction_pair(t, g->theta, &k0, &k1, &w_now);
@@ -588,8 +669,77 @@ static void render(aero_body *s, int l, const aero_body_geometry *g,
     read_texture(s, src, &then, g, 3 * (k0 * R + region),
                  3 * (k1 * R + region), tex, m);
     for (int e = 0; e < s->base.n_ears; e++)
-        radiate(s, &then, g, w_then, w_now, tex, e, m);
+        radiate(s, &then, g, w_then, w_now, tex, e, m, src->step);
     src->then = *g;
+    return then.amp != 0.0 || g->amp != 0.0;
+}
+
+/* the ghosts' next m samples, each where it was, its velocity (so its
+   rate, and its amplitude as the velocity to the exponent) falling to 0
+   over GHOST_FADE_S on a half cosine, smooth where it begins and ends;
+   1 if one sounded */
+#define GHOST_FADE_S (4.0 * VELOCITY_TAU_S)
+
+/* the ghosts' fade at `t` samples after the jump: the velocity's fraction
+   to the exponent */
+static double ghost_fade(const aero_body *s, double t)
+{
+    double span = GHOST_FADE_S * s->base.sample_rate;
+    if (!(t < span))
+        return 0.0;
+    return pow(0.5 + 0.5 * cos(AERO_PI * t / span), s->base.exponent);
+}
+
+/* the sources' amplitude factor at the end of the next m samples: they
+   fade in as the ghosts fade out (a body in a wind sounds at once at its
+   new place) */
+static double fade_in(aero_body *s, int m)
+{
+    if (!(s->fade_in < GHOST_FADE_S * s->base.sample_rate))
+        return 1.0;
+    s->fade_in += m;
+    return 1.0 - ghost_fade(s, s->fade_in);
+}
+
+static int render_ghosts(aero_body *s, int m)
+{
+    const double span = GHOST_FADE_S * s->base.sample_rate;
+    int sounding = 0;
+    /* after a texture change they read the old one */
+    aero_texture *texture = s->texture;
+    int regions = s->regions;
+    if (s->ghost_texture) {
+        s->texture = s->ghost_texture;
+        s->regions = s->ghost_regions;
+    }
+    for (int l = 0; l < s->n_ghosts; l++) {
+        aero_body_source *gh = &s->ghost[l];
+        if (!gh->primed || !(gh->fade_samples < span))
+            continue;
+        double v_then = gh->fade_samples < span
+                            ? 0.5 + 0.5 * cos(AERO_PI * gh->fade_samples / span)
+                            : 0.0;
+        gh->fade_samples += m;
+        double v = gh->fade_samples < span
+                       ? 0.5 + 0.5 * cos(AERO_PI * gh->fade_samples / span)
+                       : 0.0;
+        if (s->ghost_moving) /* a texture change: the body goes on */
+            v = v_then = 1.0;
+        aero_body_geometry g = gh->then;
+        g.inc = gh->fade_inc * v;
+        g.amp = gh->fade_amp * ghost_fade(s, gh->fade_samples);
+        /* it moves on as it slows: its delay's rate falls with v */
+        for (int e = 0; e < s->base.n_ears; e++)
+            g.delay[e] += gh->fade_rate[e] * 0.5 * (v_then + v) * m;
+        sounding |= render(s, gh, l, &g, m);
+    }
+    s->texture = texture;
+    s->regions = regions;
+    if (!sounding) {
+        s->n_ghosts = 0;
+        drop_ghost_texture(s);
+    }
+    return sounding;
 }
 
 int aero_body_process(aero_body *s, const float *speed,
@@ -607,10 +757,10 @@ int aero_body_process(aero_body *s, const float *speed,
         }
         double sp = 0.0, wind[3], ears[AERO_BODY_MAX_EARS][3], gain, alpha;
         double pace;
-        if (speed) { /* the inlet's mean over the chunk (NaN counts as 0) */
+        if (speed) { /* the inlet's mean over the chunk (aero_speed_in) */
             for (int j = 0; j < m; j++) {
                 float v = speed[done + j];
-                sp += v == v && v < 1e30f && v > -1e30f ? v : 0.0f;
+                sp += aero_speed_in(v, &s->base.clamped);
             }
             sp /= m;
         }
@@ -624,7 +774,9 @@ int aero_body_process(aero_body *s, const float *speed,
             for (int i = 0; i < 3; i++)
                 ears[e][i] = ramp_advance(&s->base.ear[3 * e + i], m);
         gain = ramp_advance(&s->base.gain, m);
+        s->base.sounding = 0;
         if (s->texture) {
+            double faded = fade_in(s, m);
             for (int l = 0; l < s->regions; l++) {
                 aero_body_geometry g;
                 for (int i = 0; i < 3; i++) {
@@ -633,9 +785,12 @@ int aero_body_process(aero_body *s, const float *speed,
                 }
                 s->base.clamped |= geometry(s, l, wind, (const double (*)[3])ears,
                                        gain, &g);
-                render(s, l, &g, m);
+                g.amp *= faded;
+                s->base.sounding |= render(s, &s->src[l], l, &g, m);
             }
         }
+        if (s->n_ghosts && s->texture)
+            s->base.sounding |= render_ghosts(s, m);
         aero_arrivals_take(&s->base.arrivals, out, done, m);
         done += m;
     }

@@ -70,7 +70,12 @@ typedef struct {
     double velocity[3];         /* smoothed, m/s */
     double stream_velocity[3];  /* of the pose stream */
     aero_body_geometry then;    /* at the previous chunk's end */
+    double step[AERO_BODY_MAX_EARS]; /* arrival step over that chunk */
     int primed;
+    /* a ghost's amplitude and rate when it began to fade, and the
+       samples since (body_texture.c) */
+    double fade_amp, fade_inc, fade_samples;
+    double fade_rate[AERO_BODY_MAX_EARS]; /* its delays' rates then */
 } aero_body_source;
 
 typedef struct aero_body {
@@ -97,6 +102,15 @@ typedef struct aero_body {
     int pose_set;
 
     aero_body_source src[AERO_BODY_MAX_SOURCES];
+    /* the sources as they were when the body jumped while sounding,
+       fading where they were */
+    aero_body_source ghost[AERO_BODY_MAX_SOURCES];
+    int n_ghosts;
+    double fade_in;             /* samples since the jump, as they fade */
+    /* after a texture change while sounding: the ghosts' texture (owned)
+       and its regions; they go on moving as they were */
+    aero_texture *ghost_texture;
+    int ghost_regions, ghost_moving;
 } aero_body;
 
 /* 0, or -1 when out of memory. Defaults: no texture (silent), the body at

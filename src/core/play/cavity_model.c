@@ -233,11 +233,8 @@ int aero_cavity_set_texture(aero_cavity *m, aero_texture *t,
                                   char *err, size_t errlen)
 {
     if (t) {
-        const char *kind = t->head.kind;
         double v0 = t->head.v0;
-        if (strcmp(kind, "cavity")) {
-            snprintf(err, errlen, "not a cavity texture (kind=%s)",
-                     kind[0] ? kind : "?");
+        if (aero_texture_wrong_kind(t, "cavity", err, errlen)) {
             return -1;
         }
         if (!(v0 > 0) || t->directions < 1 || t->frames < 2 || !(t->rate > 0)) {

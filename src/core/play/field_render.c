@@ -64,7 +64,7 @@ int aero_fieldsound_set_sample_rate(aero_fieldsound *r, double sr)
 
 int aero_fieldsound_set_speed(aero_fieldsound *r, double fps)
 {
-    if (!(fps > 0 && fps <= AERO_FIELD_SPEED_MAX))
+    if (!(fps >= AERO_FIELD_SPEED_MIN && fps <= AERO_FIELD_SPEED_MAX))
         return -1;
     r->speed_target = fps;
     if (!r->playing)

@@ -11,6 +11,9 @@
 /* --- rendering ----------------------------------------------------------- */
 #define AERO_FIELD_CHUNK 64
 #define AERO_FIELD_SPEED_MAX 1e6 /* playback, frames per second */
+/* the slowest playback: a frame in 1000 s; slower ones (1e-30) would never
+   finish */
+#define AERO_FIELD_SPEED_MIN 1e-3
 
 typedef struct aero_fieldsound {
     const aero_field_sources *src; /* not owned */

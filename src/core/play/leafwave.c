@@ -218,13 +218,12 @@ static int wind_now(const aero_leafwave *lw, const float *speed, int n,
                     double w[3], double *u)
 {
     double u_in = lw->inlet_speed;
+    int clamped = 0;
     if (speed && n > 0) {
         double sum = 0.0;
         for (int s = 0; s < n; s++)
-            sum += speed[s] == speed[s] ? speed[s] : 0.0;
+            sum += aero_speed_in(speed[s], &clamped);
         u_in = sum / n;
-        if (!aero_is_finite(u_in))
-            u_in = 0.0;
     }
     double dir[3] = {lw->wind[0], lw->wind[1], lw->wind[2]};
     if (aero_dot3(lw->speed_dir, lw->speed_dir) > 0.0) {
@@ -239,7 +238,7 @@ static int wind_now(const aero_leafwave *lw, const float *speed, int n,
     double lim = AERO_MACH_LIMIT * AERO_C0;
     *u = sqrt(aero_dot3(w, w));
     if (!(*u > lim))
-        return 0;
+        return clamped;
     for (int k = 0; k < 3; k++)
         w[k] *= lim / *u;
     *u = lim;

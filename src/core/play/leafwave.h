@@ -17,9 +17,9 @@
  * motion of [treebranch~] exactly when both load the same tree with the same
  * seed and wind (tree_motion.h is deterministic in time).
  *
- * Pairs. Neighbour lists are built once at load with a spatial hash (cells
- * of the largest reach, 27 cells per leaf: O(n), not O(n^2)); each leaf
- * keeps its nearest AERO_LEAF_MAX_NEIGHBOURS. Every frame, the blade
+ * Pairs. Neighbour lists are built once at load from a k-d tree of the
+ * blade centres (O(n log n) for any arrangement, leaves at one spot
+ * included); each leaf keeps its nearest AERO_LEAF_MAX_NEIGHBOURS. Every frame, the blade
  * centre P_j of the neighbour is expressed in the blade frame of leaf i
  * (their eq. 15) and compared with an ellipsoid of the two blades' half
  * sizes (a thin one across the blade): inside is "A", outside "B" (their
@@ -283,5 +283,31 @@ int aero_leafwave_process(aero_leafwave *lw, const float *speed,
 
 /* number of pairs in each state now (tests, inspection) */
 void aero_leafwave_count_states(const aero_leafwave *lw, int counts[5]);
+
+/* For a host that builds a new core in a worker and swaps it in (Pd's
+ * [leafwave~]). What rebuilds the tables or the neighbour lists: */
+typedef struct {
+    double fm;
+    int per_octave, octaves;
+    double reach;
+    uint32_t seed;
+} aero_leafwave_rebuild;
+/* the checks of set_tables and set_reach, without setting: 1 valid */
+int aero_leafwave_tables_valid(double fm, int per_octave, int octaves);
+int aero_leafwave_reach_valid(double factor);
+/* src's settings that rebuild nothing (wind, speed, ears, gain, ramp,
+   stiffness, beta, mic, sway, coupling, flutter, hit, rub, voices) given
+   to dst, reading only src's numbers (src may be a copy of a live core
+   made in the host's thread) */
+void aero_leafwave_copy_settings(aero_leafwave *dst, const aero_leafwave *src);
+/* a new core in lw (initialised here) with src's settings, `want`'s
+   tables, reach and seed, and the tree t (taken; NULL: none): what a
+   worker runs; 0, or -1 with err (lw is then freed) */
+int aero_leafwave_build(aero_leafwave *lw, const aero_leafwave *src,
+                        const aero_leafwave_rebuild *want, aero_tree *t,
+                        char *err, size_t errlen);
+/* moves src's whole state into dst (dst's own is overwritten, not freed);
+   src is left empty */
+void aero_leafwave_move(aero_leafwave *dst, aero_leafwave *src);
 
 #endif

@@ -215,3 +215,83 @@ void aero_leafwave_count_states(const aero_leafwave *lw, int counts[5])
     for (int p = 0; p < lw->npairs; p++)
         counts[lw->pairs[p].state]++;
 }
+
+/* ---- loading in a worker, swapping in the host's thread ------------------ */
+
+int aero_leafwave_tables_valid(double fm, int per_octave, int octaves)
+{
+    return aero_is_finite(fm) && fm >= AERO_LEAFWAVE_FM_MIN &&
+        fm <= AERO_LEAFWAVE_FM_MAX && per_octave >= 1 &&
+        per_octave <= AERO_LEAFWAVE_PER_OCTAVE_MAX && octaves >= 1 &&
+        octaves <= AERO_LEAFWAVE_OCTAVES_MAX &&
+        per_octave * octaves <= AERO_LEAFWAVE_TABLES_MAX;
+}
+
+int aero_leafwave_reach_valid(double factor)
+{
+    double r = 0.0;
+    return aero_set_within(&r, factor, AERO_LEAFWAVE_REACH_MIN,
+                           AERO_LEAFWAVE_REACH_MAX) == 0;
+}
+
+void aero_leafwave_copy_settings(aero_leafwave *dst, const aero_leafwave *src)
+{
+    memcpy(dst->wind, src->wind, sizeof(dst->wind));
+    dst->inlet_speed = src->inlet_speed;
+    memcpy(dst->speed_dir, src->speed_dir, sizeof(dst->speed_dir));
+    aero_leafwave_set_stiffness(dst, src->stiffness);
+    aero_leafwave_set_beta(dst, src->beta);
+    dst->sway = src->sway;
+    dst->coupling = src->coupling;
+    dst->flutter_hz = src->flutter_hz;
+    dst->hit_pa = src->hit_pa;
+    dst->rub_pa = src->rub_pa;
+    dst->gain = src->gain;
+    memcpy(dst->mic, src->mic, sizeof(dst->mic));
+    dst->mic_k = src->mic_k;
+    if (dst->nvoices != src->nvoices)
+        aero_leafwave_set_voices(dst, src->nvoices);
+    aero_leafwave_set_ramp_ms(dst, 1000.0 * src->ramp_samples /
+                                       src->sample_rate);
+    if (dst->n_ears == src->n_ears) {
+        memcpy(dst->ear_target, src->ear_target, sizeof(dst->ear_target));
+        memcpy(dst->ear, src->ear, sizeof(dst->ear));
+        dst->ramp_left = src->ramp_left;
+    }
+}
+
+int aero_leafwave_build(aero_leafwave *lw, const aero_leafwave *src,
+                        const aero_leafwave_rebuild *want, aero_tree *t,
+                        char *err, size_t errlen)
+{
+    if (aero_leafwave_init(lw, src->sample_rate, src->n_ears, want->seed)) {
+        if (t)
+            aero_tree_free(t);
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+    if ((want->fm != lw->fm || want->per_octave != lw->tables_per_octave ||
+         want->octaves != lw->octaves) &&
+        aero_leafwave_set_tables(lw, want->fm, want->per_octave,
+                                 want->octaves)) {
+        if (t)
+            aero_tree_free(t);
+        aero_leafwave_free(lw);
+        snprintf(err, errlen, "out of memory for the tables");
+        return -1;
+    }
+    lw->reach = want->reach; /* no tree yet: nothing to rebuild */
+    aero_leafwave_copy_settings(lw, src);
+    if (t && aero_leafwave_set_tree(lw, t, err, errlen)) {
+        aero_leafwave_free(lw);
+        return -1;
+    }
+    return 0;
+}
+
+void aero_leafwave_move(aero_leafwave *dst, aero_leafwave *src)
+{
+    *dst = *src;
+    dst->motion.tree = &dst->tree; /* the motion points into its owner */
+    memset(src, 0, sizeof(*src));
+}

@@ -66,11 +66,23 @@ int aero_moving_player_set_exponent(aero_moving_player *p, double e)
     return 0;
 }
 
+/* The ears and the gain go to a new value at once while nothing sounds:
+   nothing heard moves, and a listener placed as a stream of poses begins
+   is not still flying there (2 m in 20 ms) when the sound starts, a
+   Doppler rate that steps at the glide's end (issue 48). */
+static void ramp_heard(const aero_moving_player *p, aero_ramp *r, double v)
+{
+    if (p->sounding)
+        aero_moving_player_ramp(p, r, v);
+    else
+        aero_ramp_jump(r, v);
+}
+
 int aero_moving_player_set_gain_db(aero_moving_player *p, double db)
 {
     if (!(db >= AERO_GAIN_DB_MIN && db <= AERO_GAIN_DB_MAX))
         return -1;
-    aero_moving_player_ramp(p, &p->gain, pow(10.0, db / 20.0));
+    ramp_heard(p, &p->gain, pow(10.0, db / 20.0));
     return 0;
 }
 
@@ -97,6 +109,6 @@ int aero_moving_player_set_ears(aero_moving_player *p, const aero_ears *e)
         return -1;
     for (int k = 0; k < e->n; k++)
         for (int i = 0; i < 3; i++)
-            aero_moving_player_ramp(p, &p->ear[3 * k + i], e->pos[k][i]);
+            ramp_heard(p, &p->ear[3 * k + i], e->pos[k][i]);
     return 0;
 }

@@ -37,6 +37,9 @@ typedef struct {
     aero_ramp gain;        /* linear */
     aero_arrivals arrivals; /* one ring per ear (arrivals.h) */
     int clamped;           /* a speed was clamped at Mach 0.3 */
+    int sounding;          /* a source radiated in the player's last chunk
+                              (the player sets it): the ears and the gain
+                              glide; while nothing sounds they jump */
 } aero_moving_player;
 
 /* Defaults: still air, one listener 1 m away along +y (stereo: ears at
@@ -52,7 +55,9 @@ void aero_moving_player_free(aero_moving_player *p);
 /* -1 invalid or out of memory (nothing changes), 0 unchanged, 1 changed:
  * the rings are new, the player re-primes its sources */
 int aero_moving_player_set_sample_rate(aero_moving_player *p, double sr);
-/* 0 accepted, -1 invalid (the previous value stays) */
+/* 0 accepted, -1 invalid (the previous value stays). The ears and the
+ * gain glide over the ramp time while the player sounds, and are there at
+ * once while it is silent. */
 int aero_moving_player_set_exponent(aero_moving_player *p, double e);
 int aero_moving_player_set_gain_db(aero_moving_player *p, double db);
 int aero_moving_player_set_ramp_ms(aero_moving_player *p, double ms);

@@ -2,7 +2,10 @@
  * (see pose_glide.h). */
 #include "pose_glide.h"
 
+#include <math.h>
 #include <string.h>
+
+#define AERO_GLIDE_PI 3.14159265358979323846
 
 void aero_pose_path_jump(aero_pose_path *p, int dim, const double *x)
 {
@@ -28,6 +31,7 @@ void aero_pose_path_to(aero_pose_path *p, const double *x, double interval)
         p->from_vel[i] = p->vel[i];
         p->to[i] = x[i];
     }
+    p->after_standing = !(p->duration > 0.0);
     p->elapsed = 0.0;
     p->duration = interval;
 }
@@ -59,15 +63,29 @@ void aero_pose_path_advance(aero_pose_path *p, double m)
         return;
     }
     /* on past the pose at that velocity for half an interval (a pose due
-       now may come late), then slowing evenly to rest at two intervals:
-       a stream that ends stops without a step of the velocity */
+       now may come late), then slowing to rest at two intervals on a half
+       cosine: a stream that ends stops without a step of the velocity or
+       of the acceleration (slowing evenly stepped the Doppler rate's slope
+       at both ends: a whirled sine's stop measured 3.7, issue 48) */
     double past = t - T, on = past < 0.5 * T ? past : 0.5 * T;
     double slow = past > 0.5 * T ? (past < T ? past : T) - 0.5 * T : 0.0;
-    double keep = 1.0 - slow / (0.5 * T);
+    double phase = 2.0 * AERO_GLIDE_PI * slow / T;
+    double keep = 0.5 + 0.5 * cos(phase);
+    double gone = 0.5 * slow + T / (4.0 * AERO_GLIDE_PI) * sin(phase);
     for (int i = 0; i < p->dim; i++) {
-        p->pos[i] = p->to[i] + (on + slow - slow * slow / T) * p->to_vel[i];
+        p->pos[i] = p->to[i] + (on + gone) * p->to_vel[i];
         p->vel[i] = keep * p->to_vel[i];
     }
+}
+
+int aero_pose_path_ended(const aero_pose_path *p)
+{
+    return p->duration > 0.0 && p->elapsed >= 2.0 * p->duration;
+}
+
+int aero_pose_path_waited(const aero_pose_path *p, double interval)
+{
+    return p->after_standing && p->duration > 2.0 * interval;
 }
 
 double aero_pose_path_pace(const aero_pose_path *p)
@@ -75,7 +93,9 @@ double aero_pose_path_pace(const aero_pose_path *p)
     const double T = p->duration;
     if (!(T > 0.0) || p->elapsed >= 2.0 * T)
         return 0.0;
-    return p->elapsed <= 1.5 * T ? 1.0 : 4.0 - 2.0 * p->elapsed / T;
+    return p->elapsed <= 1.5 * T
+               ? 1.0
+               : 0.5 + 0.5 * cos(2.0 * AERO_GLIDE_PI * (p->elapsed - 1.5 * T) / T);
 }
 
 /* --- the queue ------------------------------------------------------------ */

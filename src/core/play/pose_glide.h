@@ -10,9 +10,9 @@
  * pose) / interval, and the one before: a second-order backward
  * difference, exact for a constant acceleration), the chord alone after
  * a pause. Past the pose the path goes on at that velocity for half an
- * interval (a pose due now may come late), then slows evenly to rest at
- * two intervals (a stream that ends stops without a step of the
- * velocity). The path lags the stream by one interval.
+ * interval (a pose due now may come late), then slows on a half cosine
+ * to rest at two intervals (a stream that ends stops without a step of
+ * the velocity or its slope). The path lags the stream by one interval.
  * Why: a polyline through the poses steps the velocity, hence the
  * Doppler rate, at every pose, a click each time at the speed of a
  * whirled sword's tip (a whirled sine's click measure 12.7, against 3.8
@@ -38,6 +38,8 @@ typedef struct {
     double to_vel[AERO_GLIDE_DIM_MAX]; /* the stream's velocity at `to` */
     double elapsed, duration;        /* since the last pose; its interval */
     double chord[AERO_GLIDE_DIM_MAX]; /* (to - the pose before) / interval */
+    int after_standing;              /* the segment began with the path
+                                        standing (after a jump) */
 } aero_pose_path;
 
 /* the path stands at x (the first pose, a placement, a new gesture) */
@@ -46,6 +48,21 @@ void aero_pose_path_jump(aero_pose_path *p, int dim, const double *x);
 void aero_pose_path_to(aero_pose_path *p, const double *x, double interval);
 /* moves the path on by m samples: pos and vel at the new time */
 void aero_pose_path_advance(aero_pose_path *p, double m);
+/* 1 when the stream has ended: the path came to rest two intervals after
+ * its last pose. A pose after that begins a new gesture (the players jump
+ * to it): the path lags the stream by one interval, so gliding there over
+ * the pause and then catching up in one interval crossed the pause's
+ * whole way in a pose's interval, near Mach 1 for a sword after 0.3 s (a
+ * Doppler burst, click measure 7-330, issue 48). */
+int aero_pose_path_ended(const aero_pose_path *p);
+/* 1 when a pose `interval` samples after the last is the first of a
+ * gesture that began at the last pose: the running segment is the first
+ * after the path stood (placed, or a new gesture) and lasts more than
+ * twice the new interval, a wait and not a motion (a pose 0.2 s after a
+ * placement, then one every 5 ms). The players jump to the last pose and
+ * glide on from there: the path catching up a 0.2 s segment in 5 ms was a
+ * Doppler burst (click measure 935, issue 48). */
+int aero_pose_path_waited(const aero_pose_path *p, double interval);
 /* the fraction of the stream's velocity the path keeps now: 1 up to 1.5
  * intervals, falling to 0 as it comes to rest (0 standing: placed, or
  * never posed) */

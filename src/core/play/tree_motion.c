@@ -291,38 +291,50 @@ static void add_leaves(aero_tree_motion_state *st, const aero_tree *t,
 /* each branch's sway rate: the rotational spring of a cantilever bent by
    a tip moment, E I / l, over the rotational inertia of everything it
    carries about its start (own mass as a rod about its end, m l^2 / 3,
-   each descendant's mass at its midpoint, m |c - a|^2); inertia is
-   scratch of n values, zeroed */
+   each descendant's mass at its midpoint, m |c - a|^2). The descendants'
+   moments are gathered in one backward pass (children come after their
+   parents), each subtree's moments about its own start moved to the
+   parent's start by the parallel-axis theorem: O(n) for any shape, where
+   walking every branch's ancestors was O(n depth), quadratic for a long
+   chain. mom is scratch of 5 n values (mass, first moment, second
+   moment, all about the branch's start), zeroed. */
 static void set_sway_rates(aero_tree_motion_state *st, const aero_tree *t,
-                           const double *mass, double *inertia)
+                           const double *mass, double *mom)
 {
-    int i, j, k, n = st->n;
-    for (j = 0; j < n; j++) {
-        const aero_branch *b = &t->branches[j];
-        double c[3], l2 = 0.0;
+    int i, k, n = st->n;
+    for (i = n - 1; i >= 0; i--) {
+        const aero_branch *b = &t->branches[i];
+        double *m = &mom[5 * i], h[3], l2 = 0.0, len, ei, inertia, omega;
         for (k = 0; k < 3; k++) {
-            c[k] = 0.5 * (b->a[k] + b->b[k]);
+            h[k] = 0.5 * (b->b[k] - b->a[k]);
             l2 += (b->b[k] - b->a[k]) * (b->b[k] - b->a[k]);
         }
-        inertia[j] += mass[j] * l2 / 3.0;
-        for (i = b->parent; i >= 0; i = t->branches[i].parent) {
-            const double *a = t->branches[i].a;
-            double r2 = (c[0] - a[0]) * (c[0] - a[0])
-                + (c[1] - a[1]) * (c[1] - a[1])
-                + (c[2] - a[2]) * (c[2] - a[2]);
-            inertia[i] += mass[j] * r2;
-        }
-    }
-    for (i = 0; i < n; i++) {
-        const aero_branch *b = &t->branches[i];
-        double len = sqrt((b->b[0] - b->a[0]) * (b->b[0] - b->a[0])
-                          + (b->b[1] - b->a[1]) * (b->b[1] - b->a[1])
-                          + (b->b[2] - b->a[2]) * (b->b[2] - b->a[2]));
-        double ei = WOOD_E * AERO_PI * pow(b->d0, 4.0) / 64.0;
-        double omega = sqrt(ei / (len * inertia[i]));
+        /* m[4] holds the descendants' second moment about a */
+        inertia = mass[i] * l2 / 3.0 + m[4];
+        len = sqrt(l2);
+        ei = WOOD_E * AERO_PI * pow(b->d0, 4.0) / 64.0;
+        omega = sqrt(ei / (len * inertia));
         if (!(omega > OMEGA_MIN))
             omega = OMEGA_MIN;
         st->br[i].omega = omega;
+        if (b->parent >= 0 && b->parent < i) {
+            double *pm = &mom[5 * b->parent], d[3], s1d = 0.0, d2 = 0.0;
+            /* this subtree (own midpoint included) about a ... */
+            m[0] += mass[i];
+            for (k = 0; k < 3; k++)
+                m[1 + k] += mass[i] * h[k];
+            m[4] += mass[i] * 0.25 * l2;
+            /* ... then about the parent's start, a_p = a - d */
+            for (k = 0; k < 3; k++) {
+                d[k] = b->a[k] - t->branches[b->parent].a[k];
+                s1d += m[1 + k] * d[k];
+                d2 += d[k] * d[k];
+            }
+            pm[0] += m[0];
+            for (k = 0; k < 3; k++)
+                pm[1 + k] += m[1 + k] + m[0] * d[k];
+            pm[4] += m[4] + 2.0 * s1d + m[0] * d2;
+        }
     }
 }
 
@@ -331,7 +343,7 @@ int aero_tree_motion_init(aero_tree_motion *m, const aero_tree *t,
 {
     aero_tree_motion_state *st;
     int n = t ? t->nbranches : 0, i;
-    double *mass, *inertia;
+    double *mass, *moments;
     memset(m, 0, sizeof *m);
     m->tree = t;
     m->stiffness = 1.0;
@@ -343,10 +355,10 @@ int aero_tree_motion_init(aero_tree_motion *m, const aero_tree *t,
         return -1;
     m->state = st;
     mass = calloc((size_t)n, sizeof(double));
-    inertia = calloc((size_t)n, sizeof(double));
-    if (!mass || !inertia || alloc_state(st, n)) {
+    moments = calloc((size_t)n * 5, sizeof(double));
+    if (!mass || !moments || alloc_state(st, n)) {
         free(mass);
-        free(inertia);
+        free(moments);
         aero_tree_motion_free(m);
         return -1;
     }
@@ -355,8 +367,8 @@ int aero_tree_motion_init(aero_tree_motion *m, const aero_tree *t,
     for (i = 0; i < n; i++)
         init_branch(&st->br[i], &t->branches[i], i, seed, &mass[i]);
     add_leaves(st, t, mass);
-    set_sway_rates(st, t, mass, inertia);
-    free(inertia);
+    set_sway_rates(st, t, mass, moments);
+    free(moments);
     free(mass);
     place_branches(m, 0);
     place_branches(m, 1); /* the tree stands still until wind arrives */

@@ -616,14 +616,13 @@ void aero_treebranch_process(aero_treebranch *tb, float *out0, float *out1,
     }
 }
 
-/* the mean of a block of speeds; 0 when not finite or beyond 1e30 */
-static double block_mean(const float *in, int n)
+/* the mean of a block of speeds, each as aero_speed_in takes it */
+static double block_mean(const float *in, int n, int *clamped)
 {
     double sum = 0.0;
     for (int i = 0; i < n; i++)
-        sum += in[i];
-    double mean = sum / n;
-    return mean == mean && fabs(mean) <= 1e30 ? mean : 0.0;
+        sum += aero_speed_in(in[i], clamped);
+    return sum / n;
 }
 
 int aero_treebranch_process_speed(aero_treebranch *tb, const float *speed,
@@ -632,10 +631,42 @@ int aero_treebranch_process_speed(aero_treebranch *tb, const float *speed,
     int clamped = 0;
     /* frames are ~10 ms apart: one speed a block is enough */
     if (speed && n > 0) {
-        double u = block_mean(speed, n);
-        if (u != tb->speed)
-            clamped = aero_treebranch_set_speed(tb, u) == 1;
+        double u = block_mean(speed, n, &clamped);
+        if (u != tb->speed && aero_treebranch_set_speed(tb, u) == 1)
+            clamped = 1;
     }
     aero_treebranch_process(tb, out0, out1, n);
     return clamped;
+}
+
+/* ---- loading in a worker, swapping in Pd's thread ------------------------ */
+
+int aero_treebranch_copy_settings(aero_treebranch *dst,
+                                  const aero_treebranch *src)
+{
+    int r = 0;
+    memcpy(dst->speed_dir, src->speed_dir, sizeof dst->speed_dir);
+    dst->speed = src->speed;
+    if (dst->alpha != src->alpha)
+        aero_treebranch_set_alpha(dst, src->alpha);
+    dst->mic_k = src->mic_k;
+    memcpy(dst->mic_dir, src->mic_dir, sizeof dst->mic_dir);
+    dst->gain = src->gain;
+    dst->ramp_samples = src->ramp_samples * dst->sample_rate
+        / src->sample_rate;
+    dst->stereo = src->stereo;
+    memcpy(dst->ear_target, src->ear_target, sizeof dst->ear_target);
+    memcpy(dst->ear, src->ear, sizeof dst->ear);
+    dst->ramp_left = src->ramp_left;
+    aero_treebranch_set_stiffness(dst, src->motion.stiffness);
+    aero_treebranch_set_beta(dst, src->motion.beta);
+    aero_treebranch_set_wind(dst, src->wind);
+    return r;
+}
+
+void aero_treebranch_move(aero_treebranch *dst, aero_treebranch *src)
+{
+    *dst = *src;
+    dst->motion.tree = &dst->tree; /* the motion points into its owner */
+    memset(src, 0, sizeof *src);
 }

@@ -148,4 +148,16 @@ int aero_treebranch_process_speed(aero_treebranch *tb, const float *speed,
 int aero_treebranch_frame_power(aero_treebranch *tb, double *power,
                                 int max_bins);
 
+/* For a host that builds a new core in a worker and swaps it in (Pd's
+   [treebranch~]): the settings of src (wind, speed and its direction,
+   alpha, mic, gain, ramp, stereo, ears, stiffness, beta) given to
+   dst, reading only src's numbers (src may be a copy of a live core made
+   in the host's thread); not the seed, which restarts the motion (the
+   host builds a core with a new seed in the worker too). 0, or -1. */
+int aero_treebranch_copy_settings(aero_treebranch *dst,
+                                  const aero_treebranch *src);
+/* moves src's whole state into dst (dst's own is overwritten, not freed);
+   src is left empty (free it or init it again) */
+void aero_treebranch_move(aero_treebranch *dst, aero_treebranch *src);
+
 #endif

@@ -221,11 +221,11 @@ int aero_vortex_set_texture(aero_vortex *m, aero_texture *t,
 {
     float *tab = NULL;
     if (t) {
-        const char *kind = t->head.kind;
         int F = t->frames, ns = t->channels;
-        if (strcmp(kind, "vortex") || !t->speeds) {
-            snprintf(err, errlen, "not a vortex texture (kind=%s)",
-                     kind[0] ? kind : "?");
+        if (aero_texture_wrong_kind(t, "vortex", err, errlen))
+            return -1;
+        if (!t->speeds) {
+            snprintf(err, errlen, "a vortex texture without speeds");
             return -1;
         }
         if (F < 4 || ns < 1 || !(t->rate > 0.0)) {

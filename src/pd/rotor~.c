@@ -189,6 +189,8 @@ static void *rotor_tilde_new(t_symbol *s, int argc, t_atom *argv)
     (void)s;
     t_rotor_tilde *x = (t_rotor_tilde *)pd_new(rotor_tilde_class);
     aero_pd_base_init(&x->x_base, x, &rotor_tilde_spec, argc, argv);
+    x->x_base.clamp_words = "rpm clamped where the blade tips reach Mach "
+        AERO_PD_STR(AERO_ROTOR_MACH_TIP_MAX);
     if (aero_rotor_init(&x->x_core, sys_getsr(), x->x_base.stereo ? 2 : 1,
                         aero_pd_default_seed()))
         pd_error(x, OBJ ": out of memory for the delay lines: silent");

@@ -434,7 +434,7 @@ fieldsound~ | fieldsound~ -demo 8 -sync | ; aero-obj log 5 | log 5 out of range 
 fieldsound~ | fieldsound~ -demo 8 -sync | ; aero-obj velocity 7 | velocity 7 out of range (0..1 | -
 fieldsound~ | fieldsound~ -demo 8 -sync | ; aero-obj speed 1e-30 | speed 1e-30 frames/s out of range (0.001.. | -
 rotor~ | rotor~ | ; aero-obj blades 0 | blades 0 out of range (1..16 | -
-rotor~ | rotor~ -listener 0 2 0 | ; aero-speed 1e30 | clamped | -
+rotor~ | rotor~ -listener 0 2 0 | ; aero-speed 1e30 | rpm clamped where the blade tips reach Mach 0.9 | -
 "
 hostile_case_no=0
 printf '%s\n' "$hostile_cases" | grep -v '^[[:space:]]*$' >"$HOSTILE/cases.txt"

@@ -152,4 +152,6 @@ sh bench/load.sh
 [ -f bench/vortex.sh ] && sh bench/vortex.sh
 # 3D object textures: sphere and club, and [body~] per body
 [ -f bench/object.sh ] && sh bench/object.sh
+echo
+[ -f bench/rotor.sh ] && sh bench/rotor.sh
 exit 0

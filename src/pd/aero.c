@@ -7,7 +7,7 @@
  * builds, packages and Pd-side tests find src/pd/NAME~.c by themselves) */
 #define AERO_OBJECTS(X)                                                    \
     X(aeolian) X(cavity) X(treebranch) X(leafwave) X(vortex) X(fieldsound) \
-    X(body)
+    X(body) X(rotor)
 
 #define AERO_DECLARE(name) void name##_tilde_setup(void);
 #define AERO_SETUP(name) name##_tilde_setup();

@@ -192,9 +192,13 @@ t_symbol *aero_pd_first_symbol(int *argc, t_atom **argv)
 static void base_report(aero_pd_base *b)
 {
     if (b->clamped && !b->warned_clamp) {
-        pd_error(b->owner, "%s: flow speed above Mach 0.3 clamped to %g m/s "
-                 "(the model does not hold there)", b->obj,
-                 AERO_MACH_LIMIT * AERO_C0);
+        if (b->clamp_words)
+            pd_error(b->owner, "%s: %s (the model does not hold beyond)",
+                     b->obj, b->clamp_words);
+        else
+            pd_error(b->owner, "%s: flow speed above Mach 0.3 clamped to %g "
+                     "m/s (the model does not hold there)", b->obj,
+                     AERO_MACH_LIMIT * AERO_C0);
         b->warned_clamp = 1;
     }
     if (b->ceiling_hit && !b->warned_ceiling) {

@@ -154,6 +154,8 @@ typedef struct aero_pd_base {
     t_canvas *canvas; /* where files are looked for first */
     int stereo;       /* created with -stereo: two outlets, `ears` */
     int clamped;      /* set by perform, reported once by the clock */
+    const char *clamp_words; /* what the core clamps, when not a flow speed
+                                at Mach 0.3 ("blade tips at Mach 0.9") */
     int warned_clamp;
     int ceiling_hit;  /* set by perform: the output guard acted */
     int has_file;     /* a texture or tree was loaded and plays: a refused

@@ -105,6 +105,7 @@ cavity|-path aero|cavity~ -L 0.02 -D 0.01 -W 0.05|10|-|1
 cavity-texture|-path aero|cavity~ -texture cavity|10|-|1
 vortex|-path aero|vortex~ -texture fire -listener 0 2 0|8|-|1
 body|-path aero|body~ -texture sphere -listener 0 1 0|20|-|1
+rotor|-path aero|rotor~ -listener 0 1 0|3000|-|1
 treebranch|-path aero|treebranch~ small -listener 0 -12 1.7|8|-|1
 leafwave|-path aero|leafwave~ small|8|-|1
 fieldsound|-path aero|fieldsound~ -demo 8 -sync -listener 4 0 0|-|play|1
@@ -116,7 +117,11 @@ fire|-path aero|aero.fire~|-|-|2
 swing|-path aero|aero.swing~|-|bang|2
 throw|-path aero|aero.throw~|-|bang|2
 whirl|-path aero|aero.whirl~|-|rate 4 \\, whirl 1|2
-tree|-path aero|aero.tree~ small|-|-|2"
+tree|-path aero|aero.tree~ small|-|-|2
+fan|-path aero|aero.fan~|-|fan 1|2
+drone|-path aero|aero.drone~|-|thrust 1|2
+propeller|-path aero|aero.propeller~|-|-|2
+turbine|-path aero|aero.turbine~|-|-|2"
 
 DUR=2000
 write_patch() { # FILE DECLARE OBJECT SPEED MESSAGE WAV

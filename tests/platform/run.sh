@@ -265,6 +265,7 @@ compare cavity "cavity~ -L 0.02 -D 0.01 -W 0.05" 1 1000 "; aero-speed 10"
 compare vortex "vortex~ -texture fire -seed 5" 1 1000 "; aero-speed 8"
 compare body "body~ -texture sphere -seed 1" 1 1000 \
     "; aero-speed 10; aero-obj listener 0 3 0"
+compare rotor "rotor~ -listener 0 1 0" 1 1000 "; aero-speed 3000"
 compare tb-small "treebranch~ small -listener 0 -12 1.7" 1 1500 "; aero-speed 8"
 compare leafwave "leafwave~ small -seed 1" 1 1000 "; aero-speed 8"
 compare fieldsound "snapshot~|fieldsound~ -demo 24 -sync -listener 4 0 0" 1 400 \

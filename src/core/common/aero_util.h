@@ -185,6 +185,30 @@ static inline double aero_normalise3(double *a)
     return n;
 }
 
+/* R(q) v for a unit quaternion q = (w, x, y, z) */
+static inline void aero_quat_rotate(const double *q, const double *v,
+                                    double *out)
+{
+    double u[3] = {q[1], q[2], q[3]}, t[3], c[3];
+    aero_cross3(u, v, t);
+    for (int i = 0; i < 3; i++)
+        t[i] *= 2.0;
+    aero_cross3(u, t, c);
+    for (int i = 0; i < 3; i++)
+        out[i] = v[i] + q[0] * t[i] + c[i];
+}
+
+/* a rotation vector (axis times angle in degrees) as a unit quaternion */
+static inline void aero_quat_from_rotvec(const double r[3], double q[4])
+{
+    double axis[3] = {r[0], r[1], r[2]};
+    double deg = aero_normalise3(axis);
+    double half = 0.5 * deg * 3.14159265358979323846 / 180.0;
+    q[0] = cos(half);
+    for (int i = 0; i < 3; i++)
+        q[1 + i] = axis[i] * sin(half);
+}
+
 /* a looping texture's read position brought back into [0, frames): more
    than a whole texture per sample (a tiny body in a fast flow, a short
    texture) must still wrap into it, and a position that is not finite

@@ -13,26 +13,14 @@
 #define VELOCITY_TAU_S 0.008 /* smoothing of pose-derived velocities */
 #define MIN_SPEED 1e-6       /* below this the flow direction is unknown */
 
-/* R(q) v for a unit quaternion q = (w, x, y, z) */
 static void rotate(const double *q, const double *v, double *out)
 {
-    double u[3] = {q[1], q[2], q[3]}, t[3], c[3];
-    aero_cross3(u, v, t);
-    for (int i = 0; i < 3; i++)
-        t[i] *= 2.0;
-    aero_cross3(u, t, c);
-    for (int i = 0; i < 3; i++)
-        out[i] = v[i] + q[0] * t[i] + c[i];
+    aero_quat_rotate(q, v, out);
 }
 
 void aero_body_quaternion_from_rotvec(const double r[3], double q[4])
 {
-    double axis[3] = {r[0], r[1], r[2]};
-    double deg = aero_normalise3(axis);
-    double half = 0.5 * deg * AERO_PI / 180.0;
-    q[0] = cos(half);
-    for (int i = 0; i < 3; i++)
-        q[1 + i] = axis[i] * sin(half);
+    aero_quat_from_rotvec(r, q);
 }
 
 /* --- life cycle ----------------------------------------------------------- */

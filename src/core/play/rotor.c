@@ -1,0 +1,959 @@
+/* aero: a rotor's tones from Gutin's closed form per strip, heard from its
+ * moving hub (see rotor.h). */
+#include "rotor.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "aero_air.h"
+#include "airfoil_noise.h"
+
+/* area of a NACA four-digit section: 0.685 t c (Abbott & von Doenhoff
+   1959), the strip's displaced volume per unit span */
+#define SECTION_AREA 0.685
+/* harmonics below this fraction of the strongest are not rendered */
+#define HARMONIC_FLOOR 1e-4 /* -80 dB */
+#define TWO_PI (2.0 * AERO_PI)
+
+static void noise_bank(aero_rotor *r);
+
+/* --- geometry ------------------------------------------------------------- */
+
+/* the strips: centres of equal annuli from the hub to the tip; one strip
+   at Gutin's (1936) effective radius 0.8 R. Thrust and drag per strip ~
+   r^2 dr (the local dynamic pressure), summing to the rotor's thrust and
+   torque over the B blades. */
+static void layout(aero_rotor *r)
+{
+    const int N = r->strips, B = r->blades;
+    const double R = r->radius, h = r->hub;
+    const double dr = R * (1.0 - h) / N;
+    r->layout++; /* the strip sums are stale */
+    double w_sum = 0.0, q_arm = 0.0;
+    for (int s = 0; s < N; s++) {
+        double rs = N == 1 ? 0.8 * R : R * (h + (1.0 - h) * (s + 0.5) / N);
+        r->strip[s].r = rs;
+        r->strip[s].thrust = rs * rs; /* weights for now */
+        w_sum += rs * rs;
+    }
+    for (int s = 0; s < N; s++) {
+        double w = r->strip[s].thrust / w_sum;
+        r->strip[s].thrust = r->thrust * w / B;
+        q_arm += w * r->strip[s].r;
+        r->strip[s].volume = SECTION_AREA * r->thickness * r->chord *
+                             r->chord * (N == 1 ? R * (1.0 - h) : dr);
+    }
+    /* the drag follows the same r^2 weights: D_s = Q w_s / (B sum w r) */
+    for (int s = 0; s < N; s++) {
+        double w = r->strip[s].r * r->strip[s].r / w_sum;
+        r->strip[s].drag = r->torque * w / (B * q_arm);
+    }
+}
+
+/* --- life cycle ------------------------------------------------------------ */
+
+int aero_rotor_init(aero_rotor *r, double sample_rate, int n_ears,
+                    uint32_t seed)
+{
+    static const double unturned[7] = {0, 0, 0, 1, 0, 0, 0};
+    memset(r, 0, sizeof(*r));
+    r->blades = AERO_ROTOR_BLADES_DEFAULT;
+    r->strips = AERO_ROTOR_STRIPS_DEFAULT;
+    r->radius = AERO_ROTOR_RADIUS_DEFAULT;
+    r->chord = AERO_ROTOR_CHORD_DEFAULT;
+    r->thickness = AERO_ROTOR_THICKNESS_DEFAULT;
+    r->hub = AERO_ROTOR_HUB_DEFAULT;
+    r->thrust = AERO_ROTOR_THRUST_DEFAULT;
+    r->torque = AERO_ROTOR_TORQUE_DEFAULT;
+    r->design_rpm = AERO_ROTOR_DESIGN_DEFAULT;
+    r->noise_gain = pow(10.0, AERO_ROTOR_NOISE_DB_DEFAULT / 20.0);
+    layout(r);
+    memcpy(r->pose, unturned, sizeof(unturned));
+    aero_pose_path_jump(&r->path, 7, unturned);
+    int k = aero_moving_player_init(
+        &r->base,
+        sample_rate >= AERO_MOVING_SR_MIN && sample_rate <= AERO_MOVING_SR_MAX
+            ? sample_rate
+            : 48000.0,
+        n_ears, seed, AERO_ROTOR_CHUNK, AERO_ROTOR_MAX_DELAY_S);
+    noise_bank(r);
+    return k;
+}
+
+void aero_rotor_free(aero_rotor *r)
+{
+    aero_moving_player_free(&r->base);
+}
+
+/* --- settings -------------------------------------------------------------- */
+
+int aero_rotor_set_sample_rate(aero_rotor *r, double sr)
+{
+    int k = aero_moving_player_set_sample_rate(&r->base, sr);
+    if (k == 1) {
+        r->primed = 0; /* new rings: the sound starts again from 0 */
+        noise_bank(r);
+    }
+    return k < 0 ? -1 : 0;
+}
+
+/* a setting within lo..hi, then the strips laid out again */
+static int set_geometry(aero_rotor *r, double *field, double v, double lo,
+                        double hi)
+{
+    if (!(v >= lo && v <= hi))
+        return -1;
+    *field = v;
+    layout(r);
+    return 0;
+}
+
+static int set_whole(aero_rotor *r, int *field, double v, int lo, int hi)
+{
+    if (!(v >= lo && v <= hi) || v != floor(v))
+        return -1;
+    *field = (int)v;
+    layout(r);
+    return 0;
+}
+
+int aero_rotor_set_blades(aero_rotor *r, double blades)
+{
+    return set_whole(r, &r->blades, blades, AERO_ROTOR_BLADES_MIN,
+                     AERO_ROTOR_BLADES_MAX);
+}
+
+int aero_rotor_set_strips(aero_rotor *r, double strips)
+{
+    return set_whole(r, &r->strips, strips, AERO_ROTOR_STRIPS_MIN,
+                     AERO_ROTOR_STRIPS_MAX);
+}
+
+int aero_rotor_set_radius(aero_rotor *r, double m)
+{
+    return set_geometry(r, &r->radius, m, AERO_ROTOR_RADIUS_MIN,
+                        AERO_ROTOR_RADIUS_MAX);
+}
+
+int aero_rotor_set_chord(aero_rotor *r, double m)
+{
+    return set_geometry(r, &r->chord, m, AERO_ROTOR_CHORD_MIN,
+                        AERO_ROTOR_CHORD_MAX);
+}
+
+int aero_rotor_set_thickness(aero_rotor *r, double ratio)
+{
+    return set_geometry(r, &r->thickness, ratio, AERO_ROTOR_THICKNESS_MIN,
+                        AERO_ROTOR_THICKNESS_MAX);
+}
+
+int aero_rotor_set_hub(aero_rotor *r, double ratio)
+{
+    return set_geometry(r, &r->hub, ratio, AERO_ROTOR_HUB_MIN,
+                        AERO_ROTOR_HUB_MAX);
+}
+
+int aero_rotor_set_thrust(aero_rotor *r, double newton)
+{
+    return set_geometry(r, &r->thrust, newton, -AERO_ROTOR_THRUST_LIMIT,
+                        AERO_ROTOR_THRUST_LIMIT);
+}
+
+int aero_rotor_set_torque(aero_rotor *r, double newton_metre)
+{
+    return set_geometry(r, &r->torque, newton_metre,
+                        -AERO_ROTOR_TORQUE_LIMIT, AERO_ROTOR_TORQUE_LIMIT);
+}
+
+int aero_rotor_set_design(aero_rotor *r, double rpm)
+{
+    return set_geometry(r, &r->design_rpm, rpm, AERO_ROTOR_DESIGN_MIN,
+                        AERO_ROTOR_DESIGN_MAX);
+}
+
+int aero_rotor_set_noise_db(aero_rotor *r, double db)
+{
+    if (!(db >= AERO_ROTOR_NOISE_DB_MIN && db <= AERO_ROTOR_NOISE_DB_MAX))
+        return -1;
+    r->noise_gain = pow(10.0, db / 20.0);
+    return 0;
+}
+
+int aero_rotor_set_gain_db(aero_rotor *r, double db)
+{
+    return aero_moving_player_set_gain_db(&r->base, db);
+}
+
+int aero_rotor_set_ramp_ms(aero_rotor *r, double ms)
+{
+    return aero_moving_player_set_ramp_ms(&r->base, ms);
+}
+
+int aero_rotor_set_wind(aero_rotor *r, const double w[3])
+{
+    return aero_moving_player_set_wind(&r->base, w);
+}
+
+int aero_rotor_set_ears(aero_rotor *r, const aero_ears *e)
+{
+    return aero_moving_player_set_ears(&r->base, e);
+}
+
+/* --- pose ------------------------------------------------------------------ */
+
+/* a valid pose p: position, quaternion normalised (the shorter way round
+   from the last) */
+static void apply_pose(aero_rotor *r, double *p, double interval_s)
+{
+    const double *to = r->path.to;
+    if (p[3] * to[3] + p[4] * to[4] + p[5] * to[5] + p[6] * to[6] < 0.0)
+        for (int i = 3; i < 7; i++)
+            p[i] = -p[i];
+    if (!r->pose_set || interval_s < 0.0 || interval_s > 0.5) {
+        aero_pose_path_jump(&r->path, 7, p);
+        memcpy(r->pose, p, 7 * sizeof(double));
+        r->pose_set = 1;
+        return;
+    }
+    if (!(interval_s >= 0.001))
+        interval_s = 0.001;
+    aero_pose_path_to(&r->path, p, interval_s * r->base.sample_rate);
+}
+
+int aero_rotor_set_pose_at(aero_rotor *r, const double pos[3],
+                           const double quat[4], double interval_s,
+                           int offset)
+{
+    aero_pose_event e, oldest;
+    double n = sqrt(quat[0] * quat[0] + quat[1] * quat[1] +
+                    quat[2] * quat[2] + quat[3] * quat[3]);
+    if (!aero_position_ok(pos) || !aero_finite_within(quat, 4, 1e6) ||
+        !(n > 1e-9) || !aero_is_finite(interval_s))
+        return -1;
+    for (int i = 0; i < 3; i++)
+        e.x[i] = pos[i];
+    for (int i = 0; i < 4; i++)
+        e.x[3 + i] = quat[i] / n;
+    e.has_extra = 0;
+    e.interval_s = interval_s;
+    e.offset = offset;
+    if (aero_pose_queue_push(&r->queue, &e, &oldest))
+        apply_pose(r, oldest.x, oldest.interval_s); /* full: at once */
+    return 0;
+}
+
+void aero_rotor_orientation(const aero_rotor *r, double quat[4])
+{
+    const aero_pose_event *e = aero_pose_queue_back(&r->queue);
+    for (int k = 0; k < 4; k++)
+        quat[k] = e ? e->x[3 + k] : r->path.to[3 + k];
+}
+
+/* the pose at the chunk's end on the path, the quaternion normalised */
+static void advance_pose(aero_rotor *r, int m)
+{
+    double n = 0.0;
+    aero_pose_path_advance(&r->path, m);
+    memcpy(r->pose, r->path.pos, sizeof(r->pose));
+    for (int i = 3; i < 7; i++)
+        n += r->pose[i] * r->pose[i];
+    n = sqrt(n);
+    for (int i = 3; i < 7; i++)
+        r->pose[i] = n > 1e-12 ? r->pose[i] / n : (i == 3);
+}
+
+/* --- Gutin's harmonics ------------------------------------------------------- */
+
+/* J_n(z), n >= 1: its power series where z^2/4 < (n + 1)/2 (each term
+   at most half the last: no cancellation; the low orders and slow tips
+   of most rotors), else Miller's backward recurrence (stable for the
+   orders above z that a subsonic tip gives), normalised by
+   J_0 + 2 SUM J_2k = 1 */
+static double bessel_jn(int n, double z)
+{
+    if (!(z > 1e-9))
+        return 0.0;
+    const double q = 0.25 * z * z;
+    if (q < 0.5 * (n + 1)) {
+        double term = 1.0, sum = 0.0;
+        for (int k = 1; k <= n; k++)
+            term *= 0.5 * z / k;
+        for (int k = 0; k < 60 && term != 0.0; k++) {
+            sum += term;
+            if (fabs(term) < 1e-8 * fabs(sum)) /* float output */
+                break;
+            term *= -q / ((k + 1.0) * (n + k + 1.0));
+        }
+        return sum;
+    }
+    int start = n + (int)sqrt(40.0 * (n + z)) + 10;
+    start += start & 1;
+    double next = 0.0, cur = 1e-30, norm = 0.0, jn = 0.0;
+    for (int k = start; k > 0; k--) {
+        double prev = 2.0 * k / z * cur - next; /* J_{k-1} */
+        next = cur;
+        cur = prev;
+        if (k - 1 == n)
+            jn = cur;
+        if (k - 1 > 0 && (k - 1) % 2 == 0)
+            norm += 2.0 * cur;
+        if (fabs(cur) > 1e200) { /* rescale all so far */
+            next *= 1e-200;
+            cur *= 1e-200;
+            norm *= 1e-200;
+            jn *= 1e-200;
+        }
+    }
+    norm += cur; /* J_0 */
+    return jn / norm;
+}
+
+/* the strip sums of harmonic m (n = mB) at x = Omega sin(theta) into
+   slot m - 1 of u: J_n(n x r_s / c0) times each strip's thrust, drag and
+   volume */
+static void strip_sums(const aero_rotor *r, double x, int m,
+                       aero_rotor_sums *u)
+{
+    const int n = m * r->blades;
+    double t = 0.0, d = 0.0, v = 0.0;
+    for (int q = 0; q < r->strips; q++) {
+        const aero_rotor_strip *sp = &r->strip[q];
+        double jn = bessel_jn(n, n * x * sp->r / AERO_C0);
+        t -= jn * sp->thrust;
+        d += jn * sp->drag * AERO_C0 / sp->r;
+        v += jn * sp->volume;
+    }
+    u->thrust[m - 1] = t;
+    u->drag[m - 1] = d;
+    u->volume[m - 1] = v;
+}
+
+/* the coefficients of cos(n Psi) and sin(n Psi), n = mB, of the tone at
+   distance d, cos(theta) ct in the rotor frame and e^{i g} = (cg, sg),
+   g = n (phi - pi/2), angular speed omega > 0, from the strip sums u
+   (rotor.h's formula) */
+static void harmonic_at(const aero_rotor *r, const aero_rotor_sums *u,
+                        double omega, double ct, double cg, double sg,
+                        double d, int m, double *c, double *s)
+{
+    const int B = r->blades, n = m * B;
+    const double load = (omega * 60.0 / TWO_PI) / r->design_rpm;
+    const double k2 = load * load; /* loading ~ rpm^2 */
+    double L = k2 * (u->thrust[m - 1] * ct + u->drag[m - 1] / omega);
+    double K = n * omega * B / (4.0 * AERO_PI * AERO_C0 * d);
+    double th = n * omega * AERO_RHO * AERO_C0 * u->volume[m - 1];
+    *c = 2.0 * K * (-th * cg + L * sg);
+    *s = 2.0 * K * (-L * cg - th * sg);
+}
+
+double aero_rotor_harmonic_amplitude(const aero_rotor *r, int m,
+                                     double omega, double theta, double d)
+{
+    double c, s;
+    aero_rotor_sums u;
+    if (m < 1 || m > AERO_ROTOR_HARMONICS_MAX || !(omega > 0.0) ||
+        !(d > 0.0))
+        return 0.0;
+    double g = m * r->blades * -0.5 * AERO_PI;
+    strip_sums(r, omega * sin(theta), m, &u);
+    harmonic_at(r, &u, omega, cos(theta), cos(g), sin(g), d, m, &c, &s);
+    return hypot(c, s);
+}
+
+/* the coefficients of harmonics 1..h at an ear: all below the Nyquist
+   frequency, stopping past the strongest once they fall below
+   HARMONIC_FLOOR of it (a subsonic tip's harmonics fall geometrically) */
+static void ear_tones(aero_rotor *r, double omega, const double *ear,
+                      const double *axes, aero_rotor_sums *u,
+                      aero_rotor_ear *out)
+{
+    const double nyq = 0.45 * r->base.sample_rate * TWO_PI;
+    const double w = fabs(omega);
+    double v[3], d, x, y, zc, ct, st, phi, best = 0.0;
+    int h_max;
+    for (int i = 0; i < 3; i++)
+        v[i] = ear[i] - r->pose[i];
+    d = sqrt(aero_dot3(v, v));
+    out->delay = d / AERO_C0 * r->base.sample_rate;
+    memset(out->c, 0, sizeof(out->c));
+    memset(out->s, 0, sizeof(out->s));
+    out->h = 0;
+    if (d < 1e-3)
+        d = 1e-3; /* the listener inside the hub */
+    x = aero_dot3(v, axes) / d;
+    y = aero_dot3(v, axes + 3) / d;
+    zc = aero_dot3(v, axes + 6) / d;
+    ct = zc > 1.0 ? 1.0 : zc < -1.0 ? -1.0 : zc;
+    st = sqrt(fmax(0.0, 1.0 - ct * ct));
+    phi = atan2(y, x);
+    if (omega < 0.0) /* turning the other way: the mirror image */
+        phi = -phi;
+    if (!(w > 1e-6))
+        return;
+    double below = nyq / (w * r->blades); /* harmonics under Nyquist */
+    h_max = below < AERO_ROTOR_HARMONICS_MAX ? (int)below
+                                             : AERO_ROTOR_HARMONICS_MAX;
+    /* the strip sums, made again when Omega sin(theta) has moved */
+    if (u->layout != r->layout ||
+        !(fabs(w * st - u->key) <= AERO_ROTOR_SUMS_TOLERANCE * w * st)) {
+        u->h = 0;
+        u->key = w * st;
+        u->layout = r->layout;
+    }
+    /* e^{i m B (phi - pi/2)}, harmonic by harmonic */
+    const double g1 = r->blades * (phi - 0.5 * AERO_PI);
+    const double rc = cos(g1), rs = sin(g1);
+    double cg = 1.0, sg = 0.0;
+    for (int m = 1; m <= h_max; m++) {
+        double c1, s1, t = cg * rc - sg * rs;
+        sg = cg * rs + sg * rc;
+        cg = t;
+        if (m > u->h) {
+            strip_sums(r, u->key, m, u);
+            u->h = m;
+        }
+        harmonic_at(r, u, w, ct, cg, sg, d, m, &c1, &s1);
+        double a = hypot(c1, s1);
+        out->c[m - 1] = c1;
+        out->s[m - 1] = omega < 0.0 ? -s1 : s1;
+        out->h = m;
+        if (a > best)
+            best = a;
+        else if (m > 2 && a < HARMONIC_FLOOR * best)
+            break;
+    }
+}
+
+/* --- broadband: the blades' self-noise ------------------------------------- */
+
+/* octave j's centre, the middle third of its three (IEC 61260's base-ten
+   series from 50 Hz: 63 Hz .. 16 kHz) */
+static double octave_hz(int j)
+{
+    return pow(10.0, (17 + 3 * j + 1) / 10.0);
+}
+
+/* the band-passes of the octaves under 0.45 sr, each two RBJ band-pass
+   stages (0 dB peak, Q 0.9: -3 dB at the octave's edges, skirts falling
+   12 dB per octave, so that a band's leakage into the next but one is
+   small), and the inverse of their leakage: leak[j][i] the
+   part of band-pass i's output power (white input) inside octave j, so
+   that gains solving leak g^2 = P give each octave its power P_j */
+static void noise_bank(aero_rotor *r)
+{
+    aero_rotor_noise *z = &r->noise;
+    const double sr = r->base.sample_rate, Q = 0.9;
+    enum { K = AERO_ROTOR_BANDS, F = 2048 };
+    double leak[K * K], inv[K * K];
+    int n = 0;
+    for (int i = 0; i < AERO_ROTOR_LANES; i++) {
+        z->b0[i] = z->a1[i] = z->a2[i] = z->gain[i] = 0.0f;
+        z->x1[i] = z->x2[i] = z->y1[i] = z->y2[i] = z->u1[i] = z->u2[i] = 0.0f;
+        z->rng[i] = aero_run_seed(r->base.rng, i) | 1u;
+    }
+    while (n < K && octave_hz(n) * sqrt(2.0) < 0.45 * sr)
+        n++;
+    z->bands = n;
+    z->cached = z->next = z->have = 0; /* the spectra kept: other bands */
+    for (int i = 0; i < n; i++) {
+        double w0 = TWO_PI * octave_hz(i) / sr, al = sin(w0) / (2.0 * Q);
+        z->b0[i] = (float)(al / (1.0 + al));
+        z->a1[i] = (float)(-2.0 * cos(w0) / (1.0 + al));
+        z->a2[i] = (float)((1.0 - al) / (1.0 + al));
+    }
+    memset(leak, 0, sizeof(leak));
+    for (int f = 0; f < F; f++) { /* the response on a grid to Nyquist */
+        double hz = (f + 0.5) * 0.5 * sr / F, w = TWO_PI * hz / sr;
+        int j = (int)floor(log2(hz / octave_hz(0)) + 0.5);
+        if (j < 0 || j >= n)
+            continue;
+        for (int i = 0; i < n; i++) {
+            double b0 = z->b0[i], a1 = z->a1[i], a2 = z->a2[i];
+            /* |b0 (1 - e^{-2iw})|^2 / |1 + a1 e^{-iw} + a2 e^{-2iw}|^2 */
+            double nr = 1.0 - cos(2 * w), ni = sin(2 * w);
+            double dr = 1.0 + a1 * cos(w) + a2 * cos(2 * w);
+            double di = -a1 * sin(w) - a2 * sin(2 * w);
+            double h2 = b0 * b0 * (nr * nr + ni * ni) / (dr * dr + di * di);
+            leak[j * K + i] += h2 * h2 / F; /* two stages */
+        }
+    }
+    /* Gauss-Jordan on the n x n block (diagonally dominant) */
+    for (int j = 0; j < n; j++)
+        for (int i = 0; i < n; i++)
+            inv[j * K + i] = i == j;
+    for (int c = 0; c < n; c++) {
+        double p = leak[c * K + c];
+        for (int i = 0; i < n; i++) {
+            leak[c * K + i] /= p;
+            inv[c * K + i] /= p;
+        }
+        for (int j = 0; j < n; j++) {
+            double f = leak[j * K + c];
+            if (j == c)
+                continue;
+            for (int i = 0; i < n; i++) {
+                leak[j * K + i] -= f * leak[c * K + i];
+                inv[j * K + i] -= f * inv[c * K + i];
+            }
+        }
+    }
+    memcpy(z->unmix, inv, sizeof(inv));
+    z->layout = -1; /* the spectrum is made again */
+}
+
+/* the span of one strip, m */
+static double strip_span(const aero_rotor *r)
+{
+    return r->radius * (1.0 - r->hub) / (r->strips == 1 ? 1 : r->strips);
+}
+
+/* strip q of one blade as an airfoil section (Brooks et al. 1989): tripped
+   (a rotor's blades in real air), a sharp trailing edge of the report's
+   NACA 0012 angle, a rounded tip on the outermost strip */
+static void strip_airfoil(const aero_rotor *r, int q, aero_airfoil *a)
+{
+    memset(a, 0, sizeof(*a));
+    a->chord = (float)r->chord;
+    a->span = (float)strip_span(r);
+    a->te_thickness = (float)(0.005 * r->chord);
+    a->te_angle_deg = 14.0f;
+    a->tripped = 1;
+    a->tip = q == r->strips - 1 ? AERO_AIRFOIL_TIP_ROUNDED
+                                : AERO_AIRFOIL_NO_TIP;
+}
+
+/* each strip's self-noise at 1 m straight above it (D_h = 1) at angular
+   speed w and axial inflow u, and the octave gains of their sum */
+static void noise_spectrum_make(aero_rotor *r, double w, double u)
+{
+    aero_rotor_noise *z = &r->noise;
+    enum { K = AERO_ROTOR_BANDS, T = AERO_ROTOR_THIRDS };
+    float hz[T], spl[AERO_BPM_MECHANISMS * T], tot[T];
+    double band[K], g2[K], sum = 0.0;
+    aero_third_octave_bands(50.0f, 20000.0f, hz, T);
+    memset(band, 0, sizeof(band));
+    for (int q = 0; q < r->strips; q++) {
+        const aero_rotor_strip *sp = &r->strip[q];
+        aero_airfoil a;
+        aero_airfoil_observer o = {1.0f, 90.0f, 90.0f};
+        double U = hypot(w * sp->r, u), load = (w * 60.0 / TWO_PI) /
+                                                r->design_rpm;
+        /* the model's range: Mach below 0.5 */
+        if (U > 0.45 * AERO_C0)
+            U = 0.45 * AERO_C0;
+        /* the angle of attack that carries the strip's thrust: thin
+           airfoil C_L = 2 pi alpha */
+        double cl = U > 1e-3 ? fabs(load * load * sp->thrust) /
+                                   (0.5 * AERO_RHO * U * U * strip_span(r)
+                                    * r->chord)
+                             : 0.0;
+        double alpha = cl / TWO_PI * 180.0 / AERO_PI;
+        aero_airfoil_flow f = {(float)U, (float)(alpha < 25.0 ? alpha : 25.0),
+                               (float)AERO_C0, (float)AERO_NU};
+        strip_airfoil(r, q, &a);
+        a.tip_alpha_deg = f.alpha_deg;
+        z->power[q] = 0.0;
+        z->mach[q] = U / AERO_C0;
+        if (U < 0.1 ||
+            aero_airfoil_noise_spectrum(&a, &f, &o, hz, T, spl) != 0)
+            continue;
+        aero_airfoil_noise_total(spl, T, tot);
+        for (int k = 0; k < T; k++) {
+            double p = 4e-10 * pow(10.0, 0.1 * tot[k]); /* (20 uPa)^2 */
+            z->power[q] += p;
+            band[k / 3] += p;
+        }
+    }
+    for (int j = 0; j < z->bands; j++)
+        sum += band[j];
+    for (int j = 0; j < z->bands; j++) {
+        g2[j] = 0.0;
+        for (int i = 0; i < z->bands; i++)
+            g2[j] += z->unmix[j * K + i] * (sum > 0.0 ? band[i] / sum : 0.0);
+    }
+    for (int j = 0; j < K; j++)
+        z->gain[j] = j < z->bands && g2[j] > 0.0 ? (float)sqrt(g2[j]) : 0.0f;
+    /* the lanes beyond the bands stay silent (zero gains and filters) */
+}
+
+/* the self-noise spectrum at angular speed w and axial inflow u: made at
+   the nearest speed of a grid of ratio 1 + AERO_ROTOR_NOISE_TOLERANCE
+   (its shape moves with log U: its frequencies are off by at most half a
+   step), kept for AERO_ROTOR_SPECTRA grid steps; the powers follow the
+   speed from the grid's as U^5 and the Mach numbers as U (z->scale), the
+   trailing edge's law (Brooks et al. 1989: SPL with 10 log M^5), so the
+   level is not off */
+static void noise_spectrum(aero_rotor *r, double w, double u)
+{
+    aero_rotor_noise *z = &r->noise;
+    const double key = w * r->radius + fabs(u);
+    const double ln_step = log1p(AERO_ROTOR_NOISE_TOLERANCE);
+    if (z->layout != r->layout) {
+        z->layout = r->layout;
+        z->cached = z->next = z->have = 0;
+    }
+    if (!(key > 1e-6)) { /* still: silent, not kept */
+        noise_spectrum_make(r, w, u);
+        z->scale = 1.0;
+        z->have = 0;
+        return;
+    }
+    const int step = (int)floor(log(key) / ln_step + 0.5);
+    const double kq = exp(step * ln_step), f = kq / key;
+    z->scale = key / kq;
+    if (z->have && z->step == step)
+        return;
+    z->have = 1;
+    z->step = step;
+    for (int i = 0; i < z->cached; i++)
+        if (z->cache_step[i] == step) {
+            memcpy(z->gain, z->cache_gain[i], sizeof(z->gain));
+            memcpy(z->power, z->cache_power[i], sizeof(z->power));
+            memcpy(z->mach, z->cache_mach[i], sizeof(z->mach));
+            return;
+        }
+    noise_spectrum_make(r, w * f, u * f);
+    int i = z->next;
+    z->next = (z->next + 1) % AERO_ROTOR_SPECTRA;
+    if (z->cached < AERO_ROTOR_SPECTRA)
+        z->cached++;
+    z->cache_step[i] = step;
+    memcpy(z->cache_gain[i], z->gain, sizeof(z->gain));
+    memcpy(z->cache_power[i], z->power, sizeof(z->power));
+    memcpy(z->cache_mach[i], z->mach, sizeof(z->mach));
+}
+
+/* the broadband's envelope at an ear over one blade passing: the
+ * strips' self-noise powers heard through Brooks et al.'s (1989)
+ * high-frequency directivity D_h (a half-plane's trailing edge, with the
+ * convective amplification of the strip's Mach number: loudest towards
+ * the blade's leading edge as it comes) and 1/r^2, summed over blades and
+ * strips (incoherent), at AERO_ROTOR_AZIMUTHS rotor positions; env: the
+ * amplitude's mean, then its cos and sin harmonics of B Psi. Each strip's
+ * chord lies along the air's flow past it (its motion and the inflow u
+ * along the axis: a turbine's blades are pitched into the wind), its
+ * normal = span x chord */
+/* ear_envelope's table of cos (2 pi k / 8) holds for 8 azimuths */
+typedef char aero_rotor_azimuths_are_8[AERO_ROTOR_AZIMUTHS == 8 ? 1 : -1];
+
+static void ear_envelope(const aero_rotor *r, double omega, double u,
+                         const double *ear, const double *axes, double *env)
+{
+    enum { NA = AERO_ROTOR_AZIMUTHS };
+    const aero_rotor_noise *z = &r->noise;
+    const int B = r->blades;
+    const double sense = omega < 0.0 ? -1.0 : 1.0;
+    /* cos and sin of multiples of 2 pi / NA (NA = 8) */
+    static const double c8[8] = {1.0, 0.70710678118654752, 0.0,
+                                 -0.70710678118654752, -1.0,
+                                 -0.70710678118654752, 0.0,
+                                 0.70710678118654752};
+    const double s5 = z->scale * z->scale * z->scale * z->scale * z->scale;
+    double a[NA], rel[3], cws[AERO_ROTOR_STRIPS_MAX], aws[AERO_ROTOR_STRIPS_MAX],
+        Ms[AERO_ROTOR_STRIPS_MAX], Ps[AERO_ROTOR_STRIPS_MAX];
+    for (int i = 0; i < 3; i++)
+        rel[i] = ear[i] - r->pose[i];
+    const double vz = aero_dot3(rel, axes + 6), v2 = aero_dot3(rel, rel);
+    /* each strip's chord downstream: (-Omega r e_t + u a) / |W|, the
+       normal (span x chord) (-Omega r a - u e_t) / |W| */
+    for (int q = 0; q < r->strips; q++) {
+        double wt = fabs(omega) * r->strip[q].r, W = hypot(wt, u);
+        cws[q] = W > 0.0 ? -wt / W : -1.0;
+        aws[q] = W > 0.0 ? u / W : 0.0;
+        Ms[q] = z->mach[q] * z->scale;
+        Ps[q] = z->power[q] * s5;
+    }
+    for (int j = 0; j < NA; j++) {
+        double P = 0.0;
+        for (int b = 0; b < B; b++) {
+            double psi = TWO_PI * ((double)j / (B * NA) + (double)b / B);
+            double cp = cos(psi), sp = sin(psi), er[3], et[3];
+            for (int i = 0; i < 3; i++) {
+                er[i] = cp * axes[i] + sp * axes[3 + i];
+                et[i] = sense * (-sp * axes[i] + cp * axes[3 + i]);
+            }
+            double vt = aero_dot3(rel, et), vr = aero_dot3(rel, er);
+            for (int q = 0; q < r->strips; q++) {
+                double rq = r->strip[q].r, y = vr - rq; /* from the strip */
+                double d2 = v2 - vr * vr + y * y, M = Ms[q];
+                double vx = cws[q] * vt + aws[q] * vz;
+                double vn = cws[q] * vz - aws[q] * vt;
+                double yz = y * y + vn * vn;
+                if (!(d2 > 1e-6) || !(yz > 0.0) || Ps[q] <= 0.0)
+                    continue;
+                /* D_h / d^2 with sin^2 = vn^2 / yz, in one division */
+                double ct = vx / sqrt(d2), c1 = 1.0 + 0.2 * M * ct;
+                P += Ps[q] * (1.0 - ct) * vn * vn /
+                     ((1.0 + M * ct) * c1 * c1 * d2 * yz);
+            }
+        }
+        a[j] = r->noise_gain * sqrt(P);
+    }
+    for (int k = 0; k <= AERO_ROTOR_ENVELOPE; k++) {
+        double c = 0.0, s = 0.0;
+        for (int j = 0; j < NA; j++) {
+            c += a[j] * c8[(k * j) % NA];
+            s += a[j] * c8[(k * j + 6) % NA]; /* sin x = cos(x - pi/2) */
+        }
+        if (k == 0)
+            env[0] = c / NA;
+        else {
+            env[2 * k - 1] = 2.0 * c / NA;
+            env[2 * k] = 2.0 * s / NA;
+        }
+    }
+}
+
+/* m samples of the rotor's unit-power self-noise spectrum: each octave
+   band-pass fed its own white noise (the bands overlap: one noise through
+   all would add their outputs coherently where they overlap, and the
+   powers the gains were solved for would not add), weighted by its gain.
+   The bands are lanes of one loop (independent: it vectorises) */
+static void noise_chunk(aero_rotor *r, float *out, int m)
+{
+    enum { L = AERO_ROTOR_LANES };
+    aero_rotor_noise *z = &r->noise;
+    /* xorshift32 as a signed int, to unit variance: 2^-31 sqrt 3 */
+    const float amp = 1.7320508f / 2147483648.0f;
+    /* the lanes in locals: no aliasing with out, so the loop over the
+       lanes vectorises */
+    float b0[L], a1[L], a2[L], g[L], x1[L], x2[L], y1[L], y2[L], u1[L],
+        u2[L];
+    uint32_t rng[L];
+    memcpy(b0, z->b0, sizeof(b0));
+    memcpy(a1, z->a1, sizeof(a1));
+    memcpy(a2, z->a2, sizeof(a2));
+    memcpy(g, z->gain, sizeof(g));
+    memcpy(x1, z->x1, sizeof(x1));
+    memcpy(x2, z->x2, sizeof(x2));
+    memcpy(y1, z->y1, sizeof(y1));
+    memcpy(y2, z->y2, sizeof(y2));
+    memcpy(u1, z->u1, sizeof(u1));
+    memcpy(u2, z->u2, sizeof(u2));
+    memcpy(rng, z->rng, sizeof(rng));
+    /* the lanes in use: the bands rounded up to four (a SIMD register);
+       at 44.1 and 48 kHz 8 of the 12 (the lanes beyond are silent) */
+    const int n = (z->bands + 3) / 4 * 4 < L ? (z->bands + 3) / 4 * 4 : L;
+    for (int j = 0; j < m; j++) {
+        float lane[L], sum = 0.0f;
+        for (int i = 0; i < n; i++) {
+            uint32_t v = rng[i];
+            v ^= v << 13;
+            v ^= v >> 17;
+            v ^= v << 5;
+            rng[i] = v;
+            float x = amp * (float)(int32_t)v;
+            float y = b0[i] * (x - x2[i]) - a1[i] * y1[i] - a2[i] * y2[i];
+            float u = b0[i] * (y - y2[i]) - a1[i] * u1[i] - a2[i] * u2[i];
+            x2[i] = x1[i];
+            x1[i] = x;
+            y2[i] = y1[i];
+            y1[i] = y;
+            u2[i] = u1[i];
+            u1[i] = u;
+            lane[i] = g[i] * u;
+        }
+        for (int i = 0; i < n; i++) /* in order: no reassociation */
+            sum += lane[i];
+        out[j] = sum;
+    }
+    memcpy(z->x1, x1, sizeof(x1));
+    memcpy(z->x2, x2, sizeof(x2));
+    memcpy(z->y1, y1, sizeof(y1));
+    memcpy(z->y2, y2, sizeof(y2));
+    memcpy(z->u1, u1, sizeof(u1));
+    memcpy(z->u2, u2, sizeof(u2));
+    memcpy(z->rng, rng, sizeof(rng));
+}
+
+/* --- processing ---------------------------------------------------------------- */
+
+/* a ramp's value after m samples (a chunk, or less where a pose splits
+   it) */
+static double ramp_after(aero_ramp *r, int m)
+{
+    if (r->left > 0.0)
+        aero_glide_values(&r->value, &r->target, 1,
+                          aero_glide_fraction(&r->left, m));
+    return r->value;
+}
+
+/* the tones of one ear over m samples: the coefficients and the delay
+   glide from then to now, the phase turns from psi0 by dpsi a sample.
+   Each harmonic keeps its own phasor e^{i (k+1) B psi}, turned by its own
+   step (set exactly in double at each chunk): the harmonics are
+   independent, so the loop over them vectorises */
+static void radiate(aero_rotor *r, const aero_rotor_ear *then,
+                    const aero_rotor_ear *now, double gain0, double gain1,
+                    double psi0, double dpsi, const float *noise, int e,
+                    int m)
+{
+    enum { H = AERO_ROTOR_HARMONICS_MAX };
+    const int h = then->h > now->h ? then->h : now->h;
+    const double inv_m = 1.0 / m, B = r->blades;
+    float c[H], s[H], dc[H], ds[H], zr[H], zi[H], tr[H], ti[H];
+    float *ring = r->base.arrivals.ring[e];
+    const long mask = r->base.arrivals.mask;
+    const double ddelay = (now->delay - then->delay) * inv_m;
+    double at = (double)r->base.arrivals.head + then->delay;
+    /* the broadband's envelope: its harmonics k B psi, k = 0..2 */
+    float ev[5], dev[5], er, ei, etr, eti;
+    for (int k = 0; k < 5; k++) {
+        ev[k] = (float)(gain0 * then->env[k]);
+        dev[k] = (float)((gain1 * now->env[k] - gain0 * then->env[k]) * inv_m);
+    }
+    /* e^{i n psi0} and e^{i n dpsi} for n = (k+1) B as powers of the
+       first, in double (each product's rounding 1e-16: 40 of them far
+       below float's) instead of four cos and sin a harmonic */
+    const double z1r = cos(B * psi0), z1i = sin(B * psi0);
+    const double t1r = cos(B * dpsi), t1i = sin(B * dpsi);
+    double znr = z1r, zni = z1i, tnr = t1r, tni = t1i;
+    er = (float)z1r;
+    ei = (float)z1i;
+    etr = (float)t1r;
+    eti = (float)t1i;
+    for (int k = 0; k < h; k++) {
+        c[k] = (float)(gain0 * then->c[k]);
+        s[k] = (float)(gain0 * then->s[k]);
+        dc[k] = (float)((gain1 * now->c[k] - gain0 * then->c[k]) * inv_m);
+        ds[k] = (float)((gain1 * now->s[k] - gain0 * then->s[k]) * inv_m);
+        zr[k] = (float)znr;
+        zi[k] = (float)zni;
+        tr[k] = (float)tnr;
+        ti[k] = (float)tni;
+        double a = znr * z1r - zni * z1i, b = tnr * t1r - tni * t1i;
+        zni = znr * z1i + zni * z1r;
+        znr = a;
+        tni = tnr * t1i + tni * t1r;
+        tnr = b;
+    }
+    for (int j = 0; j < m; j++) {
+        float e2r = er * er - ei * ei, e2i = 2.0f * er * ei;
+        float env = ev[0] + ev[1] * er + ev[2] * ei + ev[3] * e2r +
+                    ev[4] * e2i;
+        float v = (env > 0.0f ? env : 0.0f) * noise[j];
+        float nr = er * etr - ei * eti;
+        ei = er * eti + ei * etr;
+        er = nr;
+        for (int k = 0; k < 5; k++)
+            ev[k] += dev[k];
+        for (int k = 0; k < h; k++) {
+            v += c[k] * zr[k] + s[k] * zi[k];
+            float wr = zr[k] * tr[k] - zi[k] * ti[k];
+            zi[k] = zr[k] * ti[k] + zi[k] * tr[k];
+            zr[k] = wr;
+            c[k] += dc[k];
+            s[k] += ds[k];
+        }
+        aero_arrivals_add_span(ring, mask, at, 1.0 + ddelay, v);
+        at += 1.0 + ddelay;
+    }
+}
+
+/* the rotor's axes in the world: e1, e2 and the thrust axis, from the
+   pose's quaternion */
+static void rotor_axes(const aero_rotor *r, double *axes)
+{
+    static const double unit[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (int k = 0; k < 3; k++)
+        aero_quat_rotate(r->pose + 3, unit[k], axes + 3 * k);
+}
+
+/* the speed of rotation over a chunk, rad per sample, each sample's rpm
+   clamped to the tip Mach limit (NaN as 0); sets *clamped */
+static double chunk_turn(const aero_rotor *r, const float *rpm, int m,
+                         int *clamped)
+{
+    const double max_rpm = AERO_ROTOR_MACH_TIP_MAX * AERO_C0 /
+                           r->radius * 60.0 / TWO_PI;
+    double sum = 0.0;
+    if (!rpm)
+        return 0.0;
+    for (int j = 0; j < m; j++) {
+        double v = rpm[j];
+        if (!(v == v))
+            v = 0.0;
+        if (v > max_rpm || v < -max_rpm) {
+            v = v > 0.0 ? max_rpm : -max_rpm;
+            *clamped = 1;
+        }
+        sum += v;
+    }
+    return sum / m * TWO_PI / 60.0 / r->base.sample_rate;
+}
+
+/* one chunk of m samples */
+static void chunk(aero_rotor *r, const float *rpm, int m)
+{
+    aero_rotor_ear now[AERO_EARS_MAX];
+    double ear[3], axes[9], wind[3], gain_then = r->base.gain.value, gain;
+    double dpsi = chunk_turn(r, rpm, m, &r->base.clamped);
+    double omega = dpsi * r->base.sample_rate;
+    float noise[AERO_ROTOR_CHUNK];
+    advance_pose(r, m);
+    rotor_axes(r, axes);
+    for (int i = 0; i < 3; i++)
+        wind[i] = ramp_after(&r->base.wind[i], m);
+    double u_axis = aero_dot3(wind, axes + 6);
+    /* -noise at its floor: the tones alone, without the noise's cost */
+    const int hiss = r->noise_gain > 1e-9;
+    if (hiss) {
+        noise_spectrum(r, fabs(omega), u_axis);
+        noise_chunk(r, noise, m);
+    } else
+        memset(noise, 0, sizeof(noise));
+    gain = ramp_after(&r->base.gain, m);
+    for (int e = 0; e < r->base.n_ears; e++) {
+        for (int i = 0; i < 3; i++)
+            ear[i] = ramp_after(&r->base.ear[3 * e + i], m);
+        ear_tones(r, omega, ear, axes, &r->sums[e], &now[e]);
+        /* the envelope every AERO_ROTOR_ENVELOPE_CHUNKS chunks (5.3 ms at
+           48 kHz), held between: it moves with the geometry and the
+           speed, slowly against a chunk, and costs more than the tones */
+        if (!hiss)
+            memset(now[e].env, 0, sizeof(now[e].env));
+        else if (r->envelope_due <= 0 || !r->primed)
+            ear_envelope(r, omega, u_axis, ear, axes, now[e].env);
+        else
+            memcpy(now[e].env, r->then[e].env, sizeof(now[e].env));
+        if (!r->primed) { /* the first chunk: the sound from 0 */
+            r->then[e] = now[e];
+            memset(r->then[e].c, 0, sizeof(r->then[e].c));
+            memset(r->then[e].s, 0, sizeof(r->then[e].s));
+            memset(r->then[e].env, 0, sizeof(r->then[e].env));
+        }
+        radiate(r, &r->then[e], &now[e], gain_then, gain, r->psi, dpsi,
+                noise, e, m);
+        r->then[e] = now[e];
+    }
+    r->envelope_due = r->envelope_due <= 0 || !r->primed
+                          ? AERO_ROTOR_ENVELOPE_CHUNKS - 1
+                          : r->envelope_due - 1;
+    r->primed = 1;
+    r->psi = fmod(r->psi + dpsi * m, TWO_PI);
+    if (r->psi < 0.0)
+        r->psi += TWO_PI;
+}
+
+int aero_rotor_process(aero_rotor *r, const float *rpm, float *const *out,
+                       int n)
+{
+    r->base.clamped = 0;
+    for (int done = 0; done < n;) {
+        int m = n - done < AERO_ROTOR_CHUNK ? n - done : AERO_ROTOR_CHUNK;
+        /* the poses due at this sample, then a chunk up to the next */
+        while ((m = aero_pose_queue_until(&r->queue, done, m)) == 0) {
+            aero_pose_event e = *aero_pose_queue_front(&r->queue);
+            aero_pose_queue_pop(&r->queue);
+            apply_pose(r, e.x, e.interval_s);
+            m = n - done < AERO_ROTOR_CHUNK ? n - done : AERO_ROTOR_CHUNK;
+        }
+        /* read this chunk of rpm before writing that of out (Pd may pass
+           the same buffer) */
+        chunk(r, rpm ? rpm + done : NULL, m);
+        aero_arrivals_take(&r->base.arrivals, out, done, m);
+        done += m;
+    }
+    aero_pose_queue_elapse(&r->queue, n);
+    return r->base.clamped;
+}

@@ -1,0 +1,236 @@
+/* aero: a rotor (fan, propeller, drone rotor, wind turbine): B blades of
+ * radius R and chord c turning at a speed given per sample in rpm, with a
+ * steady thrust and torque, placed and turned by a pose, heard at one
+ * listener or two ears.
+ *
+ * Tones (blade passing B rpm/60 and its harmonics): each blade is split
+ * into strips along its radius; each strip is a compact source turning
+ * with the blade, carrying its share of the steady loading (thrust and
+ * torque, per strip ~ r^2 dr, the local dynamic pressure) and its
+ * thickness. Formulation: the far field of a rotating compact force in
+ * the frequency domain, Gutin's (1936) closed form applied per strip and
+ * summed coherently over the strips of a straight blade (Gutin's own
+ * radial integral; one strip sits at his effective radius 0.8 R), with the
+ * compact thickness term of the same derivation (Deming 1940: the
+ * displaced volume V of a strip, J_n of the same argument, in quadrature
+ * with the loading). Harmonic n = mB at the observer direction (theta
+ * from the thrust axis, phi around it) in the rotor frame:
+ *   p_n = (n Omega B / (4 pi c0 r)) (-i)^n e^{i n phi} (-i L_n - Th_n)
+ *   L_n  = SUM_s J_n(z_s) (-T_s cos(theta) + D_s c0 / (Omega r_s))
+ *   Th_n = n Omega rho0 c0 SUM_s V_s J_n(z_s),   z_s = n Omega r_s sin(theta)/c0
+ * (T_s, D_s: thrust and in-plane drag of a strip of one blade). Why the
+ * closed form and not a time-domain Farassat 1A sum over strips: it is
+ * exact for steady loading in the far field, band-limited by construction
+ * (no aliasing of the sharp pulses near the plane at high tip Mach), and
+ * costs one oscillator bank per rotor instead of a retarded-time solve
+ * per strip per sample: a drone's four rotors fit in 1 % of a core.
+ * The whole rotor is then a moving point source at its hub, heard through
+ * the arrival rings (arrivals.h): retarded time, exact Doppler of the
+ * hub's motion per ear, interaural delay.
+ * Left out: unsteady loading (blade-vortex interaction, inflow distortion,
+ * a turbine's tower passage), the near field (r of the order of R),
+ * forward-flight convective factors of the tones (Garrick & Watkins 1954)
+ * beyond the hub's Doppler, ground reflection, quadrupole noise.
+ *
+ * Loading follows the speed: thrust and torque are given at the `design`
+ * rpm and scale with (rpm/design)^2 (constant thrust and torque
+ * coefficients), so a rotor spinning down falls quiet.
+ *
+ * Life cycle: init, set_*, process (any block size), free. No globals. */
+#ifndef AERO_ROTOR_H
+#define AERO_ROTOR_H
+
+#include <stdint.h>
+
+#include "moving_player.h"
+#include "pose_glide.h"
+
+#define AERO_ROTOR_CHUNK 128
+#define AERO_ROTOR_MAX_DELAY_S 1.0
+#define AERO_ROTOR_HARMONICS_MAX 40 /* of the blade-passing frequency */
+#define AERO_ROTOR_MACH_TIP_MAX 0.9 /* rpm is clamped to this tip Mach */
+
+#define AERO_ROTOR_BLADES_MIN 1
+#define AERO_ROTOR_BLADES_MAX 16
+#define AERO_ROTOR_BLADES_DEFAULT 2
+#define AERO_ROTOR_RADIUS_MIN 0.01 /* m */
+#define AERO_ROTOR_RADIUS_MAX 100.0
+#define AERO_ROTOR_RADIUS_DEFAULT 0.12 /* a 9.5-inch drone propeller */
+#define AERO_ROTOR_CHORD_MIN 0.001 /* m */
+#define AERO_ROTOR_CHORD_MAX 10.0
+#define AERO_ROTOR_CHORD_DEFAULT 0.02
+#define AERO_ROTOR_THICKNESS_MIN 0.0 /* of the chord */
+#define AERO_ROTOR_THICKNESS_MAX 0.5
+#define AERO_ROTOR_THICKNESS_DEFAULT 0.12
+#define AERO_ROTOR_HUB_MIN 0.0 /* of the radius */
+#define AERO_ROTOR_HUB_MAX 0.9
+#define AERO_ROTOR_HUB_DEFAULT 0.2
+#define AERO_ROTOR_STRIPS_MIN 1
+#define AERO_ROTOR_STRIPS_MAX 32
+#define AERO_ROTOR_STRIPS_DEFAULT 8
+#define AERO_ROTOR_THRUST_LIMIT 1e7 /* N, either sign */
+#define AERO_ROTOR_THRUST_DEFAULT 4.0 /* a 1.6 kg quadcopter's rotor */
+#define AERO_ROTOR_TORQUE_LIMIT 1e8 /* N m */
+#define AERO_ROTOR_TORQUE_DEFAULT 0.06
+#define AERO_ROTOR_DESIGN_MIN 1.0 /* rpm */
+#define AERO_ROTOR_DESIGN_MAX 1e5
+#define AERO_ROTOR_DESIGN_DEFAULT 6000.0
+/* the blades' self-noise against Brooks et al.'s (1989) level, dB */
+#define AERO_ROTOR_NOISE_DB_MIN -200.0
+#define AERO_ROTOR_NOISE_DB_MAX 40.0
+#define AERO_ROTOR_NOISE_DB_DEFAULT 0.0
+
+/* one strip's geometry */
+typedef struct {
+    double r;      /* radius, m */
+    double thrust; /* per blade at the design rpm, N */
+    double drag;   /* in-plane, per blade at the design rpm, N */
+    double volume; /* displaced volume, m^3 */
+} aero_rotor_strip;
+
+/* the broadband: octave bands 63 Hz .. 16 kHz, an envelope of harmonics
+   0..AERO_ROTOR_ENVELOPE of the blade passing, sampled at
+   AERO_ROTOR_AZIMUTHS positions over one blade passing */
+#define AERO_ROTOR_BANDS 9
+#define AERO_ROTOR_THIRDS (3 * AERO_ROTOR_BANDS)
+#define AERO_ROTOR_ENVELOPE 2
+#define AERO_ROTOR_AZIMUTHS 8
+#define AERO_ROTOR_ENVELOPE_CHUNKS 2 /* chunks between two envelopes */
+/* the self-noise spectrum is made at speeds on a grid of this ratio (its
+   frequencies off by at most half of it: 3 %, a 24th of an octave) */
+#define AERO_ROTOR_NOISE_TOLERANCE 0.06
+
+/* what one ear hears, at a chunk's end: the coefficients of cos(n Psi)
+   and sin(n Psi) per harmonic, the broadband's envelope (its mean, then
+   cos and sin of k B Psi), and the hub's delay in samples */
+typedef struct {
+    double c[AERO_ROTOR_HARMONICS_MAX], s[AERO_ROTOR_HARMONICS_MAX];
+    double env[2 * AERO_ROTOR_ENVELOPE + 1];
+    double delay;
+    int h; /* harmonics above the floor; those beyond are 0 */
+} aero_rotor_ear;
+
+/* an ear's strip sums of harmonics 1..h (rotor.c: the Bessel functions,
+   which depend on Omega sin(theta) alone), kept while that moves less
+   than AERO_ROTOR_SUMS_TOLERANCE */
+#define AERO_ROTOR_SUMS_TOLERANCE 2e-3
+typedef struct {
+    double key;        /* Omega sin(theta) they were made for */
+    int h, layout;     /* harmonics held; the layout they were made for */
+    double thrust[AERO_ROTOR_HARMONICS_MAX]; /* SUM J_n (-T_s) */
+    double drag[AERO_ROTOR_HARMONICS_MAX];   /* SUM J_n D_s c0 / r_s */
+    double volume[AERO_ROTOR_HARMONICS_MAX]; /* SUM J_n V_s */
+} aero_rotor_sums;
+
+/* the blades' self-noise (Brooks et al. 1989, airfoil_noise.h): each
+   strip's level at 1 m straight above its trailing edge, the spectrum's
+   shape as gains of a bank of octave band-passes fed one white noise */
+#define AERO_ROTOR_LANES 12 /* the bands padded for SIMD (zero gains) */
+#define AERO_ROTOR_SPECTRA 8 /* self-noise spectra kept per rotor */
+typedef struct {
+    /* per band (lane): b0 (b2 = -b0), a1, a2, gain (unit total power),
+       its own white noise's state, the two stages' x1 x2 y1 y2 / y1 y2 */
+    float b0[AERO_ROTOR_LANES], a1[AERO_ROTOR_LANES], a2[AERO_ROTOR_LANES];
+    float gain[AERO_ROTOR_LANES];
+    uint32_t rng[AERO_ROTOR_LANES];
+    float x1[AERO_ROTOR_LANES], x2[AERO_ROTOR_LANES];
+    float y1[AERO_ROTOR_LANES], y2[AERO_ROTOR_LANES];
+    float u1[AERO_ROTOR_LANES], u2[AERO_ROTOR_LANES];
+    double unmix[AERO_ROTOR_BANDS * AERO_ROTOR_BANDS]; /* band leakage^-1 */
+    int bands;                        /* under Nyquist */
+    double power[AERO_ROTOR_STRIPS_MAX]; /* Pa^2 at 1 m, D_h = 1, a blade */
+    double mach[AERO_ROTOR_STRIPS_MAX];
+    double scale; /* the speed against the grid's: powers as U^5 */
+    int layout, step, have; /* the grid step held, whether any */
+    /* the spectra made, by grid step (a drone's rotors move among a few) */
+    int cached, next, cache_step[AERO_ROTOR_SPECTRA];
+    float cache_gain[AERO_ROTOR_SPECTRA][AERO_ROTOR_LANES];
+    double cache_power[AERO_ROTOR_SPECTRA][AERO_ROTOR_STRIPS_MAX];
+    double cache_mach[AERO_ROTOR_SPECTRA][AERO_ROTOR_STRIPS_MAX];
+} aero_rotor_noise;
+
+typedef struct aero_rotor {
+    /* sample rate, rings, ears, wind, gain, ramp, clamp */
+    aero_moving_player base;
+
+    int blades, strips;
+    double radius, chord, thickness, hub;
+    double thrust, torque, design_rpm;
+    double noise_gain;   /* linear, of the self-noise */
+    aero_rotor_strip strip[AERO_ROTOR_STRIPS_MAX];
+    int layout;          /* counts the layouts: the sums' key */
+    aero_rotor_sums sums[AERO_EARS_MAX];
+    aero_rotor_noise noise;
+
+    double rpm;          /* smoothed, clamped */
+    double psi;          /* blade 0's azimuth, rad, in [0, 2 pi) */
+    int harmonics;       /* in use (Nyquist) */
+
+    /* pose: position and quaternion (w, x, y, z) now, its path through
+       the poses (pose_glide.h) and the poses waiting for their sample */
+    double pose[7];
+    aero_pose_path path;
+    aero_pose_queue queue;
+    int pose_set;
+
+    aero_rotor_ear then[AERO_EARS_MAX]; /* at the last chunk's end */
+    int primed;
+    int envelope_due; /* chunks until the broadband's envelope is made again */
+} aero_rotor;
+
+/* 0, or -1 when out of memory. Defaults: the AERO_ROTOR_*_DEFAULT values,
+ * the hub at the origin with its thrust along +z, still air, one listener
+ * 1 m away along +y (stereo: ears at x = -+0.1), gain and ramp as
+ * moving_player.h's. */
+int aero_rotor_init(aero_rotor *r, double sample_rate, int n_ears,
+                    uint32_t seed);
+void aero_rotor_free(aero_rotor *r);
+
+/* setters: 0 accepted, -1 invalid (the previous value stays) */
+int aero_rotor_set_sample_rate(aero_rotor *r, double sr);
+int aero_rotor_set_blades(aero_rotor *r, double blades);
+int aero_rotor_set_radius(aero_rotor *r, double m);
+int aero_rotor_set_chord(aero_rotor *r, double m);
+int aero_rotor_set_thickness(aero_rotor *r, double ratio);
+int aero_rotor_set_hub(aero_rotor *r, double ratio);
+int aero_rotor_set_strips(aero_rotor *r, double strips);
+int aero_rotor_set_thrust(aero_rotor *r, double newton);
+int aero_rotor_set_torque(aero_rotor *r, double newton_metre);
+int aero_rotor_set_design(aero_rotor *r, double rpm);
+int aero_rotor_set_noise_db(aero_rotor *r, double db);
+int aero_rotor_set_gain_db(aero_rotor *r, double db);
+int aero_rotor_set_ramp_ms(aero_rotor *r, double ms);
+int aero_rotor_set_wind(aero_rotor *r, const double w[3]);
+/* ears 0..e->n-1 (e->n at most the ears the rotor was made with) */
+int aero_rotor_set_ears(aero_rotor *r, const aero_ears *e);
+/* the hub's position and orientation (unit quaternion w x y z, normalised
+ * here; the thrust axis is the turned +z), at sample `offset` of the next
+ * process call, moving there on a smooth path over interval_s (the first
+ * pose, one after a 0.5 s pause and interval_s < 0 jump): as
+ * aero_body_set_pose_at (body_texture.h). 0, or -1 invalid. */
+int aero_rotor_set_pose_at(aero_rotor *r, const double pos[3],
+                           const double quat[4], double interval_s,
+                           int offset);
+/* a rotation vector (axis times angle in degrees) as a unit quaternion */
+static inline void aero_rotor_quaternion_from_rotvec(const double r[3],
+                                                     double q[4])
+{
+    aero_quat_from_rotvec(r, q);
+}
+/* the orientation of the last pose given (w x y z) */
+void aero_rotor_orientation(const aero_rotor *r, double quat[4]);
+
+/* n samples; rpm[i] (NULL: 0) the speed of rotation in rev/min (sign:
+ * the sense of rotation); out[e][i] the sound pressure at ear e in Pa.
+ * Returns 1 when an rpm was clamped (tip Mach AERO_ROTOR_MACH_TIP_MAX). */
+int aero_rotor_process(aero_rotor *r, const float *rpm, float *const *out,
+                       int n);
+
+/* Gutin's (1936) harmonic n = mB of the strips at the far-field observer
+ * direction theta (rad, from the thrust axis) and distance d (m), at
+ * angular speed omega (rad/s): the amplitude (peak, Pa) of the tone the
+ * process renders there (the renderer's coefficients, for the tests) */
+double aero_rotor_harmonic_amplitude(const aero_rotor *r, int m,
+                                     double omega, double theta, double d);
+
+#endif

@@ -222,4 +222,41 @@ UNIT_TEST(multi_instance)
     unit_multi_instance("aeolian~", "model mode", mi_make, mi_run, mi_drop);
 }
 
-UNIT_MAIN(UNIT_CASE(strouhal), UNIT_CASE(lift_rms), UNIT_CASE(onset_and_level), UNIT_CASE(block_sizes), UNIT_CASE(bad_input), UNIT_CASE(multi_instance))
+/* The near-field policy (aero_util.h, aero_near_field; issue 49): one
+ * segment (l = 3 d), the listener passing through it along its lift (+y).
+ * Curle's (1955) compact far field does not hold closer than the diameter
+ * (at least AERO_AEOLIAN_NEAR_MIN): there the listener is heard as at the
+ * limit, the same on both sides and exactly at the segment, never silent */
+static double near_rms(double y, int *hit, int *bad)
+{
+    aero_aeolian m;
+    aero_aeolian_init(&m, SR, 1, 4);
+    aero_aeolian_set_diameter(&m, 0.01);
+    aero_aeolian_set_length(&m, 0.03);
+    aero_aeolian_set_ears(&m, &(aero_ears){1, {{0, y, 0}}});
+    double r = render_rms(&m, 10.0f, 0.5, 64, bad);
+    *hit = m.near.hit;
+    aero_aeolian_free(&m);
+    return r;
+}
+
+UNIT_TEST(listener_through_source)
+{
+    int hit, bad = 0;
+    double at_limit = near_rms(0.01, &hit, &bad);
+    UNIT_CHECK(!hit && at_limit > 0.0, "at the limit, 1 cm: sound (rms %g "
+               "Pa), not within it", at_limit);
+    UNIT_NEAR_REL(near_rms(0.02, &hit, &bad), 0.5 * at_limit, 1e-3,
+                  "beyond it, 1/r: half at 2 cm");
+    const double ys[] = {-0.005, -1e-13, 0.0, 1e-13, 0.002, 0.00999};
+    for (size_t i = 0; i < sizeof(ys) / sizeof(ys[0]); i++) {
+        char what[96];
+        snprintf(what, sizeof what, "listener at y = %g m: heard as at the "
+                 "limit, 1 cm", ys[i]);
+        UNIT_NEAR_REL(near_rms(ys[i], &hit, &bad), at_limit, 1e-4, what);
+        UNIT_CHECK(hit, "... and the object knows it (to warn once)");
+    }
+    UNIT_CHECK(bad == 0, "no NaN or infinity (%d samples)", bad);
+}
+
+UNIT_MAIN(UNIT_CASE(listener_through_source), UNIT_CASE(strouhal), UNIT_CASE(lift_rms), UNIT_CASE(onset_and_level), UNIT_CASE(block_sizes), UNIT_CASE(bad_input), UNIT_CASE(multi_instance))

@@ -32,7 +32,9 @@ static int rotor_tilde_process(void *obj, const float *in, float *const *out,
 {
     t_rotor_tilde *x = obj;
     aero_pd_pose_clock_block(&x->x_clock);
-    return aero_rotor_process(&x->x_core, in, out, n);
+    int clamped = aero_rotor_process(&x->x_core, in, out, n);
+    aero_pd_near(&x->x_base, &x->x_core.base.near);
+    return clamped;
 }
 
 static void rotor_tilde_dsp(t_rotor_tilde *x, t_signal **sp)

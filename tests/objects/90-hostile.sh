@@ -436,6 +436,7 @@ fieldsound~ | fieldsound~ -demo 8 -sync | ; aero-obj velocity 7 | velocity 7 out
 fieldsound~ | fieldsound~ -demo 8 -sync | ; aero-obj speed 1e-30 | speed 1e-30 frames/s out of range (0.001.. | -
 rotor~ | rotor~ | ; aero-obj blades 0 | blades 0 out of range (1..16 | -
 rotor~ | rotor~ -listener 0 2 0 | ; aero-speed 1e30 | rpm clamped where the blade tips reach Mach 0.9 | -
+rotor~ | rotor~ -listener 0 0 0 | ; aero-speed 6000 | once:listener within 0.24 m of the source: heard as at 0.24 m | - 40
 aeolian~ | aeolian~ -listener 0 0 0 | | once:listener within 0.01 m of the source: heard as at 0.01 m | - 40
 aeolian~ | aeolian~ -texture cylinder -n 1 -listener 0 0 0 | ; aero-obj pose 0 0 -0.1 0 0 0.1; aero-obj wind 5 0 0 | once:listener within 0.005 m of the source: heard as at 0.005 m | - 60
 body~ | body~ -texture sphere -listener 0 0 0 | | once:listener within 0.025 m of the source: heard as at 0.025 m | - 30

@@ -378,8 +378,12 @@ static void ear_tones(aero_rotor *r, double omega, const double *ear,
     memset(out->c, 0, sizeof(out->c));
     memset(out->s, 0, sizeof(out->s));
     out->h = 0;
-    if (d < 1e-3)
-        d = 1e-3; /* the listener inside the hub */
+    /* within the rotor's diameter the far field does not hold: heard as
+       at that distance (exactly at the hub along the disc's x axis, where
+       the tones are loudest) */
+    if (aero_near_field(v, AERO_ROTOR_NEAR_RADII * r->radius, axes,
+                        &r->base.near))
+        d = sqrt(aero_dot3(v, v));
     x = aero_dot3(v, axes) / d;
     y = aero_dot3(v, axes + 3) / d;
     zc = aero_dot3(v, axes + 6) / d;
@@ -651,8 +655,10 @@ static void ear_envelope(const aero_rotor *r, double omega, double u,
     const double s5 = z->scale * z->scale * z->scale * z->scale * z->scale;
     double a[NA], rel[3], cws[AERO_ROTOR_STRIPS_MAX], aws[AERO_ROTOR_STRIPS_MAX],
         Ms[AERO_ROTOR_STRIPS_MAX], Ps[AERO_ROTOR_STRIPS_MAX];
+    aero_near seen = {0, 0.0}; /* ear_tones reports it */
     for (int i = 0; i < 3; i++)
         rel[i] = ear[i] - r->pose[i];
+    aero_near_field(rel, AERO_ROTOR_NEAR_RADII * r->radius, axes, &seen);
     const double vz = aero_dot3(rel, axes + 6), v2 = aero_dot3(rel, rel);
     /* each strip's chord downstream: (-Omega r e_t + u a) / |W|, the
        normal (span x chord) (-Omega r a - u e_t) / |W| */

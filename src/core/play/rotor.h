@@ -49,6 +49,9 @@
 #define AERO_ROTOR_MAX_DELAY_S 1.0
 #define AERO_ROTOR_HARMONICS_MAX 40 /* of the blade-passing frequency */
 #define AERO_ROTOR_MACH_TIP_MAX 0.9 /* rpm is clamped to this tip Mach */
+/* the near-field limit (aero_near_field), in radii from the hub: Gutin's
+   far field and the strips' 1/r^2 do not hold within the rotor's diameter */
+#define AERO_ROTOR_NEAR_RADII 2.0
 
 #define AERO_ROTOR_BLADES_MIN 1
 #define AERO_ROTOR_BLADES_MAX 16

@@ -137,6 +137,8 @@ int aero_vortex_set_positions(aero_vortex *m,
         !aero_finite_within(xyz, 3 * count, AERO_POSITION_LIMIT))
         return -1;
     memcpy(m->xyz_target, xyz, sizeof(double) * 3 * (size_t)count);
+    if (!m->started) /* nothing heard yet: the scene is set, not moved */
+        memcpy(m->xyz, xyz, sizeof(double) * 3 * (size_t)count);
     start_ramp(m);
     return 0;
 }
@@ -148,6 +150,9 @@ int aero_vortex_set_ears(aero_vortex *m, const aero_ears *e)
     for (int k = 0; k < 2; k++) /* one listener: both ears there */
         memcpy(m->ear_target + 3 * k, e->pos[e->n == 2 ? k : 0],
                sizeof(double) * 3);
+    if (!m->started) /* nothing heard yet: the ears start there (gliding
+                        from the default, they crossed the sources) */
+        memcpy(m->ear, m->ear_target, sizeof(double) * 6);
     start_ramp(m);
     return 0;
 }
@@ -510,6 +515,7 @@ int aero_vortex_process(aero_vortex *m, const float *speed,
     double u_in0, u_in1, frac;
     if (n <= 0)
         return 0;
+    m->started = 1;
     int clamped = read_inlet(speed, n, &u_in0, &u_in1);
     for (int e = 0; e < nout; e++)
         memset(out[e], 0, sizeof(float) * (size_t)n);

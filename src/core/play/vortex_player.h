@@ -61,6 +61,7 @@ typedef struct aero_vortex {
     double gain, gain_target;   /* linear, glides like the others */
     double clip;                /* Pa; 0 = off */
     double ramp_samples, ramp_left;
+    int started;      /* a block was made: geometry glides from then on */
     double r_min;               /* distances below are clamped, m */
     int falloff;                /* 1: p ~ 1/r (default), 3: the paper's 1/r^3 */
     aero_combustion combustion; /* the flame's roar (power 0: off) */

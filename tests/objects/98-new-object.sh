@@ -172,7 +172,7 @@ AERO_PD_EXPORT void gust_tilde_setup(void)
 EOF
 
 # 3. the one registration line: a word in aero.c's AERO_OBJECTS
-sed 's/^\(    X(body)\)$/\1 X(gust)/' src/pd/aero.c >"$NEW/src/pd/aero.c"
+sed 's/^\(    X(.*)\)$/\1 X(gust)/' src/pd/aero.c >"$NEW/src/pd/aero.c"
 if [ "$(diff src/pd/aero.c "$NEW/src/pd/aero.c" | grep -c '^>')" -eq 1 ]; then
     pass "one line of src/pd/aero.c changed: $(diff src/pd/aero.c "$NEW/src/pd/aero.c" | grep '^>' | sed 's/^> *//')"
 else

@@ -12,7 +12,7 @@
 #      executable for aerotex;
 #    - it exports only Pd's entry points (_*_setup);
 #    - every undefined symbol is either one m_pd.h (or g_canvas.h, which
-#      aero_pd.c includes) declares, looked up in
+#      aero_pd.c includes, or s_stuff.h, fieldsound~.c's) declares, looked up in
 #      the flat namespace when Pd loads it (llvm-nm: "dynamically looked
 #      up"), or libSystem's; a double external asks for class_new64, a
 #      single one for class_new; aerotex takes everything from libSystem;
@@ -152,7 +152,7 @@ for entry in $bins; do
         fail "$(basename "$b"):$wrong"
     fi
 done
-[ -d "$STAGE" ] && echo "  ($nbin binaries read slice by slice; m_pd.h and g_canvas.h declare $(wc -l <"$OUT/pd-api.txt") names)"
+[ -d "$STAGE" ] && echo "  ($nbin binaries read slice by slice; m_pd.h, g_canvas.h and s_stuff.h declare $(wc -l <"$OUT/pd-api.txt") names)"
 
 # --- negative controls ---------------------------------------------------
 section "negative controls: the checks fail on binaries that break them"

@@ -1,15 +1,16 @@
 #!/usr/bin/env python3
 """aero: the names Pd's API headers declare, one per line, as Mach-O
 symbols (with their leading underscore): usage pd-api.py [HEADER...]
-(default /usr/include/pd/m_pd.h and g_canvas.h, the headers the wrappers
-are compiled against: aero_pd.c takes canvas_realizedollar from
-g_canvas.h). Every EXTERN declaration counts, functions and variables
+(default /usr/include/pd/m_pd.h, g_canvas.h and s_stuff.h, the headers
+the wrappers are compiled against: aero_pd.c takes canvas_realizedollar
+from g_canvas.h, fieldsound~.c audio_isopen from s_stuff.h). Every EXTERN declaration counts, functions and variables
 (s_float, sys_idlehook...), whatever #if it is under (class_new64 is the
 double build's class_new)."""
 import re
 import sys
 
-headers = sys.argv[1:] or ["/usr/include/pd/m_pd.h", "/usr/include/pd/g_canvas.h"]
+headers = sys.argv[1:] or ["/usr/include/pd/m_pd.h", "/usr/include/pd/g_canvas.h",
+                           "/usr/include/pd/s_stuff.h"]
 text = "\n".join(open(h).read() for h in headers)
 text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
 text = re.sub(r"//[^\n]*", " ", text)

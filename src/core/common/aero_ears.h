@@ -9,6 +9,9 @@
 /* positions (listener, ears, sources) farther than this from the origin
    along any axis are refused, m */
 #define AERO_POSITION_LIMIT 1e5
+/* stereo: each ear this far from the listener's centre along x, m (a head
+   about 0.2 m across) */
+#define AERO_EAR_HALF_SPACING 0.1
 
 typedef struct aero_ears {
     int n;                           /* 1: listener, 2: left and right ear */

@@ -109,6 +109,19 @@ analyze.sources = tests/analyze/aero-analyze.c
 $(BUILD)/aerotex: $(aerotex.sources) $(core.lib) $(wildcard src/tools/*.h)
 	$(CORE_CC) $(CORE_CFLAGS) $(aerotex.sources) -o $@ $(TOOL_LIBS)
 
+# aerotex over MPI ranks (a task farm, src/tools/aerotex_farm.c;
+# docs/cluster.md): build/aerotex-mpi, built beside the plain aerotex
+# when Open MPI's compiler wrapper is found (MPI=0: never; MPI=1: always,
+# failing without it). build/aerotex and the packages need nothing new.
+MPICC ?= mpicc
+MPI ?= $(if $(shell command -v $(MPICC) 2>/dev/null),1,0)
+ifeq ($(MPI),1)
+tools: $(BUILD)/aerotex-mpi
+endif
+$(BUILD)/aerotex-mpi: $(aerotex.sources) $(core.lib) $(wildcard src/tools/*.h)
+	OMPI_CC=$(CORE_CC) $(MPICC) $(CORE_CFLAGS) -DAEROTEX_MPI \
+	    $(aerotex.sources) -o $@ $(TOOL_LIBS)
+
 $(BUILD)/aero-analyze: $(analyze.sources) $(core.lib)
 	$(CORE_CC) $(CORE_CFLAGS) $(analyze.sources) -o $@ $(TOOL_LIBS)
 
@@ -187,6 +200,9 @@ DEB_PACKAGES = puredata-core puredata-dev pd-lib-builder libfftw3-dev \
 # the GUI check of the help patches (tests/gui): Pd's GUI under Xvfb,
 # screenshots by ImageMagick's import, the font Pd draws its boxes with
 DEB_PACKAGES += puredata-gui xvfb xauth imagemagick fonts-dejavu-core
+# aerotex over MPI (build/aerotex-mpi, docs/cluster.md): Open MPI, and
+# FFTW's MPI transforms
+DEB_PACKAGES += libopenmpi-dev openmpi-bin libfftw3-mpi-dev
 deps:
 	@sh tests/deps.sh $(DEB_PACKAGES)
 	@sh platforms/zig.sh >/dev/null 2>&1 || echo "aero: Zig for the macOS builds" \

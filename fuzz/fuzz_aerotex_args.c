@@ -8,7 +8,7 @@
 /* aero-fuzz: sources src/tools/aerotex_aeolian.c src/tools/aerotex_cavity.c */
 /* aero-fuzz: sources src/tools/aerotex_section.c src/tools/aerotex_options.c */
 /* aero-fuzz: sources src/tools/aerotex_vortex.c src/tools/aerotex_object.c */
-/* aero-fuzz: sources src/tools/aerotex_field.c */
+/* aero-fuzz: sources src/tools/aerotex_field.c src/tools/aerotex_farm.c */
 #include "fuzz.h"
 
 #include <stdarg.h>

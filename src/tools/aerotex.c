@@ -27,6 +27,14 @@ static const aerotex_command *const commands[] = {
     &aerotex_auralize_command, &aerotex_airfoil_command};
 #define NCOMMANDS (int)(sizeof commands / sizeof commands[0])
 
+/* the commands whose directions, sections or speeds are spread over the
+   ranks of a task farm */
+static int farmed(const aerotex_command *c)
+{
+    return c == &aerotex_aeolian_command || c == &aerotex_cavity_command ||
+           c == &aerotex_vortex_command || c == &aerotex_object_command;
+}
+
 static void usage(FILE *f)
 {
     fprintf(f, "usage: aerotex <command> [options]\n");
@@ -68,7 +76,7 @@ const aerotex_command aerotex_info_command = {
     "info", "FILE.wav", "prints a texture's metadata and flow statistics",
     NULL, 0, NULL, aerotex_info};
 
-int main(int argc, char **argv)
+static int dispatch(int argc, char **argv)
 {
     if (argc < 2) {
         usage(stderr);
@@ -80,8 +88,22 @@ int main(int argc, char **argv)
         return 0;
     }
     for (int k = 0; k < NCOMMANDS; k++)
-        if (!strcmp(argv[1], commands[k]->name))
+        if (!strcmp(argv[1], commands[k]->name)) {
+            /* the commands without independent simulations run on rank 0
+               of a task farm alone (aerotex_farm.c) */
+            if (!farmed(commands[k]) && aerotex_farm_rank())
+                return 0;
             return commands[k]->run(argc - 1, argv + 1);
+        }
     aerotex_error("unknown command '%s' (try 'aerotex help')", argv[1]);
     return 2;
+}
+
+int main(int argc, char **argv)
+{
+    int status;
+    aerotex_farm_init(&argc, &argv);
+    status = dispatch(argc, argv);
+    aerotex_farm_finalize();
+    return status;
 }

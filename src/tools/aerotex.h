@@ -194,6 +194,45 @@ void aerotex_task_progress(aerotex_task *t, long step);
 /* a --png snapshot is due at step (then counted): 1 or 0 */
 int aerotex_task_snapshot_due(aerotex_task *t, long step);
 
+/* --- the task farm over MPI ranks (aerotex_farm.c) ------------------------
+
+   Built with AEROTEX_MPI (build/aerotex-mpi, `make MPI=1` or mpicc found),
+   each rank of `mpirun -np N aerotex-mpi CMD ...` runs the tasks k of a
+   job with k % N == its rank (its threads inside, as in one process), and
+   rank 0 gathers every task (its record and its channels) and writes the
+   texture. Every finished task is also kept in OUT.ckpt/ (a checkpoint),
+   so that a job killed by a scheduler resumes where it was; rank 0
+   removes it once the texture is written. Without AEROTEX_MPI: one rank
+   of one, no checkpoint. */
+
+/* MPI_Init (MPI_THREAD_FUNNELED: only the main thread calls MPI) and
+   MPI_Finalize around main; nothing without AEROTEX_MPI */
+void aerotex_farm_init(int *argc, char ***argv);
+void aerotex_farm_finalize(void);
+int aerotex_farm_rank(void);
+int aerotex_farm_size(void);
+/* task k of n runs on this rank */
+int aerotex_farm_mine(int k);
+/* how many of n tasks run on this rank */
+int aerotex_farm_count(int n);
+/* task k (task_size bytes at task, channels k*width..k*width+width-1 of
+   the job's raw) restored from the checkpoint: 1, or 0 (none, or one of
+   another command line) */
+int aerotex_farm_resume(aerotex_job *j, int k, void *task, size_t task_size,
+                        int width);
+/* task k kept in the checkpoint (after it ran without error) */
+void aerotex_farm_keep(aerotex_job *j, int k, const void *task,
+                       size_t task_size, int width);
+/* every rank's tasks of n (each task_size bytes, its aerotex_task first)
+   and their channels into rank 0's tasks and raw: the records after
+   their aerotex_task member, and its err; 0, or 1 with a message */
+int aerotex_farm_gather(aerotex_job *j, void *tasks, int n, size_t task_size,
+                        int width);
+/* rank 0's n bytes at p to every rank */
+void aerotex_farm_share(void *p, size_t n);
+/* the checkpoint removed (rank 0, after the texture is written) */
+void aerotex_farm_done(aerotex_job *j);
+
 /* x[0..n-1] as "a,b,c" with fmt per number */
 /* aerotex info: the table of what a texture matches (aerotex_matches.c) */
 void aerotex_print_matches(const aero_texture *t);

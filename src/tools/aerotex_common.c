@@ -103,6 +103,9 @@ int aerotex_job_parse(const aerotex_command *cmd, void *job, int argc,
         j->threads = omp_get_max_threads();
     if (aerotex_parse(cmd, job, argc, argv))
         return -1;
+    /* rank 0 of a task farm speaks for the job */
+    if (aerotex_farm_rank())
+        j->quiet = 1;
     if (!j->out) {
         aerotex_error("%s: no output file: add -o FILE.wav", cmd->name);
         return -1;
@@ -162,8 +165,12 @@ int aerotex_job_run(aerotex_job *j, int argc, char **argv, int channels,
         status = aerotex_job_fail(j, "out of memory");
     if (!status)
         status = run(state, tasks);
-    if (!status)
+    /* a task farm's rank 0 holds every task's result (aerotex_farm.c) */
+    if (!status && !aerotex_farm_rank()) {
         status = write(state, tasks);
+        if (!status)
+            aerotex_farm_done(j);
+    }
     free(tasks);
     aerotex_job_end(j);
     return status;

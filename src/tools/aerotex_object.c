@@ -393,12 +393,16 @@ static int run_directions(void *plan, void *tasks)
     const int nd = o->nd, avail = j->job.loop.avail;
     /* the directions in parallel; threads left over (fewer directions
        than threads: a sphere) go inside each simulation */
-    const int threads = aerotex_job_threads(&j->job, nd);
+    const int threads = aerotex_job_threads(&j->job,
+                                            aerotex_farm_count(nd) > 0
+                                                ? aerotex_farm_count(nd)
+                                                : 1);
     const int inner = j->job.threads / threads > 1 ? j->job.threads / threads
                                                    : 1;
     int status = 0;
     aerotex_progress_start(&j->job.prog, NULL,
-                           (long)nd * aero_body_flow_steps(&o->base,
+                           (long)aerotex_farm_count(nd) *
+                               aero_body_flow_steps(&o->base,
                                                            j->job.rate, avail),
                            j->job.quiet);
     if (!j->job.quiet)
@@ -410,6 +414,10 @@ static int run_directions(void *plan, void *tasks)
                 threads * inner > 1 ? "s" : "");
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int k = 0; k < nd; k++) {
+        if (!aerotex_farm_mine(k) ||
+            aerotex_farm_resume(&j->job, k, &ctx[k], sizeof *ctx,
+                                3 * o->nr))
+            continue;
         aero_body_flow_params p = o->base;
         direction_task *c = &ctx[k];
         p.angle = o->angles[k];
@@ -427,8 +435,14 @@ static int run_directions(void *plan, void *tasks)
                                 sizeof c->task.err);
         free(c->slice);
         free(c->solid);
+        c->slice = c->solid = NULL;
+        aerotex_farm_keep(&j->job, k, c, sizeof *c, 3 * o->nr);
     }
     aerotex_progress_end(&j->job.prog);
+    if (aerotex_farm_gather(&j->job, ctx, nd, sizeof *ctx, 3 * o->nr))
+        return 1;
+    if (aerotex_farm_rank())
+        return 0;
     for (int k = 0; k < nd; k++)
         if (ctx[k].task.err[0]) {
             aerotex_error("direction %g deg: %s", o->angles[k],

@@ -290,7 +290,8 @@ static void hook(void *ctx, const aero_flow2d *s, long step)
 static int run_directions(aeolian_job *j, const aero_shape2d *shape,
                           const char *desc, direction *r)
 {
-    const int nd = j->directions, threads = aerotex_job_threads(&j->job, nd);
+    const int nd = j->directions,
+              threads = aerotex_job_threads(&j->job, aerotex_farm_count(nd));
     aero_aeolian_flow_params p0 = flow_params(j, shape, 0.0);
     aero_aeolian_flow_plan plan;
     char err[512];
@@ -306,9 +307,17 @@ static int run_directions(aeolian_job *j, const aero_shape2d *shape,
         aerotex_error("%s", err);
         return 1;
     }
+    /* this rank's directions (all of them in one process), and the
+       calibration circle on rank 0 */
     aerotex_progress_start(&j->job.prog, NULL,
-                           (long)(nd + calibrate) * plan.steps, j->job.quiet);
+                           (long)(aerotex_farm_count(nd) + calibrate) *
+                               plan.steps, j->job.quiet);
     if (calibrate) {
+        /* rank 0 runs it, every rank gets its correction */
+        struct {
+            int status;
+            aero_span3d correction;
+        } shared;
         aero_shape2d circle;
         aero_aeolian_flow_params pc;
         direction *c = &r[nd];
@@ -322,19 +331,27 @@ static int run_directions(aeolian_job *j, const aero_shape2d *shape,
         if (!j->job.quiet)
             fprintf(stderr, "aerotex: the calibration circle of the 2D-to-3D "
                     "correction, Re %.4g\n", j->re);
-        if (aero_aeolian_flow_simulate(&pc, j->job.rate, NULL, 0, 0, &c->st,
-                                       hook, 1, c, c->task.err,
-                                       sizeof c->task.err)) {
-            aerotex_error("%s", c->task.err);
-            status = 1;
+        if (aerotex_farm_rank() == 0 &&
+            !aerotex_farm_resume(&j->job, nd, c, sizeof *c, 0)) {
+            if (aero_aeolian_flow_simulate(&pc, j->job.rate, NULL, 0, 0,
+                                           &c->st, hook, 1, c, c->task.err,
+                                           sizeof c->task.err)) {
+                aerotex_error("%s", c->task.err);
+                status = 1;
+            }
+            aerotex_farm_keep(&j->job, nd, c, sizeof *c, 0);
         }
         free(c->w);
         aero_shape2d_free(&circle);
-        if (status) {
+        memset(&shared, 0, sizeof shared);
+        shared.status = status;
+        shared.correction = c->st.span3d;
+        aerotex_farm_share(&shared, sizeof shared);
+        if (shared.status) {
             aerotex_progress_end(&j->job.prog);
-            return status;
+            return shared.status;
         }
-        j->correction = c->st.span3d;
+        j->correction = shared.correction;
     }
     if (!j->job.quiet)
         fprintf(stderr, "aerotex: %s, Re %.4g, %d direction%s, grid %d x %d, "
@@ -342,6 +359,9 @@ static int run_directions(aeolian_job *j, const aero_shape2d *shape,
                 plan.ny, threads, threads > 1 ? "s" : "");
 #pragma omp parallel for schedule(dynamic, 1) num_threads(j->job.threads)
     for (int k = 0; k < nd; k++) {
+        if (!aerotex_farm_mine(k) ||
+            aerotex_farm_resume(&j->job, k, &r[k], sizeof *r, 3))
+            continue;
         aero_aeolian_flow_params p = flow_params(j, shape, r[k].alpha);
         p.span3d_self = self;
         r[k].task.job = &j->job;
@@ -353,8 +373,14 @@ static int run_directions(aeolian_job *j, const aero_shape2d *shape,
                                    &r[k], r[k].task.err,
                                    sizeof r[k].task.err);
         free(r[k].w);
+        r[k].w = NULL;
+        aerotex_farm_keep(&j->job, k, &r[k], sizeof *r, 3);
     }
     aerotex_progress_end(&j->job.prog);
+    if (aerotex_farm_gather(&j->job, r, nd, sizeof *r, 3))
+        return 1;
+    if (aerotex_farm_rank())
+        return 0;
     for (int k = 0; k < nd; k++)
         if (r[k].task.err[0]) {
             aerotex_error("direction %d (%g deg): %s", k, r[k].alpha,

@@ -160,13 +160,17 @@ static int run_speeds(void *job, void *tasks)
     vortex_job *j = job;
     speed_task *ctx = tasks;
     const int ns = j->nspeeds, avail = j->job.loop.avail;
-    const int threads = aerotex_job_threads(&j->job, ns);
+    const int threads = aerotex_job_threads(&j->job,
+                                            aerotex_farm_count(ns) > 0
+                                                ? aerotex_farm_count(ns)
+                                                : 1);
     long total = 0;
     int status = 0;
     for (int k = 0; k < ns; k++) {
         aero_vortex_params p = j->vp;
         p.speed = j->speeds[k];
-        total += aero_vortex_steps(&p, j->job.rate, avail);
+        if (aerotex_farm_mine(k))
+            total += aero_vortex_steps(&p, j->job.rate, avail);
     }
     aerotex_progress_start(&j->job.prog, NULL, total, j->job.quiet);
     if (!j->job.quiet)
@@ -179,6 +183,9 @@ static int run_speeds(void *job, void *tasks)
     for (int q = 0; q < ns; q++) {
         /* the fastest speeds take the most steps: start them first */
         int k = ns - 1 - q;
+        if (!aerotex_farm_mine(k) ||
+            aerotex_farm_resume(&j->job, k, &ctx[k], sizeof *ctx, 1))
+            continue;
         aero_vortex_params p = j->vp;
         speed_task *c = &ctx[k];
         long steps;
@@ -202,8 +209,14 @@ static int run_speeds(void *job, void *tasks)
             aerotex_task_progress(&c->task, steps - 1);
         free(c->slice);
         free(c->zero);
+        c->slice = c->zero = NULL;
+        aerotex_farm_keep(&j->job, k, c, sizeof *c, 1);
     }
     aerotex_progress_end(&j->job.prog);
+    if (aerotex_farm_gather(&j->job, ctx, ns, sizeof *ctx, 1))
+        return 1;
+    if (aerotex_farm_rank())
+        return 0;
     for (int k = 0; k < ns; k++)
         if (ctx[k].task.err[0]) {
             aerotex_error("speed %g m/s: %s", j->speeds[k], ctx[k].task.err);

@@ -1,0 +1,102 @@
+# aerotex over MPI ranks (build/aerotex-mpi, docs/cluster.md): the task
+# farm's texture equals the one-process texture byte for byte, at 2 and 3
+# ranks (oversubscribed on a small machine), for the section (with its
+# calibration circle, broadcast from rank 0), the 3D body and the vortex
+# commands; a job whose rank is killed resumes from its checkpoint to the
+# same texture, and the checkpoint is what it resumes from (a changed
+# sample in it changes the texture). Skipped without Open MPI.
+section "aerotex over MPI ranks: task farm and checkpoint (docs/cluster.md)"
+if [ ! -x build/aerotex-mpi ] || ! command -v mpirun >/dev/null 2>&1; then
+    echo "  skip  no build/aerotex-mpi or no mpirun (Open MPI: make deps)"
+else
+    mpi_dir="$OUT/mpi"
+    rm -rf "$mpi_dir"
+    mkdir -p "$mpi_dir"
+    # mpirun as root (CI containers) and more ranks than cores
+    mpi_run() { # NP DIR ARGS...: aerotex-mpi on NP ranks in DIR
+        _np=$1 _dir=$2
+        shift 2
+        (cd "$_dir" && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
+            OMPI_MCA_btl=self,vader timeout 300 mpirun --oversubscribe \
+            -np "$_np" "$ROOT/build/aerotex-mpi" "$@")
+    }
+    mpi_same() { # NAME FILE NPS ARGS...: one process, then NPS ranks ("2 3")
+        _name=$1 _file=$2 _nps=$3
+        shift 3
+        for _d in one np2 np3; do mkdir -p "$mpi_dir/$_d"; done
+        if ! (cd "$mpi_dir/one" && "$ROOT/build/aerotex" "$@" -q -o "$_file") \
+            >"$mpi_dir/$_file.one.log" 2>&1; then
+            fail "$_name: the one-process run failed"; cat "$mpi_dir/$_file.one.log"
+            return
+        fi
+        for _np in $_nps; do
+            if mpi_run $_np "$mpi_dir/np$_np" "$@" -q -o "$_file" \
+                >"$mpi_dir/$_file.np$_np.log" 2>&1 &&
+                cmp "$mpi_dir/one/$_file" "$mpi_dir/np$_np/$_file"; then
+                pass "$_name: $_np ranks write the one-process texture byte for byte"
+            else
+                fail "$_name: $_np ranks"; tail -5 "$mpi_dir/$_file.np$_np.log"
+            fi
+        done
+    }
+    mpi_same "aeolian square, 4 directions, circle-calibrated 2D-to-3D" \
+        square.wav "2 3" aeolian --shape square --directions 4 --grid 6 \
+        --duration 0.02 --re 400 --settle 5 --span3d circle
+    mpi_same "object capsule, 3 directions (3D flow)" capsule.wav "2" \
+        object --shape capsule --directions 3 --grid 4 --duration 0.03 --settle 1
+    mpi_same "vortex, 3 speeds" vortex.wav "3" \
+        vortex --speeds 5,10,20 --grid 8 --duration 0.01
+
+    # the checkpoint: rank 1 killed once rank 0 has kept a task
+    ck="$mpi_dir/ckpt"
+    mkdir -p "$ck/ref" "$ck/run"
+    ck_args="aeolian --shape square --directions 6 --grid 8 --duration 0.03 --re 150 --settle 5 --threads 1 -q -o t.wav"
+    # shellcheck disable=SC2086
+    (cd "$ck/ref" && "$ROOT/build/aerotex" $ck_args) >"$ck/ref.log" 2>&1
+    # shellcheck disable=SC2086
+    mpi_run 2 "$ck/run" $ck_args >"$ck/killed.log" 2>&1 &
+    ck_pid=$!
+    ck_wait=0
+    while ! ls "$ck/run/t.wav.ckpt/"task*.bin >/dev/null 2>&1 && [ $ck_wait -lt 1200 ]; do
+        sleep 0.05; ck_wait=$((ck_wait + 1))
+    done
+    # rank 1: the last aerotex-mpi among the job's processes
+    mpi_tree() { for _c in $(pgrep -P "$1"); do echo "$_c"; mpi_tree "$_c"; done; }
+    ck_rank=
+    for _p in $(mpi_tree $ck_pid); do
+        [ "$(cat /proc/"$_p"/comm 2>/dev/null)" = aerotex-mpi ] && ck_rank=$_p
+    done
+    [ -n "$ck_rank" ] && kill -9 "$ck_rank"
+    wait $ck_pid
+    ck_rc=$?
+    ck_kept=$(ls "$ck/run/t.wav.ckpt/" 2>/dev/null | grep -c 'task.*bin$')
+    if [ -n "$ck_rank" ] && [ $ck_rc -ne 0 ] && [ ! -f "$ck/run/t.wav" ] &&
+        [ "$ck_kept" -ge 1 ] && [ "$ck_kept" -lt 6 ]; then
+        pass "a rank killed mid-run: the job failed with $ck_kept of 6 directions kept"
+    else
+        fail "the kill: rank pid '${ck_rank}', exit $ck_rc, $ck_kept kept, texture $(ls "$ck/run")"
+    fi
+    cp -r "$ck/run/t.wav.ckpt" "$ck/saved"
+    # shellcheck disable=SC2086
+    if mpi_run 2 "$ck/run" $ck_args >"$ck/resumed.log" 2>&1 &&
+        cmp "$ck/ref/t.wav" "$ck/run/t.wav" && [ ! -d "$ck/run/t.wav.ckpt" ]; then
+        pass "resumed on 2 ranks: the one-process texture byte for byte, checkpoint removed"
+    else
+        fail "the resumed job"; tail -5 "$ck/resumed.log"
+    fi
+    # negative control: the resumed job reads the kept directions (one
+    # sample in the middle of the first changed changes the texture)
+    rm -f "$ck/run/t.wav"
+    cp -r "$ck/saved" "$ck/run/t.wav.ckpt"
+    ck_task=$(ls "$ck/run/t.wav.ckpt/"task*.bin | head -n 1)
+    ck_size=$(wc -c <"$ck_task")
+    printf '\000\000\200\077' | dd of="$ck_task" bs=1 seek=$((ck_size / 8 * 4)) \
+        conv=notrunc 2>/dev/null
+    # shellcheck disable=SC2086
+    (cd "$ck/run" && "$ROOT/build/aerotex-mpi" $ck_args) >"$ck/tampered.log" 2>&1
+    if [ -f "$ck/run/t.wav" ] && ! cmp -s "$ck/ref/t.wav" "$ck/run/t.wav"; then
+        pass "negative control: a changed checkpoint changes the texture (it is read)"
+    else
+        fail "negative control: the checkpoint was not what the job resumed from"
+    fi
+fi

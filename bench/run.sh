@@ -154,4 +154,7 @@ sh bench/load.sh
 [ -f bench/object.sh ] && sh bench/object.sh
 echo
 [ -f bench/rotor.sh ] && sh bench/rotor.sh
+echo
+# aerotex over MPI ranks: the cost model's inputs (docs/cluster.md)
+[ -f bench/mpi.sh ] && sh bench/mpi.sh
 exit 0

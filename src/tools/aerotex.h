@@ -228,6 +228,11 @@ void aerotex_farm_keep(aerotex_job *j, int k, const void *task,
    their aerotex_task member, and its err; 0, or 1 with a message */
 int aerotex_farm_gather(aerotex_job *j, void *tasks, int n, size_t task_size,
                         int width);
+/* the solver state of a task in the checkpoint (ctx: its aerotex_task),
+   the hooks of aero_body_flow_params: kept (replacing the last), and
+   loaded (1, or 0: none of this command line and size) */
+void aerotex_farm_save_state(void *ctx, const void *state, size_t bytes);
+int aerotex_farm_load_state(void *ctx, void *state, size_t bytes);
 /* rank 0's n bytes at p to every rank */
 void aerotex_farm_share(void *p, size_t n);
 /* the checkpoint removed (rank 0, after the texture is written) */

@@ -95,6 +95,12 @@ static void ckpt_path(char *buf, size_t len, const aerotex_job *j, int k)
         snprintf(buf, len, "%s.ckpt/task%04d.bin", j->out, k);
 }
 
+/* OUT.ckpt/stateNNNN.bin: a running task's solver state */
+static void state_path(char *buf, size_t len, const aerotex_job *j, int k)
+{
+    snprintf(buf, len, "%s.ckpt/state%04d.bin", j->out, k);
+}
+
 /* the bytes of a task record after its aerotex_task member */
 #define BODY(task) ((char *)(task) + sizeof(aerotex_task))
 #define BODY_SIZE(task_size) ((task_size) - sizeof(aerotex_task))
@@ -159,6 +165,48 @@ void aerotex_farm_keep(aerotex_job *j, int k, const void *task,
     bad |= fclose(f) != 0;
     if (bad || rename(tmp, path))
         remove(tmp);
+    else {
+        /* the finished task supersedes its solver state */
+        state_path(path, sizeof path, j, k);
+        remove(path);
+    }
+}
+
+void aerotex_farm_save_state(void *ctx, const void *state, size_t bytes)
+{
+    aerotex_task *t = ctx;
+    char path[4200], tmp[4300];
+    ckpt_header h = header(t->job, t->index, bytes, 0);
+    FILE *f;
+    int bad;
+    ckpt_path(path, sizeof path, t->job, -1);
+    if (aerotex_mkdir(path) && errno != EEXIST)
+        return;
+    state_path(path, sizeof path, t->job, t->index);
+    snprintf(tmp, sizeof tmp, "%s.%ld.tmp", path, (long)getpid());
+    if (!(f = fopen(tmp, "wb")))
+        return;
+    bad = fwrite(&h, sizeof h, 1, f) != 1 ||
+          fwrite(state, bytes, 1, f) != 1;
+    bad |= fclose(f) != 0;
+    if (bad || rename(tmp, path))
+        remove(tmp);
+}
+
+int aerotex_farm_load_state(void *ctx, void *state, size_t bytes)
+{
+    aerotex_task *t = ctx;
+    char path[4200];
+    ckpt_header want = header(t->job, t->index, bytes, 0), got;
+    FILE *f;
+    int ok;
+    state_path(path, sizeof path, t->job, t->index);
+    if (!(f = fopen(path, "rb")))
+        return 0;
+    ok = fread(&got, sizeof got, 1, f) == 1 &&
+         !memcmp(&got, &want, sizeof got) && fread(state, bytes, 1, f) == 1;
+    fclose(f);
+    return ok;
 }
 
 void aerotex_farm_done(aerotex_job *j)
@@ -168,6 +216,8 @@ void aerotex_farm_done(aerotex_job *j)
     /* the task files of every width there may be: at most one per channel */
     for (int k = 0; k < n; k++) {
         ckpt_path(path, sizeof path, j, k);
+        remove(path);
+        state_path(path, sizeof path, j, k);
         remove(path);
     }
     ckpt_path(path, sizeof path, j, -1);
@@ -313,6 +363,21 @@ void aerotex_farm_share(void *p, size_t n)
 {
     (void)p;
     (void)n;
+}
+
+void aerotex_farm_save_state(void *ctx, const void *state, size_t bytes)
+{
+    (void)ctx;
+    (void)state;
+    (void)bytes;
+}
+
+int aerotex_farm_load_state(void *ctx, void *state, size_t bytes)
+{
+    (void)ctx;
+    (void)state;
+    (void)bytes;
+    return 0;
 }
 
 void aerotex_farm_done(aerotex_job *j)

@@ -45,6 +45,8 @@ typedef struct {
     const char *section;  /* METHOD_STRIP: the section's texture */
     int calibrate;        /* CAL_* */
     uint32_t seed;
+    int checkpoint;       /* steps between solver checkpoints (0: 1/16 of
+                             a direction's) */
 } object_job;
 
 /* one direction: the first member is its task */
@@ -145,6 +147,10 @@ static const aerotex_option object_options[] = {
      "sphere for a sphere at Re 800-3e5, else none", NULL},
     {"--seed", AEROTEX_SEED, "n", 1.0, 0, 0, AT(seed),
      "start-up noise seed (strip: the regions' places)", NULL, NULL},
+    {"--checkpoint", AEROTEX_WHOLE, "steps", 0.0, 0.0, 1e9, AT(checkpoint),
+     "aerotex-mpi: each direction's flow kept in\nFILE.wav.ckpt every so "
+     "many steps (0: 16 times\na direction), to resume a killed job from",
+     NULL, NULL},
     AEROTEX_JOB_OPTIONS("directions",
                         "|vorticity| slices DIR/dirKK_STEP.png")};
 
@@ -424,6 +430,14 @@ static int run_directions(void *plan, void *tasks)
         p.threads = inner;
         p.seed = aero_run_seed(j->seed, k);
         p.plan_lock = aerotex_plan_lock;
+        p.checkpoint_every =
+            j->checkpoint > 0
+                ? j->checkpoint
+                : aero_body_flow_steps(&p, j->job.rate, avail) / 16 + 1;
+#ifdef AEROTEX_MPI
+        p.checkpoint_save = aerotex_farm_save_state;
+        p.checkpoint_load = aerotex_farm_load_state;
+#endif
         c->task.job = &j->job;
         c->task.index = k;
         c->oj = j;

@@ -5,6 +5,7 @@
 #include "texture.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -497,14 +498,83 @@ static void keep_forces(body_run *b, double t)
     b->kept++;
 }
 
-/* every step, the forces from t_keep on: 0 or -1 */
-static int run_flow(body_run *b,
+/* A run's state between steps: the next step, the forces kept, the
+   generator, then the forces' times and values (all `steps` of them, so
+   the size is fixed) and the solver's state. */
+typedef struct {
+    int64_t next, kept;
+    uint64_t rng;
+} run_header;
+
+static size_t state_size(const body_run *b)
+{
+    return sizeof(run_header) +
+           sizeof(double) * (size_t)b->steps * (1 + 3 * (size_t)b->nr) +
+           aero_flow3d_state_size(&b->s);
+}
+
+/* the state after step next - 1 to p->checkpoint_save (out of memory:
+   none this time) */
+static void save_state(body_run *b, long next, void *ctx)
+{
+    const size_t ns = (size_t)b->steps, nf = ns * 3 * b->nr;
+    char *buf = malloc(state_size(b)), *p = buf;
+    run_header h;
+    if (!buf)
+        return;
+    h.next = next;
+    h.kept = b->kept;
+    h.rng = b->rng;
+    memcpy(p, &h, sizeof h);
+    p += sizeof h;
+    memcpy(p, b->times, sizeof(double) * ns);
+    p += sizeof(double) * ns;
+    memcpy(p, b->forces, sizeof(double) * nf);
+    p += sizeof(double) * nf;
+    aero_flow3d_state_save(&b->s, p);
+    b->p->checkpoint_save(ctx, buf, state_size(b));
+    free(buf);
+}
+
+/* the step to start from: a checkpoint's (its state loaded), or 0 */
+static long load_state(body_run *b, void *ctx)
+{
+    const size_t ns = (size_t)b->steps, nf = ns * 3 * b->nr;
+    char *buf, *p;
+    run_header h;
+    long next = 0;
+    if (!b->p->checkpoint_load || !(buf = malloc(state_size(b))))
+        return 0;
+    p = buf;
+    if (b->p->checkpoint_load(ctx, buf, state_size(b))) {
+        memcpy(&h, p, sizeof h);
+        p += sizeof h;
+        if (h.next > 0 && h.next <= b->steps && h.kept >= 0 &&
+            h.kept <= b->steps) {
+            next = (long)h.next;
+            b->kept = (long)h.kept;
+            b->rng = (uint32_t)h.rng;
+            memcpy(b->times, p, sizeof(double) * ns);
+            p += sizeof(double) * ns;
+            memcpy(b->forces, p, sizeof(double) * nf);
+            p += sizeof(double) * nf;
+            aero_flow3d_state_load(&b->s, p);
+        }
+    }
+    free(buf);
+    return next;
+}
+
+/* every step from n0 on, the forces from t_keep on, a checkpoint every
+   p->checkpoint_every steps: 0 or -1 */
+static int run_flow(body_run *b, long n0,
                     void (*hook)(void *ctx, const aero_flow3d *s, long step,
                                  int recording),
                     long hook_every, void *ctx, char *err, size_t errlen)
 {
     const double dt = b->dt;
-    for (long n = 0; n < b->steps; n++) {
+    const long every = b->p->checkpoint_save ? b->p->checkpoint_every : 0;
+    for (long n = n0; n < b->steps; n++) {
         double t = n * dt;
         set_inflow(b, t);
         if (aero_flow3d_step(&b->s, dt)) {
@@ -517,6 +587,8 @@ static int run_flow(body_run *b,
         if (hook && hook_every > 0 &&
             (n % hook_every == 0 || n == b->steps - 1))
             hook(ctx, &b->s, n, t >= b->p->settle);
+        if (every > 0 && (n + 1) % every == 0 && n + 1 < b->steps)
+            save_state(b, n + 1, ctx);
     }
     return 0;
 }
@@ -603,7 +675,8 @@ int aero_body_flow_simulate(const aero_body_flow_params *p, double rate,
     memset(st, 0, sizeof *st);
     if (open_run(&b, p, rate, nout, st, ctx, err, errlen) == 0) {
         start_flow(&b);
-        if (run_flow(&b, hook, hook_every, ctx, err, errlen) == 0) {
+        if (run_flow(&b, load_state(&b, ctx), hook, hook_every, ctx, err,
+                     errlen) == 0) {
             st->steps = b.steps;
             st->max_div = aero_flow3d_max_divergence(&b.s);
             radiate(&b, rate, out, stride, nout);

@@ -65,6 +65,16 @@ typedef struct {
     /* FFTW's planner is not thread-safe: called with on = 1 / 0 around
        the solver's init and free when directions run in parallel */
     void (*plan_lock)(void *ctx, int on);
+    /* checkpoints (aerotex-mpi keeps them beside the texture): with
+       checkpoint_every > 0, after every checkpoint_every steps
+       checkpoint_save(ctx, state, bytes) is handed the run's state (the
+       step, the forces kept, the seed's generator and the solver's,
+       aero_flow3d_state_save); at the start checkpoint_load(ctx, state,
+       bytes) may fill such a state and return 1, and the run continues
+       from its step to exactly the result it would have had; 0: start */
+    long checkpoint_every;
+    void (*checkpoint_save)(void *ctx, const void *state, size_t bytes);
+    int (*checkpoint_load)(void *ctx, void *state, size_t bytes);
 } aero_body_flow_params;
 
 typedef struct {

@@ -1085,3 +1085,56 @@ int aero_flow3d_step(aero_flow3d *s, double dt)
     s->t += dt;
     return check_finite(s);
 }
+
+/* the fields of the state between steps, with their lengths (floats) */
+static int state_fields(const aero_flow3d *s, float **f, size_t *n)
+{
+    const size_t uvn = s->plane * (s->nz + 2), wn = s->plane * (s->nz + 1);
+    float *const fields[] = {s->u, s->v, s->w, s->in_u, s->in_v, s->in_w,
+                             s->phi};
+    const size_t lens[] = {uvn, uvn, wn, s->plane, s->plane, s->plane,
+                           s->plane * s->nz};
+    for (int q = 0; q < 7; q++) {
+        f[q] = fields[q];
+        n[q] = lens[q];
+    }
+    return 7;
+}
+
+size_t aero_flow3d_state_size(const aero_flow3d *s)
+{
+    float *f[7];
+    size_t n[7], bytes = sizeof s->t;
+    const int count = state_fields(s, f, n);
+    for (int q = 0; q < count; q++)
+        bytes += sizeof(float) * n[q];
+    return bytes;
+}
+
+void aero_flow3d_state_save(const aero_flow3d *s, void *buf)
+{
+    float *f[7];
+    size_t n[7];
+    const int count = state_fields(s, f, n);
+    char *p = buf;
+    memcpy(p, &s->t, sizeof s->t);
+    p += sizeof s->t;
+    for (int q = 0; q < count; q++) {
+        memcpy(p, f[q], sizeof(float) * n[q]);
+        p += sizeof(float) * n[q];
+    }
+}
+
+void aero_flow3d_state_load(aero_flow3d *s, const void *buf)
+{
+    float *f[7];
+    size_t n[7];
+    const int count = state_fields(s, f, n);
+    const char *p = buf;
+    memcpy(&s->t, p, sizeof s->t);
+    p += sizeof s->t;
+    for (int q = 0; q < count; q++) {
+        memcpy(f[q], p, sizeof(float) * n[q]);
+        p += sizeof(float) * n[q];
+    }
+}

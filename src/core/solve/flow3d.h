@@ -134,6 +134,16 @@ int aero_flow3d_step(aero_flow3d *s, double dt);
 void aero_flow3d_project(aero_flow3d *s);
 /* largest |div u| h over the cells, m/s (0 after a projection) */
 double aero_flow3d_max_divergence(const aero_flow3d *s);
+
+/* The solver's state between two steps, for a checkpoint: the velocity
+   (u, v, w with their ghost layers), the inflow, the potential and the
+   time. A solver initialised with the same parameters and body that
+   loads it steps on exactly as the one that saved it (the other fields
+   are scratch, filled anew each step). The size in bytes; save writes
+   that many bytes to buf, load reads them. */
+size_t aero_flow3d_state_size(const aero_flow3d *s);
+void aero_flow3d_state_save(const aero_flow3d *s, void *buf);
+void aero_flow3d_state_load(aero_flow3d *s, const void *buf);
 /* cell-centred vorticity into s->ox, oy, oz and |omega| into s->omag
    (central differences of the cell-centred velocity), 1/s */
 void aero_flow3d_vorticity(aero_flow3d *s);

@@ -1,0 +1,56 @@
+#!/bin/sh
+# make bench: aerotex over MPI ranks (build/aerotex-mpi; docs/cluster.md),
+# the measured inputs of the cost model in docs/cluster.md:
+# 1. the 3D flow's cost: cell-steps per second on one core (the sphere of
+#    textures/make.sh at a coarse grid, short, --threads 1, CPU time), and
+#    the steps of the shipped sphere's duration at 4 cells per d (steps
+#    scale with the grid);
+# 2. the task farm's strong scaling at N = 1 and 2 ranks (one thread
+#    each): the sword of textures/make.sh at BENCH_SWORD_GRID cells per
+#    chord (default 16), wall time, and the ranks' textures compared with
+#    cmp (equal).
+# Skipped without build/aerotex-mpi and mpirun. Not a test: figures go to
+# BENCHMARKS.md.
+DIR=build/bench/mpi
+mkdir -p "$DIR"
+ROOT=$(pwd)
+if [ ! -x build/aerotex-mpi ] || ! command -v mpirun >/dev/null 2>&1; then
+    echo "bench/mpi.sh: no build/aerotex-mpi or mpirun (Open MPI: make deps)"
+    exit 0
+fi
+G=${BENCH_SWORD_GRID:-16}
+echo "aerotex-mpi (load $(cut -d' ' -f1-3 /proc/loadavg))"
+
+# 1. cell-steps per second per core of the 3D flow
+for g in 8 12; do
+    /usr/bin/time -f "%U %e" -o "$DIR/sphere$g.time" build/aerotex object \
+        --shape sphere --radius 0.05 --speed 10 --grid $g --duration 0.05 \
+        --settle 0.5 --limiter off --threads 1 -q -o "$DIR/sphere$g.wav" \
+        >"$DIR/sphere$g.txt"
+    sed -n 's/.*grid \([0-9]*\) x \([0-9]*\) x \([0-9]*\), \([0-9]*\) steps.*/\1 \2 \3 \4/p' \
+        "$DIR/sphere$g.txt" | {
+        read -r nx ny nz steps
+        read -r cpu wall <"$DIR/sphere$g.time"
+        awk -v g=$g -v nx="$nx" -v ny="$ny" -v nz="$nz" -v s="$steps" -v c="$cpu" 'BEGIN {
+            printf "  3D flow, sphere at %d cells per d: %d x %d x %d cells, %d steps, %.2f s CPU: %.3g cell-steps/s on one core\n",
+                g, nx, ny, nz, s, c, nx * ny * nz * s / c }'
+    }
+done
+build/aerotex object --shape sphere --radius 0.05 --speed 10 --grid 4 \
+    --duration 0.6 --limiter off --threads 1 -q -o "$DIR/sphere4.wav" |
+    sed -n 's/.*grid \([0-9]* x [0-9]* x [0-9]*\), \([0-9]*\) steps of \([0-9.]*\) ms.*/  the shipped sphere (--duration 0.6) at 4 cells per d: \1 cells, \2 steps of \3 ms/p'
+
+# 2. the task farm: the sword section, N = 1 and 2 ranks
+SWORD="aeolian --shape polygon $ROOT/textures/sword.poly --diameter 0.04 --speed 10 --symmetry 2 --mirror --directions 10 --grid $G --settle 20 --duration 0.1 --span3d urans --urans-from 30 --threads 1 -q -o sword.wav"
+for n in 1 2; do
+    mkdir -p "$DIR/np$n"
+    # shellcheck disable=SC2086
+    (cd "$DIR/np$n" && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
+        /usr/bin/time -f "%e" -o time mpirun --oversubscribe -np $n \
+        "$ROOT/build/aerotex-mpi" $SWORD >out.txt 2>&1)
+    echo "  sword, $G cells per chord, 10 directions, $n rank(s) x 1 thread: $(cat "$DIR/np$n/time") s wall"
+done
+t1=$(cat "$DIR/np1/time") t2=$(cat "$DIR/np2/time")
+awk -v a="$t1" -v b="$t2" 'BEGIN { printf "  speed-up %.2f, efficiency %.0f %%\n", a / b, 50 * a / b }'
+cmp "$DIR/np1/sword.wav" "$DIR/np2/sword.wav" && echo "  the two textures are equal (cmp)"
+echo "  load after: $(cut -d' ' -f1-3 /proc/loadavg)"

@@ -7,8 +7,9 @@
 #    scale with the grid);
 # 2. the task farm's strong scaling at N = 1 and 2 ranks (one thread
 #    each): the sword of textures/make.sh at BENCH_SWORD_GRID cells per
-#    chord (default 16), wall time, and the ranks' textures compared with
-#    cmp (equal).
+#    chord (default 16), wall and CPU time, and the ranks' textures
+#    compared with cmp (equal);
+# 3. bench/mpi-model.sh's predictions from these figures.
 # Skipped without build/aerotex-mpi and mpirun. Not a test: figures go to
 # BENCHMARKS.md.
 DIR=build/bench/mpi
@@ -26,7 +27,7 @@ for g in 8 12; do
     /usr/bin/time -f "%U %e" -o "$DIR/sphere$g.time" build/aerotex object \
         --shape sphere --radius 0.05 --speed 10 --grid $g --duration 0.05 \
         --settle 0.5 --limiter off --threads 1 -q -o "$DIR/sphere$g.wav" \
-        >"$DIR/sphere$g.txt"
+        >"$DIR/sphere$g.txt" 2>/dev/null
     sed -n 's/.*grid \([0-9]*\) x \([0-9]*\) x \([0-9]*\), \([0-9]*\) steps.*/\1 \2 \3 \4/p' \
         "$DIR/sphere$g.txt" | {
         read -r nx ny nz steps
@@ -35,22 +36,38 @@ for g in 8 12; do
             printf "  3D flow, sphere at %d cells per d: %d x %d x %d cells, %d steps, %.2f s CPU: %.3g cell-steps/s on one core\n",
                 g, nx, ny, nz, s, c, nx * ny * nz * s / c }'
     }
-done
+done | tee "$DIR/r.txt"
 build/aerotex object --shape sphere --radius 0.05 --speed 10 --grid 4 \
     --duration 0.6 --limiter off --threads 1 -q -o "$DIR/sphere4.wav" |
-    sed -n 's/.*grid \([0-9]* x [0-9]* x [0-9]*\), \([0-9]*\) steps of \([0-9.]*\) ms.*/  the shipped sphere (--duration 0.6) at 4 cells per d: \1 cells, \2 steps of \3 ms/p'
+    sed -n 's/.*grid \([0-9]* x [0-9]* x [0-9]*\), \([0-9]*\) steps of \([0-9.]*\) ms.*/  the shipped sphere (--duration 0.6) at 4 cells per d: \1 cells, \2 steps of \3 ms/p' |
+    tee -a "$DIR/r.txt"
 
-# 2. the task farm: the sword section, N = 1 and 2 ranks
+# 2. the task farm: the sword section, N = 1 and 2 ranks, wall time and
+#    each rank's CPU time (on a shared machine the wall time is an upper
+#    bound; the largest rank's CPU time is what the farm's balance allows)
 SWORD="aeolian --shape polygon $ROOT/textures/sword.poly --diameter 0.04 --speed 10 --symmetry 2 --mirror --directions 10 --grid $G --settle 20 --duration 0.1 --span3d urans --urans-from 30 --threads 1 -q -o sword.wav"
 for n in 1 2; do
     mkdir -p "$DIR/np$n"
-    # shellcheck disable=SC2086
+    rm -f "$DIR/np$n"/cpu.*
+    # shellcheck disable=SC2086,SC2016
     (cd "$DIR/np$n" && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
         /usr/bin/time -f "%e" -o time mpirun --oversubscribe -np $n \
+        sh -c '/usr/bin/time -f "%U %S" -o cpu.$OMPI_COMM_WORLD_RANK "$0" "$@"' \
         "$ROOT/build/aerotex-mpi" $SWORD >out.txt 2>&1)
-    echo "  sword, $G cells per chord, 10 directions, $n rank(s) x 1 thread: $(cat "$DIR/np$n/time") s wall"
+    cpus=$(cat "$DIR/np$n"/cpu.* | awk '{ printf "%s%.1f", NR > 1 ? " + " : "", $1 + $2 }')
+    echo "  sword, $G cells per chord, 10 directions, $n rank(s) x 1 thread: $(cat "$DIR/np$n/time") s wall, ranks' CPU $cpus s"
 done
 t1=$(cat "$DIR/np1/time") t2=$(cat "$DIR/np2/time")
-awk -v a="$t1" -v b="$t2" 'BEGIN { printf "  speed-up %.2f, efficiency %.0f %%\n", a / b, 50 * a / b }'
+c1=$(awk '{ print $1 + $2 }' "$DIR/np1/cpu.0")
+c2=$(cat "$DIR/np2"/cpu.* | awk '{ c = $1 + $2; if (c > m) m = c } END { print m }')
+awk -v a="$t1" -v b="$t2" -v c1="$c1" -v c2="$c2" 'BEGIN {
+    printf "  wall: speed-up %.2f, efficiency %.0f %%; CPU (one rank / the largest of two): speed-up %.2f, efficiency %.0f %%\n",
+        a / b, 50 * a / b, c1 / c2, 50 * c1 / c2 }'
 cmp "$DIR/np1/sword.wav" "$DIR/np2/sword.wav" && echo "  the two textures are equal (cmp)"
 echo "  load after: $(cut -d' ' -f1-3 /proc/loadavg)"
+
+# 3. the cost model's predictions from the figures above (docs/cluster.md)
+R=$(sed -n 's/.*12 cells per d.*: \([0-9.e+]*\) cell-steps.*/\1/p' "$DIR/r.txt")
+STEPS4=$(sed -n 's/.*4 cells per d: .* cells, \([0-9]*\) steps.*/\1/p' "$DIR/r.txt")
+echo
+R=${R:-1.85e7} STEPS4=${STEPS4:-579} sh bench/mpi-model.sh | sed 's/^/  /'

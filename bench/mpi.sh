@@ -31,7 +31,7 @@ for g in 8 12; do
     sed -n 's/.*grid \([0-9]*\) x \([0-9]*\) x \([0-9]*\), \([0-9]*\) steps.*/\1 \2 \3 \4/p' \
         "$DIR/sphere$g.txt" | {
         read -r nx ny nz steps
-        read -r cpu wall <"$DIR/sphere$g.time"
+        read -r cpu _ <"$DIR/sphere$g.time"
         awk -v g=$g -v nx="$nx" -v ny="$ny" -v nz="$nz" -v s="$steps" -v c="$cpu" 'BEGIN {
             printf "  3D flow, sphere at %d cells per d: %d x %d x %d cells, %d steps, %.2f s CPU: %.3g cell-steps/s on one core\n",
                 g, nx, ny, nz, s, c, nx * ny * nz * s / c }'

@@ -73,7 +73,7 @@ for object_tests in tests/objects/*.sh; do
     # read for any ONLY: 90-hostile.sh runs the named objects' lines
     only "$object_tests" || case "$object_tests" in *90-hostile.sh) ;; *) continue ;; esac
     case "$object_tests" in # no Pd in these
-        *fuzz-replay.sh | *globals.sh) [ -n "${PD_ONLY:-}" ] && continue ;;
+        *fuzz-replay.sh | *globals.sh | *mpi.sh) [ -n "${PD_ONLY:-}" ] && continue ;;
     esac
     . "$object_tests"
 done

@@ -30,7 +30,7 @@ else
             return
         fi
         for _np in $_nps; do
-            if mpi_run $_np "$mpi_dir/np$_np" "$@" -q -o "$_file" \
+            if mpi_run "$_np" "$mpi_dir/np$_np" "$@" -q -o "$_file" \
                 >"$mpi_dir/$_file.np$_np.log" 2>&1 &&
                 cmp "$mpi_dir/one/$_file" "$mpi_dir/np$_np/$_file"; then
                 pass "$_name: $_np ranks write the one-process texture byte for byte"
@@ -69,7 +69,10 @@ else
     [ -n "$ck_rank" ] && kill -9 "$ck_rank"
     wait $ck_pid
     ck_rc=$?
-    ck_kept=$(ls "$ck/run/t.wav.ckpt/" 2>/dev/null | grep -c 'task.*bin$')
+    ck_kept=0
+    for _f in "$ck/run/t.wav.ckpt/"task*.bin; do
+        [ -f "$_f" ] && ck_kept=$((ck_kept + 1))
+    done
     if [ -n "$ck_rank" ] && [ $ck_rc -ne 0 ] && [ ! -f "$ck/run/t.wav" ] &&
         [ "$ck_kept" -ge 1 ] && [ "$ck_kept" -lt 6 ]; then
         pass "a rank killed mid-run: the job failed with $ck_kept of 6 directions kept"
@@ -88,7 +91,7 @@ else
     # sample in the middle of the first changed changes the texture)
     rm -f "$ck/run/t.wav"
     cp -r "$ck/saved" "$ck/run/t.wav.ckpt"
-    ck_task=$(ls "$ck/run/t.wav.ckpt/"task*.bin | head -n 1)
+    for ck_task in "$ck/run/t.wav.ckpt/"task*.bin; do break; done
     ck_size=$(wc -c <"$ck_task")
     printf '\000\000\200\077' | dd of="$ck_task" bs=1 seek=$((ck_size / 8 * 4)) \
         conv=notrunc 2>/dev/null

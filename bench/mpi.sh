@@ -54,7 +54,7 @@ for n in 1 2; do
         /usr/bin/time -f "%e" -o time mpirun --oversubscribe -np $n \
         sh -c '/usr/bin/time -f "%U %S" -o cpu.$OMPI_COMM_WORLD_RANK "$0" "$@"' \
         "$ROOT/build/aerotex-mpi" $SWORD >out.txt 2>&1)
-    cpus=$(cat "$DIR/np$n"/cpu.* | awk '{ printf "%s%.1f", NR > 1 ? " + " : "", $1 + $2 }')
+    cpus=$(cat "$DIR/np$n"/cpu.* | awk '{ printf "%s%.1f", (NR > 1 ? " + " : ""), $1 + $2 }')
     echo "  sword, $G cells per chord, 10 directions, $n rank(s) x 1 thread: $(cat "$DIR/np$n/time") s wall, ranks' CPU $cpus s"
 done
 t1=$(cat "$DIR/np1/time") t2=$(cat "$DIR/np2/time")

@@ -26,6 +26,7 @@
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <time.h>
 #include <unistd.h>
 
 void aerotex_farm_init(int *argc, char ***argv)
@@ -226,6 +227,23 @@ void aerotex_farm_done(aerotex_job *j)
 
 /* --- gathering ------------------------------------------------------------ */
 
+/* every rank here: a rank that finished its tasks waits asleep, polling
+   each millisecond (a blocking collective would spin on a core that a
+   rank still computing, or another job, could use) */
+static void idle_barrier(void)
+{
+    const struct timespec ms = {0, 1000000};
+    MPI_Request req;
+    int done = 0;
+    MPI_Ibarrier(MPI_COMM_WORLD, &req);
+    for (;;) {
+        MPI_Test(&req, &done, MPI_STATUS_IGNORE);
+        if (done)
+            break;
+        nanosleep(&ms, NULL);
+    }
+}
+
 int aerotex_farm_gather(aerotex_job *j, void *tasks, int n, size_t task_size,
                         int width)
 {
@@ -238,6 +256,7 @@ int aerotex_farm_gather(aerotex_job *j, void *tasks, int n, size_t task_size,
     size_t mine = rank ? (size_t)aerotex_farm_count(n) : 0, total = 0;
     if (size == 1)
         return 0;
+    idle_barrier();
     if (rank == 0) {
         counts = calloc((size_t)size, sizeof(int));
         displs = calloc((size_t)size, sizeof(int));
@@ -302,6 +321,8 @@ int aerotex_farm_gather(aerotex_job *j, void *tasks, int n, size_t task_size,
 
 void aerotex_farm_share(void *p, size_t n)
 {
+    if (aerotex_farm_size() > 1)
+        idle_barrier();
     MPI_Bcast(p, (int)n, MPI_BYTE, 0, MPI_COMM_WORLD);
 }
 

@@ -112,8 +112,9 @@ int aerotex_farm_resume(aerotex_job *j, int k, void *task, size_t task_size,
     char path[4200];
     ckpt_header want = header(j, k, task_size, width), got;
     const size_t frames = (size_t)j->loop.avail;
-    float *row = malloc(sizeof(float) * (size_t)width);
-    char *body = malloc(BODY_SIZE(task_size));
+    /* (+1: a task without channels, the calibration circle, too) */
+    float *row = malloc(sizeof(float) * ((size_t)width + 1));
+    char *body = malloc(BODY_SIZE(task_size) + 1);
     FILE *f;
     int ok = 0;
     ckpt_path(path, sizeof path, j, k);

@@ -297,8 +297,9 @@ int aerotex_farm_gather(aerotex_job *j, void *tasks, int n, size_t task_size,
                        sizeof(float) * (size_t)width);
         }
     }
-    MPI_Gatherv(buf, (int)(rank ? total : 0), MPI_BYTE, buf, counts, displs,
-                MPI_BYTE, 0, MPI_COMM_WORLD);
+    /* rank 0's own tasks are in place already (counts[0] = 0) */
+    MPI_Gatherv(rank ? buf : MPI_IN_PLACE, (int)(rank ? total : 0), MPI_BYTE,
+                buf, counts, displs, MPI_BYTE, 0, MPI_COMM_WORLD);
     if (rank == 0)
         for (int r = 1; r < size; r++) {
             const char *p = buf + displs[r];

@@ -9,7 +9,9 @@
 #    each): the sword of textures/make.sh at BENCH_SWORD_GRID cells per
 #    chord (default 16), wall and CPU time, and the ranks' textures
 #    compared with cmp (equal);
-# 3. bench/mpi-model.sh's predictions from these figures.
+# 3. FFTW's MPI transposes of a sphere's spectrum (bench/mpi-transpose.c),
+#    the pressure solve's exchange in slabs, at 1 and 2 ranks;
+# 4. bench/mpi-model.sh's predictions from these figures.
 # Skipped without build/aerotex-mpi and mpirun. Not a test: figures go to
 # BENCHMARKS.md.
 DIR=build/bench/mpi
@@ -66,7 +68,19 @@ awk -v a="$t1" -v b="$t2" -v c1="$c1" -v c2="$c2" 'BEGIN {
 cmp "$DIR/np1/sword.wav" "$DIR/np2/sword.wav" && echo "  the two textures are equal (cmp)"
 echo "  load after: $(cut -d' ' -f1-3 /proc/loadavg)"
 
-# 3. the cost model's predictions from the figures above (docs/cluster.md)
+# 3. the pressure solve's exchange in slabs: FFTW's MPI transposes of the
+#    sphere's spectrum at 24 cells per d (144 x 144 x 289), 2 ranks
+if mpicc -std=c99 -O2 bench/mpi-transpose.c -o "$DIR/mpi-transpose" \
+    -lfftw3f_mpi -lfftw3f -lm 2>"$DIR/transpose.log"; then
+    for n in 1 2; do
+        OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
+            mpirun --oversubscribe -np $n "$DIR/mpi-transpose" 144 144 289 20
+    done
+else
+    echo "  (no FFTW MPI library: libfftw3-mpi-dev)"
+fi
+
+# 4. the cost model's predictions from the figures above (docs/cluster.md)
 R=$(sed -n 's/.*12 cells per d.*: \([0-9.e+]*\) cell-steps.*/\1/p' "$DIR/r.txt")
 STEPS4=$(sed -n 's/.*4 cells per d: .* cells, \([0-9]*\) steps.*/\1/p' "$DIR/r.txt")
 echo

@@ -51,7 +51,7 @@ BEGIN {
         cells = nx * ny * nz; steps = s4 * g / 4
         one = cells * steps / r
         printf "  %d cells per d: %d x %d x %d = %.3g cells, %d steps, %.0f GB; one core %s\n",
-            g, nx, ny, nz, cells, steps, 84 * cells / 1e9, hms(one)
+            g, nx, ny, nz, cells, steps, 82 * cells / 1e9, hms(one)
         for (pi = 1; pi <= 4; pi++) {
             P = pi % 2 ? 64 : 256
             # pi 1, 2: a rank per core; 3, 4: a rank per 16 cores, its

@@ -116,11 +116,20 @@ $(BUILD)/aerotex: $(aerotex.sources) $(core.lib) $(wildcard src/tools/*.h)
 MPICC ?= mpicc
 MPI ?= $(if $(shell command -v $(MPICC) 2>/dev/null),1,0)
 ifeq ($(MPI),1)
-tools: $(BUILD)/aerotex-mpi
+tools: $(BUILD)/aerotex-mpi $(BUILD)/tests/flow3d-slab
 endif
 $(BUILD)/aerotex-mpi: $(aerotex.sources) $(core.lib) $(wildcard src/tools/*.h)
 	OMPI_CC=$(CORE_CC) $(MPICC) $(CORE_CFLAGS) -DAEROTEX_MPI \
 	    $(aerotex.sources) -o $@ $(TOOL_LIBS)
+
+# the 3D flow's projection in z slabs over MPI ranks against the
+# one-process solver's (tests/objects/80-mpi.sh)
+$(BUILD)/tests/flow3d-slab: tests/mpi/flow3d_slab.c src/tools/flow3d_slab.c \
+    src/tools/flow3d_slab.h $(core.lib)
+	@mkdir -p $(@D)
+	OMPI_CC=$(CORE_CC) $(MPICC) $(CORE_CFLAGS) -Isrc/tools \
+	    tests/mpi/flow3d_slab.c src/tools/flow3d_slab.c -o $@ \
+	    -lfftw3f_mpi $(TOOL_LIBS)
 
 $(BUILD)/aero-analyze: $(analyze.sources) $(core.lib)
 	$(CORE_CC) $(CORE_CFLAGS) $(analyze.sources) -o $@ $(TOOL_LIBS)

@@ -1,0 +1,240 @@
+/* aerotex-mpi: the pressure projection of a 3D flow in z slabs over MPI
+ * ranks (see flow3d_slab.h). */
+#include "flow3d_slab.h"
+
+#include <fftw3-mpi.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define SLAB_PI 3.14159265358979323846
+
+/* the same factors as flow3d.c's factor_poisson (in double, then float,
+   so the same numbers), for this rank's ky rows only */
+static void slab_factor(aero_flow3d_slab *s)
+{
+    const int nx = s->nx, ny = s->ny, nz = s->nz, nxh = nx / 2 + 1;
+    for (ptrdiff_t yl = 0; yl < s->nyl; yl++) {
+        const int ky = (int)(s->ky0 + yl);
+        (void)ny;
+        for (int kx = 0; kx < nxh; kx++) {
+            double mu = 2.0 * cos(2.0 * SLAB_PI * kx / nx) +
+                        2.0 * cos(2.0 * SLAB_PI * ky / ny) - 4.0;
+            double cprev = 0.0;
+            for (int k = 0; k < nz; k++) {
+                double b = mu - 2.0;
+                if (k == 0) b = mu - 1.0;
+                if (k == nz - 1) b = mu - 3.0;
+                double m = 1.0 / (b - (k ? cprev : 0.0));
+                s->tri_m[((size_t)yl * nz + k) * nxh + kx] = (float)m;
+                cprev = m;
+            }
+        }
+    }
+}
+
+int aero_flow3d_slab_init(aero_flow3d_slab *s, MPI_Comm comm, int nx, int ny,
+                          int nz, double h, char *err, size_t errlen)
+{
+    memset(s, 0, sizeof *s);
+    if (nx < 4 || ny < 4 || nz < 3 || (nx & 1) || (ny & 1) || !(h > 0.0)) {
+        snprintf(err, errlen, "grid %d x %d x %d: nx, ny even and >= 4, "
+                 "nz >= 3", nx, ny, nz);
+        return -1;
+    }
+    fftwf_mpi_init(); /* once per process; later calls return at once */
+    s->comm = comm;
+    MPI_Comm_rank(comm, &s->rank);
+    MPI_Comm_size(comm, &s->size);
+    s->nx = nx;
+    s->ny = ny;
+    s->nz = nz;
+    s->h = h;
+    s->halo = 1;
+    s->plane = (size_t)nx * ny;
+    const int nxh = nx / 2 + 1;
+    const ptrdiff_t block = 2 * (ptrdiff_t)nxh; /* a row of complex */
+    ptrdiff_t alloc = fftwf_mpi_local_size_many_transposed(
+        2, (ptrdiff_t[]){nz, ny}, block, FFTW_MPI_DEFAULT_BLOCK,
+        FFTW_MPI_DEFAULT_BLOCK, comm, &s->nl, &s->k0, &s->nyl, &s->ky0);
+    int ok = s->nl > 0 && s->nyl > 0, all;
+    MPI_Allreduce(&ok, &all, 1, MPI_INT, MPI_MIN, comm);
+    if (!all) {
+        snprintf(err, errlen, "%d ranks for %d planes and %d rows: every "
+                 "rank needs a plane and a row (fewer ranks)", s->size, nz,
+                 ny);
+        return -1;
+    }
+    const size_t pl = s->plane, nl = (size_t)s->nl;
+    s->u = calloc((nl + 2) * pl, sizeof(float));
+    s->v = calloc((nl + 2) * pl, sizeof(float));
+    s->w = calloc((nl + 1) * pl, sizeof(float));
+    s->in_u = calloc(pl, sizeof(float));
+    s->in_v = calloc(pl, sizeof(float));
+    s->in_w = calloc(pl, sizeof(float));
+    s->phi = fftwf_alloc_real((nl + 1) * pl);
+    s->spec = fftwf_alloc_real((size_t)alloc);
+    s->tri_m = calloc((size_t)s->nyl * nz * nxh, sizeof(float));
+    ok = s->u && s->v && s->w && s->in_u && s->in_v && s->in_w && s->phi &&
+         s->spec && s->tri_m;
+    if (ok) {
+        const int n[2] = {ny, nx};
+        s->fwd = fftwf_plan_many_dft_r2c(
+            2, n, (int)nl, s->phi + pl, NULL, 1, (int)pl,
+            (fftwf_complex *)s->spec, NULL, 1, nxh * ny, FFTW_ESTIMATE);
+        s->inv = fftwf_plan_many_dft_c2r(
+            2, n, (int)nl, (fftwf_complex *)s->spec, NULL, 1, nxh * ny,
+            s->phi + pl, NULL, 1, (int)pl, FFTW_ESTIMATE);
+        s->there = fftwf_mpi_plan_many_transpose(
+            nz, ny, block, FFTW_MPI_DEFAULT_BLOCK, FFTW_MPI_DEFAULT_BLOCK,
+            s->spec, s->spec, comm, FFTW_ESTIMATE);
+        s->back = fftwf_mpi_plan_many_transpose(
+            ny, nz, block, FFTW_MPI_DEFAULT_BLOCK, FFTW_MPI_DEFAULT_BLOCK,
+            s->spec, s->spec, comm, FFTW_ESTIMATE);
+        ok = s->fwd && s->inv && s->there && s->back;
+    }
+    MPI_Allreduce(&ok, &all, 1, MPI_INT, MPI_MIN, comm);
+    if (!all) {
+        aero_flow3d_slab_free(s);
+        snprintf(err, errlen, "out of memory or no FFTW plan for a %d x %d "
+                 "x %d slab", nx, ny, nz);
+        return -1;
+    }
+    slab_factor(s);
+    return 0;
+}
+
+void aero_flow3d_slab_free(aero_flow3d_slab *s)
+{
+    void *plans[] = {s->fwd, s->inv, s->there, s->back};
+    for (int q = 0; q < 4; q++)
+        if (plans[q]) fftwf_destroy_plan(plans[q]);
+    free(s->u);
+    free(s->v);
+    free(s->w);
+    free(s->in_u);
+    free(s->in_v);
+    free(s->in_w);
+    free(s->tri_m);
+    if (s->phi) fftwf_free(s->phi);
+    if (s->spec) fftwf_free(s->spec);
+    memset(s, 0, sizeof *s);
+}
+
+/* inflow on the first rank, the zero-gradient top on the last (flow3d.c's
+   apply_boundaries) */
+static void slab_boundaries(aero_flow3d_slab *s)
+{
+    const size_t pl = s->plane, nl = (size_t)s->nl;
+    if (s->rank == 0) {
+        memcpy(s->u, s->in_u, sizeof(float) * pl);
+        memcpy(s->v, s->in_v, sizeof(float) * pl);
+        memcpy(s->w, s->in_w, sizeof(float) * pl);
+    }
+    if (s->rank == s->size - 1) {
+        memcpy(s->u + (nl + 1) * pl, s->u + nl * pl, sizeof(float) * pl);
+        memcpy(s->v + (nl + 1) * pl, s->v + nl * pl, sizeof(float) * pl);
+    }
+}
+
+/* one plane of floats: send to `to`, receive from `from` (MPI_PROC_NULL
+   past the ends) */
+static void exchange(aero_flow3d_slab *s, const float *send, int to,
+                     float *recv, int from)
+{
+    if (!s->halo) return;
+    MPI_Sendrecv(send, (int)s->plane, MPI_FLOAT, to, 53, recv,
+                 (int)s->plane, MPI_FLOAT, from, 53, s->comm,
+                 MPI_STATUS_IGNORE);
+    if (to != MPI_PROC_NULL) s->bytes_sent += 4.0 * (double)s->plane;
+}
+
+/* the tridiagonal along z of flow3d.c's solve_modes_z, on the transposed
+   spectrum [ky - ky0][k][kx] */
+static void slab_solve_z(aero_flow3d_slab *s)
+{
+    const int nz = s->nz, nxh = s->nx / 2 + 1;
+    for (ptrdiff_t yl = 0; yl < s->nyl; yl++) {
+        float *d = s->spec + 2 * (size_t)yl * nz * nxh;
+        const float *m = s->tri_m + (size_t)yl * nz * nxh;
+        for (int kx = 0; kx < nxh; kx++) {
+            d[2 * kx] *= m[kx];
+            d[2 * kx + 1] *= m[kx];
+        }
+        for (int k = 1; k < nz; k++) {
+            const float *q = m + (size_t)k * nxh;
+            float *dk = d + 2 * (size_t)k * nxh, *dl = dk - 2 * nxh;
+            for (int kx = 0; kx < nxh; kx++) {
+                dk[2 * kx] = (dk[2 * kx] - dl[2 * kx]) * q[kx];
+                dk[2 * kx + 1] = (dk[2 * kx + 1] - dl[2 * kx + 1]) * q[kx];
+            }
+        }
+        for (int k = nz - 2; k >= 0; k--) {
+            const float *q = m + (size_t)k * nxh;
+            float *dk = d + 2 * (size_t)k * nxh, *du = dk + 2 * nxh;
+            for (int kx = 0; kx < nxh; kx++) {
+                dk[2 * kx] -= q[kx] * du[2 * kx];
+                dk[2 * kx + 1] -= q[kx] * du[2 * kx + 1];
+            }
+        }
+    }
+}
+
+void aero_flow3d_slab_project(aero_flow3d_slab *s)
+{
+    const int nx = s->nx, ny = s->ny, nxh = nx / 2 + 1;
+    const size_t pl = s->plane, nl = (size_t)s->nl;
+    const int up = s->rank + 1 < s->size ? s->rank + 1 : MPI_PROC_NULL;
+    const int down = s->rank > 0 ? s->rank - 1 : MPI_PROC_NULL;
+    const float h = (float)s->h, ih = 1.0f / h;
+    const float g = 1.0f / (float)(nx * ny) * ih;
+    slab_boundaries(s);
+    /* the face above the slab: the next rank's first face */
+    exchange(s, s->w, down, s->w + nl * pl, up);
+    for (size_t k = 0; k < nl; k++)
+        for (int j = 0; j < ny; j++) {
+            const int jp = j + 1 == ny ? 0 : j + 1;
+            const float *u = s->u + AERO_SLAB_UV(s, 0, j, (ptrdiff_t)k);
+            const float *v = s->v + AERO_SLAB_UV(s, 0, j, (ptrdiff_t)k);
+            const float *vp = s->v + AERO_SLAB_UV(s, 0, jp, (ptrdiff_t)k);
+            const float *w = s->w + AERO_SLAB_C(s, 0, j, k), *wp = w + pl;
+            float *phi = s->phi + pl + AERO_SLAB_C(s, 0, j, k);
+            for (int i = 0; i < nx; i++) {
+                const int ip = i + 1 == nx ? 0 : i + 1;
+                phi[i] = h * (u[ip] - u[i] + vp[i] - v[i] + wp[i] - w[i]);
+            }
+        }
+    fftwf_execute(s->fwd);
+    fftwf_execute(s->there);
+    slab_solve_z(s);
+    fftwf_execute(s->back);
+    fftwf_execute(s->inv);
+    /* both transposes: this rank's blocks for the other ranks */
+    s->bytes_sent += 4.0 * 2.0 * nxh *
+                     ((double)nl * (ny - (double)s->nyl) +
+                      (double)s->nyl * (s->nz - (double)nl));
+    /* the potential of the plane below the slab: the previous rank's last */
+    exchange(s, s->phi + nl * pl, up, s->phi, down);
+    for (size_t k = 0; k < nl; k++)
+        for (int j = 0; j < ny; j++) {
+            const int jm = j ? j - 1 : ny - 1;
+            const float *p = s->phi + pl + AERO_SLAB_C(s, 0, j, k);
+            const float *pm = s->phi + pl + AERO_SLAB_C(s, 0, jm, k);
+            float *u = s->u + AERO_SLAB_UV(s, 0, j, (ptrdiff_t)k);
+            float *v = s->v + AERO_SLAB_UV(s, 0, j, (ptrdiff_t)k);
+            float *w = s->w + AERO_SLAB_C(s, 0, j, k);
+            for (int i = 0; i < nx; i++) {
+                const int im = i ? i - 1 : nx - 1;
+                u[i] -= g * (p[i] - p[im]);
+                v[i] -= g * (p[i] - pm[i]);
+            }
+            if (s->k0 + (ptrdiff_t)k > 0)
+                for (int i = 0; i < nx; i++)
+                    w[i] -= g * (p[i] - p[i - (ptrdiff_t)pl]);
+        }
+    if (up == MPI_PROC_NULL) /* the open top: phi = 0 on the face */
+        for (size_t c = 0; c < pl; c++)
+            s->w[nl * pl + c] += 2.0f * g * s->phi[nl * pl + c];
+    slab_boundaries(s);
+}

@@ -1,6 +1,7 @@
 /* aerotex-mpi: the pressure projection of a 3D flow in z slabs over MPI
  * ranks (see flow3d_slab.h). */
 #include "flow3d_slab.h"
+#include "flow3d.h"
 
 #include <fftw3-mpi.h>
 #include <math.h>
@@ -237,4 +238,212 @@ void aero_flow3d_slab_project(aero_flow3d_slab *s)
         for (size_t c = 0; c < pl; c++)
             s->w[nl * pl + c] += 2.0f * g * s->phi[nl * pl + c];
     slab_boundaries(s);
+}
+
+/* ---- the whole step over slabs: windows with halos ---- */
+
+/* the layers of u and v and the faces of w rank r owns, [a, b] */
+static void owned(const aero_flow3d_slabs *w, int r, int *a, int *b,
+                  int *wb)
+{
+    *a = w->k0s[r];
+    *b = w->k0s[r] + w->nls[r] - 1;
+    *wb = r == w->slab.size - 1 ? w->slab.nz : *b;
+}
+
+/* the counts of the halo exchange from rank r to q: u and v layers
+   [*ua, *ub], w faces [*wa, *wbb] (empty when b < a) */
+static void overlap(const aero_flow3d_slabs *w, int r, int q, int *ua,
+                    int *ub, int *wa, int *wbb)
+{
+    int a, b, wb;
+    owned(w, r, &a, &b, &wb);
+    const int lo = w->kbs[q] - 1 < 0 ? 0 : w->kbs[q] - 1;
+    const int hi = w->kts[q] > w->slab.nz - 1 ? w->slab.nz - 1 : w->kts[q];
+    *ua = lo > a ? lo : a;
+    *ub = hi < b ? hi : b;
+    *wa = w->kbs[q] > a ? w->kbs[q] : a;
+    *wbb = w->kts[q] < wb ? w->kts[q] : wb;
+    if (r == q) { /* nothing to oneself */
+        *ub = *ua - 1;
+        *wbb = *wa - 1;
+    }
+}
+
+static int span(int a, int b) { return b >= a ? b - a + 1 : 0; }
+
+static void halo_exchange(aero_flow3d_slabs *w)
+{
+    aero_flow3d *f = w->f;
+    const size_t pl = f->plane;
+    const int me = w->slab.rank, n = w->slab.size;
+    int so = 0, ro = 0;
+    for (int q = 0; q < n; q++) {
+        int ua, ub, wa, wb;
+        overlap(w, me, q, &ua, &ub, &wa, &wb);
+        w->sdispl[q] = so;
+        for (int g = ua; g <= ub; g++) {
+            memcpy(w->sbuf + so, f->u + AERO_F3_UV(f, 0, 0, g - w->kb),
+                   sizeof(float) * pl);
+            memcpy(w->sbuf + so + pl, f->v + AERO_F3_UV(f, 0, 0, g - w->kb),
+                   sizeof(float) * pl);
+            so += 2 * (int)pl;
+        }
+        for (int g = wa; g <= wb; g++) {
+            memcpy(w->sbuf + so, f->w + AERO_F3_C(f, 0, 0, g - w->kb),
+                   sizeof(float) * pl);
+            so += (int)pl;
+        }
+        w->scount[q] = so - w->sdispl[q];
+        overlap(w, q, me, &ua, &ub, &wa, &wb);
+        w->rdispl[q] = ro;
+        w->rcount[q] = (2 * span(ua, ub) + span(wa, wb)) * (int)pl;
+        ro += w->rcount[q];
+    }
+    if (!w->exchange) return;
+    MPI_Alltoallv(w->sbuf, w->scount, w->sdispl, MPI_FLOAT, w->rbuf,
+                  w->rcount, w->rdispl, MPI_FLOAT, w->slab.comm);
+    w->bytes_sent += 4.0 * so;
+    for (int q = 0; q < n; q++) {
+        int ua, ub, wa, wb, o = w->rdispl[q];
+        overlap(w, q, me, &ua, &ub, &wa, &wb);
+        for (int g = ua; g <= ub; g++) {
+            memcpy(f->u + AERO_F3_UV(f, 0, 0, g - w->kb), w->rbuf + o,
+                   sizeof(float) * pl);
+            memcpy(f->v + AERO_F3_UV(f, 0, 0, g - w->kb), w->rbuf + o + pl,
+                   sizeof(float) * pl);
+            o += 2 * (int)pl;
+        }
+        for (int g = wa; g <= wb; g++) {
+            memcpy(f->w + AERO_F3_C(f, 0, 0, g - w->kb), w->rbuf + o,
+                   sizeof(float) * pl);
+            o += (int)pl;
+        }
+    }
+}
+
+/* the window's projection hook (aero_flow3d_set_window) */
+static void slabs_project(void *ctx, aero_flow3d *f)
+{
+    aero_flow3d_slabs *w = ctx;
+    aero_flow3d_slab *s = &w->slab;
+    const size_t pl = f->plane, nl = (size_t)s->nl;
+    const int off = (int)s->k0 - w->kb;
+    s->halo = w->exchange;
+    memcpy(s->u, f->u + AERO_F3_UV(f, 0, 0, off - 1),
+           sizeof(float) * (nl + 2) * pl);
+    memcpy(s->v, f->v + AERO_F3_UV(f, 0, 0, off - 1),
+           sizeof(float) * (nl + 2) * pl);
+    memcpy(s->w, f->w + AERO_F3_C(f, 0, 0, off),
+           sizeof(float) * (nl + 1) * pl);
+    memcpy(s->in_u, f->in_u, sizeof(float) * pl);
+    memcpy(s->in_v, f->in_v, sizeof(float) * pl);
+    memcpy(s->in_w, f->in_w, sizeof(float) * pl);
+    aero_flow3d_slab_project(s);
+    memcpy(f->u + AERO_F3_UV(f, 0, 0, off), s->u + pl,
+           sizeof(float) * nl * pl);
+    memcpy(f->v + AERO_F3_UV(f, 0, 0, off), s->v + pl,
+           sizeof(float) * nl * pl);
+    memcpy(f->w + AERO_F3_C(f, 0, 0, off), s->w,
+           sizeof(float) * (nl + (s->rank == s->size - 1)) * pl);
+    halo_exchange(w);
+    if (w->kb > 0) { /* the window's bottom edge stands for the inflow */
+        memcpy(f->in_u, f->u, sizeof(float) * pl);
+        memcpy(f->in_v, f->v, sizeof(float) * pl);
+        memcpy(f->in_w, f->w, sizeof(float) * pl);
+    }
+    if (f->region_force && f->n_regions > 0)
+        MPI_Allreduce(MPI_IN_PLACE, f->region_force, 3 * f->n_regions,
+                      MPI_DOUBLE, MPI_SUM, s->comm);
+}
+
+int aero_flow3d_slabs_init(aero_flow3d_slabs *w, MPI_Comm comm,
+                           const void *params, int halo, char *err,
+                           size_t errlen)
+{
+    const aero_flow3d_params *p = params;
+    memset(w, 0, sizeof *w);
+    if (aero_flow3d_slab_init(&w->slab, comm, p->nx, p->ny, p->nz, p->h, err,
+                              errlen))
+        return -1;
+    aero_flow3d_slab *s = &w->slab;
+    const int n = s->size;
+    w->halo = halo < 1 ? 1 : halo;
+    w->exchange = 1;
+    w->kb = (int)s->k0 - w->halo < 0 ? 0 : (int)s->k0 - w->halo;
+    w->kt = (int)(s->k0 + s->nl) + w->halo > p->nz
+                ? p->nz : (int)(s->k0 + s->nl) + w->halo;
+    w->k0s = calloc((size_t)n, sizeof(int));
+    w->nls = calloc((size_t)n, sizeof(int));
+    w->kbs = calloc((size_t)n, sizeof(int));
+    w->kts = calloc((size_t)n, sizeof(int));
+    w->scount = calloc((size_t)n, sizeof(int));
+    w->sdispl = calloc((size_t)n, sizeof(int));
+    w->rcount = calloc((size_t)n, sizeof(int));
+    w->rdispl = calloc((size_t)n, sizeof(int));
+    w->f = calloc(1, sizeof(aero_flow3d));
+    int ok = w->k0s && w->nls && w->kbs && w->kts && w->scount &&
+             w->sdispl && w->rcount && w->rdispl && w->f, all;
+    if (ok) {
+        int mine[4] = {(int)s->k0, (int)s->nl, w->kb, w->kt};
+        int *every = calloc(4 * (size_t)n, sizeof(int));
+        ok = every != NULL;
+        MPI_Allgather(mine, 4, MPI_INT, every ? every : mine, every ? 4 : 0,
+                      MPI_INT, comm);
+        for (int r = 0; every && r < n; r++) {
+            w->k0s[r] = every[4 * r];
+            w->nls[r] = every[4 * r + 1];
+            w->kbs[r] = every[4 * r + 2];
+            w->kts[r] = every[4 * r + 3];
+        }
+        free(every);
+    }
+    if (ok) {
+        aero_flow3d_params wp = *p;
+        wp.nz = w->kt - w->kb;
+        wp.nz_total = p->nz;
+        wp.k_origin = w->kb;
+        ok = !aero_flow3d_init(w->f, &wp, err, errlen);
+        if (ok) {
+            /* the largest exchange: every window layer, u, v and w */
+            const size_t most = 3 * w->f->plane * (size_t)(wp.nz + 2);
+            w->sbuf = malloc(sizeof(float) * most);
+            w->rbuf = malloc(sizeof(float) * most);
+            ok = w->sbuf && w->rbuf;
+            aero_flow3d_set_window(w->f, (int)s->k0 - w->kb,
+                                   (int)(s->k0 + s->nl) - w->kb,
+                                   slabs_project, w);
+        } else {
+            free(w->f);
+            w->f = NULL;
+        }
+    }
+    MPI_Allreduce(&ok, &all, 1, MPI_INT, MPI_MIN, comm);
+    if (!all) {
+        aero_flow3d_slabs_free(w);
+        snprintf(err, errlen, "no window of %d x %d x %d over %d ranks",
+                 p->nx, p->ny, p->nz, n);
+        return -1;
+    }
+    return 0;
+}
+
+void aero_flow3d_slabs_free(aero_flow3d_slabs *w)
+{
+    if (w->f) {
+        aero_flow3d_free(w->f);
+        free(w->f);
+    }
+    aero_flow3d_slab_free(&w->slab);
+    free(w->k0s);
+    free(w->nls);
+    free(w->kbs);
+    free(w->kts);
+    free(w->scount);
+    free(w->sdispl);
+    free(w->rcount);
+    free(w->rdispl);
+    free(w->sbuf);
+    free(w->rbuf);
+    memset(w, 0, sizeof *w);
 }

@@ -48,6 +48,36 @@ void aero_flow3d_slab_free(aero_flow3d_slab *s);
 /* u -= grad phi with lap phi = div u over the whole grid (collective) */
 void aero_flow3d_slab_project(aero_flow3d_slab *s);
 
+/* One 3D flow (flow3d.h) stepped in z slabs over the ranks: each rank
+ * steps a window of the grid (aero_flow3d_set_window), its own slab of
+ * planes and `halo` planes of its neighbours' either side, and projects
+ * its own slab with the others (aero_flow3d_slab_project above). After
+ * the projection the halo planes are copied from the ranks that own them
+ * (MPI_Alltoallv: only neighbours send, more than one when a slab is
+ * thinner than the halo). Advection's departure points, the confinement's
+ * and diffusion's stencils and the near-body mask read at most a few
+ * planes away a step, so a halo wider than that keeps every own value
+ * exact: the flow equals the one-process flow within float rounding
+ * (tests/objects/80-mpi.sh). The cost: each rank computes 2 halo planes
+ * besides its own, and sends the halos once a step. */
+typedef struct {
+    aero_flow3d_slab slab;
+    struct aero_flow3d *f; /* the window (allocated) */
+    int halo;              /* planes each side */
+    int kb, kt;            /* the window's cells in the grid: kb .. kt-1 */
+    int *k0s, *nls, *kbs, *kts; /* every rank's slab and window */
+    float *sbuf, *rbuf;
+    int *scount, *sdispl, *rcount, *rdispl;
+    int exchange;          /* 1: copy the halos; 0: not (negative control) */
+    double bytes_sent;     /* of the halos, summed over steps */
+} aero_flow3d_slabs;
+
+/* p is the whole grid's; 0, or -1 with a message (on every rank) */
+int aero_flow3d_slabs_init(aero_flow3d_slabs *w, MPI_Comm comm,
+                           const void *params, int halo, char *err,
+                           size_t errlen);
+void aero_flow3d_slabs_free(aero_flow3d_slabs *w);
+
 /* index in u or v of cell (i, j) of local plane k (-1 .. nl), and in w or
    a cell-centred field of local plane k (0 .. nl) */
 #define AERO_SLAB_UV(s, i, j, k) \

@@ -72,6 +72,12 @@ static int check_params(const aero_flow3d_params *p, char *err, size_t errlen)
         snprintf(err, errlen, "bad cell size, viscosity or confinement");
         return -1;
     }
+    if (p->nz_total < 0 || (p->nz_total > 0 &&
+        (p->k_origin < 0 || p->k_origin > p->nz_total - p->nz))) {
+        snprintf(err, errlen, "window of %d cells from %d in %d", p->nz,
+                 p->k_origin, p->nz_total);
+        return -1;
+    }
     return 0;
 }
 
@@ -181,6 +187,8 @@ int aero_flow3d_init(aero_flow3d *s, const aero_flow3d_params *p, char *err,
         return -1;
     }
     factor_poisson(s);
+    s->own_lo = 0;
+    s->own_hi = s->nz;
     s->solid = NULL;
     s->t = 0.0;
     return 0;
@@ -901,13 +909,16 @@ double aero_flow3d_energy(const aero_flow3d *s)
 static void sponge(aero_flow3d *s, double dt)
 {
     const int nz = s->nz;
-    const double z0 = (1.0 - s->p.sponge) * nz, rate = s->p.u_ref / s->p.h;
+    /* heights in the whole grid (a window's from its origin) */
+    const int nzt = s->p.nz_total > 0 ? s->p.nz_total : nz;
+    const int kor = s->p.nz_total > 0 ? s->p.k_origin : 0;
+    const double z0 = (1.0 - s->p.sponge) * nzt, rate = s->p.u_ref / s->p.h;
     const float target = (float)s->p.u_ref;
     for (int k = 0; k <= nz; k++) {
-        double zc = k + 0.5, zf = k, qc, qf;
+        double zc = kor + k + 0.5, zf = kor + k, qc, qf;
         float ac, af;
-        qc = zc > z0 ? (zc - z0) / (nz - z0) : 0.0;
-        qf = zf > z0 ? (zf - z0) / (nz - z0) : 0.0;
+        qc = zc > z0 ? (zc - z0) / (nzt - z0) : 0.0;
+        qf = zf > z0 ? (zf - z0) / (nzt - z0) : 0.0;
         if (qf <= 0.0 && qc <= 0.0)
             continue;
         ac = (float)exp(-dt * rate * qc * qc);
@@ -1004,6 +1015,16 @@ void aero_flow3d_set_body(aero_flow3d *s, const float *solid,
     s->region_force = solid ? force : NULL;
 }
 
+void aero_flow3d_set_window(aero_flow3d *s, int own_lo, int own_hi,
+                            void (*project)(void *ctx, aero_flow3d *s),
+                            void *ctx)
+{
+    s->project_hook = project;
+    s->project_ctx = project ? ctx : NULL;
+    s->own_lo = project ? own_lo : 0;
+    s->own_hi = project ? own_hi : s->nz;
+}
+
 /* direct forcing of a body at rest: each face velocity times
    (1 - chi_face); the removed momentum, per region, is the force on the
    body (flow3d.h) */
@@ -1041,7 +1062,7 @@ static void force_body(aero_flow3d *s, double dt)
                     f = 0.5f * (a + b) >= 0.5f ? 1.0f : 0.0f;
                     if (f <= 0.0f)
                         continue;
-                    if (F && reg) {
+                    if (F && reg && k >= s->own_lo && k < s->own_hi) {
                         int r = a >= b ? reg[c] : reg[n3[d]];
                         if (r >= 0 && r < nr)
                             F[3 * r + d] += scale * f * *vel[d];
@@ -1081,7 +1102,10 @@ int aero_flow3d_step(aero_flow3d *s, double dt)
         sponge(s, dt);
     if (s->solid)
         force_body(s, dt);
-    aero_flow3d_project(s);
+    if (s->project_hook)
+        s->project_hook(s->project_ctx, s);
+    else
+        aero_flow3d_project(s);
     s->t += dt;
     return check_finite(s);
 }

@@ -80,6 +80,10 @@ typedef struct {
                              of grid-scale eddies grows as 1 / h */
     int threads;          /* OpenMP threads of one step (<= 1: one; inside
                              another active parallel region: one) */
+    int nz_total;         /* a window of a taller grid (aerotex-mpi's
+                             slabs, aero_flow3d_set_window): its cells;
+                             0: this grid is the whole grid */
+    int k_origin;         /* the window's first cell in that grid */
 } aero_flow3d_params;
 
 typedef struct aero_flow3d {
@@ -107,6 +111,10 @@ typedef struct aero_flow3d {
     void *spec;           /* fftwf_complex, nz * ny * (nx/2+1) */
     float *tri_c, *tri_m; /* Thomas coefficients per (kx, ky, k) */
     double t;             /* simulated time, s */
+    /* a window of a grid split over processes (aero_flow3d_set_window) */
+    int own_lo, own_hi;   /* the cells whose faces' forces this one sums */
+    void (*project_hook)(void *ctx, struct aero_flow3d *s);
+    void *project_ctx;
 } aero_flow3d;
 
 /* 0, or -1 with a message in err */
@@ -126,6 +134,22 @@ void aero_flow3d_free(aero_flow3d *s);
    (3 * n_regions); solid NULL removes it */
 void aero_flow3d_set_body(aero_flow3d *s, const float *solid,
                           const int *region, int n_regions, double *force);
+
+/* This solver as a window of a taller grid (p.nz_total cells, this one
+   from p.k_origin) that other processes step with it: the window's layers
+   own_lo .. own_hi-1 are its own, the others are halos, copies of its
+   neighbours' layers. A step does everything but the projection on the
+   whole window (a halo value computed wrongly from the window's edge
+   reaches inward no further than the halo's width), sums the body's
+   forces over its own layers only, and calls project(ctx, s) instead of
+   the projection: it projects the own layers with the other windows and
+   refreshes the halos and the bottom edge's in_u, in_v, in_w (the
+   inflow's place in a window that does not start at the inflow). The
+   hook holds the host's communication (src/tools/flow3d_slab.c); this
+   file has none. project NULL: a whole grid again. */
+void aero_flow3d_set_window(aero_flow3d *s, int own_lo, int own_hi,
+                            void (*project)(void *ctx, aero_flow3d *s),
+                            void *ctx);
 
 /* one step of dt seconds (the inflow arrays are read at its start);
    returns -1 if a velocity became non-finite */

@@ -355,10 +355,45 @@ static void slabs_project(void *ctx, aero_flow3d *f)
     if (f->region_force && f->n_regions > 0)
         MPI_Allreduce(MPI_IN_PLACE, f->region_force, 3 * f->n_regions,
                       MPI_DOUBLE, MPI_SUM, s->comm);
+    /* the step's finite check (flow3d.c: one layer's sum) on every rank:
+       a flow that blew up in one slab fails the step on all of them */
+    float *mid = f->w + (size_t)(f->nz / 2) * pl;
+    float acc = 0.0f;
+    for (size_t c = 0; c < pl; c++)
+        acc += mid[c];
+    int bad = !(acc == acc) || fabsf(acc) > 1e30f, any;
+    MPI_Allreduce(&bad, &any, 1, MPI_INT, MPI_MAX, s->comm);
+    if (any)
+        mid[0] = NAN;
+}
+
+/* aero_body_flow_params' window_open and window_close over
+   MPI_COMM_WORLD */
+void *aero_flow3d_slabs_open(const void *whole, struct aero_flow3d *s,
+                             char *err, size_t errlen)
+{
+    aero_flow3d_slabs *w = calloc(1, sizeof *w);
+    if (!w) {
+        snprintf(err, errlen, "out of memory");
+        return NULL;
+    }
+    if (aero_flow3d_slabs_init(w, MPI_COMM_WORLD, whole,
+                               AERO_FLOW3D_SLAB_HALO, s, err, errlen)) {
+        free(w);
+        return NULL;
+    }
+    return w;
+}
+
+void aero_flow3d_slabs_close(void *handle)
+{
+    aero_flow3d_slabs_free(handle);
+    free(handle);
 }
 
 int aero_flow3d_slabs_init(aero_flow3d_slabs *w, MPI_Comm comm,
-                           const void *params, int halo, char *err,
+                           const void *params, int halo,
+                           struct aero_flow3d *window, char *err,
                            size_t errlen)
 {
     const aero_flow3d_params *p = params;
@@ -381,7 +416,8 @@ int aero_flow3d_slabs_init(aero_flow3d_slabs *w, MPI_Comm comm,
     w->sdispl = calloc((size_t)n, sizeof(int));
     w->rcount = calloc((size_t)n, sizeof(int));
     w->rdispl = calloc((size_t)n, sizeof(int));
-    w->f = calloc(1, sizeof(aero_flow3d));
+    w->own_f = window == NULL;
+    w->f = window ? window : calloc(1, sizeof(aero_flow3d));
     int ok = w->k0s && w->nls && w->kbs && w->kts && w->scount &&
              w->sdispl && w->rcount && w->rdispl && w->f, all;
     if (ok) {
@@ -414,7 +450,7 @@ int aero_flow3d_slabs_init(aero_flow3d_slabs *w, MPI_Comm comm,
                                    (int)(s->k0 + s->nl) - w->kb,
                                    slabs_project, w);
         } else {
-            free(w->f);
+            if (w->own_f) free(w->f);
             w->f = NULL;
         }
     }
@@ -432,7 +468,7 @@ void aero_flow3d_slabs_free(aero_flow3d_slabs *w)
 {
     if (w->f) {
         aero_flow3d_free(w->f);
-        free(w->f);
+        if (w->own_f) free(w->f);
     }
     aero_flow3d_slab_free(&w->slab);
     free(w->k0s);

@@ -21,6 +21,8 @@
 #include <mpi.h>
 #include <stddef.h>
 
+struct aero_flow3d;
+
 typedef struct {
     MPI_Comm comm;
     int rank, size;
@@ -69,14 +71,29 @@ typedef struct {
     float *sbuf, *rbuf;
     int *scount, *sdispl, *rcount, *rdispl;
     int exchange;          /* 1: copy the halos; 0: not (negative control) */
+    int own_f;             /* f allocated here */
     double bytes_sent;     /* of the halos, summed over steps */
 } aero_flow3d_slabs;
 
-/* p is the whole grid's; 0, or -1 with a message (on every rank) */
+/* params: the whole grid's aero_flow3d_params; window: the solver to
+   initialise as this rank's window (NULL: one allocated); 0, or -1 with a
+   message (on every rank) */
 int aero_flow3d_slabs_init(aero_flow3d_slabs *w, MPI_Comm comm,
-                           const void *params, int halo, char *err,
+                           const void *params, int halo,
+                           struct aero_flow3d *window, char *err,
                            size_t errlen);
 void aero_flow3d_slabs_free(aero_flow3d_slabs *w);
+
+/* the halo aerotex-mpi's object --slabs uses: a step's advection reads
+   up to 2 (cfl |u| / v0 + 1) planes away in its two MacCormack passes,
+   the confinement 3, the diffusion 1; 10 covers cfl 1.5 at |u| 2 v0
+   (tests/objects/80-mpi.sh: 6 is exact at cfl 1.8, 4 is not) */
+#define AERO_FLOW3D_SLAB_HALO 10
+/* aero_body_flow_params' window_open / window_close over MPI_COMM_WORLD
+   (whole: the grid's aero_flow3d_params) */
+void *aero_flow3d_slabs_open(const void *whole, struct aero_flow3d *s,
+                             char *err, size_t errlen);
+void aero_flow3d_slabs_close(void *handle);
 
 /* index in u or v of cell (i, j) of local plane k (-1 .. nl), and in w or
    a cell-centred field of local plane k (0 .. nl) */

@@ -56,7 +56,8 @@ static int step_mode(aero_flow3d *one, const aero_flow3d_params *p,
     }
     aero_flow3d_project(one);
     aero_flow3d_slabs w;
-    if (aero_flow3d_slabs_init(&w, MPI_COMM_WORLD, p, hw, err, sizeof err)) {
+    if (aero_flow3d_slabs_init(&w, MPI_COMM_WORLD, p, hw, NULL, err,
+                               sizeof err)) {
         if (!rank) fprintf(stderr, "flow3d-slab: %s\n", err);
         MPI_Finalize();
         return 2;

@@ -118,9 +118,11 @@ MPI ?= $(if $(shell command -v $(MPICC) 2>/dev/null),1,0)
 ifeq ($(MPI),1)
 tools: $(BUILD)/aerotex-mpi $(BUILD)/tests/flow3d-slab
 endif
-$(BUILD)/aerotex-mpi: $(aerotex.sources) $(core.lib) $(wildcard src/tools/*.h)
+$(BUILD)/aerotex-mpi: $(aerotex.sources) src/tools/flow3d_slab.c $(core.lib) \
+    $(wildcard src/tools/*.h)
 	OMPI_CC=$(CORE_CC) $(MPICC) $(CORE_CFLAGS) -DAEROTEX_MPI \
-	    $(aerotex.sources) -o $@ $(TOOL_LIBS)
+	    $(aerotex.sources) src/tools/flow3d_slab.c -o $@ -lfftw3f_mpi \
+	    $(TOOL_LIBS)
 
 # the 3D flow's projection in z slabs over MPI ranks against the
 # one-process solver's (tests/objects/80-mpi.sh)

@@ -9,7 +9,11 @@
 #include "strip_body.h"
 #include "strouhal.h"
 #include "texture.h"
+#ifdef AEROTEX_MPI
+#include "flow3d_slab.h"
+#endif
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -47,6 +51,8 @@ typedef struct {
     uint32_t seed;
     int checkpoint;       /* steps between solver checkpoints (0: 1/16 of
                              a direction's) */
+    int slabs;            /* aerotex-mpi: each direction's flow in z slabs
+                             over all the ranks (flow3d_slab.h) */
 } object_job;
 
 /* one direction: the first member is its task */
@@ -151,6 +157,9 @@ static const aerotex_option object_options[] = {
      "aerotex-mpi: each direction's flow kept in\nFILE.wav.ckpt every so "
      "many steps (0: 16 times\na direction), to resume a killed job from",
      NULL, NULL},
+    {"--slabs", AEROTEX_SWITCH, NULL, 0.0, 1, 0, AT(slabs),
+     "aerotex-mpi: each direction's flow split in\nz slabs over all the "
+     "ranks (a grid larger\nthan one node; no checkpoints)", NULL, NULL},
     AEROTEX_JOB_OPTIONS("directions",
                         "|vorticity| slices DIR/dirKK_STEP.png")};
 
@@ -388,6 +397,57 @@ static int run_strip(object_plan *o, direction_task *ctx)
     return 0;
 }
 
+#ifdef AEROTEX_MPI
+/* --slabs: every direction in turn, each flow over all the ranks in z
+   slabs (flow3d_slab.h); the forces are summed over the ranks, so each
+   rank holds every direction's result and rank 0 writes it: 0 or 1 */
+static int run_slabs(object_plan *o, direction_task *ctx)
+{
+    object_job *j = o->j;
+    const int nd = o->nd, avail = j->job.loop.avail;
+    int status = 0;
+    aerotex_progress_start(&j->job.prog, NULL,
+                           (long)nd * aero_body_flow_steps(&o->base,
+                                                           j->job.rate, avail),
+                           j->job.quiet || aerotex_farm_rank());
+    for (int k = 0; k < nd; k++) {
+        aero_body_flow_params p = o->base;
+        direction_task *c = &ctx[k];
+        p.angle = o->angles[k];
+        p.threads = j->job.threads;
+        p.seed = aero_run_seed(j->seed, k);
+        p.plan_lock = aerotex_plan_lock;
+        p.window_open = aero_flow3d_slabs_open;
+        p.window_close = aero_flow3d_slabs_close;
+        c->task.job = &j->job;
+        c->task.index = k;
+        c->oj = j;
+        /* rank 0 draws its own slab */
+        c->task.snap_every =
+            aerotex_farm_rank()
+                ? LONG_MAX / 2
+                : aero_body_flow_steps(&p, j->job.rate, avail) / 24 + 1;
+        aero_body_flow_simulate(&p, j->job.rate,
+                                j->job.raw + 3 * (size_t)k * o->nr, o->ch,
+                                avail, &c->st, hook, 16, c, c->task.err,
+                                sizeof c->task.err);
+        free(c->slice);
+        free(c->solid);
+        c->slice = c->solid = NULL;
+    }
+    aerotex_progress_end(&j->job.prog);
+    if (aerotex_farm_rank())
+        return 0;
+    for (int k = 0; k < nd; k++)
+        if (ctx[k].task.err[0]) {
+            aerotex_error("direction %g deg: %s", o->angles[k],
+                          ctx[k].task.err);
+            status = 1;
+        }
+    return status;
+}
+#endif
+
 /* every direction in parallel into the job's raw: 0 or 1 */
 static int run_directions(void *plan, void *tasks)
 {
@@ -397,6 +457,10 @@ static int run_directions(void *plan, void *tasks)
     if (j->method == METHOD_STRIP)
         return run_strip(o, ctx);
     const int nd = o->nd, avail = j->job.loop.avail;
+#ifdef AEROTEX_MPI
+    if (j->slabs)
+        return run_slabs(o, ctx);
+#endif
     /* the directions in parallel; threads left over (fewer directions
        than threads: a sphere) go inside each simulation */
     const int threads = aerotex_job_threads(&j->job,

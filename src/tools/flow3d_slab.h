@@ -88,7 +88,9 @@ void aero_flow3d_slabs_free(aero_flow3d_slabs *w);
    up to 2 (cfl |u| / v0 + 1) planes away in its two MacCormack passes,
    the confinement 3, the diffusion 1; 10 covers cfl 1.5 at |u| 2 v0
    (tests/objects/80-mpi.sh: 6 is exact at cfl 1.8, 4 is not) */
+#ifndef AERO_FLOW3D_SLAB_HALO
 #define AERO_FLOW3D_SLAB_HALO 10
+#endif
 /* aero_body_flow_params' window_open / window_close over MPI_COMM_WORLD
    (whole: the grid's aero_flow3d_params) */
 void *aero_flow3d_slabs_open(const void *whole, struct aero_flow3d *s,

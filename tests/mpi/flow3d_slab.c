@@ -79,6 +79,11 @@ static int step_mode(aero_flow3d *one, const aero_flow3d_params *p,
                            f->project_hook, f->project_ctx);
     double worst = 0.0, big = 0.0, fworst = 0.0, fbig = 0.0;
     for (int n = 0; n < steps; n++) {
+        /* a lateral gust at the inflow (body_flow's start-up) */
+        for (size_t c = 0; c < pl; c++) {
+            one->in_u[c] = (float)(2.0 * sin(0.7 * n));
+            if (kb == 0) f->in_u[c] = one->in_u[c];
+        }
         aero_flow3d_step(one, 1e-3);
         aero_flow3d_step(f, 1e-3);
         for (int q = 0; q < 6; q++) {

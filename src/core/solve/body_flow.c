@@ -336,6 +336,7 @@ static double lateral_peak(const double *fx, const double *fy, long n,
 typedef struct {
     const aero_body_flow_params *p;
     aero_flow3d s;
+    void *window;          /* p->window_open's handle (NULL: none) */
     layout L;
     turn r;
     int solver_up, nr;
@@ -401,7 +402,12 @@ static int start_solver(body_run *b, aero_body_flow_stats *st, void *ctx,
     aero_flow3d_params fp;
     solver_params(b, &fp);
     if (p->plan_lock) p->plan_lock(ctx, 1);
-    b->solver_up = aero_flow3d_init(&b->s, &fp, err, errlen) == 0;
+    if (p->window_open) {
+        b->window = p->window_open(&fp, &b->s, err, errlen);
+        b->solver_up = b->window != NULL;
+    } else {
+        b->solver_up = aero_flow3d_init(&b->s, &fp, err, errlen) == 0;
+    }
     if (p->plan_lock) p->plan_lock(ctx, 0);
     if (!b->solver_up)
         return -1;
@@ -409,7 +415,11 @@ static int start_solver(body_run *b, aero_body_flow_stats *st, void *ctx,
     st->ny = b->L.ny;
     st->nz = b->L.nz;
     st->dt = b->dt;
-    aero_flow3d_set_body(&b->s, b->chi, b->region, b->nr, b->force);
+    {   /* a window: its layers of the body */
+        const size_t kb = b->s.p.nz_total > 0 ? (size_t)b->s.p.k_origin : 0;
+        aero_flow3d_set_body(&b->s, b->chi + kb * b->s.plane,
+                             b->region + kb * b->s.plane, b->nr, b->force);
+    }
     return 0;
 }
 
@@ -447,7 +457,10 @@ static void close_run(body_run *b, void *ctx)
 {
     if (b->solver_up) {
         if (b->p->plan_lock) b->p->plan_lock(ctx, 1);
-        aero_flow3d_free(&b->s);
+        if (b->window)
+            b->p->window_close(b->window);
+        else
+            aero_flow3d_free(&b->s);
         if (b->p->plan_lock) b->p->plan_lock(ctx, 0);
     }
     free(b->chi);
@@ -465,7 +478,10 @@ static void start_flow(body_run *b)
         s->w[c] = (float)b->p->speed;
     for (size_t c = 0; c < s->plane; c++)
         s->in_w[c] = (float)b->p->speed;
-    aero_flow3d_project(s);
+    if (s->project_hook) /* a window: projected with the others */
+        s->project_hook(s->project_ctx, s);
+    else
+        aero_flow3d_project(s);
     b->rng = b->p->seed ? b->p->seed : 1;
 }
 
@@ -482,6 +498,9 @@ static void set_inflow(body_run *b, double t)
     float gu = (float)(p->speed * (gust + p->noise * aero_uniform(&b->rng)));
     float gv = (float)(p->speed * (0.5 * gust +
                                    p->noise * aero_uniform(&b->rng)));
+    /* a window above the inflow: its bottom edge is its neighbour's */
+    if (s->p.nz_total > 0 && s->p.k_origin > 0)
+        return;
     for (size_t c = 0; c < s->plane; c++) {
         s->in_u[c] = gu;
         s->in_v[c] = gv;

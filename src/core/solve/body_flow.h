@@ -73,6 +73,15 @@ typedef struct {
        bytes) may fill such a state and return 1, and the run continues
        from its step to exactly the result it would have had; 0: start */
     long checkpoint_every;
+    /* one flow over several processes (aerotex-mpi object --slabs): with
+       window_open set, the solver is opened by window_open(whole, s, err,
+       errlen) as a window of the whole grid (aero_flow3d_set_window),
+       which returns a handle (NULL: failed, with a message) that
+       window_close(handle) closes (freeing s); the body is set on the
+       window's layers, the inflow only where the window starts at it */
+    void *(*window_open)(const void *whole, aero_flow3d *s, char *err,
+                         size_t errlen);
+    void (*window_close)(void *handle);
     void (*checkpoint_save)(void *ctx, const void *state, size_t bytes);
     int (*checkpoint_load)(void *ctx, void *state, size_t bytes);
 } aero_body_flow_params;

@@ -253,6 +253,9 @@ typedef struct {
 typedef struct {
     const float *layer0;
     int first, nx, ny, nz, plane;
+    int origin; /* the window's first layer in the whole grid (0: whole):
+                   heights are the whole grid's, so that a departure
+                   point rounds as it does in the one-process solver */
 } lattice;
 
 /* the 8 lattice values around a sample point and its weights */
@@ -276,14 +279,15 @@ static inline corners corners_at(const lattice *L, const row_points *pt,
     corners r;
     /* NaN (a diverging step, which aero_flow3d_step reports after it)
        goes to the lowest layer instead of an index far outside the box */
-    z = z > (float)L->first ? z : (float)L->first;
-    z = z > (float)nz ? (float)nz : z;
+    z = z > (float)(L->first + L->origin) ? z : (float)(L->first + L->origin);
+    z = z > (float)(nz + L->origin) ? (float)(nz + L->origin) : z;
     i0 = floor_int(x);
     j0 = floor_int(y);
     k0 = floor_int(z);
     r.tx = x - (float)i0;
     r.ty = y - (float)j0;
     r.tz = z - (float)k0;
+    k0 -= L->origin;
     r.tz = k0 >= nz ? 1.0f : r.tz;
     k0 = k0 >= nz ? nz - 1 : k0;
     i0 += i0 < 0 ? nx : 0;
@@ -398,15 +402,17 @@ static void advect_pass(aero_flow3d *s, const advect_io *io, double dt)
     const float limx = (float)nx, limy = (float)ny;
     const float *u = s->u, *v = s->v, *w = s->w;
     const size_t uvn = s->plane * (size_t)(nz + 2);
-    const lattice lu = {io->u + s->plane, -1, nx, ny, nz, (int)s->plane};
-    const lattice lv = {io->v + s->plane, -1, nx, ny, nz, (int)s->plane};
-    const lattice lw = {io->w, 0, nx, ny, nz, (int)s->plane};
+    const int kor = s->p.nz_total > 0 ? s->p.k_origin : 0;
+    const lattice lu = {io->u + s->plane, -1, nx, ny, nz, (int)s->plane, kor};
+    const lattice lv = {io->v + s->plane, -1, nx, ny, nz, (int)s->plane, kor};
+    const lattice lw = {io->w, 0, nx, ny, nz, (int)s->plane, kor};
     F3_SLABS
     for (int k = 0; k < nz; k++) {
         row_points pt;
         for (int j = 0; j < ny; j++) {
             const int jm = j ? j - 1 : ny - 1, jp = j + 1 == ny ? 0 : j + 1;
-            const float y0 = (float)j, z0 = (float)k, z1 = (float)(k + 1);
+            const float y0 = (float)j, z0 = (float)(k + kor),
+                        z1 = (float)(k + kor + 1);
             /* rows of u, v (layers k, k + 1) and w (k, k + 1) */
             const float *uj = u + AERO_F3_UV(s, 0, j, k);
             const float *ujm = u + AERO_F3_UV(s, 0, jm, k);

@@ -80,6 +80,30 @@ else
     echo "  (no FFTW MPI library: libfftw3-mpi-dev)"
 fi
 
+# 3b. one 3D flow in slabs (object --slabs): the sphere at 12 cells per d,
+#    one process, then 1 and 2 ranks of one thread; the samples compared
+#    (the metadata holds the command line), the halo and transpose bytes
+#    of a step from build/tests/flow3d-slab on the same grid
+sargs="object --shape sphere --grid 12 --duration 0.1 --settle 0.5 --limiter off --threads 1 -q -o s.wav"
+mkdir -p "$DIR/slab1" "$DIR/slab2" "$DIR/slab0"
+# shellcheck disable=SC2086
+(cd "$DIR/slab0" && /usr/bin/time -f "%e %U" -o time "$ROOT/build/aerotex" $sargs) >/dev/null 2>&1
+for n in 1 2; do
+    # shellcheck disable=SC2086
+    (cd "$DIR/slab$n" && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
+        /usr/bin/time -f "%e %U" -o time mpirun --oversubscribe -np $n \
+        "$ROOT/build/aerotex-mpi" $sargs --slabs) >/dev/null 2>&1
+done
+echo "  the sphere's flow at 12 cells per d (72 x 72 x 145): one process $(cut -d' ' -f1 "$DIR/slab0/time") s wall; --slabs 1 rank $(cut -d' ' -f1 "$DIR/slab1/time") s, 2 ranks $(cut -d' ' -f1 "$DIR/slab2/time") s wall"
+cmp -s "$DIR/slab1/s.wav" "$DIR/slab2/s.wav" && echo "  1 and 2 ranks' textures are equal (cmp)"
+if [ -x build/tests/flow3d-slab ]; then
+    for n in 2 4; do
+        OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
+            mpirun --oversubscribe -np $n build/tests/flow3d-slab 72 72 145 1e-12 \
+            halo 2 10 2>/dev/null | sed 's/^/  /'
+    done
+fi
+
 # 4. the cost model's predictions from the figures above (docs/cluster.md)
 R=$(sed -n 's/.*12 cells per d.*: \([0-9.e+]*\) cell-steps.*/\1/p' "$DIR/r.txt")
 STEPS4=$(sed -n 's/.*4 cells per d: .* cells, \([0-9]*\) steps.*/\1/p' "$DIR/r.txt")

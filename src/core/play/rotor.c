@@ -558,6 +558,7 @@ static void noise_spectrum_make(aero_rotor *r, double w, double u)
         a.tip_alpha_deg = f.alpha_deg;
         z->power[q] = 0.0;
         z->mach[q] = U / AERO_C0;
+        z->alpha[q] = f.alpha_deg * AERO_PI / 180.0;
         if (U < 0.1 ||
             aero_airfoil_noise_spectrum(&a, &f, &o, hz, T, spl) != 0)
             continue;
@@ -614,6 +615,7 @@ static void noise_spectrum(aero_rotor *r, double w, double u)
             memcpy(z->gain, z->cache_gain[i], sizeof(z->gain));
             memcpy(z->power, z->cache_power[i], sizeof(z->power));
             memcpy(z->mach, z->cache_mach[i], sizeof(z->mach));
+            memcpy(z->alpha, z->cache_alpha[i], sizeof(z->alpha));
             return;
         }
     noise_spectrum_make(r, w * f, u * f);
@@ -625,18 +627,55 @@ static void noise_spectrum(aero_rotor *r, double w, double u)
     memcpy(z->cache_gain[i], z->gain, sizeof(z->gain));
     memcpy(z->cache_power[i], z->power, sizeof(z->power));
     memcpy(z->cache_mach[i], z->mach, sizeof(z->mach));
+    memcpy(z->cache_alpha[i], z->alpha, sizeof(z->alpha));
+}
+
+/* the axial flow through the disc (along the thrust axis, m/s): the wind
+ * along the axis u plus the induced velocity w of momentum theory,
+ * -T = 2 rho A w |u + w| (T the thrust on the rotor along the axis at this
+ * speed, so -T on the air; Glauert 1935). A rotor taking energy from the
+ * wind (a turbine: T along u) slows it by a = -w/u up to momentum
+ * theory's limit 1/2 (beyond it the wake is turbulent and the theory does
+ * not hold); a propeller or fan adds to it (in hover w = sqrt(T/(2 rho
+ * A))). */
+static double disc_flow(const aero_rotor *r, double omega, double u)
+{
+    const double load = (fabs(omega) * 60.0 / TWO_PI) / r->design_rpm;
+    const double T = r->thrust * load * load;
+    const double k = -T / (2.0 * AERO_RHO * AERO_PI * r->radius * r->radius);
+    if (k * u < 0.0) { /* slowing the wind: w = -a u */
+        double ct = -4.0 * k / (u * u); /* C_T = T / (rho A u^2 / 2) */
+        double a = ct < 1.0 ? 0.5 * (1.0 - sqrt(1.0 - ct)) : 0.5;
+        return u * (1.0 - a);
+    }
+    /* adding to it: w |u + w| = k with u + w of k's sign */
+    double w = k >= 0.0 ? 0.5 * (-u + sqrt(u * u + 4.0 * k))
+                        : 0.5 * (-u - sqrt(u * u - 4.0 * k));
+    return u + w;
 }
 
 /* the broadband's envelope at an ear over one blade passing: the
- * strips' self-noise powers heard through Brooks et al.'s (1989)
- * high-frequency directivity D_h (a half-plane's trailing edge, with the
- * convective amplification of the strip's Mach number: loudest towards
- * the blade's leading edge as it comes) and 1/r^2, summed over blades and
+ * strips' self-noise powers heard through a half-plane trailing edge's
+ * directivity (Ffowcs Williams and Hall 1970) with the convective
+ * amplification of Brooks et al.'s (1989) D_h (loudest towards the
+ * blade's leading edge as it comes) and 1/r^2, summed over blades and
  * strips (incoherent), at AERO_ROTOR_AZIMUTHS rotor positions; env: the
- * amplitude's mean, then its cos and sin harmonics of B Psi. Each strip's
- * chord lies along the air's flow past it (its motion and the inflow u
- * along the axis: a turbine's blades are pitched into the wind), its
- * normal = span x chord */
+ * amplitude's mean, then its cos and sin harmonics of B Psi. The report's
+ * D_h = 2 sin^2(Theta/2) sin^2(Phi), Theta from the chord and Phi the
+ * angle of the ear's projection across the span from it, vanishes across
+ * the whole plane of the chord, where a listener beside a turbine's disc
+ * nearly always is (a swish of 20-30 dB); the half-plane's own solution
+ * vanishes only on the wake's side of it, and equals D_h at mid-span.
+ * Each strip's chord is set as a blade's twist sets it: at its angle of
+ * attack alpha (the one that carries its thrust) from the air's flow past
+ * it, that flow its motion Omega r and the axial flow through the disc
+ * u_d (disc_flow: the wind less a turbine's induction, or plus a
+ * propeller's), at the local flow angle phi = atan(u_d / (Omega r)); the
+ * chord turned from the flow away from the lift (a turbine's chord at
+ * phi - alpha from the disc, a propeller's at phi + alpha). Each strip is
+ * heard when its sound arrives: at the azimuth it had (d_s - d_hub)/c0
+ * before the hub's sound (its retarded time), one fixed-point step
+ * (Omega R / c0 < 1). */
 /* ear_envelope's table of cos (2 pi k / 8) holds for 8 azimuths */
 typedef char aero_rotor_azimuths_are_8[AERO_ROTOR_AZIMUTHS == 8 ? 1 : -1];
 
@@ -646,7 +685,7 @@ static void ear_envelope(const aero_rotor *r, double omega, double u,
     enum { NA = AERO_ROTOR_AZIMUTHS };
     const aero_rotor_noise *z = &r->noise;
     const int B = r->blades;
-    const double sense = omega < 0.0 ? -1.0 : 1.0;
+    const double sense = omega < 0.0 ? -1.0 : 1.0, w = fabs(omega);
     /* cos and sin of multiples of 2 pi / NA (NA = 8) */
     static const double c8[8] = {1.0, 0.70710678118654752, 0.0,
                                  -0.70710678118654752, -1.0,
@@ -654,43 +693,69 @@ static void ear_envelope(const aero_rotor *r, double omega, double u,
                                  0.70710678118654752};
     const double s5 = z->scale * z->scale * z->scale * z->scale * z->scale;
     double a[NA], rel[3], cws[AERO_ROTOR_STRIPS_MAX], aws[AERO_ROTOR_STRIPS_MAX],
-        Ms[AERO_ROTOR_STRIPS_MAX], Ps[AERO_ROTOR_STRIPS_MAX];
+        Ms[AERO_ROTOR_STRIPS_MAX], Ps[AERO_ROTOR_STRIPS_MAX],
+        Rs[AERO_ROTOR_STRIPS_MAX];
+    const int nq = r->strips;
     aero_near seen = {0, 0.0}; /* ear_tones reports it */
     for (int i = 0; i < 3; i++)
         rel[i] = ear[i] - r->pose[i];
     aero_near_field(rel, AERO_ROTOR_NEAR_RADII * r->radius, axes, &seen);
     const double vz = aero_dot3(rel, axes + 6), v2 = aero_dot3(rel, rel);
-    /* each strip's chord downstream: (-Omega r e_t + u a) / |W|, the
-       normal (span x chord) (-Omega r a - u e_t) / |W| */
+    const double vp1 = aero_dot3(rel, axes), vp2 = aero_dot3(rel, axes + 3);
+    const double ud = disc_flow(r, omega, u);
+    const double rdh = v2 > 0.0 ? 1.0 / (sqrt(v2) * AERO_C0) : 0.0;
+    const double lift = r->thrust < 0.0 ? -1.0 : 1.0;
+    /* each strip's chord downstream, in (e_t, axis): the flow's direction
+       (-cos phi, sin phi) turned by alpha away from the lift
+       lift (sin phi, cos phi); the normal (span x chord) follows */
     for (int q = 0; q < r->strips; q++) {
-        double wt = fabs(omega) * r->strip[q].r, W = hypot(wt, u);
-        cws[q] = W > 0.0 ? -wt / W : -1.0;
-        aws[q] = W > 0.0 ? u / W : 0.0;
+        double wt = w * r->strip[q].r, W = hypot(wt, ud);
+        double cf = W > 0.0 ? wt / W : 1.0, sf = W > 0.0 ? ud / W : 0.0;
+        double ca = cos(z->alpha[q]), sa = sin(z->alpha[q]);
+        cws[q] = -ca * cf - sa * lift * sf;
+        aws[q] = ca * sf - sa * lift * cf;
         Ms[q] = z->mach[q] * z->scale;
         Ps[q] = z->power[q] * s5;
+        Rs[q] = r->strip[q].r;
     }
     for (int j = 0; j < NA; j++) {
         double P = 0.0;
         for (int b = 0; b < B; b++) {
             double psi = TWO_PI * ((double)j / (B * NA) + (double)b / B);
-            double cp = cos(psi), sp = sin(psi), er[3], et[3];
-            for (int i = 0; i < 3; i++) {
-                er[i] = cp * axes[i] + sp * axes[3 + i];
-                et[i] = sense * (-sp * axes[i] + cp * axes[3 + i]);
-            }
-            double vt = aero_dot3(rel, et), vr = aero_dot3(rel, er);
-            for (int q = 0; q < r->strips; q++) {
-                double rq = r->strip[q].r, y = vr - rq; /* from the strip */
-                double d2 = v2 - vr * vr + y * y, M = Ms[q];
+            double cp0 = cos(psi), sp0 = sin(psi);
+            /* the ear in the disc's polar frame at psi: along the span
+               and along the motion */
+            double vr0 = cp0 * vp1 + sp0 * vp2;
+            double vt0 = sense * (-sp0 * vp1 + cp0 * vp2);
+            /* branch-free over the strips (it vectorises): a strip at
+               the ear or silent adds 0 */
+            for (int q = 0; q < nq; q++) {
+                const double rq = Rs[q], M = Ms[q];
+                /* the retarded azimuth: turned back by Omega (d - d_hub)/c0
+                   (sense-wise), d - d_hub = -r vr / d_hub in the far
+                   field; cos and sin of that step by series (the step
+                   below 1 rad: its error under 1e-3) */
+                double t = w * rq * vr0 * rdh, t2 = t * t;
+                double ct1 = 1.0 - t2 * (0.5 - t2 / 24.0);
+                double st1 = t * (1.0 - t2 * (1.0 / 6.0 - t2 / 120.0));
+                double vr = ct1 * vr0 + st1 * vt0; /* psi turned by t */
+                double vt = ct1 * vt0 - st1 * vr0;
+                double y = vr - rq; /* from the strip, along the span */
+                double d2 = fmax(v2 - vr * vr + y * y, 1e-6);
                 double vx = cws[q] * vt + aws[q] * vz;
                 double vn = cws[q] * vz - aws[q] * vt;
-                double yz = y * y + vn * vn;
-                if (!(d2 > 1e-6) || !(yz > 0.0) || Ps[q] <= 0.0)
-                    continue;
-                /* D_h / d^2 with sin^2 = vn^2 / yz, in one division */
-                double ct = vx / sqrt(d2), c1 = 1.0 + 0.2 * M * ct;
-                P += Ps[q] * (1.0 - ct) * vn * vn /
-                     ((1.0 + M * ct) * c1 * c1 * d2 * yz);
+                /* the distance off the span's line */
+                double h = sqrt(fmax(vx * vx + vn * vn, 1e-12));
+                /* the half-plane's directivity about its edge (Ffowcs
+                   Williams and Hall 1970): 2 sin^2(theta/2) of the
+                   azimuth theta about the span from the wake, times
+                   sin(psi) of the angle from the span, = (h - vx) / d;
+                   the report's D_h at mid-span. Its convective factors
+                   of the angle from the chord, cos = vx / d */
+                double id = 1.0 / sqrt(d2);
+                double ct = vx * id, c1 = 1.0 + 0.2 * M * ct;
+                P += Ps[q] * (h - vx) * id /
+                     ((1.0 + M * ct) * c1 * c1 * d2);
             }
         }
         a[j] = r->noise_gain * sqrt(P);

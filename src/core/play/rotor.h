@@ -143,6 +143,7 @@ typedef struct {
     int bands;                        /* under Nyquist */
     double power[AERO_ROTOR_STRIPS_MAX]; /* Pa^2 at 1 m, D_h = 1, a blade */
     double mach[AERO_ROTOR_STRIPS_MAX];
+    double alpha[AERO_ROTOR_STRIPS_MAX]; /* angle of attack, rad */
     double scale; /* the speed against the grid's: powers as U^5 */
     int layout, step, have; /* the grid step held, whether any */
     /* the spectra made, by grid step (a drone's rotors move among a few) */
@@ -150,6 +151,7 @@ typedef struct {
     float cache_gain[AERO_ROTOR_SPECTRA][AERO_ROTOR_LANES];
     double cache_power[AERO_ROTOR_SPECTRA][AERO_ROTOR_STRIPS_MAX];
     double cache_mach[AERO_ROTOR_SPECTRA][AERO_ROTOR_STRIPS_MAX];
+    double cache_alpha[AERO_ROTOR_SPECTRA][AERO_ROTOR_STRIPS_MAX];
 } aero_rotor_noise;
 
 typedef struct aero_rotor {

@@ -42,7 +42,7 @@ lib.setup.sources = src/pd/aero.c
 # the skeleton every wrapper shares, linked into each external and the lib
 common.sources = src/pd/aero_pd.c
 
-datafiles = $(wildcard help/*.pd) $(wildcard abstractions/*.pd) \
+datafiles = $(wildcard help/*.pd) $(wildcard abstractions/*.pd) $(wildcard abstractions/*.blade) \
     README.md LICENSE
 datadirs = $(if $(wildcard textures/*.wav),textures)
 datadirs += $(if $(wildcard trees/*.tree),trees)

@@ -3,6 +3,8 @@
 #include "rotor.h"
 
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "aero_air.h"
@@ -23,6 +25,28 @@ static void noise_bank(aero_rotor *r);
    at Gutin's (1936) effective radius 0.8 R. Thrust and drag per strip ~
    r^2 dr (the local dynamic pressure), summing to the rotor's thrust and
    torque over the B blades. */
+/* the blade table at r/R = x: its chord (m) and twist (rad), linear
+   between rows, held beyond the ends */
+static void blade_at(const aero_rotor_blade *b, double x, double *chord,
+                     double *twist)
+{
+    int i = 0;
+    double f = 0.0;
+    if (x <= b->r[0])
+        i = 0;
+    else if (x >= b->r[b->n - 1]) {
+        i = b->n - 2;
+        f = 1.0;
+    } else {
+        while (i < b->n - 2 && x > b->r[i + 1])
+            i++;
+        f = (x - b->r[i]) / (b->r[i + 1] - b->r[i]);
+    }
+    *chord = b->chord[i] + f * (b->chord[i + 1] - b->chord[i]);
+    *twist = (b->twist[i] + f * (b->twist[i + 1] - b->twist[i])) * AERO_PI /
+             180.0;
+}
+
 static void layout(aero_rotor *r)
 {
     const int N = r->strips, B = r->blades;
@@ -34,20 +58,180 @@ static void layout(aero_rotor *r)
         double rs = N == 1 ? 0.8 * R : R * (h + (1.0 - h) * (s + 0.5) / N);
         r->strip[s].r = rs;
         r->strip[s].thrust = rs * rs; /* weights for now */
+        r->strip[s].chord = r->chord;
+        r->strip[s].twist = 0.0;
+        if (r->has_blade)
+            blade_at(&r->blade, rs / R, &r->strip[s].chord,
+                     &r->strip[s].twist);
         w_sum += rs * rs;
     }
     for (int s = 0; s < N; s++) {
-        double w = r->strip[s].thrust / w_sum;
+        double w = r->strip[s].thrust / w_sum, c = r->strip[s].chord;
         r->strip[s].thrust = r->thrust * w / B;
         q_arm += w * r->strip[s].r;
-        r->strip[s].volume = SECTION_AREA * r->thickness * r->chord *
-                             r->chord * (N == 1 ? R * (1.0 - h) : dr);
+        r->strip[s].volume = SECTION_AREA * r->thickness * c * c *
+                             (N == 1 ? R * (1.0 - h) : dr);
     }
     /* the drag follows the same r^2 weights: D_s = Q w_s / (B sum w r) */
     for (int s = 0; s < N; s++) {
         double w = r->strip[s].r * r->strip[s].r / w_sum;
         r->strip[s].drag = r->torque * w / (B * q_arm);
     }
+}
+
+/* --- the blade's table ------------------------------------------------------ */
+
+static int blade_check(const aero_rotor_blade *b, char *err, size_t errlen)
+{
+    if (b->n < 2 || b->n > AERO_ROTOR_BLADE_ROWS_MAX) {
+        snprintf(err, errlen, "%d rows (a blade takes 2..%d)", b->n,
+                 AERO_ROTOR_BLADE_ROWS_MAX);
+        return -1;
+    }
+    for (int i = 0; i < b->n; i++) {
+        if (!(b->r[i] >= 0.0 && b->r[i] <= 1.0) ||
+            !(b->chord[i] >= AERO_ROTOR_CHORD_MIN &&
+              b->chord[i] <= AERO_ROTOR_CHORD_MAX) ||
+            !(fabs(b->twist[i]) <= AERO_ROTOR_TWIST_MAX)) {
+            snprintf(err, errlen, "row %d: r/R %g, chord %g m, twist %g "
+                     "deg out of range (0..1, %g..%g m, -%g..%g deg)", i + 1,
+                     b->r[i], b->chord[i], b->twist[i], AERO_ROTOR_CHORD_MIN,
+                     AERO_ROTOR_CHORD_MAX, AERO_ROTOR_TWIST_MAX,
+                     AERO_ROTOR_TWIST_MAX);
+            return -1;
+        }
+        if (i > 0 && !(b->r[i] > b->r[i - 1])) {
+            snprintf(err, errlen, "row %d: r/R %g does not rise from %g",
+                     i + 1, b->r[i], b->r[i - 1]);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+int aero_rotor_set_blade(aero_rotor *r, const aero_rotor_blade *b)
+{
+    char err[160];
+    if (!b) {
+        r->has_blade = 0;
+        layout(r);
+        return 0;
+    }
+    if (blade_check(b, err, sizeof(err)))
+        return -1;
+    r->blade = *b;
+    r->has_blade = 1;
+    layout(r);
+    return 0;
+}
+
+int aero_rotor_blade_parse(const char *text, aero_rotor_blade *b, char *err,
+                           size_t errlen)
+{
+    int line = 0;
+    memset(b, 0, sizeof(*b));
+    if (errlen)
+        err[0] = 0;
+    for (const char *p = text; *p;) {
+        const char *end = strchr(p, '\n');
+        size_t len = end ? (size_t)(end - p) : strlen(p);
+        char buf[256], *c, *q;
+        double v[3];
+        int k = 0;
+        line++;
+        if (len >= sizeof(buf)) {
+            snprintf(err, errlen, "line %d: longer than %d characters", line,
+                     (int)sizeof(buf) - 1);
+            return -1;
+        }
+        memcpy(buf, p, len);
+        buf[len] = 0;
+        p += len + (end ? 1 : 0);
+        if ((c = strchr(buf, '#')))
+            *c = 0;
+        for (c = buf; k <= 3;) {
+            while (*c == ' ' || *c == '\t' || *c == '\r')
+                c++;
+            if (!*c)
+                break;
+            if (k == 3) {
+                k = 4; /* a fourth field */
+                break;
+            }
+            v[k] = strtod(c, &q);
+            if (q == c || (*q && *q != ' ' && *q != '\t' && *q != '\r') ||
+                !aero_is_finite(v[k])) {
+                k = -1;
+                break;
+            }
+            k++;
+            c = q;
+        }
+        if (k == 0)
+            continue; /* blank or a comment */
+        if (k != 3) {
+            snprintf(err, errlen, "line %d: not three finite numbers "
+                     "(r/R chord twist_deg)", line);
+            return -1;
+        }
+        if (b->n >= AERO_ROTOR_BLADE_ROWS_MAX) {
+            snprintf(err, errlen, "line %d: more than %d rows", line,
+                     AERO_ROTOR_BLADE_ROWS_MAX);
+            return -1;
+        }
+        b->r[b->n] = v[0];
+        b->chord[b->n] = v[1];
+        b->twist[b->n] = v[2];
+        b->n++;
+        if (b->n >= 2 && blade_check(b, err, errlen)) {
+            char why[160];
+            snprintf(why, sizeof(why), "%s", err);
+            snprintf(err, errlen, "line %d: %s", line, why);
+            return -1;
+        }
+    }
+    if (blade_check(b, err, errlen))
+        return -1;
+    if (errlen)
+        err[0] = 0;
+    return 0;
+}
+
+int aero_rotor_blade_load(const char *path, aero_rotor_blade *b, char *err,
+                          size_t errlen)
+{
+    FILE *f = fopen(path, "rb");
+    char *text;
+    size_t n;
+    memset(b, 0, sizeof(*b));
+    if (!f) {
+        snprintf(err, errlen, "can't open %s", path);
+        return -1;
+    }
+    text = malloc(AERO_ROTOR_BLADE_FILE_MAX + 1);
+    if (!text) {
+        fclose(f);
+        snprintf(err, errlen, "out of memory reading %s", path);
+        return -1;
+    }
+    n = fread(text, 1, AERO_ROTOR_BLADE_FILE_MAX + 1, f);
+    fclose(f);
+    if (n > AERO_ROTOR_BLADE_FILE_MAX) {
+        free(text);
+        snprintf(err, errlen, "%s is larger than %d bytes: not a blade "
+                 "table", path, AERO_ROTOR_BLADE_FILE_MAX);
+        return -1;
+    }
+    text[n] = 0;
+    if (memchr(text, 0, n)) {
+        free(text);
+        snprintf(err, errlen, "%s is not text (a blade table is lines of "
+                 "r/R chord twist_deg)", path);
+        return -1;
+    }
+    int k = aero_rotor_blade_parse(text, b, err, errlen);
+    free(text);
+    return k;
 }
 
 /* --- life cycle ------------------------------------------------------------ */
@@ -517,9 +701,9 @@ static double strip_span(const aero_rotor *r)
 static void strip_airfoil(const aero_rotor *r, int q, aero_airfoil *a)
 {
     memset(a, 0, sizeof(*a));
-    a->chord = (float)r->chord;
+    a->chord = (float)r->strip[q].chord;
     a->span = (float)strip_span(r);
-    a->te_thickness = (float)(0.005 * r->chord);
+    a->te_thickness = (float)(0.005 * r->strip[q].chord);
     a->te_angle_deg = 14.0f;
     a->tripped = 1;
     a->tip = q == r->strips - 1 ? AERO_AIRFOIL_TIP_ROUNDED
@@ -549,7 +733,7 @@ static void noise_spectrum_make(aero_rotor *r, double w, double u)
            airfoil C_L = 2 pi alpha */
         double cl = U > 1e-3 ? fabs(load * load * sp->thrust) /
                                    (0.5 * AERO_RHO * U * U * strip_span(r)
-                                    * r->chord)
+                                    * sp->chord)
                              : 0.0;
         double alpha = cl / TWO_PI * 180.0 / AERO_PI;
         aero_airfoil_flow f = {(float)U, (float)(alpha < 25.0 ? alpha : 25.0),
@@ -672,7 +856,8 @@ static double disc_flow(const aero_rotor *r, double omega, double u)
  * u_d (disc_flow: the wind less a turbine's induction, or plus a
  * propeller's), at the local flow angle phi = atan(u_d / (Omega r)); the
  * chord turned from the flow away from the lift (a turbine's chord at
- * phi - alpha from the disc, a propeller's at phi + alpha). Each strip is
+ * phi - alpha from the disc, a propeller's at phi + alpha); with a blade
+ * table, at the table's twist from the disc instead. Each strip is
  * heard when its sound arrives: at the azimuth it had (d_s - d_hub)/c0
  * before the hub's sound (its retarded time), one fixed-point step
  * (Omega R / c0 < 1). */
@@ -714,6 +899,12 @@ static void ear_envelope(const aero_rotor *r, double omega, double u,
         double ca = cos(z->alpha[q]), sa = sin(z->alpha[q]);
         cws[q] = -ca * cf - sa * lift * sf;
         aws[q] = ca * sf - sa * lift * cf;
+        if (r->has_blade) { /* the table's twist: the leading edge into
+                               the flow through the disc */
+            double tw = r->strip[q].twist;
+            cws[q] = -cos(tw);
+            aws[q] = (ud < 0.0 ? -1.0 : 1.0) * sin(tw);
+        }
         Ms[q] = z->mach[q] * z->scale;
         Ps[q] = z->power[q] * s5;
         Rs[q] = r->strip[q].r;

@@ -748,6 +748,36 @@ uint32_t aero_pd_default_seed(void)
     return seed;
 }
 
+int aero_pd_pose(aero_pd_base *b, aero_pd_pose_clock *c, t_symbol *s,
+                 int argc, const t_atom *argv, const double current[4],
+                 double pos[3], double q[4], double *interval, int *offset)
+{
+    double v[7];
+    if (argc != 3 && argc != 6 && argc != 7) {
+        pd_error(b->owner, "%s: '%s' takes x y z, x y z rx ry rz (rotation "
+                 "vector, deg) or x y z qw qx qy qz (quaternion), got %d "
+                 "numbers", b->obj, s->s_name, argc);
+        return -1;
+    }
+    if (aero_pd_floats(b->owner, b->obj, s->s_name, argc, argv, argc, v))
+        return -1;
+    if (argc == 3)
+        memcpy(q, current, 4 * sizeof(double));
+    else if (argc == 6) {
+        if (!(fabs(v[3]) < 1e9 && fabs(v[4]) < 1e9 && fabs(v[5]) < 1e9)) {
+            aero_pd_refused_list(b, s->s_name);
+            return -1;
+        }
+        aero_quat_from_rotvec(v + 3, q);
+    } else
+        memcpy(q, v + 3, 4 * sizeof(double));
+    memcpy(pos, v, 3 * sizeof(double));
+    /* place: a jump, no motion */
+    *interval = aero_pd_pose_clock_pose(c, !strcmp(s->s_name, "place"),
+                                        offset);
+    return 0;
+}
+
 int aero_pd_floats(void *x, const char *obj, const char *what, int argc,
                    const t_atom *argv, int want, double *v)
 {

@@ -438,6 +438,17 @@ static inline double aero_pd_pose_clock_pose(aero_pd_pose_clock *c,
     return place ? -1.0 : interval;
 }
 
+/* pose|place x y z [rx ry rz | qw qx qy qz] (s the selector): a position
+ * alone keeps the orientation `current` (w x y z); three more numbers are
+ * a rotation vector (axis times angle in degrees), four a quaternion.
+ * Writes the position, the quaternion (not yet normalised: the core's
+ * setter does it and refuses a zero one), and the interval and block
+ * offset of aero_pd_pose_clock_pose (place: a jump). 0, or -1 when refused
+ * (reported, naming the object). [body~]'s and [rotor~]'s. */
+int aero_pd_pose(aero_pd_base *b, aero_pd_pose_clock *c, t_symbol *s,
+                 int argc, const t_atom *argv, const double current[4],
+                 double pos[3], double q[4], double *interval, int *offset);
+
 /* exactly `want` numbers from a message, else an error naming the object */
 int aero_pd_floats(void *x, const char *obj, const char *what, int argc,
                    const t_atom *argv, int want, double *v);

@@ -28,7 +28,6 @@ typedef struct _leafwave_tilde {
     aero_pd_base x_base;
     aero_pd_wind x_wind;
     aero_leafwave x_core;
-    int x_ok; /* the core is initialised */
     /* A tree file read, or the tables / reach / seed changed: a new core
        is built in a worker (load_job.h) and swapped in by the clock with
        a fade; the old core plays meanwhile. */
@@ -70,12 +69,6 @@ static int leafwave_tilde_process(void *obj, const float *in,
     t_leafwave_tilde *x = obj;
     /* the near-field policy: reported once (the last block's record) */
     aero_pd_near(&x->x_base, &x->x_core.near);
-    if (!x->x_ok) {
-        for (int e = 0; e < 2; e++)
-            for (int i = 0; out[e] && i < n; i++)
-                out[e][i] = 0;
-        return 0;
-    }
     if (x->x_old) {
         /* the old core into scratch first (the inlet may alias out[0]),
            faded out under the new one in chunks */
@@ -106,7 +99,7 @@ static int leafwave_tilde_process(void *obj, const float *in,
 
 static void leafwave_tilde_dsp(t_leafwave_tilde *x, t_signal **sp)
 {
-    if (x->x_ok && aero_leafwave_set_sample_rate(&x->x_core, sp[0]->s_sr))
+    if (aero_leafwave_set_sample_rate(&x->x_core, sp[0]->s_sr))
         pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
     aero_pd_dsp(&x->x_base, sp, 1, leafwave_tilde_process);
 }
@@ -168,6 +161,16 @@ static int leafwave_tilde_wants_rebuild(const t_leafwave_tilde *x)
 static void leafwave_tilde_start(t_leafwave_tilde *x, t_symbol *name,
                                  int now);
 
+/* what is asked is what plays: the live core's tables, reach and seed */
+static void leafwave_tilde_want_live(t_leafwave_tilde *x)
+{
+    x->x_want.fm = x->x_core.fm;
+    x->x_want.per_octave = x->x_core.tables_per_octave;
+    x->x_want.octaves = x->x_core.octaves;
+    x->x_want.reach = x->x_core.reach;
+    x->x_want.seed = x->x_core.seed;
+}
+
 /* the finished job: its report, then the new core swapped in (the old one
    fades out); then the next job, if one was asked meanwhile */
 static void leafwave_tilde_finish(t_leafwave_tilde *x)
@@ -186,11 +189,7 @@ static void leafwave_tilde_finish(t_leafwave_tilde *x)
         } else {
             pd_error(x, OBJ ": %s: the old tables and neighbours stay",
                      l->err);
-            x->x_want.fm = x->x_core.fm;
-            x->x_want.per_octave = x->x_core.tables_per_octave;
-            x->x_want.octaves = x->x_core.octaves;
-            x->x_want.reach = x->x_core.reach;
-            x->x_want.seed = x->x_core.seed;
+            leafwave_tilde_want_live(x);
         }
     } else {
         /* what changed while it was built */
@@ -298,8 +297,7 @@ static void leafwave_tilde_start(t_leafwave_tilde *x, t_symbol *name,
 
 static void leafwave_tilde_open(t_leafwave_tilde *x, t_symbol *name)
 {
-    if (x->x_ok)
-        leafwave_tilde_start(x, name, x->x_creating);
+    leafwave_tilde_start(x, name, x->x_creating);
 }
 
 /* a rebuild with x_want: at once in new() (the flags), else in a job */
@@ -311,30 +309,28 @@ static void leafwave_tilde_rebuild(t_leafwave_tilde *x)
 
 /* --- messages (each also a creation flag of the same name) -------------- */
 
-/* the setters: refusals worded from the table; none before the core is
-   initialised */
-#define SETTER(msg, call, whole)                                          \
-    static void leafwave_tilde_##msg(t_leafwave_tilde *x, t_floatarg f)   \
-    {                                                                     \
-        int n = 0;                                                        \
-        if (x->x_ok &&                                                    \
-            ((whole && aero_pd_whole_of(&x->x_base, #msg, f, &n)) ||      \
-             call(&x->x_core,                                            \
-                  whole ? n : aero_pd_at_bound(&x->x_base, #msg, f))))   \
-            aero_pd_refused(&x->x_base, #msg, f);                         \
-    }
-
-SETTER(gain, aero_leafwave_set_gain_db, 0)
-SETTER(ramp, aero_leafwave_set_ramp_ms, 0)
-SETTER(stiffness, aero_leafwave_set_stiffness, 0)
-SETTER(beta, aero_leafwave_set_beta, 0)
-SETTER(k, aero_leafwave_set_mic_k, 0)
-SETTER(sway, aero_leafwave_set_sway, 0)
-SETTER(coupling, aero_leafwave_set_coupling, 0)
-SETTER(flutter, aero_leafwave_set_flutter, 0)
-SETTER(hit, aero_leafwave_set_hit, 0)
-SETTER(rub, aero_leafwave_set_rub, 0)
-SETTER(voices, aero_leafwave_set_voices, 1)
+AERO_PD_SETTER(leafwave_tilde, t_leafwave_tilde, gain, x_core,
+               aero_leafwave_set_gain_db)
+AERO_PD_SETTER(leafwave_tilde, t_leafwave_tilde, ramp, x_core,
+               aero_leafwave_set_ramp_ms)
+AERO_PD_SETTER(leafwave_tilde, t_leafwave_tilde, stiffness, x_core,
+               aero_leafwave_set_stiffness)
+AERO_PD_SETTER(leafwave_tilde, t_leafwave_tilde, beta, x_core,
+               aero_leafwave_set_beta)
+AERO_PD_SETTER(leafwave_tilde, t_leafwave_tilde, k, x_core,
+               aero_leafwave_set_mic_k)
+AERO_PD_SETTER(leafwave_tilde, t_leafwave_tilde, sway, x_core,
+               aero_leafwave_set_sway)
+AERO_PD_SETTER(leafwave_tilde, t_leafwave_tilde, coupling, x_core,
+               aero_leafwave_set_coupling)
+AERO_PD_SETTER(leafwave_tilde, t_leafwave_tilde, flutter, x_core,
+               aero_leafwave_set_flutter)
+AERO_PD_SETTER(leafwave_tilde, t_leafwave_tilde, hit, x_core,
+               aero_leafwave_set_hit)
+AERO_PD_SETTER(leafwave_tilde, t_leafwave_tilde, rub, x_core,
+               aero_leafwave_set_rub)
+AERO_PD_SETTER_WHOLE(leafwave_tilde, t_leafwave_tilde, voices, x_core,
+                     aero_leafwave_set_voices)
 
 /* fm (which 0), tables per octave (1) or octaves (2): the other two stay
    (as last asked) */
@@ -343,8 +339,6 @@ static void leafwave_tilde_set_tables(t_leafwave_tilde *x, int which,
 {
     double v[3];
     int per, oct;
-    if (!x->x_ok)
-        return;
     v[0] = x->x_want.fm;
     v[1] = x->x_want.per_octave;
     v[2] = x->x_want.octaves;
@@ -378,8 +372,6 @@ static void leafwave_tilde_set_tables(t_leafwave_tilde *x, int which,
 
 static void leafwave_tilde_reach(t_leafwave_tilde *x, t_floatarg f)
 {
-    if (!x->x_ok)
-        return;
     if (!aero_leafwave_reach_valid(f) ||
         (x->x_creating && aero_leafwave_set_reach(&x->x_core, f))) {
         aero_pd_refused(&x->x_base, "reach", f);
@@ -407,7 +399,7 @@ static void leafwave_tilde_octaves(t_leafwave_tilde *x, t_floatarg f)
 static void leafwave_tilde_seed(t_leafwave_tilde *x, t_floatarg f)
 {
     uint32_t seed;
-    if (!x->x_ok || aero_pd_seed_of(&x->x_base, f, &seed))
+    if (aero_pd_seed_of(&x->x_base, f, &seed))
         return;
     if (x->x_creating && aero_leafwave_set_seed(&x->x_core, seed))
         pd_error(x, OBJ ": out of memory restarting from seed %g", f);
@@ -418,8 +410,6 @@ static void leafwave_tilde_seed(t_leafwave_tilde *x, t_floatarg f)
 static void leafwave_tilde_wind(t_leafwave_tilde *x, t_symbol *s, int argc,
                                 t_atom *argv)
 {
-    if (!x->x_ok)
-        return;
     double speed = aero_pd_wind_message(&x->x_base, &x->x_wind, s, argc, argv);
     if (speed < 0.0)
         return;
@@ -436,7 +426,7 @@ static void leafwave_tilde_mic(t_leafwave_tilde *x, t_symbol *s, int argc,
                                t_atom *argv)
 {
     double v[3];
-    if (!x->x_ok || aero_pd_floats(x, OBJ, s->s_name, argc, argv, 3, v))
+    if (aero_pd_floats(x, OBJ, s->s_name, argc, argv, 3, v))
         return;
     if (aero_leafwave_set_mic(&x->x_core, v[0], v[1], v[2]))
         aero_pd_refused_list(&x->x_base, s->s_name);
@@ -446,7 +436,7 @@ static void leafwave_tilde_listener(t_leafwave_tilde *x, t_symbol *s,
                                     int argc, t_atom *argv)
 {
     aero_ears e;
-    if (x->x_ok && aero_pd_ears(&x->x_base, s, argc, argv, &e) &&
+    if (aero_pd_ears(&x->x_base, s, argc, argv, &e) &&
         aero_leafwave_set_ears(&x->x_core, &e))
         aero_pd_bad_ears(&x->x_base, e.n);
 }
@@ -468,7 +458,7 @@ static const aero_pd_method leafwave_tilde_methods[] = {
     {"mic", AERO_PD_LIST, 3, (t_method)leafwave_tilde_mic, 0,
      AERO_PD_NOTE("a finite direction; 0 0 0 aims it at the tree")},
     {"k", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_k, 0,
-     AERO_PD_RANGE_DEF(0, AERO_LEAFWAVE_MIC_K_MAX,
+     AERO_PD_RANGE_DEF(AERO_LEAFWAVE_MIC_K_MIN, AERO_LEAFWAVE_MIC_K_MAX,
                        AERO_LEAFWAVE_MIC_K_DEFAULT, NULL)},
     {"gain", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_gain, 0,
      AERO_PD_GAIN},
@@ -480,9 +470,10 @@ static const aero_pd_method leafwave_tilde_methods[] = {
      AERO_PD_RANGE_DEF(AERO_TREE_STIFFNESS_MIN, AERO_TREE_STIFFNESS_MAX,
                        AERO_TREE_STIFFNESS_DEFAULT, NULL)},
     {"beta", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_beta, 0,
-     AERO_PD_RANGE_DEF(0, AERO_TREE_BETA_MAX, AERO_TREE_BETA_DEFAULT, NULL)},
+     AERO_PD_RANGE_DEF(AERO_TREE_BETA_MIN, AERO_TREE_BETA_MAX,
+                       AERO_TREE_BETA_DEFAULT, NULL)},
     {"sway", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_sway, 0,
-     AERO_PD_RANGE_DEF(0, AERO_LEAFWAVE_SWAY_MAX,
+     AERO_PD_RANGE_DEF(AERO_LEAFWAVE_SWAY_MIN, AERO_LEAFWAVE_SWAY_MAX,
                        AERO_LEAFWAVE_SWAY_DEFAULT, "rad")},
     {"coupling", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_coupling, 0,
      AERO_PD_RANGE_DEF(-AERO_LEAFWAVE_COUPLING_MAX, AERO_LEAFWAVE_COUPLING_MAX,
@@ -491,26 +482,28 @@ static const aero_pd_method leafwave_tilde_methods[] = {
      AERO_PD_RANGE_DEF(AERO_LEAFWAVE_FLUTTER_MIN, AERO_LEAFWAVE_FLUTTER_MAX,
                        AERO_LEAFWAVE_FLUTTER_DEFAULT, "Hz")},
     {"hit", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_hit, 0,
-     AERO_PD_RANGE_DEF(0, AERO_LEAFWAVE_PA_MAX, AERO_LEAFWAVE_HIT_DEFAULT,
-                       "Pa")},
+     AERO_PD_RANGE_DEF(AERO_LEAFWAVE_PA_MIN, AERO_LEAFWAVE_PA_MAX,
+                       AERO_LEAFWAVE_HIT_DEFAULT, "Pa")},
     {"rub", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_rub, 0,
-     AERO_PD_RANGE_DEF(0, AERO_LEAFWAVE_PA_MAX, AERO_LEAFWAVE_RUB_DEFAULT,
-                       "Pa")},
+     AERO_PD_RANGE_DEF(AERO_LEAFWAVE_PA_MIN, AERO_LEAFWAVE_PA_MAX,
+                       AERO_LEAFWAVE_RUB_DEFAULT, "Pa")},
     {"reach", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_reach, 0,
      AERO_PD_RANGE_DEF(AERO_LEAFWAVE_REACH_MIN, AERO_LEAFWAVE_REACH_MAX,
                        AERO_LEAFWAVE_REACH_DEFAULT, NULL)},
     {"voices", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_voices, 0,
-     AERO_PD_RANGE_DEF(1, AERO_LEAFWAVE_VOICES_MAX,
+     AERO_PD_RANGE_DEF(AERO_LEAFWAVE_VOICES_MIN, AERO_LEAFWAVE_VOICES_MAX,
                        AERO_LEAFWAVE_VOICES_DEFAULT, NULL)},
     {"fm", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_fm, 0,
      AERO_PD_RANGE_DEF(AERO_LEAFWAVE_FM_MIN, AERO_LEAFWAVE_FM_MAX,
                        AERO_LEAFWAVE_FM_DEFAULT, "Hz")},
     {"tables", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_tables, 0,
-     AERO_PD_RANGE_NOTE_DEF(1, AERO_LEAFWAVE_PER_OCTAVE_MAX,
+     AERO_PD_RANGE_NOTE_DEF(AERO_LEAFWAVE_PER_OCTAVE_MIN,
+                            AERO_LEAFWAVE_PER_OCTAVE_MAX,
                             AERO_LEAFWAVE_PER_OCTAVE_DEFAULT, "per octave",
                             TABLES_NOTE)},
     {"octaves", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_octaves, 0,
-     AERO_PD_RANGE_NOTE_DEF(1, AERO_LEAFWAVE_OCTAVES_MAX,
+     AERO_PD_RANGE_NOTE_DEF(AERO_LEAFWAVE_OCTAVES_MIN,
+                            AERO_LEAFWAVE_OCTAVES_MAX,
                             AERO_LEAFWAVE_OCTAVES_DEFAULT, NULL, TABLES_NOTE)},
 };
 
@@ -526,26 +519,18 @@ static void *leafwave_tilde_new(t_symbol *s, int argc, t_atom *argv)
     aero_pd_wind_init(&x->x_wind);
     x->x_poll = clock_new(x, (t_method)leafwave_tilde_poll);
     x->x_creating = 1;
-    x->x_ok = aero_leafwave_init(&x->x_core, sys_getsr(),
-                                 x->x_base.stereo ? 2 : 1,
-                                 aero_pd_default_seed()) == 0;
-    if (!x->x_ok)
+    /* a failed init leaves a silent core, safe to use */
+    if (aero_leafwave_init(&x->x_core, sys_getsr(), x->x_base.stereo ? 2 : 1,
+                           aero_pd_default_seed()))
         pd_error(x, OBJ ": out of memory: silent");
     /* the tree file: the first argument that is not a flag; the seed and
        the tables are set by the flags first, so the tree is built once */
     t_symbol *file = aero_pd_first_symbol(&argc, &argv);
     aero_pd_parse_flags(&x->x_base, argc, argv);
-    if (x->x_ok) {
-        x->x_want.fm = x->x_core.fm;
-        x->x_want.per_octave = x->x_core.tables_per_octave;
-        x->x_want.octaves = x->x_core.octaves;
-        x->x_want.reach = x->x_core.reach;
-        x->x_want.seed = x->x_core.seed;
-    }
+    leafwave_tilde_want_live(x);
     if (file)
         leafwave_tilde_open(x, file);
-    else
-        post(OBJ ": no tree file given: silent until 'open <file>'");
+    aero_pd_no_file(&x->x_base, "tree", "open");
     x->x_creating = 0;
     aero_pd_base_outlets(&x->x_base);
     return x;
@@ -565,8 +550,7 @@ static void leafwave_tilde_free(t_leafwave_tilde *x)
         aero_load_job_abandon(x->x_job, leafwave_tilde_drop_load);
     }
     leafwave_tilde_drop_old(x);
-    if (x->x_ok)
-        aero_leafwave_free(&x->x_core);
+    aero_leafwave_free(&x->x_core);
 }
 
 AERO_PD_EXPORT void leafwave_tilde_setup(void)

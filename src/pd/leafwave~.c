@@ -12,13 +12,11 @@
 #include "moving_player.h"
 
 #include "leafwave.h"
-#include "load_job.h"
 #include "aero_util.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 static t_class *leafwave_tilde_class;
 
@@ -29,18 +27,11 @@ typedef struct _leafwave_tilde {
     aero_pd_wind x_wind;
     aero_leafwave x_core;
     /* A tree file read, or the tables / reach / seed changed: a new core
-       is built in a worker (load_job.h) and swapped in by the clock with
-       a fade; the old core plays meanwhile. */
+       is built in a worker and swapped in by the clock with a fade; the
+       old core plays meanwhile (aero_pd_swap). */
+    aero_pd_swap x_swap;
     int x_creating;           /* in new(): the setters act at once */
     aero_leafwave_rebuild x_want; /* the tables, reach and seed asked */
-    struct lw_load *x_load;
-    aero_load_job *x_job;
-    t_symbol *x_next;         /* the latest 'open' asked during a load */
-    t_clock *x_poll;
-    double x_logical, x_real; /* when the job started: logical, real (s) */
-    aero_leafwave *x_old;     /* the core fading out, or NULL */
-    int x_fade, x_fade_len;   /* samples of the fade done, its length */
-    int x_fade_seen;          /* x_fade at the last poll */
 } t_leafwave_tilde;
 
 typedef struct lw_load {
@@ -57,19 +48,14 @@ typedef struct lw_load {
 
 #define OBJ "[leafwave~]"
 
-#define FADE_MS 10.0   /* the old core fades out over this after a swap */
-#define WAIT_MS 20.0   /* a job is swapped in this late, or later */
-#define POLL_MS 5.0
-#define SMALL_FILE (2L << 20) /* bytes: read at creation (the shipped
-                                 trees) */
-
 static int leafwave_tilde_process(void *obj, const float *in,
                                   float *const *out, int n)
 {
     t_leafwave_tilde *x = obj;
     /* the near-field policy: reported once (the last block's record) */
     aero_pd_near(&x->x_base, &x->x_core.near);
-    if (x->x_old) {
+    aero_leafwave *old = x->x_swap.old;
+    if (old) {
         /* the old core into scratch first (the inlet may alias out[0]),
            faded out under the new one in chunks */
         float a[2][64];
@@ -78,13 +64,11 @@ static int leafwave_tilde_process(void *obj, const float *in,
             int m = n - done < 64 ? n - done : 64;
             float *ao[2] = {a[0], a[1]};
             float *no[2] = {out[0] + done, out[1] ? out[1] + done : NULL};
-            aero_leafwave_process(x->x_old, in ? in + done : NULL, ao, m);
+            aero_leafwave_process(old, in ? in + done : NULL, ao, m);
             clamped |= aero_leafwave_process(&x->x_core,
                                              in ? in + done : NULL, no, m);
             for (int i = 0; i < m; i++) {
-                float g = x->x_fade < x->x_fade_len
-                    ? 1.0f - (float)x->x_fade / x->x_fade_len : 0.0f;
-                x->x_fade++;
+                float g = aero_pd_swap_gain(&x->x_swap);
                 for (int e = 0; e < x->x_core.n_ears && e < 2; e++)
                     no[e][i] += g * a[e][i];
             }
@@ -140,13 +124,9 @@ static void leafwave_tilde_drop_load(void *arg)
     free(l);
 }
 
-static void leafwave_tilde_drop_old(t_leafwave_tilde *x)
+static void leafwave_tilde_free_core(void *core)
 {
-    if (x->x_old) {
-        aero_leafwave_free(x->x_old);
-        free(x->x_old);
-        x->x_old = NULL;
-    }
+    aero_leafwave_free(core);
 }
 
 static int leafwave_tilde_wants_rebuild(const t_leafwave_tilde *x)
@@ -173,12 +153,10 @@ static void leafwave_tilde_want_live(t_leafwave_tilde *x)
 
 /* the finished job: its report, then the new core swapped in (the old one
    fades out); then the next job, if one was asked meanwhile */
-static void leafwave_tilde_finish(t_leafwave_tilde *x)
+static void leafwave_tilde_finish(void *owner)
 {
-    lw_load *l = x->x_load;
-    aero_load_job_finish(x->x_job);
-    x->x_job = NULL;
-    x->x_load = NULL;
+    t_leafwave_tilde *x = owner;
+    lw_load *l = aero_pd_swap_take(&x->x_swap);
     if (l->has_file && aero_pd_tree_report(&x->x_base, &l->read)) {
         ; /* refused: the tree that played, if any, plays on */
     } else if (!l->ok) {
@@ -195,64 +173,37 @@ static void leafwave_tilde_finish(t_leafwave_tilde *x)
         /* what changed while it was built */
         aero_leafwave_set_sample_rate(&l->core, x->x_core.sample_rate);
         aero_leafwave_copy_settings(&l->core, &x->x_core);
-        leafwave_tilde_drop_old(x);
-        x->x_old = malloc(sizeof(*x->x_old));
-        if (x->x_old)
-            aero_leafwave_move(x->x_old, &x->x_core);
+        aero_leafwave *old = aero_pd_swap_fade_slot(
+            &x->x_swap, sizeof(*old), l->core.sample_rate);
+        if (old)
+            aero_leafwave_move(old, &x->x_core);
         else
             aero_leafwave_free(&x->x_core);
         aero_leafwave_move(&x->x_core, &l->core);
-        x->x_fade = x->x_fade_seen = 0;
-        x->x_fade_len = (int)(FADE_MS * 0.001 * x->x_core.sample_rate);
         if (l->has_file && l->nleaves == 0)
             pd_error(x, OBJ ": tree %s has no leaves: silent", l->read.path);
     }
     leafwave_tilde_drop_load(l);
-    if (x->x_next) {
-        t_symbol *next = x->x_next;
-        x->x_next = NULL;
+    if (x->x_swap.next) {
+        t_symbol *next = x->x_swap.next;
+        x->x_swap.next = NULL;
         leafwave_tilde_start(x, next, 0);
     } else if (leafwave_tilde_wants_rebuild(x)) {
         leafwave_tilde_start(x, NULL, 0);
     }
 }
 
-/* Pd's logical time running well ahead of the real one: batch mode (or
-   no audio device), where nobody hears a wait and renders must not
-   depend on how fast the worker was */
-static int leafwave_tilde_batch(const t_leafwave_tilde *x)
-{
-    double logical = clock_gettimesince(x->x_logical) * 0.001;
-    return sys_getrealtime() - x->x_real < 0.5 * logical;
-}
-
-static void leafwave_tilde_poll(t_leafwave_tilde *x)
-{
-    /* faded out, or not fading at all (DSP is off) */
-    if (x->x_old && (x->x_fade >= x->x_fade_len ||
-                     x->x_fade == x->x_fade_seen))
-        leafwave_tilde_drop_old(x);
-    x->x_fade_seen = x->x_fade;
-    if (x->x_job && (aero_load_job_done(x->x_job) ||
-                     leafwave_tilde_batch(x)))
-        leafwave_tilde_finish(x);
-    if (x->x_job || x->x_old)
-        clock_delay(x->x_poll, POLL_MS);
-}
-
-/* Starts a job: the tree file `name`, or (NULL) the live tree again with
-   the tables, reach and seed asked. The clock swaps the new core in
-   WAIT_MS later, or as soon after as it is ready (in batch mode it waits
-   for it then: the same logical time in every run). `now` (creation): a
-   file under SMALL_FILE is read here at once, so a patch plays its tree
-   from the first block. A job asked while one runs follows it. */
+/* Starts a job (aero_pd_swap_start): the tree file `name`, or (NULL) the
+   live tree again with the tables, reach and seed asked. `now`
+   (creation): a file under AERO_PD_SWAP_SMALL_FILE is read here at once,
+   so a patch plays its tree from the first block. A job asked while one
+   runs follows it. */
 static void leafwave_tilde_start(t_leafwave_tilde *x, t_symbol *name,
                                  int now)
 {
-    struct stat st;
-    if (x->x_job) {
+    if (x->x_swap.job) {
         if (name)
-            x->x_next = name; /* the latest wins; a rebuild follows anyway */
+            x->x_swap.next = name; /* the latest wins; a rebuild follows anyway */
         return;
     }
     lw_load *l = calloc(1, sizeof(*l));
@@ -269,7 +220,7 @@ static void leafwave_tilde_start(t_leafwave_tilde *x, t_symbol *name,
             return;
         }
         l->has_file = 1;
-        small = stat(l->read.path, &st) == 0 && st.st_size < SMALL_FILE;
+        small = aero_pd_swap_small(l->read.path);
     } else if (x->x_core.has_tree) {
         /* the arrays stay the live core's: not replaced while this runs */
         l->live = x->x_core.tree;
@@ -277,22 +228,11 @@ static void leafwave_tilde_start(t_leafwave_tilde *x, t_symbol *name,
     }
     l->snap = x->x_core; /* its numbers only are read */
     l->want = x->x_want;
-    x->x_load = l;
-    x->x_job = aero_load_job_start(leafwave_tilde_build, l, !(now && small));
-    if (!x->x_job) {
-        x->x_load = NULL;
+    if (aero_pd_swap_start(&x->x_swap, leafwave_tilde_build, l,
+                           now && small)) {
         free(l);
         pd_error(x, OBJ ": out of memory: silent");
-        return;
     }
-    if (now && small) {
-        leafwave_tilde_finish(x);
-        leafwave_tilde_drop_old(x); /* nothing played yet: no fade */
-        return;
-    }
-    x->x_logical = clock_getlogicaltime();
-    x->x_real = sys_getrealtime();
-    clock_delay(x->x_poll, WAIT_MS);
 }
 
 static void leafwave_tilde_open(t_leafwave_tilde *x, t_symbol *name)
@@ -517,7 +457,8 @@ static void *leafwave_tilde_new(t_symbol *s, int argc, t_atom *argv)
     t_leafwave_tilde *x = (t_leafwave_tilde *)pd_new(leafwave_tilde_class);
     aero_pd_base_init(&x->x_base, x, &leafwave_tilde_spec, argc, argv);
     aero_pd_wind_init(&x->x_wind);
-    x->x_poll = clock_new(x, (t_method)leafwave_tilde_poll);
+    aero_pd_swap_init(&x->x_swap, x, leafwave_tilde_finish,
+                      leafwave_tilde_free_core);
     x->x_creating = 1;
     /* a failed init leaves a silent core, safe to use */
     if (aero_leafwave_init(&x->x_core, sys_getsr(), x->x_base.stereo ? 2 : 1,
@@ -539,17 +480,14 @@ static void *leafwave_tilde_new(t_symbol *s, int argc, t_atom *argv)
 static void leafwave_tilde_free(t_leafwave_tilde *x)
 {
     aero_pd_base_free(&x->x_base);
-    clock_free(x->x_poll);
-    if (x->x_job) {
-        /* not waited for: the worker drops what it made when done; the
-           live tree it may still be copying becomes the job's */
-        if (x->x_load->has_live) {
-            x->x_load->owns_live = 1;
-            memset(&x->x_core.tree, 0, sizeof(x->x_core.tree));
-        }
-        aero_load_job_abandon(x->x_job, leafwave_tilde_drop_load);
+    lw_load *l = x->x_swap.load;
+    /* a job is not waited for: the worker drops what it made when done;
+       the live tree it may still be copying becomes the job's */
+    if (x->x_swap.job && l->has_live) {
+        l->owns_live = 1;
+        memset(&x->x_core.tree, 0, sizeof(x->x_core.tree));
     }
-    leafwave_tilde_drop_old(x);
+    aero_pd_swap_free(&x->x_swap, leafwave_tilde_drop_load);
     aero_leafwave_free(&x->x_core);
 }
 

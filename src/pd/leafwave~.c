@@ -391,7 +391,7 @@ static const aero_pd_method leafwave_tilde_methods[] = {
     {"open", AERO_PD_SYMBOL, 0, (t_method)leafwave_tilde_open, 0, AERO_PD_NO_RULE},
     {"tree", AERO_PD_SYMBOL, 0, (t_method)leafwave_tilde_open, 0, AERO_PD_NO_RULE},
     {"wind", AERO_PD_LIST, 3, (t_method)leafwave_tilde_wind, 0,
-     AERO_PD_RANGE_NOTE(0, AERO_MOVING_WIND_MAX, "m/s",
+     AERO_PD_RANGE_NOTE(AERO_MOVING_WIND_MIN, AERO_MOVING_WIND_MAX, "m/s",
                         "the vector's length")},
     {"listener", AERO_PD_LIST, 3, (t_method)leafwave_tilde_listener, 0, AERO_PD_NO_RULE},
     {"ears", AERO_PD_LIST, 6, (t_method)leafwave_tilde_listener, 0, AERO_PD_NO_RULE},

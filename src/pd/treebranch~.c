@@ -294,7 +294,7 @@ static const aero_pd_method treebranch_tilde_methods[] = {
      AERO_PD_NO_RULE},
     {"ears", AERO_PD_LIST, 6, (t_method)treebranch_tilde_listener, 0, AERO_PD_NO_RULE},
     {"wind", AERO_PD_LIST, 3, (t_method)treebranch_tilde_wind, 0,
-     AERO_PD_RANGE_NOTE(0, AERO_MOVING_WIND_MAX, "m/s",
+     AERO_PD_RANGE_NOTE(AERO_MOVING_WIND_MIN, AERO_MOVING_WIND_MAX, "m/s",
                         "the vector's length")},
     {"open", AERO_PD_SYMBOL, 0, (t_method)treebranch_tilde_open,
      AERO_PD_MESSAGE_ONLY, AERO_PD_NO_RULE},

@@ -21,7 +21,8 @@
  * lanes of aero_lanes.h), the laws and the phase's steps per chunk and
  * lane; U^n per sample for n = 2, else once per chunk, gliding
  * (cavity_model.c). With two ears, each hears the same field at its own
- * distance (1/r).
+ * distance (1/r); the sound reaches both at once (no interaural delay:
+ * the ears differ in level only, in both modes).
  *
  * Texture mode. A cavity texture from `aerotex cavity` (g = dF/dt per unit
  * width at the base speed v0) is read at a rate v/v0, scaled by (v/v0)^n

@@ -42,7 +42,7 @@ lib.setup.sources = src/pd/aero.c
 # the skeleton every wrapper shares, linked into each external and the lib
 common.sources = src/pd/aero_pd.c
 
-datafiles = $(wildcard help/*.pd) $(wildcard abstractions/*.pd) \
+datafiles = $(wildcard help/*.pd) $(wildcard abstractions/*.pd) $(wildcard abstractions/*.blade) \
     README.md LICENSE
 datadirs = $(if $(wildcard textures/*.wav),textures)
 datadirs += $(if $(wildcard trees/*.tree),trees)
@@ -144,7 +144,7 @@ $(BUILD)/tests/%: tests/unit/%.c $(wildcard tests/unit/*.h) $(core.lib)
 	@mkdir -p $(dir $@)
 	$(CORE_CC) $(CORE_CFLAGS) $< -o $@ $(TOOL_LIBS)
 
-# the unit tests alone (tests/unit/run.sh): make check-unit ONLY=cavity_model
+# the unit tests alone (tests/unit/run.sh): make check-unit ONLY=cavity
 # CASE=lock_in; each binary also runs alone (build/tests/test_x --list)
 .PHONY: check-unit
 check-unit:

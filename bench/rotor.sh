@@ -53,20 +53,7 @@ rotor_patch() { # NAME DRONES [FLAGS]
         done
     } >"$DIR/$1.pd"
 }
-brun() {
-    /usr/bin/time -f "%U %S" -o "$DIR/$1.time" timeout 3600 pd -batch \
-        -nogui -noaudio -noprefs -stderr -nostdpath -r $RATE \
-        -path "$ROOT" -open "$DIR/$1.pd" >"$DIR/$1.log" 2>&1
-    awk '{ printf "%.3f", $1 + $2 }' "$DIR/$1.time"
-}
-bbest() {
-    b=""
-    for k in 1 2 3; do
-        t=$(brun "$1")
-        b=$(echo "$b $t" | awk '{ m = $1; for (i = 2; i <= NF; i++) if ($i < m) m = $i; print m }')
-    done
-    echo "$b"
-}
+. bench/pd-cpu.sh # brun, bbest
 rotor_patch rt-empty 0
 rotor_patch rt-drones "$N"
 rotor_patch rt-tones "$N" "-noise -200"

@@ -166,7 +166,8 @@ externals.32 = $(patsubst %,$(STAGE)/%.$(EXT.32),$(classes) aero)
 externals.64 = $(if $(EXT.64),$(patsubst %,$(STAGE)/%.$(EXT.64),$(classes) aero))
 
 # --- the staged folder: what pd-lib-builder's install puts there -------------
-data = $(wildcard help/*.pd) $(wildcard abstractions/*.pd) README.md LICENSE
+data = $(wildcard help/*.pd) $(wildcard abstractions/*.pd) \
+    $(wildcard abstractions/*.blade) README.md LICENSE
 staged.data = $(addprefix $(STAGE)/,$(notdir $(data)))
 staged.dirs = $(wildcard textures/*.wav) $(wildcard trees/*.tree)
 # the documents the README links to, at the same relative paths
@@ -184,6 +185,9 @@ $(STAGE)/%.pd: help/%.pd
 	@mkdir -p $(dir $@)
 	cp $< $@
 $(STAGE)/%.pd: abstractions/%.pd
+	@mkdir -p $(dir $@)
+	cp $< $@
+$(STAGE)/%.blade: abstractions/%.blade
 	@mkdir -p $(dir $@)
 	cp $< $@
 $(STAGE)/%: %

@@ -481,6 +481,104 @@ double aero_pd_wind_message(aero_pd_base *b, aero_pd_wind *w, t_symbol *s,
     return speed;
 }
 
+/* --- a core rebuilt in a worker and swapped in ----------------------------- */
+
+static void swap_poll(aero_pd_swap *s);
+
+void aero_pd_swap_init(aero_pd_swap *s, void *owner,
+                       void (*finish)(void *owner),
+                       void (*free_core)(void *core))
+{
+    memset(s, 0, sizeof(*s));
+    s->owner = owner;
+    s->finish = finish;
+    s->free_core = free_core;
+    s->poll = clock_new(s, (t_method)swap_poll);
+}
+
+void aero_pd_swap_drop_old(aero_pd_swap *s)
+{
+    if (s->old) {
+        s->free_core(s->old);
+        free(s->old);
+        s->old = NULL;
+    }
+}
+
+void aero_pd_swap_free(aero_pd_swap *s, void (*drop_load)(void *load))
+{
+    clock_free(s->poll);
+    if (s->job)
+        aero_load_job_abandon(s->job, drop_load);
+    s->job = NULL;
+    aero_pd_swap_drop_old(s);
+}
+
+int aero_pd_swap_small(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 && st.st_size < AERO_PD_SWAP_SMALL_FILE;
+}
+
+/* Pd's logical time running well ahead of the real one: batch mode (or
+   no audio device), where nobody hears a wait and renders must not
+   depend on how fast the worker was */
+static int swap_batch(const aero_pd_swap *s)
+{
+    double logical = clock_gettimesince(s->logical) * 0.001;
+    return sys_getrealtime() - s->real < 0.5 * logical;
+}
+
+static void swap_poll(aero_pd_swap *s)
+{
+    /* faded out, or not fading at all (DSP is off) */
+    if (s->old && (s->fade >= s->fade_len || s->fade == s->fade_seen))
+        aero_pd_swap_drop_old(s);
+    s->fade_seen = s->fade;
+    if (s->job && (aero_load_job_done(s->job) || swap_batch(s)))
+        s->finish(s->owner);
+    if (s->job || s->old)
+        clock_delay(s->poll, AERO_PD_SWAP_POLL_MS);
+}
+
+int aero_pd_swap_start(aero_pd_swap *s, aero_load_fn fn, void *load,
+                       int now)
+{
+    s->load = load;
+    s->job = aero_load_job_start(fn, load, !now);
+    if (!s->job) {
+        s->load = NULL;
+        return -1;
+    }
+    if (now) {
+        s->finish(s->owner);
+        aero_pd_swap_drop_old(s); /* nothing played yet: no fade */
+        return 0;
+    }
+    s->logical = clock_getlogicaltime();
+    s->real = sys_getrealtime();
+    clock_delay(s->poll, AERO_PD_SWAP_WAIT_MS);
+    return 0;
+}
+
+void *aero_pd_swap_take(aero_pd_swap *s)
+{
+    void *load = s->load;
+    aero_load_job_finish(s->job);
+    s->job = NULL;
+    s->load = NULL;
+    return load;
+}
+
+void *aero_pd_swap_fade_slot(aero_pd_swap *s, size_t size, double sr)
+{
+    aero_pd_swap_drop_old(s);
+    s->old = malloc(size);
+    s->fade = s->fade_seen = 0;
+    s->fade_len = (int)(AERO_PD_SWAP_FADE_MS * 0.001 * sr);
+    return s->old;
+}
+
 /* --- the host's data folder (aero.h) -------------------------------------- */
 
 /* The one piece of process state in aero: the folder a libpd host set with
@@ -746,6 +844,36 @@ uint32_t aero_pd_default_seed(void)
             seed += 104729u;
     }
     return seed;
+}
+
+int aero_pd_pose(aero_pd_base *b, aero_pd_pose_clock *c, t_symbol *s,
+                 int argc, const t_atom *argv, const double current[4],
+                 double pos[3], double q[4], double *interval, int *offset)
+{
+    double v[7];
+    if (argc != 3 && argc != 6 && argc != 7) {
+        pd_error(b->owner, "%s: '%s' takes x y z, x y z rx ry rz (rotation "
+                 "vector, deg) or x y z qw qx qy qz (quaternion), got %d "
+                 "numbers", b->obj, s->s_name, argc);
+        return -1;
+    }
+    if (aero_pd_floats(b->owner, b->obj, s->s_name, argc, argv, argc, v))
+        return -1;
+    if (argc == 3)
+        memcpy(q, current, 4 * sizeof(double));
+    else if (argc == 6) {
+        if (!(fabs(v[3]) < 1e9 && fabs(v[4]) < 1e9 && fabs(v[5]) < 1e9)) {
+            aero_pd_refused_list(b, s->s_name);
+            return -1;
+        }
+        aero_quat_from_rotvec(v + 3, q);
+    } else
+        memcpy(q, v + 3, 4 * sizeof(double));
+    memcpy(pos, v, 3 * sizeof(double));
+    /* place: a jump, no motion */
+    *interval = aero_pd_pose_clock_pose(c, !strcmp(s->s_name, "place"),
+                                        offset);
+    return 0;
 }
 
 int aero_pd_floats(void *x, const char *obj, const char *what, int argc,

@@ -66,29 +66,12 @@ static void body_tilde_texture(t_body_tilde *x, t_symbol *name)
 static void body_tilde_pose(t_body_tilde *x, t_symbol *s, int argc,
                             t_atom *argv)
 {
-    double v[7], q[4];
+    double v[3], q[4], now[4], interval;
     int offset;
-    if (argc != 3 && argc != 6 && argc != 7) {
-        pd_error(x, OBJ ": '%s' takes x y z, x y z rx ry rz (rotation "
-                 "vector, deg) or x y z qw qx qy qz (quaternion), got %d "
-                 "numbers", s->s_name, argc);
+    aero_body_orientation(&x->x_core, now);
+    if (aero_pd_pose(&x->x_base, &x->x_clock, s, argc, argv, now, v, q,
+                     &interval, &offset))
         return;
-    }
-    if (aero_pd_floats(x, OBJ, s->s_name, argc, argv, argc, v))
-        return;
-    if (argc == 3)
-        aero_body_orientation(&x->x_core, q);
-    else if (argc == 6) {
-        if (!(fabs(v[3]) < 1e9 && fabs(v[4]) < 1e9 && fabs(v[5]) < 1e9)) {
-            aero_pd_refused_list(&x->x_base, s->s_name);
-            return;
-        }
-        aero_body_quaternion_from_rotvec(v + 3, q);
-    } else
-        memcpy(q, v + 3, sizeof(q));
-    /* place: a jump, no motion */
-    double interval = aero_pd_pose_clock_pose(
-        &x->x_clock, !strcmp(s->s_name, "place"), &offset);
     if (aero_body_set_pose_at(&x->x_core, v, q, interval, offset))
         aero_pd_refused_list(&x->x_base, s->s_name);
 }

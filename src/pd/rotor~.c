@@ -12,7 +12,9 @@
 #include "aero_pd.h"
 
 #include <math.h>
+#include <stdlib.h>
 
+#include "load_job.h"
 #include "rotor.h"
 
 static t_class *rotor_tilde_class;
@@ -23,9 +25,25 @@ typedef struct _rotor_tilde {
     aero_pd_base x_base;
     aero_rotor x_core;
     aero_pd_pose_clock x_clock; /* poses' intervals and block offsets */
+    /* a blade table read in a worker (load_job.h), taken by the clock */
+    struct rotor_blade_load *x_load;
+    aero_load_job *x_job;
+    t_symbol *x_next; /* asked for while one loads: the latest wins */
+    t_clock *x_poll;
+    double x_logical, x_real;
+    int x_creating;
 } t_rotor_tilde;
 
 #define OBJ "[rotor~]"
+#define POLL_MS 5.0
+
+/* a blade table being read: the worker writes b, err and bad only */
+typedef struct rotor_blade_load {
+    char path[MAXPDSTRING];
+    aero_rotor_blade b;
+    char err[256];
+    int bad;
+} rotor_blade_load;
 
 static int rotor_tilde_process(void *obj, const float *in, float *const *out,
                                int n)
@@ -53,29 +71,12 @@ static void rotor_tilde_dsp(t_rotor_tilde *x, t_signal **sp)
 static void rotor_tilde_pose(t_rotor_tilde *x, t_symbol *s, int argc,
                              t_atom *argv)
 {
-    double v[7], q[4];
+    double v[3], q[4], now[4], interval;
     int offset;
-    if (argc != 3 && argc != 6 && argc != 7) {
-        pd_error(x, OBJ ": '%s' takes x y z, x y z rx ry rz (rotation "
-                 "vector, deg) or x y z qw qx qy qz (quaternion), got %d "
-                 "numbers", s->s_name, argc);
+    aero_rotor_orientation(&x->x_core, now);
+    if (aero_pd_pose(&x->x_base, &x->x_clock, s, argc, argv, now, v, q,
+                     &interval, &offset))
         return;
-    }
-    if (aero_pd_floats(x, OBJ, s->s_name, argc, argv, argc, v))
-        return;
-    if (argc == 3)
-        aero_rotor_orientation(&x->x_core, q);
-    else if (argc == 6) {
-        if (!(fabs(v[3]) < 1e9 && fabs(v[4]) < 1e9 && fabs(v[5]) < 1e9)) {
-            aero_pd_refused_list(&x->x_base, s->s_name);
-            return;
-        }
-        aero_rotor_quaternion_from_rotvec(v + 3, q);
-    } else
-        memcpy(q, v + 3, sizeof(q));
-    /* place: a jump, no motion */
-    double interval = aero_pd_pose_clock_pose(
-        &x->x_clock, !strcmp(s->s_name, "place"), &offset);
     if (aero_rotor_set_pose_at(&x->x_core, v, q, interval, offset))
         aero_pd_refused_list(&x->x_base, s->s_name);
 }
@@ -122,6 +123,99 @@ AERO_PD_SETTER(rotor_tilde, t_rotor_tilde, gain, x_core,
                aero_rotor_set_gain_db)
 AERO_PD_SETTER(rotor_tilde, t_rotor_tilde, ramp, x_core,
                aero_rotor_set_ramp_ms)
+
+/* --- the blade's table (chord and twist per radius) ----------------------- */
+
+static int rotor_tilde_read(void *arg)
+{
+    rotor_blade_load *l = arg;
+    l->bad = aero_rotor_blade_load(l->path, &l->b, l->err, sizeof(l->err));
+    return l->bad;
+}
+
+static void rotor_tilde_blade(t_rotor_tilde *x, t_symbol *name);
+
+/* the read done: the table taken, or why not (the old blade stays) */
+static void rotor_tilde_finish(t_rotor_tilde *x)
+{
+    rotor_blade_load *l = x->x_load;
+    aero_load_job_finish(x->x_job);
+    x->x_job = NULL;
+    x->x_load = NULL;
+    if (l->bad)
+        pd_error(x, OBJ ": blade: %s: the previous blade stays", l->err);
+    else if (aero_rotor_set_blade(&x->x_core, &l->b))
+        pd_error(x, OBJ ": blade: %s refused: the previous blade stays",
+                 l->path);
+    free(l);
+    if (x->x_next) {
+        t_symbol *next = x->x_next;
+        x->x_next = NULL;
+        rotor_tilde_blade(x, next);
+    }
+}
+
+/* Pd's logical time well ahead of the real one: batch mode, where the
+   table is taken at the first poll (the same logical time in every run) */
+static int rotor_tilde_batch(const t_rotor_tilde *x)
+{
+    double logical = clock_gettimesince(x->x_logical) * 0.001;
+    return sys_getrealtime() - x->x_real < 0.5 * logical;
+}
+
+static void rotor_tilde_poll(t_rotor_tilde *x)
+{
+    if (x->x_job && (aero_load_job_done(x->x_job) || rotor_tilde_batch(x)))
+        rotor_tilde_finish(x);
+    else if (x->x_job)
+        clock_delay(x->x_poll, POLL_MS);
+}
+
+/* blade <file>: a table of r/R chord twist_deg (found as textures and
+   trees are, then in abstractions/), read in a worker so that Pd's thread
+   never waits on the disk; at creation (-blade) at once, so the first
+   block plays it. `blade` alone: the uniform chord again */
+static void rotor_tilde_blade(t_rotor_tilde *x, t_symbol *name)
+{
+    if (!name || !*name->s_name) {
+        if (x->x_job)
+            x->x_next = NULL;
+        aero_rotor_set_blade(&x->x_core, NULL);
+        return;
+    }
+    if (x->x_job) {
+        x->x_next = name;
+        return;
+    }
+    rotor_blade_load *l = calloc(1, sizeof(*l));
+    if (!l) {
+        pd_error(x, OBJ ": blade: out of memory: the previous blade stays");
+        return;
+    }
+    if (aero_pd_find_file(x->x_base.canvas, rotor_tilde_class, name->s_name,
+                          ".blade", "abstractions", l->path,
+                          sizeof(l->path))) {
+        pd_error(x, OBJ ": blade: can't find '%s' (looked %s): the previous "
+                 "blade stays", name->s_name, l->path);
+        free(l);
+        return;
+    }
+    x->x_load = l;
+    x->x_job = aero_load_job_start(rotor_tilde_read, l, !x->x_creating);
+    if (!x->x_job) {
+        x->x_load = NULL;
+        free(l);
+        pd_error(x, OBJ ": blade: out of memory: the previous blade stays");
+        return;
+    }
+    if (x->x_creating) {
+        rotor_tilde_finish(x);
+        return;
+    }
+    x->x_logical = clock_getlogicaltime();
+    x->x_real = sys_getrealtime();
+    clock_delay(x->x_poll, POLL_MS);
+}
 
 /* --- creation -------------------------------------------------------------- */
 
@@ -177,6 +271,8 @@ static const aero_pd_method rotor_tilde_methods[] = {
      AERO_PD_NO_RULE},
     {"wind", AERO_PD_LIST, 3, (t_method)rotor_tilde_wind, 0,
      AERO_PD_RANGE_NOTE(0, AERO_MOVING_WIND_MAX, "m/s", "finite")},
+    {"blade", AERO_PD_SYMBOL, 0, (t_method)rotor_tilde_blade, 0,
+     AERO_PD_NO_RULE},
     {"pose", AERO_PD_LIST, 0, (t_method)rotor_tilde_pose,
      AERO_PD_MESSAGE_ONLY, POSE},
     {"place", AERO_PD_LIST, 0, (t_method)rotor_tilde_pose,
@@ -197,13 +293,19 @@ static void *rotor_tilde_new(t_symbol *s, int argc, t_atom *argv)
                         aero_pd_default_seed()))
         pd_error(x, OBJ ": out of memory for the delay lines: silent");
     aero_pd_pose_clock_init(&x->x_clock);
+    x->x_poll = clock_new(x, (t_method)rotor_tilde_poll);
+    x->x_creating = 1;
     aero_pd_parse_flags(&x->x_base, argc, argv);
+    x->x_creating = 0;
     aero_pd_base_outlets(&x->x_base);
     return x;
 }
 
 static void rotor_tilde_free(t_rotor_tilde *x)
 {
+    clock_free(x->x_poll);
+    if (x->x_job) /* the worker frees the load when it is done */
+        aero_load_job_abandon(x->x_job, free);
     aero_pd_base_free(&x->x_base);
     aero_rotor_free(&x->x_core);
 }

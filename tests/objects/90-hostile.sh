@@ -401,6 +401,13 @@ PYEOF
     echo "branch 2 0 0 0 1 0 1 2 0.02 0.02"
     echo "leaf 2 0 0.5 1.5 0 0.6 1.5 0.05 0.03"
 } >"$HOSTILE/T1.tree"
+# blade tables ([rotor~] blade): r/R falling, a NaN, a chord of 1e9 m,
+# one over 64 KiB, binary data
+printf '0.5 0.1 10\n0.2 0.1 10\n' >"$HOSTILE/falling.blade"
+printf '0.2 0.1 10\n0.5 nan 10\n' >"$HOSTILE/nan.blade"
+printf '0.2 1e9 10\n0.5 0.1 10\n' >"$HOSTILE/absurd.blade"
+python3 -c "import sys; sys.stdout.write('# padding\\n' * 8000)" >"$HOSTILE/big.blade"
+head -c 3000 /dev/urandom >"$HOSTILE/garbage.blade"
 rm -rf "$HOSTILE/folder.wav" && mkdir -p "$HOSTILE/folder.wav"
 head -c 1000 textures/cylinder.wav >"$HOSTILE/cut.wav"
 # metadata that contradicts itself, same length as the shipped values
@@ -435,6 +442,13 @@ fieldsound~ | fieldsound~ -demo 8 -sync | ; aero-obj log 5 | log 5 out of range 
 fieldsound~ | fieldsound~ -demo 8 -sync | ; aero-obj velocity 7 | velocity 7 out of range (0..1 | -
 fieldsound~ | fieldsound~ -demo 8 -sync | ; aero-obj speed 1e-30 | speed 1e-30 frames/s out of range (0.001.. | -
 rotor~ | rotor~ | ; aero-obj blades 0 | blades 0 out of range (1..16 | -
+rotor~ | rotor~ -blade $H/falling.blade | | does not rise from 0.5: the previous blade stays | -
+rotor~ | rotor~ -blade $H/nan.blade | | line 2: not three finite numbers | -
+rotor~ | rotor~ -blade $H/big.blade | | larger than 65536 bytes | -
+rotor~ | rotor~ -blade $H/garbage.blade | | blade: | -
+rotor~ | rotor~ | ; aero-obj blade $H/absurd.blade | chord 1e+09 m | -
+rotor~ | rotor~ | ; aero-obj blade nosuchfile | can't find 'nosuchfile' | -
+rotor~ | rotor~ -radius 47 -blades 3 -blade turbine | ; aero-speed 16 | !blade: | -
 rotor~ | rotor~ -listener 0 2 0 | ; aero-speed 1e30 | rpm clamped where the blade tips reach Mach 0.9 | -
 rotor~ | rotor~ -listener 0 0 0 | ; aero-speed 6000 | once:listener within 0.24 m of the source: heard as at 0.24 m | - 40
 aeolian~ | aeolian~ -listener 0 0 0 | | once:listener within 0.01 m of the source: heard as at 0.01 m | - 40

@@ -283,47 +283,66 @@ UNIT_TEST(strip_broadband_is_bpm)
 }
 
 /* the depth of the amplitude modulation at the blade passing, dB: the
-   level in 32 phase bins of the blade passing (phase from the rotor's
-   turn, known), averaged over the periods, max over min */
+   energy in 32 phase bins of the blade passing (phase from the rotor's
+   turn, known), summed over the periods, smoothed to its mean and first
+   two harmonics of the blade passing (the max over min of the raw bins
+   would add the noise's own scatter, some 2.5 dB over a few seconds of
+   broadband), max over min */
 static double am_depth(const float *x, int n, double bpf, double t0)
 {
     enum { BINS = 32 };
-    double e[BINS] = {0}, mx = 0.0, mn = 1e300;
+    double e[BINS] = {0}, c[3] = {0}, s[3] = {0}, mx = 0.0, mn = 1e300;
     for (int i = 0; i < n; i++) {
         double ph = fmod((t0 + i / SR) * bpf, 1.0);
         e[(int)(ph * BINS) % BINS] += (double)x[i] * x[i];
     }
-    for (int b = 0; b < BINS; b++) {
-        mx = fmax(mx, e[b]);
-        mn = fmin(mn, e[b]);
+    for (int k = 0; k < 3; k++)
+        for (int b = 0; b < BINS; b++) {
+            c[k] += e[b] * cos(2.0 * PI * k * (b + 0.5) / BINS) / BINS;
+            s[k] += e[b] * sin(2.0 * PI * k * (b + 0.5) / BINS) / BINS;
+        }
+    for (int j = 0; j < 360; j++) {
+        double ph = 2.0 * PI * j / 360.0, v = c[0];
+        for (int k = 1; k < 3; k++)
+            v += 2.0 * (c[k] * cos(k * ph) + s[k] * sin(k * ph));
+        mx = fmax(mx, v);
+        mn = fmin(mn, v);
     }
-    return 10.0 * log10(mx / mn);
+    return mn > 0.0 ? 10.0 * log10(mx / mn) : 99.0;
 }
 
 /* a wind turbine of the size Oerlemans and Schepers (2009) predicted and
- * measured (a 94 m rotor of three blades at 16 rpm on a 100 m tower,
- * about 300 kN of thrust, in an 8 m/s wind), heard on the ground 200 m from the tower: the
- * swish, an amplitude modulation of the broadband at the blade passing
- * (0.8 Hz), is their conclusion's: there from the trailing edge's
- * directivity and convective amplification, deeper for a listener
- * crosswind (beside the rotor's plane) than upwind or downwind (on its
- * axis). Only that order is judged: the paper's figures of depth were
- * not at hand, and the depth rendered crosswind (about 20 dB, printed) is
- * far deeper than the few dB turbines are reported to swish: there the
- * listener is near the plane of the chords, where the report's D_h of
- * each strip vanishes (the blades' twist and a real tip are not in it) */
+ * measured (the GE 2.3 MW prototype of Oerlemans et al. 2007: a 94 m
+ * rotor of three blades on a 100 m tower; here 16 rpm, 300 kN of thrust,
+ * in an 8 m/s wind), heard on the ground 200 m from the tower at angles
+ * from straight downwind to straight upwind. The swish, an amplitude
+ * modulation of the broadband at the blade passing (0.8 Hz), is their
+ * conclusion's: from the trailing edge's directivity and convective
+ * amplification, so that it is deepest crosswind (beside the rotor's
+ * plane), where the average level is lowest, and shallowest upwind and
+ * downwind (on the axis). That angular variation is what is judged:
+ * the depth grows from downwind to crosswind and falls again to upwind,
+ * and the level falls towards crosswind. The paper's figures of depth
+ * were not at hand: the depths are printed, not judged against them
+ * (with the report's D_h, which vanishes across each chord's plane, the
+ * depth crosswind was 20-30 dB, far deeper than the few dB turbines are
+ * reported to swish; see rotor.c's ear_envelope) */
 UNIT_TEST(turbine_swish)
 {
     const double rpm = 16.0, bpf = 3 * rpm / 60.0;
-    const int N = 10 * 48000, skip = 48000;
+    const int N = 5 * 48000, skip = 48000;
     float *out = malloc(sizeof(float) * (N + skip));
-    /* the hub 100 m up, the axis (thrust on the air: downwind) along +x */
+    /* the hub 100 m up, the axis (the thrust on the rotor: downwind)
+       along +x, the wind along +x */
     double pos[3] = {0.0, 0.0, 100.0}, q[4] = {cos(PI / 4), 0.0,
                                                 sin(PI / 4), 0.0};
-    const double where[2][3] = {{0.0, 200.0, 1.5}, {200.0, 0.0, 1.5}};
-    double depth[2];
-    for (int w = 0; w < 2; w++) {
+    enum { W = 5 };
+    const double deg[W] = {0.0, 45.0, 75.0, 90.0, 180.0};
+    double depth[W], level[W];
+    for (int w = 0; w < W; w++) {
         aero_rotor r;
+        const double a = deg[w] * PI / 180.0;
+        const double where[3] = {200.0 * cos(a), 200.0 * sin(a), 1.5};
         aero_rotor_init(&r, SR, 1, 3u);
         aero_rotor_set_ramp_ms(&r, 0.0);
         aero_rotor_set_blades(&r, 3);
@@ -335,21 +354,136 @@ UNIT_TEST(turbine_swish)
         aero_rotor_set_design(&r, rpm);
         aero_rotor_set_pose_at(&r, pos, q, -1.0, 0);
         aero_rotor_set_wind(&r, (const double[3]){8.0, 0.0, 0.0});
-        aero_ears e = aero_ears_at(where[w][0], where[w][1], where[w][2]);
+        aero_ears e = aero_ears_at(where[0], where[1], where[2]);
         aero_rotor_set_ears(&r, &e);
         render(&r, out, N + skip, rpm);
         /* the phase of the blade passing heard: the sound left the hub
            r/c0 earlier */
-        double d = sqrt(where[w][0] * where[w][0] +
-                        where[w][1] * where[w][1] +
-                        (100.0 - where[w][2]) * (100.0 - where[w][2]));
+        double d = sqrt(200.0 * 200.0 + (100.0 - where[2]) *
+                                            (100.0 - where[2]));
         depth[w] = am_depth(out + skip, N, bpf, skip / SR - d / 343.0);
+        level[w] = 20.0 * log10(unit_rms(out + skip, N) / 2e-5);
+        printf("    ..    %3.0f degrees from downwind: swish %5.2f dB, "
+               "level %5.1f dB\n", deg[w], depth[w], level[w]);
         aero_rotor_free(&r);
     }
-    UNIT_CHECK(depth[0] > depth[1] + 1.0 && depth[0] > 1.0,
-               "swish depth crosswind %.2f dB, downwind %.2f dB: deeper "
-               "crosswind (Oerlemans and Schepers 2009)", depth[0],
-               depth[1]);
+    UNIT_CHECK(depth[0] < depth[1] && depth[1] < depth[2] &&
+                   depth[2] < depth[3] && depth[4] < depth[2],
+               "swish deepest crosswind: %.2f %.2f %.2f %.2f dB from "
+               "downwind to crosswind, %.2f dB upwind (Oerlemans and "
+               "Schepers 2009)", depth[0], depth[1], depth[2], depth[3],
+               depth[4]);
+    UNIT_CHECK(level[3] < level[0] && level[3] < level[4] &&
+                   level[2] < level[1],
+               "level lowest crosswind: %.1f dB downwind, %.1f crosswind, "
+               "%.1f upwind (Oerlemans and Schepers 2009)", level[0],
+               level[3], level[4]);
+    free(out);
+}
+
+/* a blade's chord and twist per radius from a small text file: the
+   shipped tables read; bad tables refused with the line, the old kept;
+   the strips take the table's chord, which the sound follows */
+UNIT_TEST(blade_table)
+{
+    aero_rotor_blade b;
+    char err[200];
+    static const char *bad[] = {
+        "0.2 0.1 10\n0.1 0.1 10\n",            /* r/R falling */
+        "0.2 0.1 10\n0.2 0.1 10\n",            /* not rising */
+        "0.2 nan 10\n0.5 0.1 10\n",            /* NaN */
+        "0.2 0.1 inf\n0.5 0.1 10\n",           /* Inf */
+        "0.2 1e9 10\n0.5 0.1 10\n",            /* an absurd chord */
+        "0.2 0.1 500\n0.5 0.1 10\n",           /* an absurd twist */
+        "1.5 0.1 10\n0.5 0.1 10\n",            /* r/R beyond the tip */
+        "0.2 0.1 10\n",                        /* one row */
+        "0.2 0.1 10 4\n0.5 0.1 10\n",          /* four numbers */
+        "0.2 0.1\n0.5 0.1 10\n",               /* two */
+        "0.2 0.1 ten\n0.5 0.1 10\n",           /* a word */
+        "",                                    /* nothing */
+    };
+    int refused = 0;
+    for (size_t i = 0; i < sizeof(bad) / sizeof(bad[0]); i++)
+        refused += aero_rotor_blade_parse(bad[i], &b, err, sizeof(err)) != 0
+                   && err[0];
+    UNIT_CHECK(refused == (int)(sizeof(bad) / sizeof(bad[0])),
+               "%d of %d bad tables refused, each with why", refused,
+               (int)(sizeof(bad) / sizeof(bad[0])));
+    /* too many rows */
+    char *many = malloc(80 * 32), *p = many;
+    for (int i = 0; i < 80; i++)
+        p += sprintf(p, "%g 0.1 5\n", 0.01 * (i + 1));
+    UNIT_CHECK(aero_rotor_blade_parse(many, &b, err, sizeof(err)) != 0,
+               "80 rows refused: %s", err);
+    free(many);
+    UNIT_CHECK(aero_rotor_blade_parse("# c\n\n0.2 0.1 10 # root\n"
+                                      " 1 0.05 2\r\n", &b, err,
+                                      sizeof(err)) == 0 && b.n == 2 &&
+                   b.chord[1] == 0.05,
+               "comments, blank lines and CRLF: 2 rows (%s)", err);
+    /* the shipped tables */
+    static const char *shipped[] = {"abstractions/turbine.blade",
+                                    "abstractions/propeller.blade"};
+    for (int i = 0; i < 2; i++) {
+        int k = aero_rotor_blade_load(shipped[i], &b, err, sizeof(err));
+        UNIT_CHECK(k == 0 && b.n >= 2, "%s read: %d rows (%s)", shipped[i],
+                   b.n, err);
+    }
+    UNIT_CHECK(aero_rotor_blade_load("/nonexistent/x.blade", &b, err,
+                                     sizeof(err)) != 0,
+               "a missing file refused: %s", err);
+    /* a file too big, and one not text */
+    char path[] = "/tmp/aero-blade-XXXXXX";
+    int fd = mkstemp(path);
+    if (fd >= 0) {
+        FILE *f = fdopen(fd, "wb");
+        for (int i = 0; i < AERO_ROTOR_BLADE_FILE_MAX / 8 + 8; i++)
+            fputs("# pad..\n", f);
+        fclose(f);
+        UNIT_CHECK(aero_rotor_blade_load(path, &b, err, sizeof(err)) != 0,
+                   "a file over %d bytes refused: %s",
+                   AERO_ROTOR_BLADE_FILE_MAX, err);
+        f = fopen(path, "wb");
+        fwrite("0.2 0.1 10\n\0\0\0", 1, 14, f);
+        fclose(f);
+        UNIT_CHECK(aero_rotor_blade_load(path, &b, err, sizeof(err)) != 0,
+                   "binary data refused: %s", err);
+        remove(path);
+    }
+    /* the strips take the table; a bad one keeps it */
+    aero_rotor r;
+    float *out = malloc(sizeof(float) * 48000);
+    aero_rotor_init(&r, SR, 1, 9u);
+    aero_rotor_set_radius(&r, 0.95);
+    aero_rotor_set_thrust(&r, 2000.0);
+    aero_rotor_set_torque(&r, 400.0);
+    aero_rotor_set_design(&r, 2400.0);
+    aero_rotor_set_pose_at(&r, (const double[3]){0.0, 0.0, 0.0},
+                           (const double[4]){1.0, 0.0, 0.0, 0.0}, -1.0, 0);
+    aero_ears e = aero_ears_at(20.0, 0.0, 5.0);
+    aero_rotor_set_ears(&r, &e);
+    render(&r, out, 48000, 2400.0);
+    double before = unit_rms(out + 24000, 24000);
+    aero_rotor_blade_load("abstractions/propeller.blade", &b, err,
+                          sizeof(err));
+    int set = aero_rotor_set_blade(&r, &b);
+    /* strip 4 of 8 from the hub at 0.2 R: r/R 0.65, the table's chord
+       there halfway between 0.12 and 0.11 m */
+    double c_mid = r.strip[r.strips / 2].chord;
+    aero_rotor_blade worse = b;
+    worse.r[1] = worse.r[0];
+    int kept = aero_rotor_set_blade(&r, &worse) != 0 && r.has_blade &&
+               r.strip[r.strips / 2].chord == c_mid;
+    render(&r, out, 48000, 2400.0);
+    double after = unit_rms(out + 24000, 24000);
+    UNIT_CHECK(set == 0 && fabs(c_mid - 0.115) < 1e-9 && kept,
+               "the propeller's table: mid strip (r/R %.2f) chord %.3f m "
+               "(the table's 0.115), a bad table refused and the old kept",
+               r.strip[r.strips / 2].r / 0.95, c_mid);
+    UNIT_CHECK(isfinite(after) && fabs(20.0 * log10(after / before)) > 0.1,
+               "the sound follows the blade: %.4f Pa rms with the uniform "
+               "0.02 m chord, %.4f Pa with the table's", before, after);
+    aero_rotor_free(&r);
     free(out);
 }
 
@@ -432,5 +566,6 @@ UNIT_TEST(multi_instance)
 
 UNIT_MAIN(UNIT_CASE(gutin_static_propeller), UNIT_CASE(silent_on_axis),
           UNIT_CASE(strip_broadband_is_bpm), UNIT_CASE(turbine_swish),
-          UNIT_CASE(flyby_doppler), UNIT_CASE(bad_input),
+          UNIT_CASE(flyby_doppler), UNIT_CASE(blade_table),
+          UNIT_CASE(bad_input),
           UNIT_CASE(multi_instance))

@@ -3,6 +3,8 @@
 #include "rotor.h"
 
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "aero_air.h"
@@ -23,6 +25,28 @@ static void noise_bank(aero_rotor *r);
    at Gutin's (1936) effective radius 0.8 R. Thrust and drag per strip ~
    r^2 dr (the local dynamic pressure), summing to the rotor's thrust and
    torque over the B blades. */
+/* the blade table at r/R = x: its chord (m) and twist (rad), linear
+   between rows, held beyond the ends */
+static void blade_at(const aero_rotor_blade *b, double x, double *chord,
+                     double *twist)
+{
+    int i = 0;
+    double f = 0.0;
+    if (x <= b->r[0])
+        i = 0;
+    else if (x >= b->r[b->n - 1]) {
+        i = b->n - 2;
+        f = 1.0;
+    } else {
+        while (i < b->n - 2 && x > b->r[i + 1])
+            i++;
+        f = (x - b->r[i]) / (b->r[i + 1] - b->r[i]);
+    }
+    *chord = b->chord[i] + f * (b->chord[i + 1] - b->chord[i]);
+    *twist = (b->twist[i] + f * (b->twist[i + 1] - b->twist[i])) * AERO_PI /
+             180.0;
+}
+
 static void layout(aero_rotor *r)
 {
     const int N = r->strips, B = r->blades;
@@ -34,20 +58,180 @@ static void layout(aero_rotor *r)
         double rs = N == 1 ? 0.8 * R : R * (h + (1.0 - h) * (s + 0.5) / N);
         r->strip[s].r = rs;
         r->strip[s].thrust = rs * rs; /* weights for now */
+        r->strip[s].chord = r->chord;
+        r->strip[s].twist = 0.0;
+        if (r->has_blade)
+            blade_at(&r->blade, rs / R, &r->strip[s].chord,
+                     &r->strip[s].twist);
         w_sum += rs * rs;
     }
     for (int s = 0; s < N; s++) {
-        double w = r->strip[s].thrust / w_sum;
+        double w = r->strip[s].thrust / w_sum, c = r->strip[s].chord;
         r->strip[s].thrust = r->thrust * w / B;
         q_arm += w * r->strip[s].r;
-        r->strip[s].volume = SECTION_AREA * r->thickness * r->chord *
-                             r->chord * (N == 1 ? R * (1.0 - h) : dr);
+        r->strip[s].volume = SECTION_AREA * r->thickness * c * c *
+                             (N == 1 ? R * (1.0 - h) : dr);
     }
     /* the drag follows the same r^2 weights: D_s = Q w_s / (B sum w r) */
     for (int s = 0; s < N; s++) {
         double w = r->strip[s].r * r->strip[s].r / w_sum;
         r->strip[s].drag = r->torque * w / (B * q_arm);
     }
+}
+
+/* --- the blade's table ------------------------------------------------------ */
+
+static int blade_check(const aero_rotor_blade *b, char *err, size_t errlen)
+{
+    if (b->n < 2 || b->n > AERO_ROTOR_BLADE_ROWS_MAX) {
+        snprintf(err, errlen, "%d rows (a blade takes 2..%d)", b->n,
+                 AERO_ROTOR_BLADE_ROWS_MAX);
+        return -1;
+    }
+    for (int i = 0; i < b->n; i++) {
+        if (!(b->r[i] >= 0.0 && b->r[i] <= 1.0) ||
+            !(b->chord[i] >= AERO_ROTOR_CHORD_MIN &&
+              b->chord[i] <= AERO_ROTOR_CHORD_MAX) ||
+            !(fabs(b->twist[i]) <= AERO_ROTOR_TWIST_MAX)) {
+            snprintf(err, errlen, "row %d: r/R %g, chord %g m, twist %g "
+                     "deg out of range (0..1, %g..%g m, -%g..%g deg)", i + 1,
+                     b->r[i], b->chord[i], b->twist[i], AERO_ROTOR_CHORD_MIN,
+                     AERO_ROTOR_CHORD_MAX, AERO_ROTOR_TWIST_MAX,
+                     AERO_ROTOR_TWIST_MAX);
+            return -1;
+        }
+        if (i > 0 && !(b->r[i] > b->r[i - 1])) {
+            snprintf(err, errlen, "row %d: r/R %g does not rise from %g",
+                     i + 1, b->r[i], b->r[i - 1]);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+int aero_rotor_set_blade(aero_rotor *r, const aero_rotor_blade *b)
+{
+    char err[160];
+    if (!b) {
+        r->has_blade = 0;
+        layout(r);
+        return 0;
+    }
+    if (blade_check(b, err, sizeof(err)))
+        return -1;
+    r->blade = *b;
+    r->has_blade = 1;
+    layout(r);
+    return 0;
+}
+
+int aero_rotor_blade_parse(const char *text, aero_rotor_blade *b, char *err,
+                           size_t errlen)
+{
+    int line = 0;
+    memset(b, 0, sizeof(*b));
+    if (errlen)
+        err[0] = 0;
+    for (const char *p = text; *p;) {
+        const char *end = strchr(p, '\n');
+        size_t len = end ? (size_t)(end - p) : strlen(p);
+        char buf[256], *c, *q;
+        double v[3];
+        int k = 0;
+        line++;
+        if (len >= sizeof(buf)) {
+            snprintf(err, errlen, "line %d: longer than %d characters", line,
+                     (int)sizeof(buf) - 1);
+            return -1;
+        }
+        memcpy(buf, p, len);
+        buf[len] = 0;
+        p += len + (end ? 1 : 0);
+        if ((c = strchr(buf, '#')))
+            *c = 0;
+        for (c = buf; k <= 3;) {
+            while (*c == ' ' || *c == '\t' || *c == '\r')
+                c++;
+            if (!*c)
+                break;
+            if (k == 3) {
+                k = 4; /* a fourth field */
+                break;
+            }
+            v[k] = strtod(c, &q);
+            if (q == c || (*q && *q != ' ' && *q != '\t' && *q != '\r') ||
+                !aero_is_finite(v[k])) {
+                k = -1;
+                break;
+            }
+            k++;
+            c = q;
+        }
+        if (k == 0)
+            continue; /* blank or a comment */
+        if (k != 3) {
+            snprintf(err, errlen, "line %d: not three finite numbers "
+                     "(r/R chord twist_deg)", line);
+            return -1;
+        }
+        if (b->n >= AERO_ROTOR_BLADE_ROWS_MAX) {
+            snprintf(err, errlen, "line %d: more than %d rows", line,
+                     AERO_ROTOR_BLADE_ROWS_MAX);
+            return -1;
+        }
+        b->r[b->n] = v[0];
+        b->chord[b->n] = v[1];
+        b->twist[b->n] = v[2];
+        b->n++;
+        if (b->n >= 2 && blade_check(b, err, errlen)) {
+            char why[160];
+            snprintf(why, sizeof(why), "%s", err);
+            snprintf(err, errlen, "line %d: %s", line, why);
+            return -1;
+        }
+    }
+    if (blade_check(b, err, errlen))
+        return -1;
+    if (errlen)
+        err[0] = 0;
+    return 0;
+}
+
+int aero_rotor_blade_load(const char *path, aero_rotor_blade *b, char *err,
+                          size_t errlen)
+{
+    FILE *f = fopen(path, "rb");
+    char *text;
+    size_t n;
+    memset(b, 0, sizeof(*b));
+    if (!f) {
+        snprintf(err, errlen, "can't open %s", path);
+        return -1;
+    }
+    text = malloc(AERO_ROTOR_BLADE_FILE_MAX + 1);
+    if (!text) {
+        fclose(f);
+        snprintf(err, errlen, "out of memory reading %s", path);
+        return -1;
+    }
+    n = fread(text, 1, AERO_ROTOR_BLADE_FILE_MAX + 1, f);
+    fclose(f);
+    if (n > AERO_ROTOR_BLADE_FILE_MAX) {
+        free(text);
+        snprintf(err, errlen, "%s is larger than %d bytes: not a blade "
+                 "table", path, AERO_ROTOR_BLADE_FILE_MAX);
+        return -1;
+    }
+    text[n] = 0;
+    if (memchr(text, 0, n)) {
+        free(text);
+        snprintf(err, errlen, "%s is not text (a blade table is lines of "
+                 "r/R chord twist_deg)", path);
+        return -1;
+    }
+    int k = aero_rotor_blade_parse(text, b, err, errlen);
+    free(text);
+    return k;
 }
 
 /* --- life cycle ------------------------------------------------------------ */
@@ -517,9 +701,9 @@ static double strip_span(const aero_rotor *r)
 static void strip_airfoil(const aero_rotor *r, int q, aero_airfoil *a)
 {
     memset(a, 0, sizeof(*a));
-    a->chord = (float)r->chord;
+    a->chord = (float)r->strip[q].chord;
     a->span = (float)strip_span(r);
-    a->te_thickness = (float)(0.005 * r->chord);
+    a->te_thickness = (float)(0.005 * r->strip[q].chord);
     a->te_angle_deg = 14.0f;
     a->tripped = 1;
     a->tip = q == r->strips - 1 ? AERO_AIRFOIL_TIP_ROUNDED
@@ -549,7 +733,7 @@ static void noise_spectrum_make(aero_rotor *r, double w, double u)
            airfoil C_L = 2 pi alpha */
         double cl = U > 1e-3 ? fabs(load * load * sp->thrust) /
                                    (0.5 * AERO_RHO * U * U * strip_span(r)
-                                    * r->chord)
+                                    * sp->chord)
                              : 0.0;
         double alpha = cl / TWO_PI * 180.0 / AERO_PI;
         aero_airfoil_flow f = {(float)U, (float)(alpha < 25.0 ? alpha : 25.0),
@@ -558,6 +742,7 @@ static void noise_spectrum_make(aero_rotor *r, double w, double u)
         a.tip_alpha_deg = f.alpha_deg;
         z->power[q] = 0.0;
         z->mach[q] = U / AERO_C0;
+        z->alpha[q] = f.alpha_deg * AERO_PI / 180.0;
         if (U < 0.1 ||
             aero_airfoil_noise_spectrum(&a, &f, &o, hz, T, spl) != 0)
             continue;
@@ -614,6 +799,7 @@ static void noise_spectrum(aero_rotor *r, double w, double u)
             memcpy(z->gain, z->cache_gain[i], sizeof(z->gain));
             memcpy(z->power, z->cache_power[i], sizeof(z->power));
             memcpy(z->mach, z->cache_mach[i], sizeof(z->mach));
+            memcpy(z->alpha, z->cache_alpha[i], sizeof(z->alpha));
             return;
         }
     noise_spectrum_make(r, w * f, u * f);
@@ -625,18 +811,56 @@ static void noise_spectrum(aero_rotor *r, double w, double u)
     memcpy(z->cache_gain[i], z->gain, sizeof(z->gain));
     memcpy(z->cache_power[i], z->power, sizeof(z->power));
     memcpy(z->cache_mach[i], z->mach, sizeof(z->mach));
+    memcpy(z->cache_alpha[i], z->alpha, sizeof(z->alpha));
+}
+
+/* the axial flow through the disc (along the thrust axis, m/s): the wind
+ * along the axis u plus the induced velocity w of momentum theory,
+ * -T = 2 rho A w |u + w| (T the thrust on the rotor along the axis at this
+ * speed, so -T on the air; Glauert 1935). A rotor taking energy from the
+ * wind (a turbine: T along u) slows it by a = -w/u up to momentum
+ * theory's limit 1/2 (beyond it the wake is turbulent and the theory does
+ * not hold); a propeller or fan adds to it (in hover w = sqrt(T/(2 rho
+ * A))). */
+static double disc_flow(const aero_rotor *r, double omega, double u)
+{
+    const double load = (fabs(omega) * 60.0 / TWO_PI) / r->design_rpm;
+    const double T = r->thrust * load * load;
+    const double k = -T / (2.0 * AERO_RHO * AERO_PI * r->radius * r->radius);
+    if (k * u < 0.0) { /* slowing the wind: w = -a u */
+        double ct = -4.0 * k / (u * u); /* C_T = T / (rho A u^2 / 2) */
+        double a = ct < 1.0 ? 0.5 * (1.0 - sqrt(1.0 - ct)) : 0.5;
+        return u * (1.0 - a);
+    }
+    /* adding to it: w |u + w| = k with u + w of k's sign */
+    double w = k >= 0.0 ? 0.5 * (-u + sqrt(u * u + 4.0 * k))
+                        : 0.5 * (-u - sqrt(u * u - 4.0 * k));
+    return u + w;
 }
 
 /* the broadband's envelope at an ear over one blade passing: the
- * strips' self-noise powers heard through Brooks et al.'s (1989)
- * high-frequency directivity D_h (a half-plane's trailing edge, with the
- * convective amplification of the strip's Mach number: loudest towards
- * the blade's leading edge as it comes) and 1/r^2, summed over blades and
+ * strips' self-noise powers heard through a half-plane trailing edge's
+ * directivity (Ffowcs Williams and Hall 1970) with the convective
+ * amplification of Brooks et al.'s (1989) D_h (loudest towards the
+ * blade's leading edge as it comes) and 1/r^2, summed over blades and
  * strips (incoherent), at AERO_ROTOR_AZIMUTHS rotor positions; env: the
- * amplitude's mean, then its cos and sin harmonics of B Psi. Each strip's
- * chord lies along the air's flow past it (its motion and the inflow u
- * along the axis: a turbine's blades are pitched into the wind), its
- * normal = span x chord */
+ * amplitude's mean, then its cos and sin harmonics of B Psi. The report's
+ * D_h = 2 sin^2(Theta/2) sin^2(Phi), Theta from the chord and Phi the
+ * angle of the ear's projection across the span from it, vanishes across
+ * the whole plane of the chord, where a listener beside a turbine's disc
+ * nearly always is (a swish of 20-30 dB); the half-plane's own solution
+ * vanishes only on the wake's side of it, and equals D_h at mid-span.
+ * Each strip's chord is set as a blade's twist sets it: at its angle of
+ * attack alpha (the one that carries its thrust) from the air's flow past
+ * it, that flow its motion Omega r and the axial flow through the disc
+ * u_d (disc_flow: the wind less a turbine's induction, or plus a
+ * propeller's), at the local flow angle phi = atan(u_d / (Omega r)); the
+ * chord turned from the flow away from the lift (a turbine's chord at
+ * phi - alpha from the disc, a propeller's at phi + alpha); with a blade
+ * table, at the table's twist from the disc instead. Each strip is
+ * heard when its sound arrives: at the azimuth it had (d_s - d_hub)/c0
+ * before the hub's sound (its retarded time), one fixed-point step
+ * (Omega R / c0 < 1). */
 /* ear_envelope's table of cos (2 pi k / 8) holds for 8 azimuths */
 typedef char aero_rotor_azimuths_are_8[AERO_ROTOR_AZIMUTHS == 8 ? 1 : -1];
 
@@ -646,7 +870,7 @@ static void ear_envelope(const aero_rotor *r, double omega, double u,
     enum { NA = AERO_ROTOR_AZIMUTHS };
     const aero_rotor_noise *z = &r->noise;
     const int B = r->blades;
-    const double sense = omega < 0.0 ? -1.0 : 1.0;
+    const double sense = omega < 0.0 ? -1.0 : 1.0, w = fabs(omega);
     /* cos and sin of multiples of 2 pi / NA (NA = 8) */
     static const double c8[8] = {1.0, 0.70710678118654752, 0.0,
                                  -0.70710678118654752, -1.0,
@@ -654,43 +878,75 @@ static void ear_envelope(const aero_rotor *r, double omega, double u,
                                  0.70710678118654752};
     const double s5 = z->scale * z->scale * z->scale * z->scale * z->scale;
     double a[NA], rel[3], cws[AERO_ROTOR_STRIPS_MAX], aws[AERO_ROTOR_STRIPS_MAX],
-        Ms[AERO_ROTOR_STRIPS_MAX], Ps[AERO_ROTOR_STRIPS_MAX];
+        Ms[AERO_ROTOR_STRIPS_MAX], Ps[AERO_ROTOR_STRIPS_MAX],
+        Rs[AERO_ROTOR_STRIPS_MAX];
+    const int nq = r->strips;
     aero_near seen = {0, 0.0}; /* ear_tones reports it */
     for (int i = 0; i < 3; i++)
         rel[i] = ear[i] - r->pose[i];
     aero_near_field(rel, AERO_ROTOR_NEAR_RADII * r->radius, axes, &seen);
     const double vz = aero_dot3(rel, axes + 6), v2 = aero_dot3(rel, rel);
-    /* each strip's chord downstream: (-Omega r e_t + u a) / |W|, the
-       normal (span x chord) (-Omega r a - u e_t) / |W| */
+    const double vp1 = aero_dot3(rel, axes), vp2 = aero_dot3(rel, axes + 3);
+    const double ud = disc_flow(r, omega, u);
+    const double rdh = v2 > 0.0 ? 1.0 / (sqrt(v2) * AERO_C0) : 0.0;
+    const double lift = r->thrust < 0.0 ? -1.0 : 1.0;
+    /* each strip's chord downstream, in (e_t, axis): the flow's direction
+       (-cos phi, sin phi) turned by alpha away from the lift
+       lift (sin phi, cos phi); the normal (span x chord) follows */
     for (int q = 0; q < r->strips; q++) {
-        double wt = fabs(omega) * r->strip[q].r, W = hypot(wt, u);
-        cws[q] = W > 0.0 ? -wt / W : -1.0;
-        aws[q] = W > 0.0 ? u / W : 0.0;
+        double wt = w * r->strip[q].r, W = hypot(wt, ud);
+        double cf = W > 0.0 ? wt / W : 1.0, sf = W > 0.0 ? ud / W : 0.0;
+        double ca = cos(z->alpha[q]), sa = sin(z->alpha[q]);
+        cws[q] = -ca * cf - sa * lift * sf;
+        aws[q] = ca * sf - sa * lift * cf;
+        if (r->has_blade) { /* the table's twist: the leading edge into
+                               the flow through the disc */
+            double tw = r->strip[q].twist;
+            cws[q] = -cos(tw);
+            aws[q] = (ud < 0.0 ? -1.0 : 1.0) * sin(tw);
+        }
         Ms[q] = z->mach[q] * z->scale;
         Ps[q] = z->power[q] * s5;
+        Rs[q] = r->strip[q].r;
     }
     for (int j = 0; j < NA; j++) {
         double P = 0.0;
         for (int b = 0; b < B; b++) {
             double psi = TWO_PI * ((double)j / (B * NA) + (double)b / B);
-            double cp = cos(psi), sp = sin(psi), er[3], et[3];
-            for (int i = 0; i < 3; i++) {
-                er[i] = cp * axes[i] + sp * axes[3 + i];
-                et[i] = sense * (-sp * axes[i] + cp * axes[3 + i]);
-            }
-            double vt = aero_dot3(rel, et), vr = aero_dot3(rel, er);
-            for (int q = 0; q < r->strips; q++) {
-                double rq = r->strip[q].r, y = vr - rq; /* from the strip */
-                double d2 = v2 - vr * vr + y * y, M = Ms[q];
+            double cp0 = cos(psi), sp0 = sin(psi);
+            /* the ear in the disc's polar frame at psi: along the span
+               and along the motion */
+            double vr0 = cp0 * vp1 + sp0 * vp2;
+            double vt0 = sense * (-sp0 * vp1 + cp0 * vp2);
+            /* branch-free over the strips (it vectorises): a strip at
+               the ear or silent adds 0 */
+            for (int q = 0; q < nq; q++) {
+                const double rq = Rs[q], M = Ms[q];
+                /* the retarded azimuth: turned back by Omega (d - d_hub)/c0
+                   (sense-wise), d - d_hub = -r vr / d_hub in the far
+                   field; cos and sin of that step by series (the step
+                   below 1 rad: its error under 1e-3) */
+                double t = w * rq * vr0 * rdh, t2 = t * t;
+                double ct1 = 1.0 - t2 * (0.5 - t2 / 24.0);
+                double st1 = t * (1.0 - t2 * (1.0 / 6.0 - t2 / 120.0));
+                double vr = ct1 * vr0 + st1 * vt0; /* psi turned by t */
+                double vt = ct1 * vt0 - st1 * vr0;
+                double y = vr - rq; /* from the strip, along the span */
+                double d2 = fmax(v2 - vr * vr + y * y, 1e-6);
                 double vx = cws[q] * vt + aws[q] * vz;
                 double vn = cws[q] * vz - aws[q] * vt;
-                double yz = y * y + vn * vn;
-                if (!(d2 > 1e-6) || !(yz > 0.0) || Ps[q] <= 0.0)
-                    continue;
-                /* D_h / d^2 with sin^2 = vn^2 / yz, in one division */
-                double ct = vx / sqrt(d2), c1 = 1.0 + 0.2 * M * ct;
-                P += Ps[q] * (1.0 - ct) * vn * vn /
-                     ((1.0 + M * ct) * c1 * c1 * d2 * yz);
+                /* the distance off the span's line */
+                double h = sqrt(fmax(vx * vx + vn * vn, 1e-12));
+                /* the half-plane's directivity about its edge (Ffowcs
+                   Williams and Hall 1970): 2 sin^2(theta/2) of the
+                   azimuth theta about the span from the wake, times
+                   sin(psi) of the angle from the span, = (h - vx) / d;
+                   the report's D_h at mid-span. Its convective factors
+                   of the angle from the chord, cos = vx / d */
+                double id = 1.0 / sqrt(d2);
+                double ct = vx * id, c1 = 1.0 + 0.2 * M * ct;
+                P += Ps[q] * (h - vx) * id /
+                     ((1.0 + M * ct) * c1 * c1 * d2);
             }
         }
         a[j] = r->noise_gain * sqrt(P);

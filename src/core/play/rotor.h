@@ -40,6 +40,7 @@
 #ifndef AERO_ROTOR_H
 #define AERO_ROTOR_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "moving_player.h"
@@ -83,9 +84,27 @@
 #define AERO_ROTOR_NOISE_DB_MAX 40.0
 #define AERO_ROTOR_NOISE_DB_DEFAULT 0.0
 
+/* a blade's chord and twist along its radius (a small text file, as
+ * trees are): rows of r/R, chord in m and twist in degrees (the section's
+ * angle from the plane of rotation, its leading edge turned into the flow
+ * through the disc), r/R rising strictly within 0..1, at least 2 rows.
+ * The strips take them interpolated linearly at their radii (held beyond
+ * the first and last rows). */
+#define AERO_ROTOR_BLADE_ROWS_MAX 64
+#define AERO_ROTOR_BLADE_FILE_MAX 65536 /* bytes: larger files are refused */
+#define AERO_ROTOR_TWIST_MAX 90.0       /* deg, either sign */
+typedef struct {
+    int n;
+    double r[AERO_ROTOR_BLADE_ROWS_MAX];     /* r/R */
+    double chord[AERO_ROTOR_BLADE_ROWS_MAX]; /* m */
+    double twist[AERO_ROTOR_BLADE_ROWS_MAX]; /* deg */
+} aero_rotor_blade;
+
 /* one strip's geometry */
 typedef struct {
     double r;      /* radius, m */
+    double chord;  /* m */
+    double twist;  /* rad, from the disc (a blade table's; else unused) */
     double thrust; /* per blade at the design rpm, N */
     double drag;   /* in-plane, per blade at the design rpm, N */
     double volume; /* displaced volume, m^3 */
@@ -143,6 +162,7 @@ typedef struct {
     int bands;                        /* under Nyquist */
     double power[AERO_ROTOR_STRIPS_MAX]; /* Pa^2 at 1 m, D_h = 1, a blade */
     double mach[AERO_ROTOR_STRIPS_MAX];
+    double alpha[AERO_ROTOR_STRIPS_MAX]; /* angle of attack, rad */
     double scale; /* the speed against the grid's: powers as U^5 */
     int layout, step, have; /* the grid step held, whether any */
     /* the spectra made, by grid step (a drone's rotors move among a few) */
@@ -150,6 +170,7 @@ typedef struct {
     float cache_gain[AERO_ROTOR_SPECTRA][AERO_ROTOR_LANES];
     double cache_power[AERO_ROTOR_SPECTRA][AERO_ROTOR_STRIPS_MAX];
     double cache_mach[AERO_ROTOR_SPECTRA][AERO_ROTOR_STRIPS_MAX];
+    double cache_alpha[AERO_ROTOR_SPECTRA][AERO_ROTOR_STRIPS_MAX];
 } aero_rotor_noise;
 
 typedef struct aero_rotor {
@@ -160,6 +181,8 @@ typedef struct aero_rotor {
     double radius, chord, thickness, hub;
     double thrust, torque, design_rpm;
     double noise_gain;   /* linear, of the self-noise */
+    aero_rotor_blade blade; /* chord and twist per radius, when has_blade */
+    int has_blade;
     aero_rotor_strip strip[AERO_ROTOR_STRIPS_MAX];
     int layout;          /* counts the layouts: the sums' key */
     aero_rotor_sums sums[AERO_EARS_MAX];
@@ -214,6 +237,24 @@ int aero_rotor_set_ears(aero_rotor *r, const aero_ears *e);
 int aero_rotor_set_pose_at(aero_rotor *r, const double pos[3],
                            const double quat[4], double interval_s,
                            int offset);
+/* The blade's chord and twist per radius from a table (NULL: the uniform
+ * `chord` again, the twist that of the design's angle of attack). A table
+ * with fewer than 2 rows, r/R not rising strictly within 0..1, a chord
+ * outside AERO_ROTOR_CHORD_MIN..MAX or a twist beyond
+ * AERO_ROTOR_TWIST_MAX is refused: -1, the old kept. */
+int aero_rotor_set_blade(aero_rotor *r, const aero_rotor_blade *b);
+/* A blade table from text: lines of three numbers r/R chord twist_deg;
+ * '#' starts a comment; blank lines are skipped. 0, or -1 with the first
+ * problem (its line) in err: a line that is not three finite numbers,
+ * values out of range (as aero_rotor_set_blade), r/R not rising, more
+ * than AERO_ROTOR_BLADE_ROWS_MAX rows, fewer than 2. */
+int aero_rotor_blade_parse(const char *text, aero_rotor_blade *b, char *err,
+                           size_t errlen);
+/* the same from a file of at most AERO_ROTOR_BLADE_FILE_MAX bytes (larger,
+   unreadable or not text: -1 with why in err) */
+int aero_rotor_blade_load(const char *path, aero_rotor_blade *b, char *err,
+                          size_t errlen);
+
 /* a rotation vector (axis times angle in degrees) as a unit quaternion */
 static inline void aero_rotor_quaternion_from_rotvec(const double r[3],
                                                      double q[4])

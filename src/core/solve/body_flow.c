@@ -169,34 +169,36 @@ static int sample_cell(const aero_body_flow_params *p, const turn *r,
 /* frontal area: the columns along the flow that meet the body, each by
    its most solid cell */
 static double frontal_area(const aero_body_flow_params *p, const layout *L,
-                           const cell_range *c, const float *chi)
+                           const float *shadow)
 {
     const double h = p->cell;
     double area = 0.0;
     for (int j = 0; j < L->ny; j++)
-        for (int i = 0; i < L->nx; i++) {
-            float m = 0.0f;
-            for (int k = c->lo[2]; k < c->hi[2]; k++) {
-                float v = chi[((size_t)k * L->ny + j) * L->nx + i];
-                if (v > m) m = v;
-            }
-            area += m * h * h;
-        }
+        for (int i = 0; i < L->nx; i++)
+            area += shadow[(size_t)j * L->nx + i] * h * h;
     return area;
 }
 
-/* solid fraction and region of every cell (by its solid samples'
-   centroid), region centroids and volume, frontal area */
-static void voxelise(const aero_body_flow_params *p, const turn *r,
-                     const layout *L, float *chi, int *region,
-                     aero_body_flow_stats *st)
+/* solid fraction and region of the cells of layers kb .. kt-1 (all of
+   them for one process; a window's for aerotex-mpi's slabs), by the solid
+   samples' centroid, into chi and region from layer kb; the region
+   centroids, volume and frontal area of the whole body (every cell
+   sampled, so the same on every rank); 0, or -1 out of memory */
+static int voxelise(const aero_body_flow_params *p, const turn *r,
+                    const layout *L, int kb, int kt, float *chi, int *region,
+                    aero_body_flow_stats *st)
 {
     const double h = p->cell;
     const int nr = p->regions;
     double wsum[AERO_BODY_MAX_REGIONS] = {0};
     double csum[3 * AERO_BODY_MAX_REGIONS] = {0};
     const cell_range c = cells_near_body(p, L);
-    for (long q = 0; q < (long)L->nx * L->ny * L->nz; q++) {
+    const size_t pl = (size_t)L->nx * L->ny;
+    /* the largest solid fraction along the flow of each column */
+    float *shadow = calloc(pl, sizeof(float));
+    if (!shadow)
+        return -1;
+    for (size_t q = 0; q < pl * (size_t)(kt - kb); q++) {
         chi[q] = 0.0f;
         region[q] = -1;
     }
@@ -207,13 +209,17 @@ static void voxelise(const aero_body_flow_params *p, const turn *r,
                 double acc[3] = {0, 0, 0};
                 const int inside = sample_cell(p, r, L, i, j, k, acc);
                 if (inside) {
-                    size_t at = ((size_t)k * L->ny + j) * L->nx + i;
+                    size_t at = ((size_t)(k - kb) * L->ny + j) * L->nx + i;
                     double f = (double)inside / (SUB * SUB * SUB);
                     double m[3] = {acc[0] / inside, acc[1] / inside,
                                    acc[2] / inside};
                     int rg = aero_body_region(p->body, m, nr);
-                    chi[at] = (float)f;
-                    region[at] = rg;
+                    if (k >= kb && k < kt) {
+                        chi[at] = (float)f;
+                        region[at] = rg;
+                    }
+                    if ((float)f > shadow[(size_t)j * L->nx + i])
+                        shadow[(size_t)j * L->nx + i] = (float)f;
                     wsum[rg] += f;
                     for (int a = 0; a < 3; a++)
                         csum[3 * rg + a] += f * m[a];
@@ -224,7 +230,9 @@ static void voxelise(const aero_body_flow_params *p, const turn *r,
         for (int a = 0; a < 3; a++)
             st->centre[3 * l + a] = wsum[l] > 0.0 ? csum[3 * l + a] / wsum[l]
                                                   : L->centre_body[a];
-    st->frontal_area = frontal_area(p, L, &c, chi);
+    st->frontal_area = frontal_area(p, L, shadow);
+    free(shadow);
+    return 0;
 }
 
 static double step_of(const aero_body_flow_params *p)
@@ -354,7 +362,8 @@ typedef struct {
 /* the cells' and the recording's arrays: 0 or -1 */
 static int alloc_run(body_run *b, char *err, size_t errlen)
 {
-    const size_t cells = (size_t)b->L.nx * b->L.ny * b->L.nz;
+    /* the solver's layers (a window's, or the whole grid's) */
+    const size_t cells = (size_t)b->L.nx * b->L.ny * b->s.nz;
     b->chi = malloc(sizeof(float) * cells);
     b->region = malloc(sizeof(int) * cells);
     b->times = malloc(sizeof(double) * (size_t)b->steps);
@@ -415,11 +424,6 @@ static int start_solver(body_run *b, aero_body_flow_stats *st, void *ctx,
     st->ny = b->L.ny;
     st->nz = b->L.nz;
     st->dt = b->dt;
-    {   /* a window: its layers of the body */
-        const size_t kb = b->s.p.nz_total > 0 ? (size_t)b->s.p.k_origin : 0;
-        aero_flow3d_set_body(&b->s, b->chi + kb * b->s.plane,
-                             b->region + kb * b->s.plane, b->nr, b->force);
-    }
     return 0;
 }
 
@@ -442,15 +446,24 @@ static int open_run(body_run *b, const aero_body_flow_params *p, double rate,
     b->fc = cutoff_of(p, rate);
     b->steps = aero_body_flow_steps(p, rate, nout);
     b->t_keep = p->settle - 8.0 / b->fc - b->dt;
-    if (alloc_run(b, err, errlen))
+    /* the solver first: a window's layers are the body's to voxelise */
+    if (start_solver(b, st, ctx, err, errlen) || alloc_run(b, err, errlen))
         return -1;
-    voxelise(p, &b->r, &b->L, b->chi, b->region, st);
+    {
+        const int kb = b->s.p.nz_total > 0 ? b->s.p.k_origin : 0;
+        if (voxelise(p, &b->r, &b->L, kb, kb + b->s.nz, b->chi, b->region,
+                     st)) {
+            snprintf(err, errlen, "out of memory");
+            return -1;
+        }
+    }
     if (!(st->solid_volume > 0.0)) {
         snprintf(err, errlen, "the body fills no cell: a finer grid "
                  "(cell %g m)", p->cell);
         return -1;
     }
-    return start_solver(b, st, ctx, err, errlen);
+    aero_flow3d_set_body(&b->s, b->chi, b->region, b->nr, b->force);
+    return 0;
 }
 
 static void close_run(body_run *b, void *ctx)

@@ -233,6 +233,15 @@ int aerotex_farm_gather(aerotex_job *j, void *tasks, int n, size_t task_size,
    loaded (1, or 0: none of this command line and size) */
 void aerotex_farm_save_state(void *ctx, const void *state, size_t bytes);
 int aerotex_farm_load_state(void *ctx, void *state, size_t bytes);
+#ifdef AEROTEX_MPI
+/* object --slabs: every rank's window state of task k (ctx: its
+   aerotex_task), kept per rank; loaded (1) only when every rank has one
+   of the same step (collective); dropped once the direction is done */
+void aerotex_farm_save_slab_state(void *ctx, const void *state,
+                                  size_t bytes);
+int aerotex_farm_load_slab_state(void *ctx, void *state, size_t bytes);
+void aerotex_farm_drop_slab_state(aerotex_job *j, int k);
+#endif
 /* rank 0's n bytes at p to every rank */
 void aerotex_farm_share(void *p, size_t n);
 /* the checkpoint removed (rank 0, after the texture is written) */

@@ -211,6 +211,75 @@ int aerotex_farm_load_state(void *ctx, void *state, size_t bytes)
     return ok;
 }
 
+/* object --slabs: each rank keeps its window's state in
+   OUT.ckpt/stateNNNN.RRRofPPP.bin; a state is loaded only when every rank
+   has one of the same step (body_flow's state begins with the step it
+   continues from, an int64), so a job killed while some ranks were
+   writing starts the direction again rather than mixing two steps */
+static void slab_state_path(char *buf, size_t len, const aerotex_job *j,
+                            int k)
+{
+    snprintf(buf, len, "%s.ckpt/state%04d.%03dof%03d.bin", j->out, k,
+             aerotex_farm_rank(), aerotex_farm_size());
+}
+
+void aerotex_farm_save_slab_state(void *ctx, const void *state,
+                                  size_t bytes)
+{
+    aerotex_task *t = ctx;
+    char path[4200], tmp[4300];
+    ckpt_header h = header(t->job, t->index, bytes, 0);
+    FILE *f;
+    int bad;
+    ckpt_path(path, sizeof path, t->job, -1);
+    if (aerotex_mkdir(path) && errno != EEXIST)
+        return;
+    slab_state_path(path, sizeof path, t->job, t->index);
+    snprintf(tmp, sizeof tmp, "%s.%ld.tmp", path, (long)getpid());
+    if (!(f = fopen(tmp, "wb")))
+        return;
+    bad = fwrite(&h, sizeof h, 1, f) != 1 ||
+          fwrite(state, bytes, 1, f) != 1;
+    bad |= fclose(f) != 0;
+    if (bad || rename(tmp, path))
+        remove(tmp);
+}
+
+int aerotex_farm_load_slab_state(void *ctx, void *state, size_t bytes)
+{
+    aerotex_task *t = ctx;
+    char path[4200];
+    ckpt_header want = header(t->job, t->index, bytes, 0), got;
+    FILE *f;
+    int ok = 0;
+    long long step = -1, lo, hi;
+    slab_state_path(path, sizeof path, t->job, t->index);
+    if ((f = fopen(path, "rb"))) {
+        ok = fread(&got, sizeof got, 1, f) == 1 &&
+             !memcmp(&got, &want, sizeof got) &&
+             bytes >= sizeof(int64_t) && fread(state, bytes, 1, f) == 1;
+        fclose(f);
+    }
+    if (ok) {
+        int64_t s64;
+        memcpy(&s64, state, sizeof s64);
+        step = (long long)s64;
+    }
+    MPI_Allreduce(&step, &lo, 1, MPI_LONG_LONG, MPI_MIN, MPI_COMM_WORLD);
+    MPI_Allreduce(&step, &hi, 1, MPI_LONG_LONG, MPI_MAX, MPI_COMM_WORLD);
+    return lo > 0 && lo == hi;
+}
+
+/* the slab states of direction k removed (its texture's task kept) */
+void aerotex_farm_drop_slab_state(aerotex_job *j, int k)
+{
+    char path[4200];
+    slab_state_path(path, sizeof path, j, k);
+    remove(path);
+    /* every rank's gone before rank 0 may remove the folder */
+    MPI_Barrier(MPI_COMM_WORLD);
+}
+
 void aerotex_farm_done(aerotex_job *j)
 {
     char path[4200];

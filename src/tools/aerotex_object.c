@@ -159,7 +159,7 @@ static const aerotex_option object_options[] = {
      NULL, NULL},
     {"--slabs", AEROTEX_SWITCH, NULL, 0.0, 1, 0, AT(slabs),
      "aerotex-mpi: each direction's flow split in\nz slabs over all the "
-     "ranks (a grid larger\nthan one node; no checkpoints)", NULL, NULL},
+     "ranks (a grid larger\nthan one node)", NULL, NULL},
     AEROTEX_JOB_OPTIONS("directions",
                         "|vorticity| slices DIR/dirKK_STEP.png")};
 
@@ -413,8 +413,20 @@ static int run_slabs(object_plan *o, direction_task *ctx)
     for (int k = 0; k < nd; k++) {
         aero_body_flow_params p = o->base;
         direction_task *c = &ctx[k];
+        /* a direction kept by an earlier run of the job: rank 0 has it */
+        int done = !aerotex_farm_rank() &&
+                   aerotex_farm_resume(&j->job, k, c, sizeof *c, 3 * o->nr);
+        aerotex_farm_share(&done, sizeof done);
+        if (done)
+            continue;
         p.angle = o->angles[k];
         p.threads = j->job.threads;
+        p.checkpoint_every =
+            j->checkpoint > 0
+                ? j->checkpoint
+                : aero_body_flow_steps(&p, j->job.rate, avail) / 16 + 1;
+        p.checkpoint_save = aerotex_farm_save_slab_state;
+        p.checkpoint_load = aerotex_farm_load_slab_state;
         p.seed = aero_run_seed(j->seed, k);
         p.plan_lock = aerotex_plan_lock;
         p.window_open = aero_flow3d_slabs_open;
@@ -434,6 +446,9 @@ static int run_slabs(object_plan *o, direction_task *ctx)
         free(c->slice);
         free(c->solid);
         c->slice = c->solid = NULL;
+        if (!aerotex_farm_rank())
+            aerotex_farm_keep(&j->job, k, c, sizeof *c, 3 * o->nr);
+        aerotex_farm_drop_slab_state(&j->job, k);
     }
     aerotex_progress_end(&j->job.prog);
     if (aerotex_farm_rank())

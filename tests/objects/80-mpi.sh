@@ -168,10 +168,14 @@ fi
 # the one process does), the region forces to the rounding of their
 # double sums, added in another order over the ranks. A halo of 4 planes,
 # narrower than a step reads, gives 6e-5 at 4 ranks; no halo exchange
-# makes the flow blow up (negative controls).
+# makes the flow blow up (negative controls). Then aerotex-mpi object
+# --slabs: its samples at 2 and 4 ranks, and after a rank is killed and
+# the job resumed from the ranks' window states, are the one-process
+# samples byte for byte.
 section "one 3D flow in z slabs over MPI ranks (docs/cluster.md)"
-if [ ! -x build/tests/flow3d-slab ] || ! command -v mpirun >/dev/null 2>&1; then
-    echo "  skip  no build/tests/flow3d-slab or no mpirun (Open MPI: make deps)"
+if [ ! -x build/tests/flow3d-slab ] || [ ! -x build/aerotex-mpi ] ||
+    ! command -v mpirun >/dev/null 2>&1; then
+    echo "  skip  no build/tests/flow3d-slab, build/aerotex-mpi or mpirun (Open MPI: make deps)"
 else
     for _np in 1 2 4; do
         if _line=$(OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
@@ -222,6 +226,58 @@ while i + 8 <= len(b):
             fail "object --slabs on $_np ranks"; tail -5 "$slab_dir/np$_np.log"
         fi
     done
+    # a slab-split flow killed once its ranks kept their window states
+    # (--checkpoint 20), resumed on 2 ranks: the one-process samples; a
+    # changed velocity in rank 0's state changes them (it is read)
+    sk="$slab_dir/ckpt"
+    mkdir -p "$sk"
+    sk_args="$slab_args --checkpoint 20 --slabs"
+    # shellcheck disable=SC2086
+    (cd "$sk" && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
+        OMPI_MCA_btl=self,vader timeout 300 mpirun --oversubscribe -np 2 \
+        "$ROOT/build/aerotex-mpi" $sk_args) >"$slab_dir/killed.log" 2>&1 &
+    sk_pid=$!
+    sk_wait=0
+    while [ ! -f "$sk/s.wav.ckpt/state0000.001of002.bin" ] && [ $sk_wait -lt 1200 ]; do
+        sleep 0.05; sk_wait=$((sk_wait + 1))
+    done
+    sk_rank=
+    for _p in $(mpi_tree $sk_pid); do
+        [ "$(cat /proc/"$_p"/comm 2>/dev/null)" = aerotex-mpi ] && sk_rank=$_p
+    done
+    [ -n "$sk_rank" ] && kill -9 "$sk_rank"
+    wait $sk_pid
+    sk_rc=$?
+    cp -r "$sk/s.wav.ckpt" "$slab_dir/saved" 2>/dev/null
+    # shellcheck disable=SC2086
+    if [ -n "$sk_rank" ] && [ $sk_rc -ne 0 ] && [ ! -f "$sk/s.wav" ] &&
+        (cd "$sk" && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
+            OMPI_MCA_btl=self,vader timeout 300 mpirun --oversubscribe -np 2 \
+            "$ROOT/build/aerotex-mpi" $sk_args) >"$slab_dir/resumed.log" 2>&1 &&
+        [ "$(slab_samples "$slab_dir/one/s.wav" | od -An -tx1 | md5sum)" = \
+          "$(slab_samples "$sk/s.wav" | od -An -tx1 | md5sum)" ] &&
+        [ ! -d "$sk/s.wav.ckpt" ]; then
+        pass "object --slabs: a rank killed, resumed from the ranks' states to the one-process samples"
+    else
+        fail "object --slabs resumed: rank '$sk_rank', exit $sk_rc"; tail -3 "$slab_dir/resumed.log"
+    fi
+    rm -f "$sk/s.wav"
+    cp -r "$slab_dir/saved" "$sk/s.wav.ckpt"
+    sk_size=$(wc -c <"$sk/s.wav.ckpt/state0000.000of002.bin")
+    # 10 m/s in 64 faces of u in rank 0's own planes (an eighth into it)
+    for _i in $(seq 64); do printf '\000\000\040\101'; done |
+        dd of="$sk/s.wav.ckpt/state0000.000of002.bin" bs=1 \
+        seek=$((sk_size / 8)) conv=notrunc 2>/dev/null
+    # shellcheck disable=SC2086
+    (cd "$sk" && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
+        OMPI_MCA_btl=self,vader timeout 300 mpirun --oversubscribe -np 2 \
+        "$ROOT/build/aerotex-mpi" $sk_args) >"$slab_dir/tampered.log" 2>&1
+    if [ -f "$sk/s.wav" ] && [ "$(slab_samples "$slab_dir/one/s.wav" | od -An -tx1 | md5sum)" != \
+        "$(slab_samples "$sk/s.wav" | od -An -tx1 | md5sum)" ]; then
+        pass "negative control: a changed window state changes the samples (it is read)"
+    else
+        fail "negative control: the window state was not what the job resumed from"
+    fi
     for _neg in "halo 10 4" "nohalo 10 6"; do
         # shellcheck disable=SC2086
         if _line=$(OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \

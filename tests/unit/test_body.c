@@ -1,4 +1,4 @@
-/* Unit tests of src/core/play/body_texture: the player of 3D object textures
+/* Unit tests of src/core/play/body: the player of 3D object textures
  * for moving bodies, on synthetic textures whose content is known exactly:
  * pitch St v / d, U^3 level, 1/r, dipole directivity, exact Doppler of a
  * body flying at the listener and of a whirled one, direction
@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "body_texture.h"
+#include "body.h"
 #include "multi_instance.h"
 #include "unit.h"
 

@@ -1,4 +1,4 @@
-/* aero: tests of the vortex texture player (src/core/play/vortex_player.c) with
+/* aero: tests of the vortex texture player (src/core/play/vortex.c) with
  * synthetic textures: 1/r, the Doppler factor of a moving source and of a
  * moving listener, speed interpolation and the u^4 law below the smallest
  * speed, clip, n sources adding in power, hostile input, the paper's 1/r^3
@@ -6,7 +6,7 @@
 #include "unit.h"
 #include "aero_air.h"
 #include "aero_util.h"
-#include "vortex_player.h"
+#include "vortex.h"
 #include "multi_instance.h"
 
 #include <stdlib.h>
@@ -66,7 +66,7 @@ static double zero_cross_hz(const float *x, int n)
 static void setup(aero_vortex *m, aero_texture *t, int n)
 {
     char err[128];
-    aero_vortex_init(m, SR, 0, 42);
+    aero_vortex_init(m, SR, 1, 42);
     aero_vortex_set_count(m, n);
     if (aero_vortex_set_texture(m, t, err, sizeof err))
         printf("  texture refused: %s\n", err);
@@ -252,7 +252,7 @@ UNIT_TEST(combustion)
     static float a[N];
     double xyz[6] = {0.1, 0.0, 0.0, -0.1, 0.0, 0.0}, want, got;
     printf("combustion noise in the player\n");
-    aero_vortex_init(&m, SR, 0, 42);
+    aero_vortex_init(&m, SR, 1, 42);
     aero_vortex_set_count(&m, 2);
     aero_vortex_set_positions(&m, xyz, 2);
     aero_vortex_set_ears(&m, &(aero_ears){1, {{0.0, 2.0, 0.0}}});
@@ -280,7 +280,7 @@ static void *mi_make(int variant)
     double speeds[3] = {5.0, 10.0, 20.0}, pos[12];
     aero_vortex *m = calloc(1, sizeof(*m));
     aero_texture *t = calloc(1, sizeof(*t));
-    aero_vortex_init(m, 44100.0, 0, 7u + variant);
+    aero_vortex_init(m, 44100.0, 1, 7u + variant);
     aero_texture_init_speeds(t, 2048, 3, speeds, 8000.0);
     for (int n = 0; n < 2048 * 3; n++)
         t->data[n] = (float)sin(0.05 * n) * (float)cos(0.0031 * n);

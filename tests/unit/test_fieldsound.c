@@ -555,4 +555,24 @@ UNIT_TEST(multi_instance)
                         mi_drop);
 }
 
-UNIT_MAIN(UNIT_CASE(format), UNIT_CASE(monopole), UNIT_CASE(reach), UNIT_CASE(classification), UNIT_CASE(demo), UNIT_CASE(multi_instance))
+/* the object contract (CONTRIBUTING.md): init(r, sr, n_ears, seed)
+   answers -1 for a sample rate it cannot use or more than the one
+   listener, and the player stays usable (silent without sources) */
+UNIT_TEST(init_contract)
+{
+    aero_fieldsound r;
+    float out[64];
+    int silent = 1;
+    UNIT_CHECK(aero_fieldsound_init(&r, SR, 2, 0) == -1,
+               "init with two ears answers -1 (one listener)");
+    aero_fieldsound_free(&r);
+    UNIT_CHECK(aero_fieldsound_init(&r, NAN, 1, 0) == -1,
+               "init at a NaN sample rate answers -1");
+    aero_fieldsound_process(&r, out, 64);
+    for (int i = 0; i < 64; i++)
+        silent &= out[i] == 0.0f;
+    UNIT_CHECK(silent, "and the player is silent without sources");
+    aero_fieldsound_free(&r);
+}
+
+UNIT_MAIN(UNIT_CASE(format), UNIT_CASE(monopole), UNIT_CASE(reach), UNIT_CASE(classification), UNIT_CASE(demo), UNIT_CASE(multi_instance), UNIT_CASE(init_contract))

@@ -306,4 +306,29 @@ UNIT_TEST(multi_instance)
     unit_multi_instance("vortex~", "4 sources", mi_make, mi_run, mi_drop);
 }
 
-UNIT_MAIN(UNIT_CASE(falloff), UNIT_CASE(combustion), UNIT_CASE(distance_and_speed), UNIT_CASE(doppler), UNIT_CASE(clip_and_sources), UNIT_CASE(hostile), UNIT_CASE(multi_instance))
+/* the object contract (CONTRIBUTING.md): init answers -1 for a sample
+   rate it cannot use and the core stays usable (silent without a
+   texture, finite); n_ears 2 puts the ears AERO_EAR_HALF_SPACING either
+   side of the listener; set_seed answers 0 like every setter */
+UNIT_TEST(init_contract)
+{
+    aero_vortex m;
+    float l[64], r[64], in[64] = {0};
+    float *o[2] = {l, r};
+    int silent = 1;
+    UNIT_CHECK(aero_vortex_init(&m, NAN, 2, 1) == -1,
+               "init at a NaN sample rate answers -1");
+    aero_vortex_process(&m, in, o, 64);
+    for (int i = 0; i < 64; i++)
+        silent &= l[i] == 0.0f && r[i] == 0.0f;
+    UNIT_CHECK(silent, "and the core plays silence without a texture");
+    UNIT_CHECK(m.ear[0] == -AERO_EAR_HALF_SPACING &&
+                   m.ear[3] == AERO_EAR_HALF_SPACING,
+               "two ears at x = %g and %g m", m.ear[0], m.ear[3]);
+    UNIT_CHECK(aero_vortex_set_seed(&m, 0) == 0 &&
+                   aero_vortex_set_seed(&m, 0xffffffffu) == 0,
+               "set_seed answers 0 for any seed");
+    aero_vortex_free(&m);
+}
+
+UNIT_MAIN(UNIT_CASE(falloff), UNIT_CASE(combustion), UNIT_CASE(distance_and_speed), UNIT_CASE(doppler), UNIT_CASE(clip_and_sources), UNIT_CASE(hostile), UNIT_CASE(multi_instance), UNIT_CASE(init_contract))

@@ -11,7 +11,6 @@
 #include "aero_air.h"
 #include "aero_ramp.h"
 #include "aero_util.h"
-#include "ghost_fade.h"
 #include "strouhal.h"
 
 #define MIN_SPEED 1e-6       /* below this the flow direction is unknown */
@@ -286,11 +285,8 @@ static void leave_sound(aero_aeolian_texture *s)
     drop_ghost_texture(s);
     for (int i = 0; i < s->n_sources; i++) {
         s->ghost[i] = s->src[i];
-        s->ghost[i].fade_amp = s->src[i].amp;
-        s->ghost[i].fade_inc = s->src[i].inc;
-        s->ghost[i].fade_samples = 0.0;
-        for (int e = 0; e < AERO_AEOLIAN_MAX_EARS; e++) /* its delay's rate */
-            s->ghost[i].fade_rate[e] = aero_ghost_rate(s->src[i].step[e]);
+        aero_ghost_begin(&s->ghost[i].fade, s->src[i].amp, s->src[i].inc,
+                         s->src[i].step);
         s->src[i].amp = 0.0;
         /* the blade's noise goes on with its ghost, filters and gains as
            they were, and fades in again with the new source */
@@ -1079,17 +1075,17 @@ static int render_ghosts(aero_aeolian *a, int m)
     for (int i = 0; i < s->n_ghosts; i++) {
         aero_aeolian_source *gh = &s->ghost[i];
         double v_then, v;
-        if (!gh->primed || !(gh->fade_samples < span))
+        if (!gh->primed || !(gh->fade.samples < span))
             continue;
         /* after a texture change the stick goes on */
-        aero_ghost_advance(&gh->fade_samples, m, span, s->ghost_moving,
+        aero_ghost_advance(&gh->fade.samples, m, span, s->ghost_moving,
                            &v_then, &v);
-        double fade = aero_ghost_fade(gh->fade_samples, a->sample_rate,
+        double fade = aero_ghost_fade(gh->fade.samples, a->sample_rate,
                                       a->exponent);
         source_geometry g;
-        g.inc = gh->fade_inc * v;
+        g.inc = gh->fade.inc * v;
         g.angle = gh->angle;
-        g.amp = gh->fade_amp * fade;
+        g.amp = gh->fade.amp * fade;
         /* its noise fades as its texture does, its spectrum held */
         g.namp = gh->namp * fade;
         g.speed = g.span = 0.0;
@@ -1102,7 +1098,7 @@ static int render_ghosts(aero_aeolian *a, int m)
             g.fx[e] = gh->fx[e];
             g.fy[e] = gh->fy[e];
             /* it moves on as it slows: its delay's rate falls with v */
-            g.delay[e] = gh->delay[e] + gh->fade_rate[e] * 0.5 * (v_then + v) * m;
+            g.delay[e] = gh->delay[e] + gh->fade.rate[e] * 0.5 * (v_then + v) * m;
         }
         sounding |= render_source(a, gh, &g, m);
     }

@@ -8,7 +8,6 @@
 #include <string.h>
 
 #include "aero_air.h"
-#include "ghost_fade.h"
 #include "strouhal.h"
 
 #define MIN_SPEED 1e-6       /* below this the flow direction is unknown */
@@ -132,11 +131,7 @@ static void leave_sound(aero_body *s)
     for (int l = 0; l < s->regions; l++) {
         aero_body_source *src = &s->src[l], *gh = &s->ghost[l];
         *gh = *src;
-        gh->fade_amp = src->then.amp;
-        gh->fade_inc = src->then.inc;
-        gh->fade_samples = 0.0;
-        for (int e = 0; e < AERO_BODY_MAX_EARS; e++) /* its delay's rate */
-            gh->fade_rate[e] = aero_ghost_rate(src->step[e]);
+        aero_ghost_begin(&gh->fade, src->then.amp, src->then.inc, src->step);
         src->then.amp = 0.0;
         memset(src->velocity, 0, sizeof(src->velocity));
     }
@@ -710,19 +705,19 @@ static int render_ghosts(aero_body *s, int m)
     for (int l = 0; l < s->n_ghosts; l++) {
         aero_body_source *gh = &s->ghost[l];
         double v_then, v;
-        if (!gh->primed || !(gh->fade_samples < span))
+        if (!gh->primed || !(gh->fade.samples < span))
             continue;
         /* after a texture change the body goes on */
-        aero_ghost_advance(&gh->fade_samples, m, span, s->ghost_moving,
+        aero_ghost_advance(&gh->fade.samples, m, span, s->ghost_moving,
                            &v_then, &v);
         aero_body_geometry g = gh->then;
-        g.inc = gh->fade_inc * v;
-        g.amp = gh->fade_amp * aero_ghost_fade(gh->fade_samples,
+        g.inc = gh->fade.inc * v;
+        g.amp = gh->fade.amp * aero_ghost_fade(gh->fade.samples,
                                                s->base.sample_rate,
                                                s->base.exponent);
         /* it moves on as it slows: its delay's rate falls with v */
         for (int e = 0; e < s->base.n_ears; e++)
-            g.delay[e] += gh->fade_rate[e] * 0.5 * (v_then + v) * m;
+            g.delay[e] += gh->fade.rate[e] * 0.5 * (v_then + v) * m;
         sounding |= render(s, gh, l, &g, m);
     }
     s->texture = texture;

@@ -43,6 +43,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "ghost_fade.h"
 #include "moving_player.h"
 #include "pose_glide.h"
 #include "texture.h"
@@ -75,10 +76,7 @@ typedef struct {
     aero_body_geometry then;    /* at the previous chunk's end */
     double step[AERO_BODY_MAX_EARS]; /* arrival step over that chunk */
     int primed;
-    /* a ghost's amplitude and rate when it began to fade, and the
-       samples since (body.c) */
-    double fade_amp, fade_inc, fade_samples;
-    double fade_rate[AERO_BODY_MAX_EARS]; /* its delays' rates then */
+    aero_ghost fade; /* as a ghost (ghost_fade.h) */
 } aero_body_source;
 
 typedef struct aero_body {

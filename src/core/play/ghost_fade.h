@@ -13,9 +13,36 @@
 #include <math.h>
 
 #include "aero_air.h"
+#include "aero_ears.h"
 
 #define AERO_VELOCITY_TAU_S 0.008 /* smoothing of pose-derived velocities */
 #define AERO_GHOST_FADE_S (4.0 * AERO_VELOCITY_TAU_S)
+
+/* a source's fade as a ghost: its amplitude and rate when it began to
+   fade, the samples since, and its delays' rates then */
+typedef struct aero_ghost {
+    double amp, inc, samples;
+    double rate[AERO_EARS_MAX];
+} aero_ghost;
+
+/* the rate of a ghost's delay when it began to fade, from its arrival
+   step (samples of delay per sample; 0 before the first chunk) */
+static inline double aero_ghost_rate(double step)
+{
+    return step > 0.0 ? step - 1.0 : 0.0;
+}
+
+/* a source becomes a ghost: amplitude, texture rate and each ear's arrival
+   step as they were */
+static inline void aero_ghost_begin(aero_ghost *g, double amp, double inc,
+                                    const double step[AERO_EARS_MAX])
+{
+    g->amp = amp;
+    g->inc = inc;
+    g->samples = 0.0;
+    for (int e = 0; e < AERO_EARS_MAX; e++)
+        g->rate[e] = aero_ghost_rate(step[e]);
+}
 
 /* the velocity's fraction t samples after the jump, span samples of fade */
 static inline double aero_ghost_velocity(double t, double span)
@@ -57,13 +84,6 @@ static inline void aero_ghost_advance(double *samples, int m, double span,
     *v = aero_ghost_velocity(*samples, span);
     if (moving)
         *v = *v_then = 1.0;
-}
-
-/* the rate of a ghost's delay when it began to fade, from its arrival
-   step (samples of delay per sample; 0 before the first chunk) */
-static inline double aero_ghost_rate(double step)
-{
-    return step > 0.0 ? step - 1.0 : 0.0;
 }
 
 #endif

@@ -413,8 +413,8 @@ void aero_pd_init_failed(const aero_pd_base *b, double sr)
     if (sr > 0.0 && sr < HUGE_VAL)
         pd_error(b->owner, "%s: out of memory: silent", b->obj);
     else
-        pd_error(b->owner, "%s: sample rate %g not usable: 44100 Hz until "
-                 "the DSP starts", b->obj, sr);
+        pd_error(b->owner, "%s: sample rate %g not usable: the core's "
+                 "default rate until the DSP starts", b->obj, sr);
 }
 
 double aero_pd_at_bound(const aero_pd_base *b, const char *name, t_float f)

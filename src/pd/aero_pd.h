@@ -390,8 +390,8 @@ static inline uint32_t aero_pd_seed(t_float f)
 int aero_pd_seed_of(const struct aero_pd_base *b, t_float f, uint32_t *seed);
 
 /* a core's init returned -1 in new(), at Pd's sample rate sr: either that
- * rate was not usable (the core takes 44.1 kHz until the DSP starts) or
- * memory ran out (the core is silent) */
+ * rate was not usable (the core takes its default rate, 44.1 or 48 kHz,
+ * until the DSP starts) or memory ran out (the core is silent) */
 void aero_pd_init_failed(const struct aero_pd_base *b, double sr);
 #define AERO_PD_SEED                                                       \
     AERO_PD_NOTE("any finite number, its whole part modulo 2^32")

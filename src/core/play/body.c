@@ -733,12 +733,8 @@ int aero_body_process(aero_body *s, const float *speed,
                       float *const *out, int n)
 {
     s->base.clamped = 0;
-    if (!s->base.arrivals.ring[0]) { /* init or a sample rate ran out of
-                                        memory: silent */
-        for (int e = 0; e < s->base.n_ears; e++)
-            memset(out[e], 0, sizeof(float) * (size_t)(n > 0 ? n : 0));
+    if (aero_moving_player_silent(&s->base, out, n))
         return 0;
-    }
     for (int done = 0; done < n;) {
         int m = n - done < AERO_BODY_CHUNK ? n - done : AERO_BODY_CHUNK;
         /* the poses due at this sample, then a chunk up to the next */

@@ -53,6 +53,19 @@ int aero_moving_player_init(aero_moving_player *p, double sample_rate,
                             int n_ears, uint32_t seed, int chunk,
                             double max_delay_s);
 void aero_moving_player_free(aero_moving_player *p);
+/* a player whose rings could not be allocated (init, or a sample rate,
+ * ran out of memory) is silent: 1 with its n_ears outputs zeroed, else 0
+ * (its process goes on) */
+static inline int aero_moving_player_silent(const aero_moving_player *p,
+                                            float *const *out, int n)
+{
+    if (p->arrivals.ring[0])
+        return 0;
+    for (int e = 0; e < p->n_ears; e++)
+        for (int i = 0; i < n; i++)
+            out[e][i] = 0.0f;
+    return 1;
+}
 
 /* -1 invalid or out of memory (nothing changes), 0 unchanged, 1 changed:
  * the rings are new, the player re-primes its sources */

@@ -181,10 +181,11 @@ typedef struct aero_rotor {
     int envelope_due; /* chunks until the broadband's envelope is made again */
 } aero_rotor;
 
-/* 0, or -1 when out of memory. Defaults: the AERO_ROTOR_*_DEFAULT values,
- * the hub at the origin with its thrust along +z, still air, one listener
- * 1 m away along +y (stereo: ears at x = -+AERO_EAR_HALF_SPACING), gain and ramp as
- * moving_player.h's. */
+/* 0, or -1 when out of memory (silent then, until a sample rate is set)
+ * or the sample rate is not usable (48 kHz is taken). Defaults: the
+ * AERO_ROTOR_*_DEFAULT values, the hub at the origin with its thrust along
+ * +z, still air, one listener 1 m away along +y (stereo: ears at
+ * x = -+AERO_EAR_HALF_SPACING), gain and ramp as moving_player.h's. */
 int aero_rotor_init(aero_rotor *r, double sample_rate, int n_ears,
                     uint32_t seed);
 void aero_rotor_free(aero_rotor *r);

@@ -120,7 +120,7 @@ $(BUILD)/tests/%: tests/unit/%.c $(wildcard tests/unit/*.h) $(core.lib)
 	@mkdir -p $(dir $@)
 	$(CORE_CC) $(CORE_CFLAGS) $< -o $@ $(TOOL_LIBS)
 
-# the unit tests alone (tests/unit/run.sh): make check-unit ONLY=cavity_model
+# the unit tests alone (tests/unit/run.sh): make check-unit ONLY=cavity
 # CASE=lock_in; each binary also runs alone (build/tests/test_x --list)
 .PHONY: check-unit
 check-unit:

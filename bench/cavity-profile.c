@@ -10,7 +10,7 @@
  *   valgrind --tool=callgrind --dump-instr=yes build/cavity-profile c 1 */
 #define _POSIX_C_SOURCE 200809L
 #include "aeolian.h"
-#include "cavity_model.h"
+#include "cavity.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -32,7 +32,7 @@ int main(int argc, char **argv)
     static aero_cavity cavity[N];
     static aero_aeolian aeolian[N];
     for (int k = 0; k < N; k++) {
-        aero_cavity_init(&cavity[k], 48000, k + 1);
+        aero_cavity_init(&cavity[k], 48000, 1, k + 1);
         aero_aeolian_init(&aeolian[k], 48000, 1, k + 1);
     }
     float in[64], out[64];

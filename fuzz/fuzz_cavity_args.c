@@ -5,7 +5,7 @@
 /* aero-fuzz: object cavity~ */
 #include "fuzz.h"
 
-#include "cavity_model.h"
+#include "cavity.h"
 
 #define MAXN 1024
 
@@ -29,7 +29,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     static float speed[MAXN], out[MAXN];
     char err[256];
     aero_cavity m;
-    aero_cavity_init(&m, 44100.0, 1);
+    aero_cavity_init(&m, 44100.0, 1, 1);
     while (in.left) {
         unsigned op = fuzz_byte(&in) % 14;
         double a = fuzz_number(&in), b = fuzz_number(&in),

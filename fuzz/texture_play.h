@@ -7,7 +7,7 @@
 #include "fuzz.h"
 
 #include "body.h"
-#include "cavity_model.h"
+#include "cavity.h"
 #include "aeolian.h"
 #include "texture.h"
 
@@ -111,7 +111,7 @@ static int fuzz_texture_check(const char *path)
     t = calloc(1, sizeof(*t));
     if (t && !aero_texture_load(path, t, err, sizeof(err))) {
         aero_cavity cav;
-        aero_cavity_init(&cav, 48000.0, 1);
+        aero_cavity_init(&cav, 48000.0, 1, 1);
         if (aero_cavity_set_texture(&cav, t, err, sizeof(err)))
             aero_texture_free(t); /* refused: still ours */
         else

@@ -490,6 +490,104 @@ double aero_pd_wind_message(aero_pd_base *b, aero_pd_wind *w, t_symbol *s,
     return speed;
 }
 
+/* --- a core rebuilt in a worker and swapped in ----------------------------- */
+
+static void swap_poll(aero_pd_swap *s);
+
+void aero_pd_swap_init(aero_pd_swap *s, void *owner,
+                       void (*finish)(void *owner),
+                       void (*free_core)(void *core))
+{
+    memset(s, 0, sizeof(*s));
+    s->owner = owner;
+    s->finish = finish;
+    s->free_core = free_core;
+    s->poll = clock_new(s, (t_method)swap_poll);
+}
+
+void aero_pd_swap_drop_old(aero_pd_swap *s)
+{
+    if (s->old) {
+        s->free_core(s->old);
+        free(s->old);
+        s->old = NULL;
+    }
+}
+
+void aero_pd_swap_free(aero_pd_swap *s, void (*drop_load)(void *load))
+{
+    clock_free(s->poll);
+    if (s->job)
+        aero_load_job_abandon(s->job, drop_load);
+    s->job = NULL;
+    aero_pd_swap_drop_old(s);
+}
+
+int aero_pd_swap_small(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 && st.st_size < AERO_PD_SWAP_SMALL_FILE;
+}
+
+/* Pd's logical time running well ahead of the real one: batch mode (or
+   no audio device), where nobody hears a wait and renders must not
+   depend on how fast the worker was */
+static int swap_batch(const aero_pd_swap *s)
+{
+    double logical = clock_gettimesince(s->logical) * 0.001;
+    return sys_getrealtime() - s->real < 0.5 * logical;
+}
+
+static void swap_poll(aero_pd_swap *s)
+{
+    /* faded out, or not fading at all (DSP is off) */
+    if (s->old && (s->fade >= s->fade_len || s->fade == s->fade_seen))
+        aero_pd_swap_drop_old(s);
+    s->fade_seen = s->fade;
+    if (s->job && (aero_load_job_done(s->job) || swap_batch(s)))
+        s->finish(s->owner);
+    if (s->job || s->old)
+        clock_delay(s->poll, AERO_PD_SWAP_POLL_MS);
+}
+
+int aero_pd_swap_start(aero_pd_swap *s, aero_load_fn fn, void *load,
+                       int now)
+{
+    s->load = load;
+    s->job = aero_load_job_start(fn, load, !now);
+    if (!s->job) {
+        s->load = NULL;
+        return -1;
+    }
+    if (now) {
+        s->finish(s->owner);
+        aero_pd_swap_drop_old(s); /* nothing played yet: no fade */
+        return 0;
+    }
+    s->logical = clock_getlogicaltime();
+    s->real = sys_getrealtime();
+    clock_delay(s->poll, AERO_PD_SWAP_WAIT_MS);
+    return 0;
+}
+
+void *aero_pd_swap_take(aero_pd_swap *s)
+{
+    void *load = s->load;
+    aero_load_job_finish(s->job);
+    s->job = NULL;
+    s->load = NULL;
+    return load;
+}
+
+void *aero_pd_swap_fade_slot(aero_pd_swap *s, size_t size, double sr)
+{
+    aero_pd_swap_drop_old(s);
+    s->old = malloc(size);
+    s->fade = s->fade_seen = 0;
+    s->fade_len = (int)(AERO_PD_SWAP_FADE_MS * 0.001 * sr);
+    return s->old;
+}
+
 /* --- the host's data folder (aero.h) -------------------------------------- */
 
 /* The one piece of process state in aero: the folder a libpd host set with

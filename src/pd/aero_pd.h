@@ -22,6 +22,7 @@
 #include "aero.h"
 #include "aero_ears.h"
 #include "aero_ranges.h"
+#include "load_job.h"
 #include "texture.h"
 #include "tree.h"
 
@@ -310,6 +311,67 @@ void aero_pd_wind_init(aero_pd_wind *w);
  * speed, or -1 after reporting an error */
 double aero_pd_wind_message(aero_pd_base *b, aero_pd_wind *w, t_symbol *s,
                             int argc, const t_atom *argv);
+
+/* --- a core rebuilt in a worker and swapped in ([treebranch~], [leafwave~])
+ * A tree file read (or the live tree rebuilt) and a new core built in a
+ * worker (load_job.h); Pd's clock swaps it in while the old core fades
+ * out under it, so that Pd's thread, where audio runs too, never waits
+ * for it. The object starts the job, takes it in its finish function
+ * (called from the clock) and plays the old core, faded by
+ * aero_pd_swap_gain, until it is dropped. */
+#define AERO_PD_SWAP_FADE_MS 10.0 /* the old core fades out over this */
+#define AERO_PD_SWAP_WAIT_MS 20.0 /* a job is swapped in this late, or later */
+#define AERO_PD_SWAP_POLL_MS 5.0
+/* bytes: a file read at creation, at once (the shipped trees; ~0.1 s for
+   2 MB) */
+#define AERO_PD_SWAP_SMALL_FILE (2L << 20)
+
+typedef struct {
+    void *owner;
+    void (*finish)(void *owner); /* takes the finished job (swap_take) */
+    void (*free_core)(void *core);
+    aero_load_job *job;   /* the job running, or NULL */
+    void *load;           /* its argument, the object's */
+    t_symbol *next;       /* the latest 'open' asked during a job */
+    t_clock *poll;
+    double logical, real; /* when the job started: logical, real (s) */
+    void *old;            /* the core fading out (malloc'd), or NULL */
+    int fade, fade_len;   /* samples of the fade done, its length */
+    int fade_seen;        /* fade at the last poll */
+} aero_pd_swap;
+
+void aero_pd_swap_init(aero_pd_swap *s, void *owner,
+                       void (*finish)(void *owner),
+                       void (*free_core)(void *core));
+/* the clock freed, the old core dropped, a running job given up to
+   drop_load (load_job.h: the worker calls it when done) */
+void aero_pd_swap_free(aero_pd_swap *s, void (*drop_load)(void *load));
+/* 1 when the file is small enough to read at creation, at once */
+int aero_pd_swap_small(const char *path);
+/* Starts fn(load): in a worker, swapped in by the clock
+ * AERO_PD_SWAP_WAIT_MS later, or as soon after as it is ready (in batch
+ * mode it waits for it then: the same logical time in every run); `now`,
+ * in the caller, and finished at once (nothing played yet: no fade).
+ * 0, or -1 when out of memory (nothing started, load still the
+ * caller's). */
+int aero_pd_swap_start(aero_pd_swap *s, aero_load_fn fn, void *load,
+                       int now);
+/* in finish: the job done (waited for), its load handed back */
+void *aero_pd_swap_take(aero_pd_swap *s);
+/* in finish, to swap a new core in: the old one dropped, a slot of
+   `size` bytes for the live core to move into, faded out over
+   AERO_PD_SWAP_FADE_MS at sr (NULL when out of memory: the live core is
+   to be freed instead) */
+void *aero_pd_swap_fade_slot(aero_pd_swap *s, size_t size, double sr);
+void aero_pd_swap_drop_old(aero_pd_swap *s);
+/* the old core's gain for its next sample: 1 down to 0 over the fade */
+static inline float aero_pd_swap_gain(aero_pd_swap *s)
+{
+    float g = s->fade < s->fade_len
+        ? 1.0f - (float)s->fade / s->fade_len : 0.0f;
+    s->fade++;
+    return g;
+}
 
 /* --- textures: one loader, one failure policy ------------------------------
  * A texture that can't be found or read, or that the core refuses, is

@@ -1,13 +1,14 @@
 /* [cavity~]: cavity tones (a draft through a gap, wind over a hollow, a
- * bottle). Thin Pd wrapper around src/core/play/cavity_model.
+ * bottle). Thin Pd wrapper around src/core/play/cavity (the Rossiter
+ * model, or a texture once one is loaded).
  *
- *   [cavity~ -L 0.02 -D 0.01 -W 0.05 -texture cavity -exponent 2]
+ *   [cavity~ -L 0.02 -D 0.01 -W 0.05 -texture cavity -exponent 2 -stereo]
  *   inlet 1 (signal): flow speed over the opening, m/s
- *   outlet 1 (signal): sound pressure at the listener, Pa
+ *   outlet(s) (signal): sound pressure at the listener (ears), Pa
  */
 #include "aero_pd.h"
 
-#include "cavity_model.h"
+#include "cavity.h"
 
 static t_class *cavity_tilde_class;
 
@@ -54,8 +55,9 @@ AERO_PD_SETTER(cavity_tilde, t_cavity_tilde, exponent, x_core,
 static void cavity_tilde_seed(t_cavity_tilde *x, t_floatarg f)
 {
     uint32_t seed;
-    if (!aero_pd_seed_of(&x->x_base, f, &seed))
-        aero_cavity_set_seed(&x->x_core, seed);
+    if (!aero_pd_seed_of(&x->x_base, f, &seed) &&
+        aero_cavity_set_seed(&x->x_core, seed))
+        aero_pd_refused(&x->x_base, "seed", f);
 }
 
 static void cavity_tilde_listener(t_cavity_tilde *x, t_symbol *s, int argc,
@@ -95,6 +97,7 @@ static void cavity_tilde_model(t_cavity_tilde *x)
 #define WIDTH SIZE(AERO_CAVITY_WIDTH_DEFAULT)
 
 static const aero_pd_method cavity_tilde_methods[] = {
+    {"stereo", AERO_PD_SWITCH, 0, NULL, 0, AERO_PD_NO_RULE},
     {"length", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_length, 0, LENGTH},
     {"L", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_length, 0, LENGTH},
     {"depth", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_depth, 0, DEPTH},
@@ -108,9 +111,10 @@ static const aero_pd_method cavity_tilde_methods[] = {
     {"seed", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_seed, 0,
      AERO_PD_SEED},
     {"exponent", AERO_PD_FLOAT, 0, (t_method)cavity_tilde_exponent, 0,
-     AERO_PD_RANGE_DEF(0, AERO_CAVITY_EXPONENT_MAX,
+     AERO_PD_RANGE_DEF(AERO_CAVITY_EXPONENT_MIN, AERO_CAVITY_EXPONENT_MAX,
                        AERO_CAVITY_EXPONENT_DEFAULT, NULL)},
     {"listener", AERO_PD_LIST, 3, (t_method)cavity_tilde_listener, 0, AERO_PD_NO_RULE},
+    {"ears", AERO_PD_LIST, 6, (t_method)cavity_tilde_listener, 0, AERO_PD_NO_RULE},
     {"texture", AERO_PD_SYMBOL, 0, (t_method)cavity_tilde_texture, 0, AERO_PD_NO_RULE},
     {"model", AERO_PD_BANG, 0, (t_method)cavity_tilde_model,
      AERO_PD_MESSAGE_ONLY, AERO_PD_NO_RULE},
@@ -125,10 +129,10 @@ static void *cavity_tilde_new(t_symbol *s, int argc, t_atom *argv)
     (void)s;
     t_cavity_tilde *x = (t_cavity_tilde *)pd_new(cavity_tilde_class);
     aero_pd_base_init(&x->x_base, x, &cavity_tilde_spec, argc, argv);
-    if (aero_cavity_init(&x->x_core, sys_getsr(),
-                               aero_pd_default_seed()))
-        pd_error(x, OBJ ": sample rate %g not usable: 44100 Hz until the "
-                 "DSP starts", sys_getsr());
+    if (aero_cavity_init(&x->x_core, sys_getsr(), x->x_base.stereo ? 2 : 1,
+                         aero_pd_default_seed()))
+        pd_error(x, OBJ ": sample rate %g not usable: %g Hz until the "
+                 "DSP starts", sys_getsr(), AERO_SAMPLE_RATE_FALLBACK);
     aero_pd_parse_flags(&x->x_base, argc, argv);
     aero_pd_base_outlets(&x->x_base);
     return x;

@@ -12,13 +12,11 @@
 #include "moving_player.h"
 
 #include "leafwave.h"
-#include "load_job.h"
 #include "aero_util.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 static t_class *leafwave_tilde_class;
 
@@ -28,20 +26,12 @@ typedef struct _leafwave_tilde {
     aero_pd_base x_base;
     aero_pd_wind x_wind;
     aero_leafwave x_core;
-    int x_ok; /* the core is initialised */
     /* A tree file read, or the tables / reach / seed changed: a new core
-       is built in a worker (load_job.h) and swapped in by the clock with
-       a fade; the old core plays meanwhile. */
+       is built in a worker and swapped in by the clock with a fade; the
+       old core plays meanwhile (aero_pd_swap). */
+    aero_pd_swap x_swap;
     int x_creating;           /* in new(): the setters act at once */
     aero_leafwave_rebuild x_want; /* the tables, reach and seed asked */
-    struct lw_load *x_load;
-    aero_load_job *x_job;
-    t_symbol *x_next;         /* the latest 'open' asked during a load */
-    t_clock *x_poll;
-    double x_logical, x_real; /* when the job started: logical, real (s) */
-    aero_leafwave *x_old;     /* the core fading out, or NULL */
-    int x_fade, x_fade_len;   /* samples of the fade done, its length */
-    int x_fade_seen;          /* x_fade at the last poll */
 } t_leafwave_tilde;
 
 typedef struct lw_load {
@@ -58,25 +48,14 @@ typedef struct lw_load {
 
 #define OBJ "[leafwave~]"
 
-#define FADE_MS 10.0   /* the old core fades out over this after a swap */
-#define WAIT_MS 20.0   /* a job is swapped in this late, or later */
-#define POLL_MS 5.0
-#define SMALL_FILE (2L << 20) /* bytes: read at creation (the shipped
-                                 trees) */
-
 static int leafwave_tilde_process(void *obj, const float *in,
                                   float *const *out, int n)
 {
     t_leafwave_tilde *x = obj;
     /* the near-field policy: reported once (the last block's record) */
     aero_pd_near(&x->x_base, &x->x_core.near);
-    if (!x->x_ok) {
-        for (int e = 0; e < 2; e++)
-            for (int i = 0; out[e] && i < n; i++)
-                out[e][i] = 0;
-        return 0;
-    }
-    if (x->x_old) {
+    aero_leafwave *old = x->x_swap.old;
+    if (old) {
         /* the old core into scratch first (the inlet may alias out[0]),
            faded out under the new one in chunks */
         float a[2][64];
@@ -85,13 +64,11 @@ static int leafwave_tilde_process(void *obj, const float *in,
             int m = n - done < 64 ? n - done : 64;
             float *ao[2] = {a[0], a[1]};
             float *no[2] = {out[0] + done, out[1] ? out[1] + done : NULL};
-            aero_leafwave_process(x->x_old, in ? in + done : NULL, ao, m);
+            aero_leafwave_process(old, in ? in + done : NULL, ao, m);
             clamped |= aero_leafwave_process(&x->x_core,
                                              in ? in + done : NULL, no, m);
             for (int i = 0; i < m; i++) {
-                float g = x->x_fade < x->x_fade_len
-                    ? 1.0f - (float)x->x_fade / x->x_fade_len : 0.0f;
-                x->x_fade++;
+                float g = aero_pd_swap_gain(&x->x_swap);
                 for (int e = 0; e < x->x_core.n_ears && e < 2; e++)
                     no[e][i] += g * a[e][i];
             }
@@ -106,7 +83,7 @@ static int leafwave_tilde_process(void *obj, const float *in,
 
 static void leafwave_tilde_dsp(t_leafwave_tilde *x, t_signal **sp)
 {
-    if (x->x_ok && aero_leafwave_set_sample_rate(&x->x_core, sp[0]->s_sr))
+    if (aero_leafwave_set_sample_rate(&x->x_core, sp[0]->s_sr))
         pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
     aero_pd_dsp(&x->x_base, sp, 1, leafwave_tilde_process);
 }
@@ -147,13 +124,9 @@ static void leafwave_tilde_drop_load(void *arg)
     free(l);
 }
 
-static void leafwave_tilde_drop_old(t_leafwave_tilde *x)
+static void leafwave_tilde_free_core(void *core)
 {
-    if (x->x_old) {
-        aero_leafwave_free(x->x_old);
-        free(x->x_old);
-        x->x_old = NULL;
-    }
+    aero_leafwave_free(core);
 }
 
 static int leafwave_tilde_wants_rebuild(const t_leafwave_tilde *x)
@@ -168,14 +141,22 @@ static int leafwave_tilde_wants_rebuild(const t_leafwave_tilde *x)
 static void leafwave_tilde_start(t_leafwave_tilde *x, t_symbol *name,
                                  int now);
 
+/* what is asked is what plays: the live core's tables, reach and seed */
+static void leafwave_tilde_want_live(t_leafwave_tilde *x)
+{
+    x->x_want.fm = x->x_core.fm;
+    x->x_want.per_octave = x->x_core.tables_per_octave;
+    x->x_want.octaves = x->x_core.octaves;
+    x->x_want.reach = x->x_core.reach;
+    x->x_want.seed = x->x_core.seed;
+}
+
 /* the finished job: its report, then the new core swapped in (the old one
    fades out); then the next job, if one was asked meanwhile */
-static void leafwave_tilde_finish(t_leafwave_tilde *x)
+static void leafwave_tilde_finish(void *owner)
 {
-    lw_load *l = x->x_load;
-    aero_load_job_finish(x->x_job);
-    x->x_job = NULL;
-    x->x_load = NULL;
+    t_leafwave_tilde *x = owner;
+    lw_load *l = aero_pd_swap_take(&x->x_swap);
     if (l->has_file && aero_pd_tree_report(&x->x_base, &l->read)) {
         ; /* refused: the tree that played, if any, plays on */
     } else if (!l->ok) {
@@ -186,74 +167,43 @@ static void leafwave_tilde_finish(t_leafwave_tilde *x)
         } else {
             pd_error(x, OBJ ": %s: the old tables and neighbours stay",
                      l->err);
-            x->x_want.fm = x->x_core.fm;
-            x->x_want.per_octave = x->x_core.tables_per_octave;
-            x->x_want.octaves = x->x_core.octaves;
-            x->x_want.reach = x->x_core.reach;
-            x->x_want.seed = x->x_core.seed;
+            leafwave_tilde_want_live(x);
         }
     } else {
         /* what changed while it was built */
         aero_leafwave_set_sample_rate(&l->core, x->x_core.sample_rate);
         aero_leafwave_copy_settings(&l->core, &x->x_core);
-        leafwave_tilde_drop_old(x);
-        x->x_old = malloc(sizeof(*x->x_old));
-        if (x->x_old)
-            aero_leafwave_move(x->x_old, &x->x_core);
+        aero_leafwave *old = aero_pd_swap_fade_slot(
+            &x->x_swap, sizeof(*old), l->core.sample_rate);
+        if (old)
+            aero_leafwave_move(old, &x->x_core);
         else
             aero_leafwave_free(&x->x_core);
         aero_leafwave_move(&x->x_core, &l->core);
-        x->x_fade = x->x_fade_seen = 0;
-        x->x_fade_len = (int)(FADE_MS * 0.001 * x->x_core.sample_rate);
         if (l->has_file && l->nleaves == 0)
             pd_error(x, OBJ ": tree %s has no leaves: silent", l->read.path);
     }
     leafwave_tilde_drop_load(l);
-    if (x->x_next) {
-        t_symbol *next = x->x_next;
-        x->x_next = NULL;
+    if (x->x_swap.next) {
+        t_symbol *next = x->x_swap.next;
+        x->x_swap.next = NULL;
         leafwave_tilde_start(x, next, 0);
     } else if (leafwave_tilde_wants_rebuild(x)) {
         leafwave_tilde_start(x, NULL, 0);
     }
 }
 
-/* Pd's logical time running well ahead of the real one: batch mode (or
-   no audio device), where nobody hears a wait and renders must not
-   depend on how fast the worker was */
-static int leafwave_tilde_batch(const t_leafwave_tilde *x)
-{
-    double logical = clock_gettimesince(x->x_logical) * 0.001;
-    return sys_getrealtime() - x->x_real < 0.5 * logical;
-}
-
-static void leafwave_tilde_poll(t_leafwave_tilde *x)
-{
-    /* faded out, or not fading at all (DSP is off) */
-    if (x->x_old && (x->x_fade >= x->x_fade_len ||
-                     x->x_fade == x->x_fade_seen))
-        leafwave_tilde_drop_old(x);
-    x->x_fade_seen = x->x_fade;
-    if (x->x_job && (aero_load_job_done(x->x_job) ||
-                     leafwave_tilde_batch(x)))
-        leafwave_tilde_finish(x);
-    if (x->x_job || x->x_old)
-        clock_delay(x->x_poll, POLL_MS);
-}
-
-/* Starts a job: the tree file `name`, or (NULL) the live tree again with
-   the tables, reach and seed asked. The clock swaps the new core in
-   WAIT_MS later, or as soon after as it is ready (in batch mode it waits
-   for it then: the same logical time in every run). `now` (creation): a
-   file under SMALL_FILE is read here at once, so a patch plays its tree
-   from the first block. A job asked while one runs follows it. */
+/* Starts a job (aero_pd_swap_start): the tree file `name`, or (NULL) the
+   live tree again with the tables, reach and seed asked. `now`
+   (creation): a file under AERO_PD_SWAP_SMALL_FILE is read here at once,
+   so a patch plays its tree from the first block. A job asked while one
+   runs follows it. */
 static void leafwave_tilde_start(t_leafwave_tilde *x, t_symbol *name,
                                  int now)
 {
-    struct stat st;
-    if (x->x_job) {
+    if (x->x_swap.job) {
         if (name)
-            x->x_next = name; /* the latest wins; a rebuild follows anyway */
+            x->x_swap.next = name; /* the latest wins; a rebuild follows anyway */
         return;
     }
     lw_load *l = calloc(1, sizeof(*l));
@@ -270,7 +220,7 @@ static void leafwave_tilde_start(t_leafwave_tilde *x, t_symbol *name,
             return;
         }
         l->has_file = 1;
-        small = stat(l->read.path, &st) == 0 && st.st_size < SMALL_FILE;
+        small = aero_pd_swap_small(l->read.path);
     } else if (x->x_core.has_tree) {
         /* the arrays stay the live core's: not replaced while this runs */
         l->live = x->x_core.tree;
@@ -278,28 +228,16 @@ static void leafwave_tilde_start(t_leafwave_tilde *x, t_symbol *name,
     }
     l->snap = x->x_core; /* its numbers only are read */
     l->want = x->x_want;
-    x->x_load = l;
-    x->x_job = aero_load_job_start(leafwave_tilde_build, l, !(now && small));
-    if (!x->x_job) {
-        x->x_load = NULL;
+    if (aero_pd_swap_start(&x->x_swap, leafwave_tilde_build, l,
+                           now && small)) {
         free(l);
         pd_error(x, OBJ ": out of memory: silent");
-        return;
     }
-    if (now && small) {
-        leafwave_tilde_finish(x);
-        leafwave_tilde_drop_old(x); /* nothing played yet: no fade */
-        return;
-    }
-    x->x_logical = clock_getlogicaltime();
-    x->x_real = sys_getrealtime();
-    clock_delay(x->x_poll, WAIT_MS);
 }
 
 static void leafwave_tilde_open(t_leafwave_tilde *x, t_symbol *name)
 {
-    if (x->x_ok)
-        leafwave_tilde_start(x, name, x->x_creating);
+    leafwave_tilde_start(x, name, x->x_creating);
 }
 
 /* a rebuild with x_want: at once in new() (the flags), else in a job */
@@ -311,30 +249,28 @@ static void leafwave_tilde_rebuild(t_leafwave_tilde *x)
 
 /* --- messages (each also a creation flag of the same name) -------------- */
 
-/* the setters: refusals worded from the table; none before the core is
-   initialised */
-#define SETTER(msg, call, whole)                                          \
-    static void leafwave_tilde_##msg(t_leafwave_tilde *x, t_floatarg f)   \
-    {                                                                     \
-        int n = 0;                                                        \
-        if (x->x_ok &&                                                    \
-            ((whole && aero_pd_whole_of(&x->x_base, #msg, f, &n)) ||      \
-             call(&x->x_core,                                            \
-                  whole ? n : aero_pd_at_bound(&x->x_base, #msg, f))))   \
-            aero_pd_refused(&x->x_base, #msg, f);                         \
-    }
-
-SETTER(gain, aero_leafwave_set_gain_db, 0)
-SETTER(ramp, aero_leafwave_set_ramp_ms, 0)
-SETTER(stiffness, aero_leafwave_set_stiffness, 0)
-SETTER(beta, aero_leafwave_set_beta, 0)
-SETTER(k, aero_leafwave_set_mic_k, 0)
-SETTER(sway, aero_leafwave_set_sway, 0)
-SETTER(coupling, aero_leafwave_set_coupling, 0)
-SETTER(flutter, aero_leafwave_set_flutter, 0)
-SETTER(hit, aero_leafwave_set_hit, 0)
-SETTER(rub, aero_leafwave_set_rub, 0)
-SETTER(voices, aero_leafwave_set_voices, 1)
+AERO_PD_SETTER(leafwave_tilde, t_leafwave_tilde, gain, x_core,
+               aero_leafwave_set_gain_db)
+AERO_PD_SETTER(leafwave_tilde, t_leafwave_tilde, ramp, x_core,
+               aero_leafwave_set_ramp_ms)
+AERO_PD_SETTER(leafwave_tilde, t_leafwave_tilde, stiffness, x_core,
+               aero_leafwave_set_stiffness)
+AERO_PD_SETTER(leafwave_tilde, t_leafwave_tilde, beta, x_core,
+               aero_leafwave_set_beta)
+AERO_PD_SETTER(leafwave_tilde, t_leafwave_tilde, k, x_core,
+               aero_leafwave_set_mic_k)
+AERO_PD_SETTER(leafwave_tilde, t_leafwave_tilde, sway, x_core,
+               aero_leafwave_set_sway)
+AERO_PD_SETTER(leafwave_tilde, t_leafwave_tilde, coupling, x_core,
+               aero_leafwave_set_coupling)
+AERO_PD_SETTER(leafwave_tilde, t_leafwave_tilde, flutter, x_core,
+               aero_leafwave_set_flutter)
+AERO_PD_SETTER(leafwave_tilde, t_leafwave_tilde, hit, x_core,
+               aero_leafwave_set_hit)
+AERO_PD_SETTER(leafwave_tilde, t_leafwave_tilde, rub, x_core,
+               aero_leafwave_set_rub)
+AERO_PD_SETTER_WHOLE(leafwave_tilde, t_leafwave_tilde, voices, x_core,
+                     aero_leafwave_set_voices)
 
 /* fm (which 0), tables per octave (1) or octaves (2): the other two stay
    (as last asked) */
@@ -343,8 +279,6 @@ static void leafwave_tilde_set_tables(t_leafwave_tilde *x, int which,
 {
     double v[3];
     int per, oct;
-    if (!x->x_ok)
-        return;
     v[0] = x->x_want.fm;
     v[1] = x->x_want.per_octave;
     v[2] = x->x_want.octaves;
@@ -378,8 +312,6 @@ static void leafwave_tilde_set_tables(t_leafwave_tilde *x, int which,
 
 static void leafwave_tilde_reach(t_leafwave_tilde *x, t_floatarg f)
 {
-    if (!x->x_ok)
-        return;
     if (!aero_leafwave_reach_valid(f) ||
         (x->x_creating && aero_leafwave_set_reach(&x->x_core, f))) {
         aero_pd_refused(&x->x_base, "reach", f);
@@ -407,7 +339,7 @@ static void leafwave_tilde_octaves(t_leafwave_tilde *x, t_floatarg f)
 static void leafwave_tilde_seed(t_leafwave_tilde *x, t_floatarg f)
 {
     uint32_t seed;
-    if (!x->x_ok || aero_pd_seed_of(&x->x_base, f, &seed))
+    if (aero_pd_seed_of(&x->x_base, f, &seed))
         return;
     if (x->x_creating && aero_leafwave_set_seed(&x->x_core, seed))
         pd_error(x, OBJ ": out of memory restarting from seed %g", f);
@@ -418,8 +350,6 @@ static void leafwave_tilde_seed(t_leafwave_tilde *x, t_floatarg f)
 static void leafwave_tilde_wind(t_leafwave_tilde *x, t_symbol *s, int argc,
                                 t_atom *argv)
 {
-    if (!x->x_ok)
-        return;
     double speed = aero_pd_wind_message(&x->x_base, &x->x_wind, s, argc, argv);
     if (speed < 0.0)
         return;
@@ -436,7 +366,7 @@ static void leafwave_tilde_mic(t_leafwave_tilde *x, t_symbol *s, int argc,
                                t_atom *argv)
 {
     double v[3];
-    if (!x->x_ok || aero_pd_floats(x, OBJ, s->s_name, argc, argv, 3, v))
+    if (aero_pd_floats(x, OBJ, s->s_name, argc, argv, 3, v))
         return;
     if (aero_leafwave_set_mic(&x->x_core, v[0], v[1], v[2]))
         aero_pd_refused_list(&x->x_base, s->s_name);
@@ -446,7 +376,7 @@ static void leafwave_tilde_listener(t_leafwave_tilde *x, t_symbol *s,
                                     int argc, t_atom *argv)
 {
     aero_ears e;
-    if (x->x_ok && aero_pd_ears(&x->x_base, s, argc, argv, &e) &&
+    if (aero_pd_ears(&x->x_base, s, argc, argv, &e) &&
         aero_leafwave_set_ears(&x->x_core, &e))
         aero_pd_bad_ears(&x->x_base, e.n);
 }
@@ -461,14 +391,14 @@ static const aero_pd_method leafwave_tilde_methods[] = {
     {"open", AERO_PD_SYMBOL, 0, (t_method)leafwave_tilde_open, 0, AERO_PD_NO_RULE},
     {"tree", AERO_PD_SYMBOL, 0, (t_method)leafwave_tilde_open, 0, AERO_PD_NO_RULE},
     {"wind", AERO_PD_LIST, 3, (t_method)leafwave_tilde_wind, 0,
-     AERO_PD_RANGE_NOTE(0, AERO_MOVING_WIND_MAX, "m/s",
+     AERO_PD_RANGE_NOTE(AERO_MOVING_WIND_MIN, AERO_MOVING_WIND_MAX, "m/s",
                         "the vector's length")},
     {"listener", AERO_PD_LIST, 3, (t_method)leafwave_tilde_listener, 0, AERO_PD_NO_RULE},
     {"ears", AERO_PD_LIST, 6, (t_method)leafwave_tilde_listener, 0, AERO_PD_NO_RULE},
     {"mic", AERO_PD_LIST, 3, (t_method)leafwave_tilde_mic, 0,
      AERO_PD_NOTE("a finite direction; 0 0 0 aims it at the tree")},
     {"k", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_k, 0,
-     AERO_PD_RANGE_DEF(0, AERO_LEAFWAVE_MIC_K_MAX,
+     AERO_PD_RANGE_DEF(AERO_LEAFWAVE_MIC_K_MIN, AERO_LEAFWAVE_MIC_K_MAX,
                        AERO_LEAFWAVE_MIC_K_DEFAULT, NULL)},
     {"gain", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_gain, 0,
      AERO_PD_GAIN},
@@ -480,9 +410,10 @@ static const aero_pd_method leafwave_tilde_methods[] = {
      AERO_PD_RANGE_DEF(AERO_TREE_STIFFNESS_MIN, AERO_TREE_STIFFNESS_MAX,
                        AERO_TREE_STIFFNESS_DEFAULT, NULL)},
     {"beta", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_beta, 0,
-     AERO_PD_RANGE_DEF(0, AERO_TREE_BETA_MAX, AERO_TREE_BETA_DEFAULT, NULL)},
+     AERO_PD_RANGE_DEF(AERO_TREE_BETA_MIN, AERO_TREE_BETA_MAX,
+                       AERO_TREE_BETA_DEFAULT, NULL)},
     {"sway", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_sway, 0,
-     AERO_PD_RANGE_DEF(0, AERO_LEAFWAVE_SWAY_MAX,
+     AERO_PD_RANGE_DEF(AERO_LEAFWAVE_SWAY_MIN, AERO_LEAFWAVE_SWAY_MAX,
                        AERO_LEAFWAVE_SWAY_DEFAULT, "rad")},
     {"coupling", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_coupling, 0,
      AERO_PD_RANGE_DEF(-AERO_LEAFWAVE_COUPLING_MAX, AERO_LEAFWAVE_COUPLING_MAX,
@@ -491,26 +422,28 @@ static const aero_pd_method leafwave_tilde_methods[] = {
      AERO_PD_RANGE_DEF(AERO_LEAFWAVE_FLUTTER_MIN, AERO_LEAFWAVE_FLUTTER_MAX,
                        AERO_LEAFWAVE_FLUTTER_DEFAULT, "Hz")},
     {"hit", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_hit, 0,
-     AERO_PD_RANGE_DEF(0, AERO_LEAFWAVE_PA_MAX, AERO_LEAFWAVE_HIT_DEFAULT,
-                       "Pa")},
+     AERO_PD_RANGE_DEF(AERO_LEAFWAVE_PA_MIN, AERO_LEAFWAVE_PA_MAX,
+                       AERO_LEAFWAVE_HIT_DEFAULT, "Pa")},
     {"rub", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_rub, 0,
-     AERO_PD_RANGE_DEF(0, AERO_LEAFWAVE_PA_MAX, AERO_LEAFWAVE_RUB_DEFAULT,
-                       "Pa")},
+     AERO_PD_RANGE_DEF(AERO_LEAFWAVE_PA_MIN, AERO_LEAFWAVE_PA_MAX,
+                       AERO_LEAFWAVE_RUB_DEFAULT, "Pa")},
     {"reach", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_reach, 0,
      AERO_PD_RANGE_DEF(AERO_LEAFWAVE_REACH_MIN, AERO_LEAFWAVE_REACH_MAX,
                        AERO_LEAFWAVE_REACH_DEFAULT, NULL)},
     {"voices", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_voices, 0,
-     AERO_PD_RANGE_DEF(1, AERO_LEAFWAVE_VOICES_MAX,
+     AERO_PD_RANGE_DEF(AERO_LEAFWAVE_VOICES_MIN, AERO_LEAFWAVE_VOICES_MAX,
                        AERO_LEAFWAVE_VOICES_DEFAULT, NULL)},
     {"fm", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_fm, 0,
      AERO_PD_RANGE_DEF(AERO_LEAFWAVE_FM_MIN, AERO_LEAFWAVE_FM_MAX,
                        AERO_LEAFWAVE_FM_DEFAULT, "Hz")},
     {"tables", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_tables, 0,
-     AERO_PD_RANGE_NOTE_DEF(1, AERO_LEAFWAVE_PER_OCTAVE_MAX,
+     AERO_PD_RANGE_NOTE_DEF(AERO_LEAFWAVE_PER_OCTAVE_MIN,
+                            AERO_LEAFWAVE_PER_OCTAVE_MAX,
                             AERO_LEAFWAVE_PER_OCTAVE_DEFAULT, "per octave",
                             TABLES_NOTE)},
     {"octaves", AERO_PD_FLOAT, 0, (t_method)leafwave_tilde_octaves, 0,
-     AERO_PD_RANGE_NOTE_DEF(1, AERO_LEAFWAVE_OCTAVES_MAX,
+     AERO_PD_RANGE_NOTE_DEF(AERO_LEAFWAVE_OCTAVES_MIN,
+                            AERO_LEAFWAVE_OCTAVES_MAX,
                             AERO_LEAFWAVE_OCTAVES_DEFAULT, NULL, TABLES_NOTE)},
 };
 
@@ -524,28 +457,21 @@ static void *leafwave_tilde_new(t_symbol *s, int argc, t_atom *argv)
     t_leafwave_tilde *x = (t_leafwave_tilde *)pd_new(leafwave_tilde_class);
     aero_pd_base_init(&x->x_base, x, &leafwave_tilde_spec, argc, argv);
     aero_pd_wind_init(&x->x_wind);
-    x->x_poll = clock_new(x, (t_method)leafwave_tilde_poll);
+    aero_pd_swap_init(&x->x_swap, x, leafwave_tilde_finish,
+                      leafwave_tilde_free_core);
     x->x_creating = 1;
-    x->x_ok = aero_leafwave_init(&x->x_core, sys_getsr(),
-                                 x->x_base.stereo ? 2 : 1,
-                                 aero_pd_default_seed()) == 0;
-    if (!x->x_ok)
+    /* a failed init leaves a silent core, safe to use */
+    if (aero_leafwave_init(&x->x_core, sys_getsr(), x->x_base.stereo ? 2 : 1,
+                           aero_pd_default_seed()))
         pd_error(x, OBJ ": out of memory: silent");
     /* the tree file: the first argument that is not a flag; the seed and
        the tables are set by the flags first, so the tree is built once */
     t_symbol *file = aero_pd_first_symbol(&argc, &argv);
     aero_pd_parse_flags(&x->x_base, argc, argv);
-    if (x->x_ok) {
-        x->x_want.fm = x->x_core.fm;
-        x->x_want.per_octave = x->x_core.tables_per_octave;
-        x->x_want.octaves = x->x_core.octaves;
-        x->x_want.reach = x->x_core.reach;
-        x->x_want.seed = x->x_core.seed;
-    }
+    leafwave_tilde_want_live(x);
     if (file)
         leafwave_tilde_open(x, file);
-    else
-        post(OBJ ": no tree file given: silent until 'open <file>'");
+    aero_pd_no_file(&x->x_base, "tree", "open");
     x->x_creating = 0;
     aero_pd_base_outlets(&x->x_base);
     return x;
@@ -554,19 +480,15 @@ static void *leafwave_tilde_new(t_symbol *s, int argc, t_atom *argv)
 static void leafwave_tilde_free(t_leafwave_tilde *x)
 {
     aero_pd_base_free(&x->x_base);
-    clock_free(x->x_poll);
-    if (x->x_job) {
-        /* not waited for: the worker drops what it made when done; the
-           live tree it may still be copying becomes the job's */
-        if (x->x_load->has_live) {
-            x->x_load->owns_live = 1;
-            memset(&x->x_core.tree, 0, sizeof(x->x_core.tree));
-        }
-        aero_load_job_abandon(x->x_job, leafwave_tilde_drop_load);
+    lw_load *l = x->x_swap.load;
+    /* a job is not waited for: the worker drops what it made when done;
+       the live tree it may still be copying becomes the job's */
+    if (x->x_swap.job && l->has_live) {
+        l->owns_live = 1;
+        memset(&x->x_core.tree, 0, sizeof(x->x_core.tree));
     }
-    leafwave_tilde_drop_old(x);
-    if (x->x_ok)
-        aero_leafwave_free(&x->x_core);
+    aero_pd_swap_free(&x->x_swap, leafwave_tilde_drop_load);
+    aero_leafwave_free(&x->x_core);
 }
 
 AERO_PD_EXPORT void leafwave_tilde_setup(void)

@@ -10,11 +10,9 @@
 #include "moving_player.h"
 
 #include "treebranch.h"
-#include "load_job.h"
 
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 static t_class *treebranch_tilde_class;
 
@@ -24,19 +22,12 @@ typedef struct _treebranch_tilde {
     aero_pd_base x_base;
     aero_pd_wind x_wind;
     aero_treebranch x_core;
-    /* a tree loading in a worker (load_job.h): read and a new core built
-       there, swapped in by the clock with a fade; the old core plays
-       meanwhile */
-    struct tb_load *x_load;
-    aero_load_job *x_job;
-    t_symbol *x_next;         /* the latest 'open' asked during a load */
+    /* a tree loading in a worker: read and a new core built there,
+       swapped in by the clock with a fade; the old core plays meanwhile
+       (aero_pd_swap) */
+    aero_pd_swap x_swap;
     int x_creating;           /* in new(): a seed acts at once */
     uint32_t x_want_seed;     /* the seed asked (a job builds it) */
-    t_clock *x_poll;
-    double x_logical, x_real; /* when the load started: logical, real (s) */
-    aero_treebranch *x_old;   /* the core fading out, or NULL */
-    int x_fade, x_fade_len;   /* samples of the fade done, its length */
-    int x_fade_seen;          /* x_fade at the last poll */
 } t_treebranch_tilde;
 
 typedef struct tb_load {
@@ -51,33 +42,26 @@ typedef struct tb_load {
 
 #define OBJ "[treebranch~]"
 
-#define FADE_MS 10.0   /* the old core fades out over this after a swap */
-#define WAIT_MS 20.0   /* a load is swapped in this late, or later */
-#define POLL_MS 5.0
-#define SMALL_FILE (2L << 20) /* bytes: read at creation (the shipped
-                                 trees; ~0.1 s for 2 MB) */
-
 static int treebranch_tilde_process(void *obj, const float *in,
                                     float *const *out, int n)
 {
     t_treebranch_tilde *x = obj;
     /* the near-field policy: reported once (the last block's record) */
     aero_pd_near(&x->x_base, &x->x_core.near);
-    if (x->x_old) {
+    aero_treebranch *old = x->x_swap.old;
+    if (old) {
         /* the old core into scratch first (the inlet may alias out[0]),
            faded out under the new one in chunks */
         float a[2][64];
         for (int done = 0; done < n;) {
             int m = n - done < 64 ? n - done : 64;
-            aero_treebranch_process_speed(x->x_old, in ? in + done : NULL,
+            aero_treebranch_process_speed(old, in ? in + done : NULL,
                                           a[0], out[1] ? a[1] : NULL, m);
             aero_treebranch_process_speed(&x->x_core, in ? in + done : NULL,
                                           out[0] + done,
                                           out[1] ? out[1] + done : NULL, m);
             for (int i = 0; i < m; i++) {
-                float g = x->x_fade < x->x_fade_len
-                    ? 1.0f - (float)x->x_fade / x->x_fade_len : 0.0f;
-                x->x_fade++;
+                float g = aero_pd_swap_gain(&x->x_swap);
                 out[0][done + i] += g * a[0][i];
                 if (out[1])
                     out[1][done + i] += g * a[1][i];
@@ -129,13 +113,9 @@ static void treebranch_tilde_drop_load(void *arg)
     free(l);
 }
 
-static void treebranch_tilde_drop_old(t_treebranch_tilde *x)
+static void treebranch_tilde_free_core(void *core)
 {
-    if (x->x_old) {
-        aero_treebranch_free(x->x_old);
-        free(x->x_old);
-        x->x_old = NULL;
-    }
+    aero_treebranch_free(core);
 }
 
 static void treebranch_tilde_start(t_treebranch_tilde *x, t_symbol *name,
@@ -143,12 +123,10 @@ static void treebranch_tilde_start(t_treebranch_tilde *x, t_symbol *name,
 
 /* the finished load: its report, then the new core swapped in (the old
    one fades out) */
-static void treebranch_tilde_finish(t_treebranch_tilde *x)
+static void treebranch_tilde_finish(void *owner)
 {
-    tb_load *l = x->x_load;
-    aero_load_job_finish(x->x_job);
-    x->x_job = NULL;
-    x->x_load = NULL;
+    t_treebranch_tilde *x = owner;
+    tb_load *l = aero_pd_swap_take(&x->x_swap);
     if (l->has_file && aero_pd_tree_report(&x->x_base, &l->read)) {
         ; /* refused: the tree that played, if any, plays on */
     } else if (!l->ok && l->has_file) {
@@ -162,20 +140,18 @@ static void treebranch_tilde_finish(t_treebranch_tilde *x)
         /* what changed while it loaded */
         aero_treebranch_set_sample_rate(&l->core, x->x_core.sample_rate);
         aero_treebranch_copy_settings(&l->core, &x->x_core);
-        treebranch_tilde_drop_old(x);
-        x->x_old = malloc(sizeof(*x->x_old));
-        if (x->x_old)
-            aero_treebranch_move(x->x_old, &x->x_core);
+        aero_treebranch *old = aero_pd_swap_fade_slot(
+            &x->x_swap, sizeof(*old), l->core.sample_rate);
+        if (old)
+            aero_treebranch_move(old, &x->x_core);
         else
             aero_treebranch_free(&x->x_core);
         aero_treebranch_move(&x->x_core, &l->core);
-        x->x_fade = x->x_fade_seen = 0;
-        x->x_fade_len = (int)(FADE_MS * 0.001 * x->x_core.sample_rate);
     }
     treebranch_tilde_drop_load(l);
-    if (x->x_next) {
-        t_symbol *next = x->x_next;
-        x->x_next = NULL;
+    if (x->x_swap.next) {
+        t_symbol *next = x->x_swap.next;
+        x->x_swap.next = NULL;
         treebranch_tilde_start(x, next, 0);
     } else if (x->x_want_seed != x->x_core.seed) {
         if (x->x_core.has_tree)
@@ -185,41 +161,15 @@ static void treebranch_tilde_finish(t_treebranch_tilde *x)
     }
 }
 
-/* Pd's logical time running well ahead of the real one: batch mode (or
-   no audio device), where nobody hears a wait and renders must not
-   depend on how fast the worker was */
-static int treebranch_tilde_batch(const t_treebranch_tilde *x)
-{
-    double logical = clock_gettimesince(x->x_logical) * 0.001;
-    return sys_getrealtime() - x->x_real < 0.5 * logical;
-}
-
-static void treebranch_tilde_poll(t_treebranch_tilde *x)
-{
-    /* faded out, or not fading at all (DSP is off) */
-    if (x->x_old && (x->x_fade >= x->x_fade_len ||
-                     x->x_fade == x->x_fade_seen))
-        treebranch_tilde_drop_old(x);
-    x->x_fade_seen = x->x_fade;
-    if (x->x_job && (aero_load_job_done(x->x_job) ||
-                     treebranch_tilde_batch(x)))
-        treebranch_tilde_finish(x);
-    if (x->x_job || x->x_old)
-        clock_delay(x->x_poll, POLL_MS);
-}
-
-/* Starts reading `name` in the worker; the clock swaps the new core in
-   WAIT_MS after the message, or as soon after as it is ready (in batch
-   mode it waits for it then: the same logical time in every run).
-   `now` (creation): a file under SMALL_FILE is read here at once, so a
-   patch plays its tree from the first block. */
+/* Starts reading `name` in the worker (aero_pd_swap_start). `now`
+   (creation): a file under AERO_PD_SWAP_SMALL_FILE is read here at once,
+   so a patch plays its tree from the first block. */
 static void treebranch_tilde_start(t_treebranch_tilde *x, t_symbol *name,
                                    int now)
 {
-    struct stat st;
-    if (x->x_job) {
+    if (x->x_swap.job) {
         if (name)
-            x->x_next = name; /* the latest wins; a new seed follows */
+            x->x_swap.next = name; /* the latest wins; a new seed follows */
         return;
     }
     tb_load *l = calloc(1, sizeof(*l));
@@ -236,7 +186,7 @@ static void treebranch_tilde_start(t_treebranch_tilde *x, t_symbol *name,
             return;
         }
         l->has_file = 1;
-        small = stat(l->read.path, &st) == 0 && st.st_size < SMALL_FILE;
+        small = aero_pd_swap_small(l->read.path);
     } else {
         /* the arrays stay the live core's: not replaced while this runs */
         l->live = x->x_core.tree;
@@ -244,23 +194,11 @@ static void treebranch_tilde_start(t_treebranch_tilde *x, t_symbol *name,
     }
     l->snap = x->x_core; /* its numbers only are read */
     l->snap.seed = x->x_want_seed;
-    x->x_load = l;
-    x->x_job = aero_load_job_start(treebranch_tilde_build, l,
-                                   !(now && small));
-    if (!x->x_job) {
-        x->x_load = NULL;
+    if (aero_pd_swap_start(&x->x_swap, treebranch_tilde_build, l,
+                           now && small)) {
         free(l);
         pd_error(x, OBJ ": out of memory: silent");
-        return;
     }
-    if (now && small) {
-        treebranch_tilde_finish(x);
-        treebranch_tilde_drop_old(x); /* nothing played yet: no fade */
-        return;
-    }
-    x->x_logical = clock_getlogicaltime();
-    x->x_real = sys_getrealtime();
-    clock_delay(x->x_poll, WAIT_MS);
 }
 
 static void treebranch_tilde_open(t_treebranch_tilde *x, t_symbol *name)
@@ -323,7 +261,7 @@ static void treebranch_tilde_seed(t_treebranch_tilde *x, t_floatarg f)
     if (aero_pd_seed_of(&x->x_base, f, &seed))
         return;
     x->x_want_seed = seed;
-    if (x->x_creating || (!x->x_job && !x->x_core.has_tree)) {
+    if (x->x_creating || (!x->x_swap.job && !x->x_core.has_tree)) {
         if (aero_treebranch_set_seed(&x->x_core, x->x_want_seed))
             pd_error(x, OBJ ": out of memory restarting the tree: silent");
     } else {
@@ -356,7 +294,7 @@ static const aero_pd_method treebranch_tilde_methods[] = {
      AERO_PD_NO_RULE},
     {"ears", AERO_PD_LIST, 6, (t_method)treebranch_tilde_listener, 0, AERO_PD_NO_RULE},
     {"wind", AERO_PD_LIST, 3, (t_method)treebranch_tilde_wind, 0,
-     AERO_PD_RANGE_NOTE(0, AERO_MOVING_WIND_MAX, "m/s",
+     AERO_PD_RANGE_NOTE(AERO_MOVING_WIND_MIN, AERO_MOVING_WIND_MAX, "m/s",
                         "the vector's length")},
     {"open", AERO_PD_SYMBOL, 0, (t_method)treebranch_tilde_open,
      AERO_PD_MESSAGE_ONLY, AERO_PD_NO_RULE},
@@ -373,7 +311,8 @@ static void *treebranch_tilde_new(t_symbol *s, int argc, t_atom *argv)
         (t_treebranch_tilde *)pd_new(treebranch_tilde_class);
     aero_pd_base_init(&x->x_base, x, &treebranch_tilde_spec, argc, argv);
     aero_pd_wind_init(&x->x_wind);
-    x->x_poll = clock_new(x, (t_method)treebranch_tilde_poll);
+    aero_pd_swap_init(&x->x_swap, x, treebranch_tilde_finish,
+                      treebranch_tilde_free_core);
     x->x_creating = 1;
     if (aero_treebranch_init(&x->x_core, sys_getsr(), aero_pd_default_seed()))
         pd_error(x, OBJ ": out of memory: silent");
@@ -393,17 +332,14 @@ static void *treebranch_tilde_new(t_symbol *s, int argc, t_atom *argv)
 static void treebranch_tilde_free(t_treebranch_tilde *x)
 {
     aero_pd_base_free(&x->x_base);
-    clock_free(x->x_poll);
-    if (x->x_job) {
-        /* not waited for: the worker drops what it made when done; the
-           live tree it may still be copying becomes the job's */
-        if (x->x_load->has_live) {
-            x->x_load->owns_live = 1;
-            memset(&x->x_core.tree, 0, sizeof(x->x_core.tree));
-        }
-        aero_load_job_abandon(x->x_job, treebranch_tilde_drop_load);
+    tb_load *l = x->x_swap.load;
+    /* a job is not waited for: the worker drops what it made when done;
+       the live tree it may still be copying becomes the job's */
+    if (x->x_swap.job && l->has_live) {
+        l->owns_live = 1;
+        memset(&x->x_core.tree, 0, sizeof(x->x_core.tree));
     }
-    treebranch_tilde_drop_old(x);
+    aero_pd_swap_free(&x->x_swap, treebranch_tilde_drop_load);
     aero_treebranch_free(&x->x_core);
 }
 

@@ -51,6 +51,13 @@ pd_render cav-r2 "cavity~ -L 0.02 -D 0.01 -W 0.05 -listener 0 2 0" 1 3000 "; aer
 pd_render cav-r4 "cavity~ -L 0.02 -D 0.01 -W 0.05 -listener 0 4 0" 1 3000 "; aero-speed 10"
 judge $ANALYZE leveldiff "$OUT/cav-r2.wav" "$OUT/cav-r4.wav" --expect -6 --tol 1
 
+# and -stereo: each ear hears the field at its own distance (1/r, a
+# compact source's far field, Curle 1955): ears 1 m and 2 m out of the
+# opening, the far one 6 dB lower
+pd_render cav-stereo "cavity~ -L 0.02 -D 0.01 -W 0.05 -stereo -ears 0 1 0 0 2 0" 2 3000 "; aero-speed 10"
+L=$($ANALYZE level "$OUT/cav-stereo.wav" --ch 0 | sed 's/.*: \([-0-9.e]*\) dB.*/\1/')
+judge $ANALYZE level "$OUT/cav-stereo.wav" --ch 1 --expect "$(awk -v l="$L" 'BEGIN{print l-6}')" --tol 1
+
 # 4. texture mode: the shipped cavity texture plays, finite, and follows the
 # same speed law (+12 dB per doubling, the texture read at v/v0)
 pd_render cav-tex-u10 "cavity~ -texture cavity" 1 3000 "; aero-speed 10"

@@ -52,7 +52,7 @@ static double render(aero_leafwave *lw, double seconds, float *out)
 /* power spectrum of one table (FFTW), bin k at k * TABLE_RATE / LEN Hz */
 static void table_power(const float *tab, double *power)
 {
-    int n = AERO_LEAF_TABLE_LEN;
+    int n = AERO_LEAFWAVE_TABLE_LEN;
     double *in = fftw_malloc(sizeof(double) * n);
     fftw_complex *out = fftw_malloc(sizeof(fftw_complex) * (n / 2 + 1));
     fftw_plan plan = fftw_plan_dft_r2c_1d(n, in, out, FFTW_ESTIMATE);
@@ -75,8 +75,8 @@ UNIT_TEST(table_frequencies)
     aero_leafwave_set_tables(&lw, 150.0, 6, 3);
     UNIT_CHECK(lw.ntables == 18, "N 6 per octave over 3 octaves: %d tables",
                lw.ntables);
-    double df = AERO_LEAF_TABLE_RATE / AERO_LEAF_TABLE_LEN;
-    double *power = malloc(sizeof(double) * (AERO_LEAF_TABLE_LEN / 2 + 1));
+    double df = AERO_LEAFWAVE_TABLE_RATE / AERO_LEAFWAVE_TABLE_LEN;
+    double *power = malloc(sizeof(double) * (AERO_LEAFWAVE_TABLE_LEN / 2 + 1));
     int worst_i = -1;
     double worst = 0.0, leak = 0.0;
     for (int i = 0; i < lw.ntables; i++) {
@@ -84,7 +84,7 @@ UNIT_TEST(table_frequencies)
         table_power(aero_leafwave_table(&lw, i), power);
         int kmax = 1;
         double total = 0.0, below = 0.0;
-        for (int k = 1; k <= AERO_LEAF_TABLE_LEN / 2; k++) {
+        for (int k = 1; k <= AERO_LEAFWAVE_TABLE_LEN / 2; k++) {
             total += power[k];
             if (k * df < 0.97 * want)
                 below += power[k];
@@ -110,7 +110,7 @@ UNIT_TEST(table_frequencies)
     /* negative control: table 1 does not start at table 0's frequency */
     table_power(aero_leafwave_table(&lw, 1), power);
     int kmax = 1;
-    for (int k = 1; k <= AERO_LEAF_TABLE_LEN / 2; k++)
+    for (int k = 1; k <= AERO_LEAFWAVE_TABLE_LEN / 2; k++)
         if (power[k] > power[kmax])
             kmax = k;
     UNIT_CHECK(fabs(kmax * df - 150.0) > df,
@@ -134,16 +134,16 @@ UNIT_TEST(table_frequencies)
 static int allowed(int from, int to)
 {
     switch (from) {
-    case AERO_PAIR_INITIAL:
-        return to == AERO_PAIR_CONTACT || to == AERO_PAIR_NONCONTACT;
-    case AERO_PAIR_NONCONTACT:
-        return to == AERO_PAIR_NONCONTACT || to == AERO_PAIR_KEYON;
-    case AERO_PAIR_KEYON:
-        return to == AERO_PAIR_CONTACT || to == AERO_PAIR_KEYOFF;
-    case AERO_PAIR_CONTACT:
-        return to == AERO_PAIR_CONTACT || to == AERO_PAIR_KEYOFF;
-    case AERO_PAIR_KEYOFF:
-        return to == AERO_PAIR_KEYON || to == AERO_PAIR_NONCONTACT;
+    case AERO_LEAFWAVE_PAIR_INITIAL:
+        return to == AERO_LEAFWAVE_PAIR_CONTACT || to == AERO_LEAFWAVE_PAIR_NONCONTACT;
+    case AERO_LEAFWAVE_PAIR_NONCONTACT:
+        return to == AERO_LEAFWAVE_PAIR_NONCONTACT || to == AERO_LEAFWAVE_PAIR_KEYON;
+    case AERO_LEAFWAVE_PAIR_KEYON:
+        return to == AERO_LEAFWAVE_PAIR_CONTACT || to == AERO_LEAFWAVE_PAIR_KEYOFF;
+    case AERO_LEAFWAVE_PAIR_CONTACT:
+        return to == AERO_LEAFWAVE_PAIR_CONTACT || to == AERO_LEAFWAVE_PAIR_KEYOFF;
+    case AERO_LEAFWAVE_PAIR_KEYOFF:
+        return to == AERO_LEAFWAVE_PAIR_KEYON || to == AERO_LEAFWAVE_PAIR_NONCONTACT;
     }
     return 0;
 }
@@ -174,23 +174,23 @@ UNIT_TEST(state_machine)
     }
     UNIT_CHECK(bad == 0, "every transition is one of fig. 12 (%d were not)",
                bad);
-    UNIT_CHECK(seen[AERO_PAIR_INITIAL][AERO_PAIR_NONCONTACT] > 0 &&
-                   seen[AERO_PAIR_INITIAL][AERO_PAIR_CONTACT] > 0,
+    UNIT_CHECK(seen[AERO_LEAFWAVE_PAIR_INITIAL][AERO_LEAFWAVE_PAIR_NONCONTACT] > 0 &&
+                   seen[AERO_LEAFWAVE_PAIR_INITIAL][AERO_LEAFWAVE_PAIR_CONTACT] > 0,
                "initial -> non-contact (%d) and -> contact (%d)",
                seen[0][1], seen[0][3]);
-    UNIT_CHECK(seen[AERO_PAIR_NONCONTACT][AERO_PAIR_KEYON] > 0 &&
-                   seen[AERO_PAIR_KEYON][AERO_PAIR_CONTACT] > 0 &&
-                   seen[AERO_PAIR_KEYON][AERO_PAIR_KEYOFF] > 0 &&
-                   seen[AERO_PAIR_CONTACT][AERO_PAIR_KEYOFF] > 0 &&
-                   seen[AERO_PAIR_KEYOFF][AERO_PAIR_KEYON] > 0 &&
-                   seen[AERO_PAIR_KEYOFF][AERO_PAIR_NONCONTACT] > 0,
+    UNIT_CHECK(seen[AERO_LEAFWAVE_PAIR_NONCONTACT][AERO_LEAFWAVE_PAIR_KEYON] > 0 &&
+                   seen[AERO_LEAFWAVE_PAIR_KEYON][AERO_LEAFWAVE_PAIR_CONTACT] > 0 &&
+                   seen[AERO_LEAFWAVE_PAIR_KEYON][AERO_LEAFWAVE_PAIR_KEYOFF] > 0 &&
+                   seen[AERO_LEAFWAVE_PAIR_CONTACT][AERO_LEAFWAVE_PAIR_KEYOFF] > 0 &&
+                   seen[AERO_LEAFWAVE_PAIR_KEYOFF][AERO_LEAFWAVE_PAIR_KEYON] > 0 &&
+                   seen[AERO_LEAFWAVE_PAIR_KEYOFF][AERO_LEAFWAVE_PAIR_NONCONTACT] > 0,
                "in wind every transition occurs: non->on %d, on->contact "
                "%d, on->off %d, contact->off %d, off->on %d, off->non %d",
                seen[1][2], seen[2][3], seen[2][4], seen[3][4], seen[4][2],
                seen[4][1]);
     /* negative control: the checker refuses a jump fig. 12 does not have */
-    UNIT_CHECK(!allowed(AERO_PAIR_NONCONTACT, AERO_PAIR_CONTACT) &&
-                   !allowed(AERO_PAIR_CONTACT, AERO_PAIR_NONCONTACT),
+    UNIT_CHECK(!allowed(AERO_LEAFWAVE_PAIR_NONCONTACT, AERO_LEAFWAVE_PAIR_CONTACT) &&
+                   !allowed(AERO_LEAFWAVE_PAIR_CONTACT, AERO_LEAFWAVE_PAIR_NONCONTACT),
                "control: non-contact <-> contact needs key on/off");
     free(prev);
     aero_leafwave_free(&lw);
@@ -206,10 +206,10 @@ UNIT_TEST(still_air)
     aero_leafwave_count_states(&lw, counts);
     UNIT_CHECK(rms == 0.0 && lw.keyons_total == 0,
                "no wind: rms %g Pa, %d key ons", rms, lw.keyons_total);
-    UNIT_CHECK(counts[AERO_PAIR_NONCONTACT] + counts[AERO_PAIR_CONTACT] ==
+    UNIT_CHECK(counts[AERO_LEAFWAVE_PAIR_NONCONTACT] + counts[AERO_LEAFWAVE_PAIR_CONTACT] ==
                    lw.npairs,
                "no wind: pairs stay non-contact (%d) or contact (%d)",
-               counts[AERO_PAIR_NONCONTACT], counts[AERO_PAIR_CONTACT]);
+               counts[AERO_LEAFWAVE_PAIR_NONCONTACT], counts[AERO_LEAFWAVE_PAIR_CONTACT]);
     aero_leafwave_free(&lw);
 }
 
@@ -332,11 +332,11 @@ static double mean_contact_rate(double wind)
         for (int v = 0; v < lw.nvoices; v++) {
             const aero_leaf_voice *vo = &lw.voices[v];
             if (vo->table < 0 || vo->pair < 0 ||
-                lw.pairs[vo->pair].state != AERO_PAIR_CONTACT)
+                lw.pairs[vo->pair].state != AERO_LEAFWAVE_PAIR_CONTACT)
                 continue;
             /* the rate this voice reaches at the end of the frame */
             sum += (vo->inc + vo->inc_step * lw.frame_samples) * SR /
-                   AERO_LEAF_TABLE_RATE;
+                   AERO_LEAFWAVE_TABLE_RATE;
             n++;
         }
     }
@@ -440,17 +440,17 @@ UNIT_TEST(centroid_follows_size)
     UNIT_CHECK(cb > 1.3 * ca, "blades half as large: centroid %.0f Hz > "
                "1.3 x %.0f Hz", cb, ca);
     /* the same from the tables alone */
-    double *power = malloc(sizeof(double) * (AERO_LEAF_TABLE_LEN / 2 + 1));
+    double *power = malloc(sizeof(double) * (AERO_LEAFWAVE_TABLE_LEN / 2 + 1));
     double cent[2];
     for (int k = 0; k < 2; k++) {
         int i = aero_leafwave_table_for(&a, 0.08 / (1 + k), 0.05 / (1 + k));
         table_power(aero_leafwave_table(&a, i), power);
         double num = 0.0, den = 0.0;
-        for (int j = 1; j <= AERO_LEAF_TABLE_LEN / 2; j++) {
+        for (int j = 1; j <= AERO_LEAFWAVE_TABLE_LEN / 2; j++) {
             num += power[j] * j;
             den += power[j];
         }
-        cent[k] = num / den * AERO_LEAF_TABLE_RATE / AERO_LEAF_TABLE_LEN;
+        cent[k] = num / den * AERO_LEAFWAVE_TABLE_RATE / AERO_LEAFWAVE_TABLE_LEN;
     }
     UNIT_CHECK(cent[1] > 1.5 * cent[0], "table centroid: 8 x 5 cm blade "
                "%.0f Hz, 4 x 2.5 cm blade %.0f Hz", cent[0], cent[1]);
@@ -476,8 +476,8 @@ UNIT_TEST(neighbours)
     /* brute force: each leaf's nearest MAX_NEIGHBOURS within reach */
     char *want = calloc((size_t)n * n, 1);
     for (int i = 0; i < n; i++) {
-        int best[AERO_LEAF_MAX_NEIGHBOURS], nb = 0;
-        double bestd[AERO_LEAF_MAX_NEIGHBOURS];
+        int best[AERO_LEAFWAVE_MAX_NEIGHBOURS], nb = 0;
+        double bestd[AERO_LEAFWAVE_MAX_NEIGHBOURS];
         for (int j = 0; j < n; j++) {
             if (j == i)
                 continue;
@@ -492,17 +492,17 @@ UNIT_TEST(neighbours)
             int pos = nb;
             while (pos > 0 && bestd[pos - 1] > d2)
                 pos--;
-            if (pos >= AERO_LEAF_MAX_NEIGHBOURS)
+            if (pos >= AERO_LEAFWAVE_MAX_NEIGHBOURS)
                 continue;
-            int last = nb < AERO_LEAF_MAX_NEIGHBOURS ? nb
-                                                     : AERO_LEAF_MAX_NEIGHBOURS - 1;
+            int last = nb < AERO_LEAFWAVE_MAX_NEIGHBOURS ? nb
+                                                     : AERO_LEAFWAVE_MAX_NEIGHBOURS - 1;
             for (int m = last; m > pos; m--) {
                 best[m] = best[m - 1];
                 bestd[m] = bestd[m - 1];
             }
             best[pos] = j;
             bestd[pos] = d2;
-            if (nb < AERO_LEAF_MAX_NEIGHBOURS)
+            if (nb < AERO_LEAFWAVE_MAX_NEIGHBOURS)
                 nb++;
         }
         for (int m = 0; m < nb; m++) {
@@ -685,7 +685,7 @@ UNIT_TEST(multi_instance)
 }
 
 /* 20,000 leaves at one spot (a hostile file): every leaf keeps exactly
-   its AERO_LEAF_MAX_NEIGHBOURS (all at distance 0, all within reach) and
+   its AERO_LEAFWAVE_MAX_NEIGHBOURS (all at distance 0, all within reach) and
    the list has each pair once. A spatial hash put them all in one cell and
    compared every leaf with every other: O(n^2). */
 UNIT_TEST(neighbours_one_spot)
@@ -725,15 +725,51 @@ UNIT_TEST(neighbours_one_spot)
             repeats++;
     }
     for (int i = 0; rc == 0 && count && i < n; i++)
-        fewer += count[i] < AERO_LEAF_MAX_NEIGHBOURS;
+        fewer += count[i] < AERO_LEAFWAVE_MAX_NEIGHBOURS;
     UNIT_CHECK(rc == 0 && fewer == 0 && repeats == 0 &&
-                   lw.npairs >= n * AERO_LEAF_MAX_NEIGHBOURS / 2 &&
-                   lw.npairs <= n * AERO_LEAF_MAX_NEIGHBOURS,
+                   lw.npairs >= n * AERO_LEAFWAVE_MAX_NEIGHBOURS / 2 &&
+                   lw.npairs <= n * AERO_LEAFWAVE_MAX_NEIGHBOURS,
                "each leaf in at least %d pairs (%d leaves short), %d pairs, "
-               "%d repeated", AERO_LEAF_MAX_NEIGHBOURS, fewer, lw.npairs,
+               "%d repeated", AERO_LEAFWAVE_MAX_NEIGHBOURS, fewer, lw.npairs,
                repeats);
     free(count);
     aero_leafwave_free(&lw);
 }
 
-UNIT_MAIN(UNIT_CASE(table_frequencies), UNIT_CASE(state_machine), UNIT_CASE(still_air), UNIT_CASE(collision_onset), UNIT_CASE(wind), UNIT_CASE(friction_rate), UNIT_CASE(seed), UNIT_CASE(in_step), UNIT_CASE(centroid_follows_size), UNIT_CASE(neighbours), UNIT_CASE(neighbours_one_spot), UNIT_CASE(rendering), UNIT_CASE(bad_input), UNIT_CASE(multi_instance))
+/* An init that runs out of memory frees what it made, the state
+ * aero_leafwave_free leaves (leafwave.c); the object must stay usable
+ * and silent from there, as the wrapper keeps it (leafwave.h): setters
+ * store or refuse, what needs the tables refuses, process writes zeros. */
+UNIT_TEST(silent_after_failed_init)
+{
+    aero_leafwave lw;
+    aero_tree t;
+    char err[64] = "";
+    UNIT_CHECK(aero_leafwave_init(&lw, 48000.0, 2, 3) == 0, "made");
+    aero_leafwave_free(&lw); /* what a failed init leaves */
+    UNIT_CHECK(aero_leafwave_set_gain_db(&lw, -6) == 0 &&
+                   aero_leafwave_set_sway(&lw, 0.3) == 0 &&
+                   aero_leafwave_set_wind(&lw, 10, 0, 0) == 0 &&
+                   aero_leafwave_set_sample_rate(&lw, 44100.0) == 0 &&
+                   aero_leafwave_set_voices(&lw, 8) == 0,
+               "the plain setters still take their values");
+    UNIT_CHECK(aero_leafwave_set_tables(&lw, 300, 6, 2) < 0 &&
+                   aero_leafwave_set_seed(&lw, 9) < 0,
+               "what rebuilds the tables is refused");
+    unit_mi_tree(&t, 0);
+    UNIT_CHECK(aero_leafwave_set_tree(&lw, &t, err, sizeof(err)) < 0,
+               "a tree is refused (and freed): %s", err);
+    float in[256], left[256], right[256];
+    int loud = 0;
+    for (int b = 0; b < 20; b++) {
+        for (int i = 0; i < 256; i++)
+            in[i] = 12.0f, left[i] = right[i] = 1.0f;
+        aero_leafwave_process(&lw, in, (float *[]){left, right}, 256);
+        for (int i = 0; i < 256; i++)
+            loud += left[i] != 0.0f || right[i] != 0.0f;
+    }
+    UNIT_CHECK(loud == 0, "process writes zeros (%d samples not)", loud);
+    aero_leafwave_free(&lw);
+}
+
+UNIT_MAIN(UNIT_CASE(table_frequencies), UNIT_CASE(state_machine), UNIT_CASE(still_air), UNIT_CASE(collision_onset), UNIT_CASE(wind), UNIT_CASE(friction_rate), UNIT_CASE(seed), UNIT_CASE(in_step), UNIT_CASE(centroid_follows_size), UNIT_CASE(neighbours), UNIT_CASE(neighbours_one_spot), UNIT_CASE(rendering), UNIT_CASE(bad_input), UNIT_CASE(silent_after_failed_init), UNIT_CASE(multi_instance))

@@ -19,7 +19,7 @@ int aero_aeolian_init(aero_aeolian *a, double sample_rate, int n_ears,
     static const double wind[3] = AERO_AEOLIAN_WIND_DEFAULT;
     memset(a, 0, sizeof(*a));
     int sr_ok = sample_rate > 0 && aero_is_finite(sample_rate);
-    a->sample_rate = sr_ok ? sample_rate : 44100.0;
+    a->sample_rate = sr_ok ? sample_rate : AERO_SAMPLE_RATE_FALLBACK;
     a->n_ears = n_ears == 2 ? 2 : 1;
     a->seed = seed;
     a->target[AERO_AEO_DIAMETER] = AERO_AEOLIAN_DIAMETER_DEFAULT;

@@ -55,7 +55,8 @@ int aero_body_init(aero_body *s, double sample_rate,
     aero_pose_path_jump(&s->path, 7, unturned);
     int sr_ok = sample_rate >= AERO_MOVING_SR_MIN &&
                 sample_rate <= AERO_MOVING_SR_MAX;
-    if (aero_moving_player_init(&s->base, sr_ok ? sample_rate : 44100.0,
+    if (aero_moving_player_init(&s->base,
+                                sr_ok ? sample_rate : AERO_SAMPLE_RATE_FALLBACK,
                                 n_ears, seed, AERO_BODY_CHUNK,
                                 AERO_BODY_MAX_DELAY_S))
         return -1; /* no rings: process is silent until a sample rate */

@@ -116,8 +116,9 @@ typedef struct aero_body {
 
 /* n_ears 1 (the listener) or 2 (the ears). 0, or -1 when out of memory
  * (silent then, until a sample rate is set) or the sample rate is not
- * usable (44.1 kHz is taken). Defaults: no texture (silent), the body at
- * the origin unturned, still air, one listener 1 m away along +y (stereo:
+ * usable (AERO_SAMPLE_RATE_FALLBACK is taken). Defaults: no texture
+ * (silent), the body at the origin unturned, still air, one listener 1 m
+ * away along +y (stereo:
  * ears at x = -+AERO_EAR_HALF_SPACING), scale AERO_BODY_SCALE_DEFAULT,
  * exponent, gain and ramp as moving_player.h's. */
 int aero_body_init(aero_body *s, double sample_rate,

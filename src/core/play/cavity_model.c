@@ -1,13 +1,13 @@
-/* aero: cavity tones, model and texture mode (see cavity_model.h). */
-#include "cavity_model.h"
+/* aero: [cavity~]'s model mode: the Rossiter tones, their lock-in onto the
+ * depth modes and the shear layer's noise, rendered in four lanes (see
+ * cavity.h; the object and its settings: cavity.c). */
+#include "cavity_internal.h"
 
 #include "aero_air.h"
+#include "aero_lanes.h"
 #include "aero_util.h"
-#include "aero_ramp.h"
 
 #include <math.h>
-#include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 /* Rossiter's constants (Rossiter 1964) */
@@ -48,31 +48,6 @@ static double wrap_cycles(double x)
     return x - t;
 }
 
-/* cos and sin of 2 pi p[i], 0 <= p[i] < 2^30, for count arguments at once
- * (independent, so they overlap): reduced to +-1/8 cycle around the
- * nearest quarter k, Taylor to x^12 (error below 1e-11), the quarter
- * applied without a branch */
-static void cis_cycles(const double *p, double *c, double *s, int count)
-{
-    for (int i = 0; i < count; i++) {
-        double q = 4.0 * (p[i] - (double)(int)p[i]); /* [0, 4) quarters */
-        int k = (int)(q + 0.5);
-        double x = (q - k) * (0.5 * AERO_PI), x2 = x * x;
-        double sn = x * (1.0 - x2 * (1.0 / 6) * (1.0 - x2 * (1.0 / 20) *
-                    (1.0 - x2 * (1.0 / 42) * (1.0 - x2 * (1.0 / 72) *
-                    (1.0 - x2 * (1.0 / 110))))));
-        double cs = 1.0 - x2 * 0.5 * (1.0 - x2 * (1.0 / 12) * (1.0 - x2 * (1.0 / 30) *
-                    (1.0 - x2 * (1.0 / 56) * (1.0 - x2 * (1.0 / 90) *
-                    (1.0 - x2 * (1.0 / 132))))));
-        /* e^{i k pi / 2} (cs + i sn): k odd swaps, k 1, 2 negate the
-           cosine, k 2, 3 the sine */
-        double odd = (double)(k & 1);
-        double a = cs + odd * (sn - cs), b = sn + odd * (cs - sn);
-        c[i] = a * (double)(1 - ((k + 1) & 2));
-        s[i] = b * (double)(1 - (k & 2));
-    }
-}
-
 double aero_cavity_rossiter_hz(double speed, double length, int mode)
 {
     double u = fabs(speed), mach = u / AERO_C0;
@@ -102,178 +77,10 @@ double aero_cavity_depth_hz(double depth, double length, double width, int n)
     return (2 * n - 1) * AERO_C0 / (4.0 * (depth + END_CORRECTION * radius));
 }
 
-int aero_cavity_init(aero_cavity *m, double sample_rate,
-                           uint32_t seed)
-{
-    memset(m, 0, sizeof(*m));
-    int sr_ok = sample_rate > 0 && aero_is_finite(sample_rate);
-    m->sample_rate = sr_ok ? sample_rate : 44100.0;
-    m->exponent = AERO_CAVITY_EXPONENT_DEFAULT;
-    m->ctl_target[AERO_CAV_LENGTH] = AERO_CAVITY_LENGTH_DEFAULT;
-    m->ctl_target[AERO_CAV_DEPTH] = AERO_CAVITY_DEPTH_DEFAULT;
-    m->ctl_target[AERO_CAV_WIDTH] = AERO_CAVITY_WIDTH_DEFAULT;
-    m->ctl_target[AERO_CAV_GAIN] = pow(10.0, AERO_GAIN_DB_DEFAULT / 20.0);
-    m->ctl_target[AERO_CAV_EAR + 1] = 1.0;
-    memcpy(m->ctl, m->ctl_target, sizeof(m->ctl));
-    m->laws_dirty = 1;
-    aero_cavity_set_ramp_ms(m, AERO_RAMP_MS_DEFAULT);
-    aero_cavity_set_seed(m, seed);
-    return sr_ok ? 0 : -1;
-}
-
-void aero_cavity_free(aero_cavity *m)
-{
-    if (m->texture) {
-        aero_texture_free(m->texture);
-        free(m->texture);
-        m->texture = NULL;
-    }
-}
-
-void aero_cavity_set_seed(aero_cavity *m, uint32_t seed)
-{
-    uint32_t s = seed * 2654435761u + 0x7f4a7c15u;
-    s ^= s >> 16;
-    m->rng = s ? s : 0x2545f491u;
-    for (int k = 0; k < AERO_CAVITY_MODES; k++)
-    {
-        double p = 0.5 + 0.5 * aero_uniform(&m->rng);
-        cis_cycles(&p, &m->phasor[k][0], &m->phasor[k][1], 1);
-    }
-    m->texture_pos = 0.5 + 0.5 * aero_uniform(&m->rng); /* scaled at use */
-    /* the noise's and the tones' generators (four lanes each), never 0 */
-    for (int j = 0; j < 8; j++) {
-        uint32_t x = aero_xorshift32(&m->rng) ^ (0x9e3779b9u * (j + 1));
-        uint32_t *state = j < 4 ? m->noise_rng + j : m->tone_rng + (j - 4);
-        *state = x ? x : 0x6c8e9cf5u + j;
-    }
-}
-
-static int size_ok(double v)
-{
-    return aero_is_finite(v) && v >= AERO_CAVITY_SIZE_MIN &&
-           v <= AERO_CAVITY_SIZE_MAX;
-}
-
-static int set_ctl(aero_cavity *m, int k, double v)
-{
-    m->laws_dirty = 1;
-    m->ctl_target[k] = v;
-    if (!m->primed)
-        m->ctl[k] = v;
-    else
-        m->ramp_left = m->ramp_samples;
-    return 0;
-}
-
-int aero_cavity_set_sample_rate(aero_cavity *m, double sr)
-{
-    if (!aero_is_finite(sr) || sr < 1.0 || sr > 1e7)
-        return -1;
-    double ms = 1000.0 * m->ramp_samples / m->sample_rate;
-    m->sample_rate = sr;
-    return aero_cavity_set_ramp_ms(m, ms);
-}
-
-int aero_cavity_set_length(aero_cavity *m, double l)
-{
-    if (!size_ok(l))
-        return -1;
-    return set_ctl(m, AERO_CAV_LENGTH, l);
-}
-
-int aero_cavity_set_depth(aero_cavity *m, double d)
-{
-    if (!size_ok(d))
-        return -1;
-    return set_ctl(m, AERO_CAV_DEPTH, d);
-}
-
-int aero_cavity_set_width(aero_cavity *m, double w)
-{
-    if (!size_ok(w))
-        return -1;
-    return set_ctl(m, AERO_CAV_WIDTH, w);
-}
-
-int aero_cavity_set_gain_db(aero_cavity *m, double db)
-{
-    if (!aero_is_finite(db) || db < AERO_GAIN_DB_MIN || db > AERO_GAIN_DB_MAX)
-        return -1;
-    return set_ctl(m, AERO_CAV_GAIN, pow(10.0, db / 20.0));
-}
-
-int aero_cavity_set_ramp_ms(aero_cavity *m, double ms)
-{
-    if (!aero_is_finite(ms) || ms < 0.0 || ms > AERO_RAMP_MS_MAX)
-        return -1;
-    m->ramp_samples = fmax(1.0, ms * 0.001 * m->sample_rate);
-    return 0;
-}
-
-int aero_cavity_set_exponent(aero_cavity *m, double n)
-{
-    if (!aero_is_finite(n) || n < 0.0 || n > AERO_CAVITY_EXPONENT_MAX)
-        return -1;
-    m->exponent = n;
-    m->laws_dirty = 1;
-    return 0;
-}
-
-int aero_cavity_set_ears(aero_cavity *m, const aero_ears *e)
-{
-    if (!aero_ears_ok(e, 1))
-        return -1;
-    for (int i = 0; i < 3; i++)
-        set_ctl(m, AERO_CAV_EAR + i, e->pos[0][i]);
-    return 0;
-}
-
-int aero_cavity_set_texture(aero_cavity *m, aero_texture *t,
-                                  char *err, size_t errlen)
-{
-    if (t) {
-        double v0 = t->head.v0;
-        if (aero_texture_wrong_kind(t, "cavity", err, errlen)) {
-            return -1;
-        }
-        if (!(v0 > 0) || t->directions < 1 || t->frames < 2 || !(t->rate > 0)) {
-            snprintf(err, errlen, "texture has no usable v0, rate or frames");
-            return -1;
-        }
-        m->texture_v0 = v0;
-        double l0 = t->head.length;
-        m->texture_length = l0 > 0.0 && l0 < 100.0 ? l0 : 0.0;
-        m->texture_pos = fmod(fabs(m->texture_pos) * t->frames, t->frames);
-    }
-    aero_cavity_free(m);
-    m->texture = t;
-    return 0;
-}
-
-/* 1 when the controls moved */
-static int advance_ramps(aero_cavity *m, int n)
-{
-    if (m->ramp_left <= 0)
-        return 0;
-    aero_glide_values(m->ctl, m->ctl_target, AERO_CAV_COUNT,
-                      aero_glide_fraction(&m->ramp_left, n));
-    return 1;
-}
-
-/* the near-field policy (aero_near_field): the opening's size sqrt(L W) */
-static double listener_distance(aero_cavity *m, double r_min)
-{
-    const double *e = m->ctl + AERO_CAV_EAR;
-    double r = sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
-    if (r < r_min)
-        aero_near_seen(&m->near, r_min);
-    return fmax(r, r_min);
-}
-
 /* Geometry, listener and level laws, when a control or the exponent has
  * moved: the depth modes and, per Rossiter mode, the unlocked tone
- * amplitude per U^n. */
+ * amplitude per U^n at ear 0; each other ear hears it at its own
+ * distance (1/r). */
 static void update_laws(aero_cavity *m)
 {
     double l = m->ctl[AERO_CAV_LENGTH], d = m->ctl[AERO_CAV_DEPTH];
@@ -287,11 +94,14 @@ static void update_laws(aero_cavity *m)
         weight_sum += mode_weight[k] * mode_weight[k];
     /* p_rms = LEVEL (rho/2) U_ref^(2-n) U^n sqrt(L W) / r; the tones share
      * it by their weights (sqrt 2: rms -> amplitude) */
-    double r = listener_distance(m, sqrt(l * w));
+    double r = aero_cavity_ear_distance(m, 0, sqrt(l * w));
     m->level = LEVEL * 0.5 * AERO_RHO * pow(REFERENCE_SPEED, 2.0 - m->exponent) *
                sqrt(l * w) / r * m->ctl[AERO_CAV_GAIN];
     for (int k = 0; k < AERO_CAVITY_MODES; k++)
         m->mode_level[k] = m->level * sqrt(2.0) * mode_weight[k] / sqrt(weight_sum);
+    m->ear_scale[0] = 1.0;
+    for (int e = 1; e < m->n_ears; e++)
+        m->ear_scale[e] = r / aero_cavity_ear_distance(m, e, sqrt(l * w));
     m->laws_dirty = 0;
 }
 
@@ -301,86 +111,11 @@ static void update_laws(aero_cavity *m)
  * two-term recurrence s[t+1] = 2 cos(w) s[t] - s[t-1], started per lane from
  * its exact phase, and the noise's one-pole filters from zero per lane,
  * then corrected by the true start state carried from lane to lane. */
-enum { LANES = 4, CHUNK = 64, LANE_MAX = CHUNK / LANES };
+enum { LANES = AERO_LANES, CHUNK = AERO_CAVITY_CHUNK,
+       LANE_MAX = CHUNK / LANES };
 /* the largest per-sample phase step (cycles, uniform amplitude) within a
    lane, where the coefficient's linear expansion (below) holds */
 #define MAX_STEP 0.01
-
-/* Four lanes of floats: GCC's vector extension where the compiler has it
- * (GCC, clang), else a plain array (the portable reference, also built
- * with -DAERO_PORTABLE_LANES). */
-#if defined(__GNUC__) && !defined(AERO_PORTABLE_LANES)
-typedef float lane4 __attribute__((vector_size(16)));
-typedef uint32_t lane4u __attribute__((vector_size(16)));
-static inline lane4 l4_add(lane4 a, lane4 b) { return a + b; }
-static inline lane4 l4_sub(lane4 a, lane4 b) { return a - b; }
-static inline lane4 l4_mul(lane4 a, lane4 b) { return a * b; }
-static inline lane4 l4_splat(float x) { return (lane4){x, x, x, x}; }
-static inline float l4_get(lane4 a, int j) { return a[j]; }
-static inline void l4_set(lane4 *a, int j, float x) { (*a)[j] = x; }
-/* xorshift32 on each lane; the new words as uniform floats on [-1, 1) */
-static inline lane4 l4_uniform(lane4u *state)
-{
-    lane4u x = *state;
-    x ^= x << 13;
-    x ^= x >> 17;
-    x ^= x << 5;
-    *state = x;
-    typedef int32_t lane4i __attribute__((vector_size(16)));
-    return __builtin_convertvector((lane4i)x, lane4) * (1.0f / 2147483648.0f);
-}
-/* cos and sin of 2 pi p on each lane, 0 <= p < 2^20, to float precision:
-   as cis_cycles, Taylor to x^8, the quarter applied by bit masks */
-static inline void l4_cis(lane4 p, lane4 *c, lane4 *s)
-{
-    typedef int32_t lane4i __attribute__((vector_size(16)));
-    lane4 q = 4.0f * (p - __builtin_convertvector(
-                              __builtin_convertvector(p, lane4i), lane4));
-    lane4i k = __builtin_convertvector(q + 0.5f, lane4i);
-    lane4 x = (q - __builtin_convertvector(k, lane4)) * (float)(0.5 * AERO_PI);
-    lane4 x2 = x * x;
-    lane4 sn = x * (1.0f - x2 * (1.0f / 6) * (1.0f - x2 * (1.0f / 20) *
-                    (1.0f - x2 * (1.0f / 42))));
-    lane4 cs = 1.0f - x2 * 0.5f * (1.0f - x2 * (1.0f / 12) *
-                    (1.0f - x2 * (1.0f / 30) * (1.0f - x2 * (1.0f / 56))));
-    lane4i odd = -(k & 1), a = (lane4i)cs, b = (lane4i)sn;
-    lane4i ca = (a & ~odd) | (b & odd), sa = (b & ~odd) | (a & odd);
-    *c = (lane4)(ca ^ (((k + 1) & 2) << 30));
-    *s = (lane4)(sa ^ ((k & 2) << 30));
-}
-#else
-typedef struct { float v[LANES]; } lane4;
-typedef struct { uint32_t v[LANES]; } lane4u;
-#define L4_EACH(expr) { lane4 r; for (int j = 0; j < LANES; j++) r.v[j] = (expr); return r; }
-static inline lane4 l4_add(lane4 a, lane4 b) L4_EACH(a.v[j] + b.v[j])
-static inline lane4 l4_sub(lane4 a, lane4 b) L4_EACH(a.v[j] - b.v[j])
-static inline lane4 l4_mul(lane4 a, lane4 b) L4_EACH(a.v[j] * b.v[j])
-static inline lane4 l4_splat(float x) L4_EACH(x)
-static inline float l4_get(lane4 a, int j) { return a.v[j]; }
-static inline void l4_set(lane4 *a, int j, float x) { a->v[j] = x; }
-static inline lane4 l4_uniform(lane4u *state)
-{
-    lane4 r;
-    for (int j = 0; j < LANES; j++) {
-        uint32_t x = state->v[j];
-        x ^= x << 13;
-        x ^= x >> 17;
-        x ^= x << 5;
-        state->v[j] = x;
-        r.v[j] = (float)(int32_t)x * (1.0f / 2147483648.0f);
-    }
-    return r;
-}
-static inline void l4_cis(lane4 p, lane4 *c, lane4 *s)
-{
-    double pd[LANES], cd[LANES], sd[LANES];
-    for (int j = 0; j < LANES; j++)
-        pd[j] = p.v[j];
-    cis_cycles(pd, cd, sd, LANES);
-    for (int j = 0; j < LANES; j++)
-        c->v[j] = (float)cd[j], s->v[j] = (float)sd[j];
-}
-#endif
 
 /* one chunk of model mode in lanes: the tones' recurrences (started per
  * lane from its exact phase), the per-sample phase steps, the noise band's
@@ -659,8 +394,9 @@ static void speed_law(aero_cavity *m, const float *u, const float *sum,
  * sum of four uniforms, as the per-sample steps it replaces add up to);
  * per sample the four recurrences, the white noise and its two filters, in
  * float. */
-static void process_model(aero_cavity *m, const float *u, float *out,
-                          int n, double u_mean, double u_end)
+void aero_cavity_model_process(aero_cavity *m, const float *u,
+                               float *const *out, int n, double u_mean,
+                               double u_end)
 {
     model_chunk ch;
     float sum[LANES * LANE_MAX];
@@ -681,99 +417,11 @@ static void process_model(aero_cavity *m, const float *u, float *out,
     advance_phasors(m, ch.end);
     noise_band(m, u_end, &ch);
     sum_lanes(&ch, sum);
-    speed_law(m, u, sum, out, n, u_end);
-}
-
-/* Texture mode: the texture coordinate advances by (v/v0)(L0/L) (Dobashi et
- * al. 2003 eq. 3: the shear-layer modes sit at St_L = f L / v, so the pitch
- * follows the cavity's length as an aeolian texture's follows d0/d), amplitude
- * (v/v0)^n (g = dF/dt per unit width: F ~ v^2 L, f ~ v/L), Curle dipole
- * p = (x . g) W / (4 pi c0 r^2). */
-static void process_texture(aero_cavity *m, const float *u, float *out,
-                            int n, double u_end)
-{
-    const aero_texture *t = m->texture;
-    const double *e = m->ctl + AERO_CAV_EAR;
-    double l = m->ctl[AERO_CAV_LENGTH], w = m->ctl[AERO_CAV_WIDTH];
-    double r = listener_distance(m, sqrt(l * w));
-    double radiation = w / (4.0 * AERO_PI * AERO_C0 * r * r) *
-                       m->ctl[AERO_CAV_GAIN];
-    /* closer than sqrt(L W), heard as there along the listener's own
-       direction; exactly at the cavity along +y, out of the opening (the
-       wall's normal, where a listener of a cavity in a wall stands) */
-    const double out_of_wall[3] = {0.0, 1.0, 0.0};
-    double x[3] = {e[0], e[1], e[2]};
-    aero_near_field(x, sqrt(l * w), out_of_wall, &m->near);
-    double inv_v0 = 1.0 / m->texture_v0;
-    /* the speed law folded into the projection: (v/v0)^2 per sample, or
-       (v/v0)^n once per chunk, gliding over it */
-    double p1 = 1.0, p0 = 1.0;
-    int square = m->exponent == 2.0;
-    if (square) {
-        radiation *= inv_v0 * inv_v0;
-    } else {
-        p1 = pow(u_end * inv_v0, m->exponent);
-        if (!m->primed)
-            m->speed_power = p1;
-        p0 = m->speed_power;
-        m->speed_power = p1;
+    speed_law(m, u, sum, out[0], n, u_end);
+    /* the other ear: the same field at its own distance */
+    for (int e = 1; e < m->n_ears; e++) {
+        const float scale = (float)m->ear_scale[e];
+        for (int i = 0; i < n; i++)
+            out[e][i] = out[0][i] * scale;
     }
-    const float cx = (float)(x[0] * radiation), cy = (float)(x[1] * radiation);
-    const double step = t->rate / m->sample_rate * inv_v0 *
-                        (m->texture_length > 0.0 ? m->texture_length / l : 1.0);
-    const float *data = t->data;
-    const long frames = t->frames, channels = t->channels;
-    double pos = m->texture_pos;
-    for (int i = 0; i < n; i++) {
-        long k = (long)pos;
-        long k1 = k + 1 < frames ? k + 1 : 0;
-        float frac = (float)(pos - k);
-        const float *a = data + k * channels, *b = data + k1 * channels;
-        float g = cx * (a[0] + (b[0] - a[0]) * frac) +
-                  cy * (a[1] + (b[1] - a[1]) * frac);
-        out[i] = square ? g * (u[i] * u[i])
-                        : g * (float)(p0 + (p1 - p0) * (i + 1) / n);
-        pos += u[i] * step;
-        if (pos >= frames)
-            pos -= frames * floor(pos / frames);
-    }
-    m->texture_pos = pos;
-}
-
-int aero_cavity_process(aero_cavity *m, const float *speed,
-                              float *const *outs, int n)
-{
-    float *out = outs[0];
-    const float limit = (float)(AERO_MACH_LIMIT * AERO_C0);
-    int clamped = 0;
-    float u[CHUNK];
-    for (int start = 0; start < n; start += CHUNK) {
-        int len = n - start < CHUNK ? n - start : CHUNK;
-        /* sanitised |U| (NaN -> 0, clamped at Mach 0.3) and its sum, in
-           lanes so that it vectorises */
-        for (int i = 0; i < len; i++) {
-            float x = speed[start + i];
-            float v = x == x ? fabsf(x) : 0.0f;
-            u[i] = v < limit ? v : limit;
-        }
-        for (int i = 0; i < len; i++)
-            clamped |= fabsf(speed[start + i]) > limit;
-        float lane_sum[8] = {0}, sum = 0;
-        int i = 0;
-        for (; i + 8 <= len; i += 8)
-            for (int j = 0; j < 8; j++)
-                lane_sum[j] += u[i + j];
-        for (; i < len; i++)
-            sum += u[i];
-        for (int j = 0; j < 8; j++)
-            sum += lane_sum[j];
-        if (advance_ramps(m, len))
-            m->laws_dirty = 1;
-        if (m->texture)
-            process_texture(m, u, out + start, len, u[len - 1]);
-        else
-            process_model(m, u, out + start, len, sum / len, u[len - 1]);
-        m->primed = 1;
-    }
-    return clamped;
 }

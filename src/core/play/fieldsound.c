@@ -21,7 +21,7 @@ int aero_fieldsound_init(aero_fieldsound *r, double sample_rate, int n_ears,
     (void)seed; /* nothing random: the sources are the flow's own */
     memset(r, 0, sizeof *r);
     int sr_ok = sample_rate > 0 && sample_rate < 1e7 && n_ears == 1;
-    r->sample_rate = sr_ok ? sample_rate : 44100;
+    r->sample_rate = sr_ok ? sample_rate : AERO_SAMPLE_RATE_FALLBACK;
     r->speed = r->speed_target = 0;
     r->ramp_ms = AERO_RAMP_MS_DEFAULT;
     r->gain = pow(10.0, AERO_GAIN_DB_DEFAULT / 20.0);

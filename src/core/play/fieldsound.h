@@ -39,8 +39,8 @@ typedef struct aero_fieldsound {
  * once sources are set; ramp and gain from aero_ranges.h; stopped.
  * n_ears: 1 (one listener; [fieldsound~] is mono); seed: the contract's,
  * unused (nothing is random). 0, or -1 when the sample rate is not usable
- * (44.1 kHz is taken) or n_ears is not 1 (one listener is taken): the
- * player is usable either way. */
+ * (AERO_SAMPLE_RATE_FALLBACK is taken) or n_ears is not 1 (one listener
+ * is taken): the player is usable either way. */
 int aero_fieldsound_init(aero_fieldsound *r, double sample_rate, int n_ears,
                          uint32_t seed);
 void aero_fieldsound_free(aero_fieldsound *r);

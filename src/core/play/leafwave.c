@@ -28,7 +28,7 @@ static void clear_line(aero_leafwave *lw)
 
 int leafwave_alloc_line(aero_leafwave *lw, double sr)
 {
-    int len = (int)(AERO_LEAF_MAX_DISTANCE / AERO_C0 * sr) + 2 * DRY_CHUNK +
+    int len = (int)(AERO_LEAFWAVE_MAX_DISTANCE / AERO_C0 * sr) + 2 * DRY_CHUNK +
               8192;
     float *line = calloc((size_t)len, sizeof(float));
     if (!line)
@@ -44,9 +44,11 @@ int leafwave_alloc_line(aero_leafwave *lw, double sr)
 int aero_leafwave_init(aero_leafwave *lw, double sample_rate, int n_ears,
                        uint32_t seed)
 {
+    static const double listener[3] = AERO_LEAFWAVE_LISTENER_DEFAULT;
     memset(lw, 0, sizeof(*lw));
-    if (!(sample_rate >= 1000.0 && sample_rate <= 1e6))
-        sample_rate = 44100.0;
+    if (!(sample_rate >= AERO_LEAFWAVE_SR_MIN &&
+          sample_rate <= AERO_LEAFWAVE_SR_MAX))
+        sample_rate = AERO_SAMPLE_RATE_FALLBACK;
     lw->sample_rate = sample_rate;
     lw->n_ears = n_ears == 2 ? 2 : 1;
     lw->seed = seed;
@@ -65,13 +67,14 @@ int aero_leafwave_init(aero_leafwave *lw, double sample_rate, int n_ears,
     lw->tables_per_octave = AERO_LEAFWAVE_PER_OCTAVE_DEFAULT;
     lw->octaves = AERO_LEAFWAVE_OCTAVES_DEFAULT;
     lw->nvoices = AERO_LEAFWAVE_VOICES_DEFAULT;
-    lw->frame_samples = floor(sample_rate / AERO_LEAF_FRAME_RATE + 0.5);
+    lw->frame_samples = floor(sample_rate / AERO_LEAFWAVE_FRAME_RATE + 0.5);
     lw->to_next_frame = lw->frame_samples;
     for (int e = 0; e < lw->n_ears; e++) {
-        double x = lw->n_ears == 2 ? (e ? 0.1 : -0.1) : 0.0;
-        lw->ear[e][0] = lw->ear_target[e][0] = x;
-        lw->ear[e][1] = lw->ear_target[e][1] = -10.0;
-        lw->ear[e][2] = lw->ear_target[e][2] = 1.7;
+        double x = lw->n_ears == 2
+            ? (e ? AERO_EAR_HALF_SPACING : -AERO_EAR_HALF_SPACING) : 0.0;
+        lw->ear[e][0] = lw->ear_target[e][0] = listener[0] + x;
+        lw->ear[e][1] = lw->ear_target[e][1] = listener[1];
+        lw->ear[e][2] = lw->ear_target[e][2] = listener[2];
     }
     lw->ramp_samples = AERO_RAMP_MS_DEFAULT / 1000.0 * sample_rate;
     lw->voices = malloc(sizeof(aero_leaf_voice) * lw->nvoices);
@@ -175,6 +178,12 @@ int aero_leafwave_set_tree(aero_leafwave *lw, aero_tree *t, char *err,
     aero_leafwave_clear_tree(lw);
     if (!t)
         return 0;
+    if (!lw->tables) { /* an init that ran out of memory */
+        aero_tree_free(t);
+        if (err)
+            snprintf(err, errlen, "out of memory");
+        return -1;
+    }
     lw->tree = *t;
     memset(t, 0, sizeof(*t));
     lw->has_tree = 1;
@@ -270,8 +279,8 @@ static double flutter_for_wind(aero_leafwave *lw, double u)
 {
     double x = (u / WIND_REF) * (u / WIND_REF) / lw->stiffness;
     double f0 = lw->flutter_hz * sqrt(lw->stiffness) * (1.0 + u / FLUTTER_WIND);
-    for (int c = 0; c < AERO_LEAF_FLUTTER_CLASSES; c++)
-        resonator(f0 * 0.7 * pow(2.0, (double)c / (AERO_LEAF_FLUTTER_CLASSES - 1)),
+    for (int c = 0; c < AERO_LEAFWAVE_FLUTTER_CLASSES; c++)
+        resonator(f0 * 0.7 * pow(2.0, (double)c / (AERO_LEAFWAVE_FLUTTER_CLASSES - 1)),
                   lw->sample_rate / lw->frame_samples, lw->flutter_coef[c]);
     return lw->sway * tanh(x);
 }
@@ -358,6 +367,12 @@ int aero_leafwave_process(aero_leafwave *lw, const float *speed,
 {
     double w[3], u;
     int clamped = wind_now(lw, speed, n, w, &u);
+    if (!lw->tables || !lw->line) {
+        /* an init that ran out of memory: silent */
+        for (int e = 0; e < lw->n_ears; e++)
+            memset(outs[e], 0, sizeof(float) * (size_t)n);
+        return clamped;
+    }
     if (lw->has_motion)
         aero_tree_motion_set_wind(&lw->motion, w);
     double sway = flutter_for_wind(lw, u);

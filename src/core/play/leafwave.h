@@ -19,7 +19,7 @@
  *
  * Pairs. Neighbour lists are built once at load from a k-d tree of the
  * blade centres (O(n log n) for any arrangement, leaves at one spot
- * included); each leaf keeps its nearest AERO_LEAF_MAX_NEIGHBOURS. Every frame, the blade
+ * included); each leaf keeps its nearest AERO_LEAFWAVE_MAX_NEIGHBOURS. Every frame, the blade
  * centre P_j of the neighbour is expressed in the blade frame of leaf i
  * (their eq. 15) and compared with an ellipsoid of the two blades' half
  * sizes (a thin one across the blade): inside is "A", outside "B" (their
@@ -31,7 +31,7 @@
  * Sound. N wave tables per octave, octave count M, basic frequencies
  * f_i = fm 2^(i/N) (their eq. 14), made at init from seeded pink noise
  * whose spectrum starts at f_i. A leaf plays the table whose f_i is nearest
- * to c / size (size = sqrt(length width), c = AERO_LEAF_PITCH_HZ_M): small
+ * to c / size (size = sqrt(length width), c = AERO_LEAFWAVE_PITCH_HZ_M): small
  * blades sound higher. A key on raises an envelope in proportion to the
  * collision speed (the relative speed of the blades), starting at the
  * collision time interpolated within the frame and at a zero crossing of
@@ -61,18 +61,26 @@
 /* ranges of the settings, stated once: the core checks them, the hosts
    quote them (stiffness and beta: tree_motion.h; gain, ramp:
    aero_ranges.h) */
+#define AERO_LEAFWAVE_SR_MIN 1000.0        /* Hz */
+#define AERO_LEAFWAVE_SR_MAX 1e6
+#define AERO_LEAFWAVE_MIC_K_MIN 0.0
 #define AERO_LEAFWAVE_MIC_K_MAX 100.0
-#define AERO_LEAFWAVE_SWAY_MAX 1.5         /* rad */
+#define AERO_LEAFWAVE_SWAY_MIN 0.0         /* rad */
+#define AERO_LEAFWAVE_SWAY_MAX 1.5
 #define AERO_LEAFWAVE_COUPLING_MAX 10.0    /* and its negative */
 #define AERO_LEAFWAVE_FLUTTER_MIN 0.01     /* Hz */
 #define AERO_LEAFWAVE_FLUTTER_MAX 30.0
-#define AERO_LEAFWAVE_PA_MAX 100.0         /* hit and rub, Pa */
+#define AERO_LEAFWAVE_PA_MIN 0.0          /* hit and rub, Pa */
+#define AERO_LEAFWAVE_PA_MAX 100.0
 #define AERO_LEAFWAVE_REACH_MIN 0.1
 #define AERO_LEAFWAVE_REACH_MAX 10.0
+#define AERO_LEAFWAVE_VOICES_MIN 1
 #define AERO_LEAFWAVE_VOICES_MAX 65536
 #define AERO_LEAFWAVE_FM_MIN 20.0          /* Hz, the wave tables' fm */
 #define AERO_LEAFWAVE_FM_MAX 10000.0
-#define AERO_LEAFWAVE_PER_OCTAVE_MAX 128   /* tables per octave */
+#define AERO_LEAFWAVE_PER_OCTAVE_MIN 1     /* tables per octave */
+#define AERO_LEAFWAVE_PER_OCTAVE_MAX 128
+#define AERO_LEAFWAVE_OCTAVES_MIN 1
 #define AERO_LEAFWAVE_OCTAVES_MAX 8
 #define AERO_LEAFWAVE_TABLES_MAX 512       /* per octave x octaves */
 /* defaults (stiffness and beta: tree_motion.h; gain and ramp:
@@ -88,26 +96,29 @@
 #define AERO_LEAFWAVE_FM_DEFAULT 200.0      /* Hz */
 #define AERO_LEAFWAVE_PER_OCTAVE_DEFAULT 12
 #define AERO_LEAFWAVE_OCTAVES_DEFAULT 4
+/* 10 m in front of the trunk, at ear height; stereo: ears at
+   x -+AERO_EAR_HALF_SPACING */
+#define AERO_LEAFWAVE_LISTENER_DEFAULT {0.0, -10.0, 1.7} /* m */
 
 #include <stddef.h>
 #include <stdint.h>
 
-#define AERO_LEAF_FRAME_RATE 100.0   /* leaf frames per second */
-#define AERO_LEAF_MAX_NEIGHBOURS 8   /* per leaf, nearest first */
-#define AERO_LEAF_TABLE_LEN 16384    /* samples per wave table */
-#define AERO_LEAF_TABLE_RATE 48000.0 /* rate the tables are made at */
-#define AERO_LEAF_PITCH_HZ_M 40.0    /* basic frequency x blade size */
-#define AERO_LEAF_MAX_DISTANCE 1000.0 /* m, longest delay kept */
-#define AERO_LEAF_MAX_EARS 2
-#define AERO_LEAF_FLUTTER_CLASSES 8
+#define AERO_LEAFWAVE_FRAME_RATE 100.0   /* leaf frames per second */
+#define AERO_LEAFWAVE_MAX_NEIGHBOURS 8   /* per leaf, nearest first */
+#define AERO_LEAFWAVE_TABLE_LEN 16384    /* samples per wave table */
+#define AERO_LEAFWAVE_TABLE_RATE 48000.0 /* rate the tables are made at */
+#define AERO_LEAFWAVE_PITCH_HZ_M 40.0    /* basic frequency x blade size */
+#define AERO_LEAFWAVE_MAX_DISTANCE 1000.0 /* m, longest delay kept */
+#define AERO_LEAFWAVE_MAX_EARS 2
+#define AERO_LEAFWAVE_FLUTTER_CLASSES 8
 
 /* pair states (Matsuyama et al. 2005, fig. 12) */
 enum {
-    AERO_PAIR_INITIAL,
-    AERO_PAIR_NONCONTACT,
-    AERO_PAIR_KEYON,
-    AERO_PAIR_CONTACT,
-    AERO_PAIR_KEYOFF
+    AERO_LEAFWAVE_PAIR_INITIAL,
+    AERO_LEAFWAVE_PAIR_NONCONTACT,
+    AERO_LEAFWAVE_PAIR_KEYON,
+    AERO_LEAFWAVE_PAIR_CONTACT,
+    AERO_LEAFWAVE_PAIR_KEYOFF
 };
 
 typedef struct {
@@ -167,7 +178,7 @@ typedef struct aero_leafwave {
     /* wave tables */
     int tables_per_octave, octaves, ntables;
     double fm;
-    float *tables;       /* ntables x (AERO_LEAF_TABLE_LEN + 1) */
+    float *tables;       /* ntables x (AERO_LEAFWAVE_TABLE_LEN + 1) */
     int *crossings;      /* zero crossings of every table, in order */
     int *crossing_start; /* table i's are crossings[start[i]..start[i+1]) */
     struct aero_fftw_c2r *fft; /* the FFTW plan that makes them */
@@ -196,26 +207,30 @@ typedef struct aero_leafwave {
     double frame_samples;  /* output samples per leaf frame */
     double to_next_frame;  /* samples until the next frame */
     long frames;
-    double flutter_coef[AERO_LEAF_FLUTTER_CLASSES][3]; /* a1, a2, g */
+    double flutter_coef[AERO_LEAFWAVE_FLUTTER_CLASSES][3]; /* a1, a2, g */
     int keyons_total;      /* key-on events since init (for tests) */
 
     /* the rendering delay line of the dry sound (pressure at 1 m) */
     float *line;           /* circular delay line */
     int line_len, line_pos;
-    double ear[AERO_LEAF_MAX_EARS][3], ear_target[AERO_LEAF_MAX_EARS][3];
+    double ear[AERO_LEAFWAVE_MAX_EARS][3], ear_target[AERO_LEAFWAVE_MAX_EARS][3];
     double ramp_samples, ramp_left;
-    double delay_prev[AERO_LEAF_MAX_EARS], amp_prev[AERO_LEAF_MAX_EARS];
+    double delay_prev[AERO_LEAFWAVE_MAX_EARS], amp_prev[AERO_LEAFWAVE_MAX_EARS];
     int render_primed;
     aero_near near; /* a listener came within 0.1 m (aero_near_field) */
 } aero_leafwave;
 
-/* Defaults: no tree (silent), listener at (0, -10, 1.7) (ears at x = -0.1
- * and 0.1 with two), wind 0, microphone facing the trunk, the constants
+/* Defaults: no tree (silent), listener AERO_LEAFWAVE_LISTENER_DEFAULT
+ * (two ears AERO_EAR_HALF_SPACING to either side), wind 0, microphone facing the trunk, the constants
  * above (sway 0.6 rad, coupling 0.5, flutter 2 Hz, reach 1.5, fm 200 Hz,
  * 12 tables per octave over 4 octaves, 256 voices, hit 0.01 Pa, rub 0.003
  * Pa, k 1), stiffness and beta from tree_motion.h, gain and ramp from
  * aero_ranges.h.
- * 0, or -1 when out of memory. */
+ * A sample rate out of AERO_LEAFWAVE_SR_MIN..MAX is taken as
+ * AERO_SAMPLE_RATE_FALLBACK. 0, or -1 when out of memory: the core is then
+ * silent (no tables, no voices, no delay line) but safe to use: its
+ * setters store or refuse, set_tree and the setters that rebuild refuse,
+ * process writes zeros, free frees. */
 int aero_leafwave_init(aero_leafwave *lw, double sample_rate, int n_ears,
                        uint32_t seed);
 void aero_leafwave_free(aero_leafwave *lw);

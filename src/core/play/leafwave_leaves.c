@@ -105,7 +105,7 @@ void leafwave_build_leaves(aero_leafwave *lw)
         s->half_wid = (float)(0.5 * l->width);
         s->table = aero_leafwave_table_for(lw, l->length, l->width);
         s->flutter_class = (int)(aero_xorshift32(&rng) %
-                                 AERO_LEAF_FLUTTER_CLASSES);
+                                 AERO_LEAFWAVE_FLUTTER_CLASSES);
         /* noises start in a random state of the right size */
         s->nx[0] = (float)aero_uniform(&rng);
         s->nx[1] = (float)aero_uniform(&rng);
@@ -269,34 +269,34 @@ static void pair_step(aero_leafwave *lw, int p, double frame_dt)
     float q_prev = pr->q;
     int state = pr->state;
     double vrel = 0.0, vt = 0.0;
-    if (state != AERO_PAIR_INITIAL && (inside || q_prev <= 1.0f))
+    if (state != AERO_LEAFWAVE_PAIR_INITIAL && (inside || q_prev <= 1.0f))
         vt = pair_speeds(pr, a, dv, frame_dt, &vrel);
     switch (state) {
-    case AERO_PAIR_INITIAL:
-        state = inside ? AERO_PAIR_CONTACT : AERO_PAIR_NONCONTACT;
+    case AERO_LEAFWAVE_PAIR_INITIAL:
+        state = inside ? AERO_LEAFWAVE_PAIR_CONTACT : AERO_LEAFWAVE_PAIR_NONCONTACT;
         break;
-    case AERO_PAIR_NONCONTACT:
-    case AERO_PAIR_KEYOFF:
+    case AERO_LEAFWAVE_PAIR_NONCONTACT:
+    case AERO_LEAFWAVE_PAIR_KEYOFF:
         if (inside) {
             /* the crossing time within the last frame, from q */
             double frac = q_prev > 1.0f && q_prev - q > 0.0f
                               ? (q_prev - 1.0) / ((double)q_prev - q)
                               : 0.0;
-            state = AERO_PAIR_KEYON;
+            state = AERO_LEAFWAVE_PAIR_KEYON;
             leafwave_key_on(lw, pr, p, clampd(frac, 0.0, 1.0),
                             lw->hit_pa * vrel);
         } else {
-            state = AERO_PAIR_NONCONTACT;
+            state = AERO_LEAFWAVE_PAIR_NONCONTACT;
             leafwave_key_off(lw, pr);
         }
         break;
-    case AERO_PAIR_KEYON:
-    case AERO_PAIR_CONTACT:
+    case AERO_LEAFWAVE_PAIR_KEYON:
+    case AERO_LEAFWAVE_PAIR_CONTACT:
         if (inside) {
-            state = AERO_PAIR_CONTACT;
+            state = AERO_LEAFWAVE_PAIR_CONTACT;
             leafwave_rub(lw, pr, p, vt);
         } else {
-            state = AERO_PAIR_KEYOFF;
+            state = AERO_LEAFWAVE_PAIR_KEYOFF;
             leafwave_key_off(lw, pr);
         }
         break;

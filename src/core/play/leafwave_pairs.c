@@ -17,7 +17,7 @@
  * log2(n / KD_BUCKET) deep whatever the geometry; each node keeps the tight
  * box of its leaves. A leaf's search visits the nearer child first and
  * skips a box farther than its largest possible reach or, once it holds
- * AERO_LEAF_MAX_NEIGHBOURS, not nearer than the farthest of them. Building
+ * AERO_LEAFWAVE_MAX_NEIGHBOURS, not nearer than the farthest of them. Building
  * is O(n log n) (a randomised selection per level); a search O(log n) for
  * any arrangement, including every leaf at one spot, where a spatial hash
  * put them all in one cell and each leaf compared itself with all the
@@ -164,23 +164,23 @@ static double kd_box_d2(const kd_node *nd, const float q[3])
 
 /* j into the list of leaf i's nearest (best, by squared distance bestd,
    nb of them so far), if it is among the nearest
-   AERO_LEAF_MAX_NEIGHBOURS */
+   AERO_LEAFWAVE_MAX_NEIGHBOURS */
 static void keep_nearest(int *best, double *bestd, int *nb, int j, double d2)
 {
     int pos = *nb;
     while (pos > 0 && bestd[pos - 1] > d2)
         pos--;
-    if (pos >= AERO_LEAF_MAX_NEIGHBOURS)
+    if (pos >= AERO_LEAFWAVE_MAX_NEIGHBOURS)
         return;
-    int last = *nb < AERO_LEAF_MAX_NEIGHBOURS ? *nb
-                                              : AERO_LEAF_MAX_NEIGHBOURS - 1;
+    int last = *nb < AERO_LEAFWAVE_MAX_NEIGHBOURS ? *nb
+                                              : AERO_LEAFWAVE_MAX_NEIGHBOURS - 1;
     for (int m = last; m > pos; m--) {
         best[m] = best[m - 1];
         bestd[m] = bestd[m - 1];
     }
     best[pos] = j;
     bestd[pos] = d2;
-    if (*nb < AERO_LEAF_MAX_NEIGHBOURS)
+    if (*nb < AERO_LEAFWAVE_MAX_NEIGHBOURS)
         (*nb)++;
 }
 
@@ -216,8 +216,8 @@ static void kd_search(const kd_tree *kd, int ni, int i, double far2,
     for (int c = 0; c < 2; c++) {
         int w = c ? !first : first;
         if (d[w] > far2 ||
-            (*nb == AERO_LEAF_MAX_NEIGHBOURS &&
-             d[w] >= bestd[AERO_LEAF_MAX_NEIGHBOURS - 1]))
+            (*nb == AERO_LEAFWAVE_MAX_NEIGHBOURS &&
+             d[w] >= bestd[AERO_LEAFWAVE_MAX_NEIGHBOURS - 1]))
             continue;
         kd_search(kd, nd->child + w, i, far2, best, bestd, nb);
     }
@@ -226,10 +226,10 @@ static void kd_search(const kd_tree *kd, int ni, int i, double far2,
 /* leaf i's nearest neighbours within reach, nearest first; returns how
    many. rmax: the largest leaf reach. */
 static int neighbours(const kd_tree *kd, int i, float rmax,
-                      int best[AERO_LEAF_MAX_NEIGHBOURS])
+                      int best[AERO_LEAFWAVE_MAX_NEIGHBOURS])
 {
     const aero_leafwave *lw = kd->lw;
-    double bestd[AERO_LEAF_MAX_NEIGHBOURS];
+    double bestd[AERO_LEAFWAVE_MAX_NEIGHBOURS];
     /* as the pair's own limit below, with the largest partner */
     double far = lw->reach * (lw->leaves[i].reach + rmax);
     int nb = 0;
@@ -266,7 +266,7 @@ int leafwave_build_pairs(aero_leafwave *lw)
     if (n < 2)
         return 0;
     kd_tree kd;
-    size_t cap = (size_t)n * AERO_LEAF_MAX_NEIGHBOURS;
+    size_t cap = (size_t)n * AERO_LEAFWAVE_MAX_NEIGHBOURS;
     /* each candidate as one key, (smaller index) n + larger */
     uint64_t *keys = malloc(sizeof(uint64_t) * cap);
     uint64_t *tmp = malloc(sizeof(uint64_t) * cap);
@@ -281,7 +281,7 @@ int leafwave_build_pairs(aero_leafwave *lw)
             rmax = lw->leaves[i].reach;
     size_t np = 0;
     for (int i = 0; i < n; i++) {
-        int best[AERO_LEAF_MAX_NEIGHBOURS];
+        int best[AERO_LEAFWAVE_MAX_NEIGHBOURS];
         int nb = neighbours(&kd, i, rmax, best);
         for (int m = 0; m < nb; m++) {
             int a = i < best[m] ? i : best[m], b = i < best[m] ? best[m] : i;
@@ -307,7 +307,7 @@ int leafwave_build_pairs(aero_leafwave *lw)
     for (size_t k = 0; k < unique; k++) {
         pairs[k].i = (int)(keys[k] / (uint64_t)n);
         pairs[k].j = (int)(keys[k] % (uint64_t)n);
-        pairs[k].state = AERO_PAIR_INITIAL;
+        pairs[k].state = AERO_LEAFWAVE_PAIR_INITIAL;
         pairs[k].voice = -1;
         pairs[k].q = 1e30f;
     }

@@ -11,7 +11,7 @@
 
 int aero_leafwave_set_sample_rate(aero_leafwave *lw, double sr)
 {
-    if (!(sr >= 1000.0 && sr <= 1e6))
+    if (!(sr >= AERO_LEAFWAVE_SR_MIN && sr <= AERO_LEAFWAVE_SR_MAX))
         return -1;
     if (sr == lw->sample_rate && lw->line)
         return 0;
@@ -19,7 +19,7 @@ int aero_leafwave_set_sample_rate(aero_leafwave *lw, double sr)
         return -1;
     double ramp_ms = 1000.0 * lw->ramp_samples / lw->sample_rate;
     lw->sample_rate = sr;
-    lw->frame_samples = floor(sr / AERO_LEAF_FRAME_RATE + 0.5);
+    lw->frame_samples = floor(sr / AERO_LEAFWAVE_FRAME_RATE + 0.5);
     lw->to_next_frame = lw->frame_samples;
     aero_leafwave_set_ramp_ms(lw, ramp_ms);
     leafwave_reset_voices(lw);
@@ -102,7 +102,8 @@ int aero_leafwave_set_stiffness(aero_leafwave *lw, double s)
 
 int aero_leafwave_set_beta(aero_leafwave *lw, double beta)
 {
-    if (aero_set_within(&lw->beta, beta, 0.0, AERO_TREE_BETA_MAX))
+    if (aero_set_within(&lw->beta, beta, AERO_TREE_BETA_MIN,
+                        AERO_TREE_BETA_MAX))
         return -1;
     if (lw->has_motion)
         aero_tree_motion_set_beta(&lw->motion, beta);
@@ -121,12 +122,14 @@ int aero_leafwave_set_mic(aero_leafwave *lw, double x, double y, double z)
 
 int aero_leafwave_set_mic_k(aero_leafwave *lw, double k)
 {
-    return aero_set_within(&lw->mic_k, k, 0.0, AERO_LEAFWAVE_MIC_K_MAX);
+    return aero_set_within(&lw->mic_k, k, AERO_LEAFWAVE_MIC_K_MIN,
+                           AERO_LEAFWAVE_MIC_K_MAX);
 }
 
 int aero_leafwave_set_sway(aero_leafwave *lw, double rad)
 {
-    return aero_set_within(&lw->sway, rad, 0.0, AERO_LEAFWAVE_SWAY_MAX);
+    return aero_set_within(&lw->sway, rad, AERO_LEAFWAVE_SWAY_MIN,
+                           AERO_LEAFWAVE_SWAY_MAX);
 }
 
 int aero_leafwave_set_coupling(aero_leafwave *lw, double a)
@@ -143,12 +146,14 @@ int aero_leafwave_set_flutter(aero_leafwave *lw, double hz)
 
 int aero_leafwave_set_hit(aero_leafwave *lw, double pa)
 {
-    return aero_set_within(&lw->hit_pa, pa, 0.0, AERO_LEAFWAVE_PA_MAX);
+    return aero_set_within(&lw->hit_pa, pa, AERO_LEAFWAVE_PA_MIN,
+                           AERO_LEAFWAVE_PA_MAX);
 }
 
 int aero_leafwave_set_rub(aero_leafwave *lw, double pa)
 {
-    return aero_set_within(&lw->rub_pa, pa, 0.0, AERO_LEAFWAVE_PA_MAX);
+    return aero_set_within(&lw->rub_pa, pa, AERO_LEAFWAVE_PA_MIN,
+                           AERO_LEAFWAVE_PA_MAX);
 }
 
 int aero_leafwave_set_reach(aero_leafwave *lw, double factor)
@@ -162,11 +167,7 @@ int aero_leafwave_set_reach(aero_leafwave *lw, double factor)
 int aero_leafwave_set_tables(aero_leafwave *lw, double fm, int per_octave,
                              int octaves)
 {
-    if (!aero_is_finite(fm) || fm < AERO_LEAFWAVE_FM_MIN ||
-        fm > AERO_LEAFWAVE_FM_MAX || per_octave < 1 ||
-        per_octave > AERO_LEAFWAVE_PER_OCTAVE_MAX || octaves < 1 ||
-        octaves > AERO_LEAFWAVE_OCTAVES_MAX ||
-        per_octave * octaves > AERO_LEAFWAVE_TABLES_MAX)
+    if (!aero_leafwave_tables_valid(fm, per_octave, octaves))
         return -1;
     double old_fm = lw->fm;
     int old_n = lw->tables_per_octave, old_o = lw->octaves;
@@ -188,7 +189,7 @@ int aero_leafwave_set_tables(aero_leafwave *lw, double fm, int per_octave,
 
 int aero_leafwave_set_voices(aero_leafwave *lw, int n)
 {
-    if (n < 1 || n > AERO_LEAFWAVE_VOICES_MAX)
+    if (n < AERO_LEAFWAVE_VOICES_MIN || n > AERO_LEAFWAVE_VOICES_MAX)
         return -1;
     if (leafwave_replace_arrays((void **)&lw->voices,
                                 sizeof(aero_leaf_voice) * n,
@@ -221,8 +222,10 @@ void aero_leafwave_count_states(const aero_leafwave *lw, int counts[5])
 int aero_leafwave_tables_valid(double fm, int per_octave, int octaves)
 {
     return aero_is_finite(fm) && fm >= AERO_LEAFWAVE_FM_MIN &&
-        fm <= AERO_LEAFWAVE_FM_MAX && per_octave >= 1 &&
-        per_octave <= AERO_LEAFWAVE_PER_OCTAVE_MAX && octaves >= 1 &&
+        fm <= AERO_LEAFWAVE_FM_MAX &&
+        per_octave >= AERO_LEAFWAVE_PER_OCTAVE_MIN &&
+        per_octave <= AERO_LEAFWAVE_PER_OCTAVE_MAX &&
+        octaves >= AERO_LEAFWAVE_OCTAVES_MIN &&
         octaves <= AERO_LEAFWAVE_OCTAVES_MAX &&
         per_octave * octaves <= AERO_LEAFWAVE_TABLES_MAX;
 }

@@ -35,7 +35,7 @@ int leafwave_replace_arrays(void **a, size_t a_bytes, void **b,
 int leafwave_make_fft(aero_leafwave *lw)
 {
     lw->fft = calloc(1, sizeof *lw->fft);
-    return lw->fft ? aero_fftw_c2r_make(lw->fft, AERO_LEAF_TABLE_LEN) : -1;
+    return lw->fft ? aero_fftw_c2r_make(lw->fft, AERO_LEAFWAVE_TABLE_LEN) : -1;
 }
 
 void leafwave_free_fft(aero_leafwave *lw)
@@ -57,7 +57,7 @@ int aero_leafwave_table_for(const aero_leafwave *lw, double length,
     double size = sqrt(length * width);
     if (!(size > 0.0) || !aero_is_finite(size))
         return 0;
-    double f = AERO_LEAF_PITCH_HZ_M / size;
+    double f = AERO_LEAFWAVE_PITCH_HZ_M / size;
     int i = (int)floor(lw->tables_per_octave * log2(f / lw->fm) + 0.5);
     return i < 0 ? 0 : i >= lw->ntables ? lw->ntables - 1 : i;
 }
@@ -66,14 +66,14 @@ const float *aero_leafwave_table(const aero_leafwave *lw, int i)
 {
     if (!lw->tables || i < 0 || i >= lw->ntables)
         return NULL;
-    return lw->tables + (size_t)i * (AERO_LEAF_TABLE_LEN + 1);
+    return lw->tables + (size_t)i * (AERO_LEAFWAVE_TABLE_LEN + 1);
 }
 
 /* each table's zero crossings: of the two samples around a sign change,
    the one nearer zero; notes start there. Counted, then listed. */
 static int find_crossings(aero_leafwave *lw)
 {
-    const int n = AERO_LEAF_TABLE_LEN;
+    const int n = AERO_LEAFWAVE_TABLE_LEN;
     int count = lw->ntables;
     for (int pass = 0; pass < 2; pass++) {
         int c = 0;
@@ -102,7 +102,7 @@ static int find_crossings(aero_leafwave *lw)
     return 0;
 }
 
-/* Table i: one loop of AERO_LEAF_TABLE_LEN samples at TABLE_RATE, its
+/* Table i: one loop of AERO_LEAFWAVE_TABLE_LEN samples at TABLE_RATE, its
    spectrum pink (power ~ 1/f) from the basic frequency f_i over about
    three octaves, rolling off as f^-4 in power above 8 f_i, cut at
    0.45 TABLE_RATE / RATE_MAX (no aliasing when friction plays it at up to
@@ -110,7 +110,7 @@ static int find_crossings(aero_leafwave *lw)
    after the end repeats the first (interpolation). */
 int leafwave_make_tables(aero_leafwave *lw)
 {
-    const int n = AERO_LEAF_TABLE_LEN;
+    const int n = AERO_LEAFWAVE_TABLE_LEN;
     int count = lw->tables_per_octave * lw->octaves;
     float *tables = malloc(sizeof(float) * (size_t)count * (n + 1));
     if (!tables || !lw->fft) {
@@ -122,8 +122,8 @@ int leafwave_make_tables(aero_leafwave *lw)
     uint32_t rng = lw->seed * 747796405u + 2891336453u;
     if (!rng)
         rng = 1;
-    double df = AERO_LEAF_TABLE_RATE / n;
-    double f_top = 0.45 * AERO_LEAF_TABLE_RATE / RATE_MAX;
+    double df = AERO_LEAFWAVE_TABLE_RATE / n;
+    double f_top = 0.45 * AERO_LEAFWAVE_TABLE_RATE / RATE_MAX;
     free(lw->tables);
     lw->tables = tables;
     lw->ntables = count;
@@ -216,7 +216,7 @@ static int start_voice(aero_leafwave *lw, int p, int wait, double level)
     v->table = table;
     v->wait = wait;
     v->pos = pos;
-    v->inc = AERO_LEAF_TABLE_RATE / lw->sample_rate;
+    v->inc = AERO_LEAFWAVE_TABLE_RATE / lw->sample_rate;
     v->hit_decay = (float)exp(-1.0 / (HIT_DECAY_S * lw->sample_rate));
     v->rel_decay = (float)exp(-1.0 / (RELEASE_S * lw->sample_rate));
     pr->voice = best;
@@ -243,7 +243,7 @@ void leafwave_key_on(aero_leafwave *lw, aero_leaf_pair *pr, int p, double frac,
         v->hit_step = (float)((peak - v->hit) / attack);
     }
     /* a collision plays the table at its own speed (rate 1) */
-    double target = AERO_LEAF_TABLE_RATE / lw->sample_rate;
+    double target = AERO_LEAFWAVE_TABLE_RATE / lw->sample_rate;
     v->inc_step = (target - v->inc) / lw->frame_samples;
     v->rub_step = (float)(-v->rub / lw->frame_samples);
 }
@@ -261,7 +261,7 @@ void leafwave_rub(aero_leafwave *lw, aero_leaf_pair *pr, int p, double vt)
     aero_leaf_voice *v = &lw->voices[pr->voice];
     v->releasing = 0;
     double rate = clampd(vt / RUB_SPEED_REF, RATE_MIN, RATE_MAX);
-    double target = rate * AERO_LEAF_TABLE_RATE / lw->sample_rate;
+    double target = rate * AERO_LEAFWAVE_TABLE_RATE / lw->sample_rate;
     v->inc_step = (target - v->inc) / lw->frame_samples;
     v->rub_step = (float)((level - v->rub) / lw->frame_samples);
 }
@@ -285,8 +285,8 @@ void leafwave_free_silent_voices(aero_leafwave *lw)
             continue;
         int sounding = vo->pair >= 0 &&
                        lw->pairs[vo->pair].voice == v &&
-                       (lw->pairs[vo->pair].state == AERO_PAIR_CONTACT ||
-                        lw->pairs[vo->pair].state == AERO_PAIR_KEYON);
+                       (lw->pairs[vo->pair].state == AERO_LEAFWAVE_PAIR_CONTACT ||
+                        lw->pairs[vo->pair].state == AERO_LEAFWAVE_PAIR_KEYON);
         if (!sounding && vo->wait <= 0 && vo->attack_left <= 0 &&
             voice_level(vo) < SILENT_PA) {
             if (vo->pair >= 0 && lw->pairs[vo->pair].voice == v)
@@ -312,7 +312,7 @@ static void play(const float *tab, float *restrict dry, int s, int e,
     for (int k = s; k < e; k++) {
         long ip = (long)p;
         float frac = (float)(p - (double)ip);
-        int idx = (int)(ip & (AERO_LEAF_TABLE_LEN - 1));
+        int idx = (int)(ip & (AERO_LEAFWAVE_TABLE_LEN - 1));
         float x = tab[idx] + frac * (tab[idx + 1] - tab[idx]);
         dry[k] += x * (h + r);
         p += d;
@@ -320,7 +320,7 @@ static void play(const float *tab, float *restrict dry, int s, int e,
         h = h * hit_mul + hit_add;
         r = r * rub_mul + rub_add;
     }
-    *pos = fmod(p, AERO_LEAF_TABLE_LEN);
+    *pos = fmod(p, AERO_LEAFWAVE_TABLE_LEN);
     *inc = d;
     *hit = h;
     *rubv = r;
@@ -335,7 +335,7 @@ void leafwave_render_voices(aero_leafwave *lw, float *dry, int n)
         if (v->table < 0)
             continue;
         const float *tab = lw->tables + (size_t)v->table *
-                                            (AERO_LEAF_TABLE_LEN + 1);
+                                            (AERO_LEAFWAVE_TABLE_LEN + 1);
         int s = 0;
         if (v->wait > 0) {
             s = v->wait < n ? v->wait : n;
@@ -356,8 +356,8 @@ void leafwave_render_voices(aero_leafwave *lw, float *dry, int n)
             play(tab, dry, s, n, &pos, &inc, v->inc_step, &hit,
                  v->hit_decay, 0.0f, &rubv, rub_mul, rub_add);
         /* keep the ramps within their frame's targets */
-        if (inc < 0.1 * AERO_LEAF_TABLE_RATE / lw->sample_rate)
-            inc = 0.1 * AERO_LEAF_TABLE_RATE / lw->sample_rate;
+        if (inc < 0.1 * AERO_LEAFWAVE_TABLE_RATE / lw->sample_rate)
+            inc = 0.1 * AERO_LEAFWAVE_TABLE_RATE / lw->sample_rate;
         v->pos = pos;
         v->inc = inc;
         v->hit = hit < 1e-20f ? 0.0f : hit;

@@ -21,7 +21,9 @@
 #define AERO_MOVING_EXPONENT_MIN 0.0
 #define AERO_MOVING_EXPONENT_MAX 12.0
 #define AERO_MOVING_EXPONENT_DEFAULT 3.0 /* pressure ~ U^3 */
-/* the fastest wind accepted: ten times the Mach 0.3 clamp, m/s */
+/* the wind's speed (the length of its vector) accepted, m/s: up to ten
+   times the Mach 0.3 clamp */
+#define AERO_MOVING_WIND_MIN 0.0
 #define AERO_MOVING_WIND_MAX (AERO_MACH_LIMIT * AERO_C0 * 10.0)
 
 typedef struct {

@@ -17,6 +17,7 @@
 #define AERO_TREE_STIFFNESS_MIN 1e-3
 #define AERO_TREE_STIFFNESS_MAX 1e3
 /* the tree motion's exponent beta (Matsuyama et al. 2005) */
+#define AERO_TREE_BETA_MIN 0.0
 #define AERO_TREE_BETA_MAX 2.0
 /* their defaults: every spring as the tree file states it, Kolmogorov's
    5/3 */

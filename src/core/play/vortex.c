@@ -29,7 +29,7 @@ int aero_vortex_init(aero_vortex *m, double sample_rate, int n_ears,
 {
     memset(m, 0, sizeof *m);
     int sr_ok = sample_rate > 0.0 && aero_is_finite(sample_rate);
-    m->sample_rate = sr_ok ? sample_rate : 44100.0;
+    m->sample_rate = sr_ok ? sample_rate : AERO_SAMPLE_RATE_FALLBACK;
     m->stereo = n_ears == 2;
     m->rng = seed ? seed : 1;
     m->gain = m->gain_target = pow(10.0, AERO_GAIN_DB_DEFAULT / 20.0);

@@ -91,7 +91,7 @@ typedef struct aero_vortex {
    gain and ramp from aero_ranges.h, listener at (0, 1, 0), ears at
    x = -+AERO_EAR_HALF_SPACING from it, no texture (silence). 0, or -1
    when out of memory (silent then: no sources) or the sample rate is not
-   usable (44.1 kHz is taken). */
+   usable (AERO_SAMPLE_RATE_FALLBACK is taken). */
 int aero_vortex_init(aero_vortex *m, double sample_rate, int n_ears,
                      uint32_t seed);
 void aero_vortex_free(aero_vortex *m);

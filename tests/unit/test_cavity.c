@@ -1,6 +1,6 @@
-/* Unit tests of src/core/play/cavity_model: Rossiter and quarter-wave laws
- * (written here again from their sources), lock-in, bad input. */
-#include "cavity_model.h"
+/* Unit tests of src/core/play/cavity: Rossiter and quarter-wave laws
+ * (written here again from their sources), lock-in, two ears, bad input. */
+#include "cavity.h"
 #include "multi_instance.h"
 #include "unit.h"
 
@@ -50,7 +50,7 @@ UNIT_TEST(lock_in)
     double a = sqrt(0.02 * 0.05 / 3.141592653589793);
     int bad = 0;
     aero_cavity m;
-    aero_cavity_init(&m, SR, 1);
+    aero_cavity_init(&m, SR, 1, 1);
     double shallow = rms_of(&m, 10.0f, 1.0, &bad);
     /* tune the depth onto mode 2 at 10 m/s: it locks in and grows */
     double f2 = aero_cavity_rossiter_hz(10, 0.02, 2);
@@ -81,11 +81,88 @@ UNIT_TEST(lock_in)
     aero_cavity_free(&m);
 }
 
+/* rms of each ear over `blocks` blocks of 64 at a steady speed, from the
+   fourth block on */
+static void ears_rms(aero_cavity *m, float speed, int blocks, double rms[2])
+{
+    float in[64], left[64], right[64];
+    double sum[2] = {0, 0};
+    for (int b = 0; b < blocks; b++) {
+        for (int i = 0; i < 64; i++)
+            in[i] = speed;
+        aero_cavity_process(m, in, (float *[]){left, right}, 64);
+        for (int i = 0; b >= 4 && i < 64; i++)
+            sum[0] += (double)left[i] * left[i],
+            sum[1] += (double)right[i] * right[i];
+    }
+    for (int e = 0; e < 2; e++)
+        rms[e] = sqrt(sum[e] / (64.0 * (blocks - 4)));
+}
+
+/* Two ears, the cavity to the listener's left (its centre 0.5 m to the
+ * right of the opening, 1 m out): the left ear is nearer and hears it
+ * louder. Model mode: the field falls as 1/r (a compact source's far
+ * field, Curle 1955), so the ears' levels stand as r_right / r_left, and
+ * the left ear hears what a mono listener there hears, sample for sample.
+ * Texture mode: a force across the opening (along y) is a dipole,
+ * p = (x . g) W / (4 pi c0 r^2) with x the ear's position (Curle 1955),
+ * so p ~ y / r^2 and, y the same, they stand as (r_right / r_left)^2. */
+UNIT_TEST(stereo_ears)
+{
+    const aero_ears ears = {2, {{0.4, 1.0, 0.0}, {0.6, 1.0, 0.0}}};
+    const double r_left = sqrt(0.4 * 0.4 + 1.0), r_right = sqrt(0.6 * 0.6 + 1.0);
+    aero_cavity st, mono;
+    UNIT_CHECK(aero_cavity_init(&st, SR, 2, 7) == 0 &&
+                   aero_cavity_set_ears(&st, &ears) == 0 &&
+                   aero_cavity_init(&mono, SR, 1, 7) == 0 &&
+                   aero_cavity_set_ears(&mono, &(aero_ears){1, {{0.4, 1.0, 0.0}}}) == 0,
+               "two ears made and placed");
+    UNIT_CHECK(aero_cavity_set_ears(&mono, &ears) < 0,
+               "a mono cavity refuses two ears");
+    float in[64], left[64], right[64], alone[64];
+    int same = 1;
+    for (int b = 0; b < 50; b++) {
+        for (int i = 0; i < 64; i++)
+            in[i] = 12.0f;
+        aero_cavity_process(&st, in, (float *[]){left, right}, 64);
+        aero_cavity_process(&mono, in, (float *[]){alone}, 64);
+        for (int i = 0; i < 64; i++)
+            same &= left[i] == alone[i];
+    }
+    UNIT_CHECK(same, "the left ear hears what one listener there hears");
+    double rms[2];
+    ears_rms(&st, 12.0f, 400, rms);
+    UNIT_CHECK(rms[0] > rms[1], "model: the left ear louder (%g > %g Pa)",
+               rms[0], rms[1]);
+    UNIT_NEAR_REL(rms[0] / rms[1], r_right / r_left, 1e-5,
+                  "model: the ears' levels as 1/r");
+    aero_cavity_free(&mono);
+
+    /* a texture whose force is across the opening only (g_x 0, g_y a
+       tone) */
+    aero_texture *t = calloc(1, sizeof(*t));
+    char err[128] = "";
+    aero_texture_init(t, 4096, 1, 16000.0); /* zeros, 3 channels */
+    for (int i = 0; i < 4096; i++)
+        t->data[t->channels * i + 1] =
+            (float)sin(2.0 * 3.141592653589793 * 64 * i / 4096);
+    aero_texture_set(t, "kind", "cavity");
+    aero_texture_set(t, "v0", "10");
+    UNIT_CHECK(aero_cavity_set_texture(&st, t, err, sizeof(err)) == 0,
+               "a cavity texture taken: %s", err);
+    ears_rms(&st, 10.0f, 400, rms);
+    UNIT_CHECK(rms[0] > rms[1], "texture: the left ear louder (%g > %g Pa)",
+               rms[0], rms[1]);
+    UNIT_NEAR_REL(rms[0] / rms[1], pow(r_right / r_left, 2), 1e-5,
+                  "texture: the ears' levels as a dipole's y / r^2");
+    aero_cavity_free(&st);
+}
+
 UNIT_TEST(bad_input)
 {
     int bad = 0;
     aero_cavity m;
-    aero_cavity_init(&m, SR, 2);
+    aero_cavity_init(&m, SR, 1, 2);
     UNIT_CHECK(aero_cavity_set_length(&m, 0) < 0 &&
                    aero_cavity_set_depth(&m, NAN) < 0 &&
                    aero_cavity_set_width(&m, -1) < 0 &&
@@ -138,7 +215,7 @@ static void *mi_make_mode(int variant, int textured)
 {
     char err[128];
     aero_cavity *m = calloc(1, sizeof(*m));
-    aero_cavity_init(m, 44100.0, 5u + variant);
+    aero_cavity_init(m, 44100.0, 1, 5u + variant);
     aero_cavity_set_length(m, variant ? 0.05 : 0.02);
     if (textured)
         aero_cavity_set_texture(m, unit_mi_texture("cavity", 1), err,
@@ -165,4 +242,5 @@ UNIT_TEST(multi_instance)
 }
 
 UNIT_MAIN(UNIT_CASE(rossiter_and_depth_modes), UNIT_CASE(lock_in),
-          UNIT_CASE(bad_input), UNIT_CASE(multi_instance))
+          UNIT_CASE(stereo_ears), UNIT_CASE(bad_input),
+          UNIT_CASE(multi_instance))

@@ -14,7 +14,7 @@
  * same tridiagonal solve along z as flow3d.c, the transpose back, the
  * inverse transforms, and the gradient (the potential of the plane below
  * the slab received from the previous rank). The result equals
- * aero_flow3d_project's within float rounding (tests/objects/80-mpi.sh). */
+ * aero_flow3d_project's bit for bit (tests/objects/80-mpi.sh). */
 #ifndef AERO_FLOW3D_SLAB_H
 #define AERO_FLOW3D_SLAB_H
 
@@ -59,7 +59,7 @@ void aero_flow3d_slab_project(aero_flow3d_slab *s);
  * thinner than the halo). Advection's departure points, the confinement's
  * and diffusion's stencils and the near-body mask read at most a few
  * planes away a step, so a halo wider than that keeps every own value
- * exact: the flow equals the one-process flow within float rounding
+ * exact: the flow equals the one-process flow bit for bit
  * (tests/objects/80-mpi.sh). The cost: each rank computes 2 halo planes
  * besides its own, and sends the halos once a step. */
 typedef struct {

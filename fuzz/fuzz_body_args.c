@@ -1,6 +1,6 @@
 /* fuzz: [body~]'s creation flags and messages (pose in its three forms,
  * place, wind, listener, ears, scale, exponent, gain, ramp, seed, texture),
- * through the core setters src/pd/body~.c routes them to (body_texture),
+ * through the core setters src/pd/body~.c routes them to (body.h),
  * in any order, with any numbers, between blocks of any size 1..1024 with
  * any speed signal, mono and stereo, on small synthetic object textures
  * (sphere or axis symmetry, 1..3 directions, 1..4 regions, mirror or not).
@@ -9,7 +9,7 @@
 /* aero-fuzz: object body~ */
 #include "fuzz.h"
 
-#include "body_texture.h"
+#include "body.h"
 
 #define MAXN 1024
 

@@ -9,7 +9,7 @@
 /* aero-fuzz: object fieldsound~ */
 #include "fuzz.h"
 
-#include "field_render.h"
+#include "fieldsound.h"
 #include "field_volume.h"
 
 #define MAXN 1024
@@ -24,7 +24,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     aero_fieldsound r;
     memset(&src, 0, sizeof(src));
     aero_field_params_default(&par);
-    aero_fieldsound_init(&r, 44100.0);
+    aero_fieldsound_init(&r, 44100.0, 1, 0);
     aero_ears start = aero_ears_at(1, 0, 0);
     aero_fieldsound_place_ears(&r, &start);
     while (in.left) {

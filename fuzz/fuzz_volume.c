@@ -12,7 +12,7 @@
  * which a memory-backed file cannot be). Seeds: fuzz/seeds/volume/. */
 #include "fuzz.h"
 
-#include "field_render.h"
+#include "fieldsound.h"
 #include "field_volume.h"
 
 #include <sys/stat.h>
@@ -45,7 +45,7 @@ static void render(const aero_volume_info *v)
         FUZZ_REQUIRE(err[0] != 0, "prepare refused without a message");
         return;
     }
-    aero_fieldsound_init(&r, 22050.0);
+    aero_fieldsound_init(&r, 22050.0, 1, 0);
     aero_ears start = aero_ears_at(v->origin[0] + 0.3, v->origin[1] + 0.1,
                                    v->origin[2]);
     aero_fieldsound_place_ears(&r, &start);

@@ -1,6 +1,6 @@
 /* fuzz: [vortex~]'s creation flags and messages (n, speeds, positions,
  * listener, ears, gain, clip, ramp, seed, texture), through the core
- * setters src/pd/vortex~.c routes them to (vortex_player), in any order,
+ * setters src/pd/vortex~.c routes them to (vortex.h), in any order,
  * with any numbers (NaN, infinities, denormals, huge), between blocks of
  * any size 1..1024 with any speed signal, mono and stereo, on a small
  * synthetic vortex texture of 1..4 speeds. Invariant: the output stays
@@ -8,7 +8,7 @@
 /* aero-fuzz: object vortex~ */
 #include "fuzz.h"
 
-#include "vortex_player.h"
+#include "vortex.h"
 
 #define MAXN 1024
 #define MAXV 64 /* values in a speeds or positions list */
@@ -35,7 +35,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     double v[MAXV];
     char err[256];
     aero_vortex m;
-    if (aero_vortex_init(&m, 44100.0, stereo, 1))
+    if (aero_vortex_init(&m, 44100.0, stereo ? 2 : 1, 1))
         return 0;
     while (in.left) {
         unsigned op = fuzz_byte(&in) % 14;

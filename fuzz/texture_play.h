@@ -6,7 +6,7 @@
 
 #include "fuzz.h"
 
-#include "body_texture.h"
+#include "body.h"
 #include "cavity.h"
 #include "aeolian.h"
 #include "texture.h"

@@ -28,10 +28,10 @@ only() { case "$1" in *"${ONLY:-}"*) return 0 ;; *) return 1 ;; esac; }
 # --- unit tests of src/core (tests/unit/run.sh; CASE= picks cases) --------
 [ -z "${PD_ONLY:-}" ] && . tests/unit/run.sh
 
-# the fixture the [body~] tests play, written by test_body_texture (which
+# the fixture the [body~] tests play, written by test_body (which
 # PD_ONLY=1, or an ONLY that does not name it, does not run as a test)
-if [ ! -f build/tests/sine-sphere.wav ] && [ -x build/tests/test_body_texture ]; then
-    build/tests/test_body_texture pd_fixture >"$OUT/test_body_texture.txt" 2>&1
+if [ ! -f build/tests/sine-sphere.wav ] && [ -x build/tests/test_body ]; then
+    build/tests/test_body pd_fixture >"$OUT/test_body.txt" 2>&1
 fi
 
 # --- build variants ----------------------------------------------------------

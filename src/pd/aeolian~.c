@@ -62,12 +62,8 @@ AERO_PD_SETTER_WHOLE(aeolian_tilde, t_aeolian_tilde, n, x_core,
 AERO_PD_SETTER(aeolian_tilde, t_aeolian_tilde, exponent, x_core,
                aero_aeolian_set_exponent)
 
-static void aeolian_tilde_seed(t_aeolian_tilde *x, t_floatarg f)
-{
-    uint32_t seed;
-    if (!aero_pd_seed_of(&x->x_base, f, &seed))
-        aero_aeolian_set_seed(&x->x_core, seed);
-}
+AERO_PD_SEED_SETTER(aeolian_tilde, t_aeolian_tilde, x_core,
+                    aero_aeolian_set_seed)
 
 static void aeolian_tilde_listener(t_aeolian_tilde *x, t_symbol *s, int argc,
                                    t_atom *argv)
@@ -165,9 +161,9 @@ static const aero_pd_method aeolian_tilde_methods[] = {
                             AERO_AEOLIAN_SOURCES_DEFAULT, NULL,
                             "point sources, 0: auto, length / 3 d")},
     {"exponent", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_exponent, 0,
-     AERO_PD_RANGE_NOTE_DEF(AERO_MOVING_EXPONENT_MIN,
-                            AERO_MOVING_EXPONENT_MAX,
-                            AERO_MOVING_EXPONENT_DEFAULT, NULL,
+     AERO_PD_RANGE_NOTE_DEF(AERO_AEOLIAN_EXPONENT_MIN,
+                            AERO_AEOLIAN_EXPONENT_MAX,
+                            AERO_AEOLIAN_EXPONENT_DEFAULT, NULL,
                             "3 is physical, 6 the paper's")},
     {"roll", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_roll, 0,
      AERO_PD_NOTE("finite degrees")},
@@ -192,8 +188,7 @@ static void *aeolian_tilde_new(t_symbol *s, int argc, t_atom *argv)
     aero_pd_base_init(&x->x_base, x, &aeolian_tilde_spec, argc, argv);
     if (aero_aeolian_init(&x->x_core, sys_getsr(),
                           x->x_base.stereo ? 2 : 1, aero_pd_default_seed()))
-        pd_error(x, OBJ ": sample rate %g not usable: 44100 Hz until the "
-                 "DSP starts", sys_getsr());
+        aero_pd_init_failed(&x->x_base, sys_getsr());
     aero_pd_pose_clock_init(&x->x_clock);
     aero_pd_parse_flags(&x->x_base, argc, argv);
     aero_pd_base_outlets(&x->x_base);

@@ -408,6 +408,15 @@ int aero_pd_seed_of(const aero_pd_base *b, t_float f, uint32_t *seed)
     return 0;
 }
 
+void aero_pd_init_failed(const aero_pd_base *b, double sr)
+{
+    if (sr > 0.0 && sr < HUGE_VAL)
+        pd_error(b->owner, "%s: out of memory: silent", b->obj);
+    else
+        pd_error(b->owner, "%s: sample rate %g not usable: the core's "
+                 "default rate until the DSP starts", b->obj, sr);
+}
+
 double aero_pd_at_bound(const aero_pd_base *b, const char *name, t_float f)
 {
     const aero_pd_rule *r = aero_pd_rule_of(b, name);

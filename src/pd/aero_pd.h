@@ -279,6 +279,17 @@ double aero_pd_at_bound(const aero_pd_base *b, const char *name, t_float f);
             aero_pd_refused(&x->x_base, #msg, f);                          \
     }
 
+/* `seed f` through aero_pd_seed_of (the one seed policy) to the core's
+   int set_seed (0 accepted) */
+#define AERO_PD_SEED_SETTER(prefix, type, core, setter)                    \
+    static void prefix##_seed(type *x, t_floatarg f)                       \
+    {                                                                      \
+        uint32_t seed;                                                     \
+        if (!aero_pd_seed_of(&x->x_base, f, &seed) &&                      \
+            setter(&x->core, seed))                                        \
+            aero_pd_refused(&x->x_base, "seed", f);                        \
+    }
+
 /* `listener x y z` (mono) or `ears lx ly lz rx ry rz` (-stereo): checks the
  * selector against the object's outlets and reads the numbers into e.
  * Returns the number of ears (1 or 2), or 0 after reporting an error. */
@@ -439,6 +450,11 @@ static inline uint32_t aero_pd_seed(t_float f)
 /* `seed f` of every object: 0 with *seed set; NaN or an infinity refused
  * (-1 after the report, from the rule AERO_PD_SEED) */
 int aero_pd_seed_of(const struct aero_pd_base *b, t_float f, uint32_t *seed);
+
+/* a core's init returned -1 in new(), at Pd's sample rate sr: either that
+ * rate was not usable (the core takes its default rate, 44.1 or 48 kHz,
+ * until the DSP starts) or memory ran out (the core is silent) */
+void aero_pd_init_failed(const struct aero_pd_base *b, double sr);
 #define AERO_PD_SEED                                                       \
     AERO_PD_NOTE("any finite number, its whole part modulo 2^32")
 

@@ -1,7 +1,7 @@
 /* [body~]: the aeolian sound of a 3D body that moves and turns (a sphere
  * whirled on a wire, a club, the ends of a thrown stick), played from an
  * object texture made by `aerotex object` (Dobashi et al. 2003, the 3D case).
- * Thin Pd wrapper around src/core/play/body_texture: it parses flags, routes
+ * Thin Pd wrapper around src/core/play/body: it parses flags, routes
  * messages to setters and calls process from perform.
  *
  *   [body~ -texture sphere -stereo -scale 1 -exponent 3 -gain 0]
@@ -13,7 +13,7 @@
 #include <math.h>
 
 #include "aero_air.h"
-#include "body_texture.h"
+#include "body.h"
 
 static t_class *body_tilde_class;
 
@@ -104,12 +104,8 @@ AERO_PD_SETTER(body_tilde, t_body_tilde, gain, x_core,
 AERO_PD_SETTER(body_tilde, t_body_tilde, ramp, x_core,
                aero_body_set_ramp_ms)
 
-static void body_tilde_seed(t_body_tilde *x, t_floatarg f)
-{
-    uint32_t seed;
-    if (!aero_pd_seed_of(&x->x_base, f, &seed))
-        aero_body_set_seed(&x->x_core, seed);
-}
+AERO_PD_SEED_SETTER(body_tilde, t_body_tilde, x_core,
+                    aero_body_set_seed)
 
 /* --- creation -------------------------------------------------------------- */
 
@@ -154,10 +150,9 @@ static void *body_tilde_new(t_symbol *s, int argc, t_atom *argv)
     (void)s;
     t_body_tilde *x = (t_body_tilde *)pd_new(body_tilde_class);
     aero_pd_base_init(&x->x_base, x, &body_tilde_spec, argc, argv);
-    if (aero_body_init(&x->x_core, sys_getsr(),
-                               x->x_base.stereo ? 2 : 1,
-                               aero_pd_default_seed()))
-        pd_error(x, OBJ ": out of memory for the delay lines: silent");
+    if (aero_body_init(&x->x_core, sys_getsr(), x->x_base.stereo ? 2 : 1,
+                       aero_pd_default_seed()))
+        aero_pd_init_failed(&x->x_base, sys_getsr());
     aero_pd_pose_clock_init(&x->x_clock);
     aero_pd_parse_flags(&x->x_base, argc, argv);
     aero_pd_no_file(&x->x_base, "texture", "texture");

@@ -1,5 +1,5 @@
 /* [fieldsound~]: field auralization of time-varying volume data (paper
- * 002) in real time. Thin Pd wrapper around src/core/play/field_render: the
+ * 002) in real time. Thin Pd wrapper around src/core/play/fieldsound: the
  * volume is preprocessed in a worker thread (no Pd calls in it), the
  * sources are swapped in by a clock in Pd's thread, perform only renders.
  *
@@ -406,9 +406,9 @@ static void *fieldsound_tilde_new(t_symbol *s, int argc, t_atom *argv)
     /* no flow to clamp (the listener's speed and `done` are x_report's);
        the base's clock stays for the output guard's report */
     aero_field_params_default(&x->x_par);
-    if (aero_fieldsound_init(&x->x_core, sys_getsr()))
-        pd_error(x, OBJ ": sample rate %g not usable: 44100 Hz until the "
-                 "DSP starts", sys_getsr());
+    if (aero_fieldsound_init(&x->x_core, sys_getsr(), 1,
+                             aero_pd_default_seed()))
+        aero_pd_init_failed(&x->x_base, sys_getsr());
     aero_ears start = aero_ears_at(1, 0, 0);
     aero_fieldsound_place_ears(&x->x_core, &start);
     x->x_poll = clock_new(x, (t_method)fieldsound_tilde_poll);

@@ -291,7 +291,7 @@ static void *rotor_tilde_new(t_symbol *s, int argc, t_atom *argv)
         AERO_PD_STR(AERO_ROTOR_MACH_TIP_MAX);
     if (aero_rotor_init(&x->x_core, sys_getsr(), x->x_base.stereo ? 2 : 1,
                         aero_pd_default_seed()))
-        pd_error(x, OBJ ": out of memory for the delay lines: silent");
+        aero_pd_init_failed(&x->x_base, sys_getsr());
     aero_pd_pose_clock_init(&x->x_clock);
     x->x_poll = clock_new(x, (t_method)rotor_tilde_poll);
     x->x_creating = 1;

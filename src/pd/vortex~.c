@@ -1,7 +1,7 @@
 /* [vortex~]: vortex sound of turbulent air (fire, flamethrowers, jets,
  * explosions) from a vortex texture Q(u, t) made by `aerotex vortex`
  * (Dobashi et al. 2004), plus the combustion noise of a flame (`power` in kW).
- * Thin Pd wrapper around src/core/play/vortex_player.
+ * Thin Pd wrapper around src/core/play/vortex.
  *
  *   [vortex~ -texture fire -n 8 -stereo -power 30 -length 0.02 -clip 20]
  *   inlet 1 (signal): average flow speed, m/s, added to each source's own
@@ -11,7 +11,7 @@
 #include "aero_pd.h"
 
 #include "aero_air.h"
-#include "vortex_player.h"
+#include "vortex.h"
 
 #include <math.h>
 
@@ -133,12 +133,8 @@ static void vortex_tilde_falloff(t_vortex_tilde *x, t_floatarg f)
         aero_pd_refused(&x->x_base, "falloff", f);
 }
 
-static void vortex_tilde_seed(t_vortex_tilde *x, t_floatarg f)
-{
-    uint32_t seed;
-    if (!aero_pd_seed_of(&x->x_base, f, &seed))
-        aero_vortex_set_seed(&x->x_core, seed);
-}
+AERO_PD_SEED_SETTER(vortex_tilde, t_vortex_tilde, x_core,
+                    aero_vortex_set_seed)
 
 static const aero_pd_method vortex_tilde_methods[] = {
     {"stereo", AERO_PD_SWITCH, 0, NULL, 0, AERO_PD_NO_RULE},
@@ -194,9 +190,9 @@ static void *vortex_tilde_new(t_symbol *s, int argc, t_atom *argv)
     (void)s;
     t_vortex_tilde *x = (t_vortex_tilde *)pd_new(vortex_tilde_class);
     aero_pd_base_init(&x->x_base, x, &vortex_tilde_spec, argc, argv);
-    if (aero_vortex_init(&x->x_core, sys_getsr(), x->x_base.stereo,
-                                aero_pd_default_seed()))
-        pd_error(x, OBJ ": out of memory for the sources: silent");
+    if (aero_vortex_init(&x->x_core, sys_getsr(), x->x_base.stereo ? 2 : 1,
+                         aero_pd_default_seed()))
+        aero_pd_init_failed(&x->x_base, sys_getsr());
     aero_pd_parse_flags(&x->x_base, argc, argv);
     aero_pd_base_outlets(&x->x_base);
     return x;

@@ -3,7 +3,7 @@
  * src/core/solve/field_prepare.h, the volume format in
  * src/core/common/field_volume.h. */
 #include "aerotex.h"
-#include "field_render.h"
+#include "fieldsound.h"
 
 #include <errno.h>
 #include <math.h>
@@ -502,7 +502,7 @@ static int sound(const auralize_job *j, const aero_volume_info *info,
     float *pcm = NULL;
     long total;
     int rc = 1;
-    aero_fieldsound_init(&r, j->rate);
+    aero_fieldsound_init(&r, j->rate, 1, 0);
     r.direct = j->direct;
     if (aero_fieldsound_set_sources(&r, src)) {
         aerotex_error("out of memory");

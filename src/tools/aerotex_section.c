@@ -390,12 +390,11 @@ static double cells(const aeolian_job *j)
     return j->grid * j->thin / j->d;
 }
 
-/* the texture's metadata */
-static void describe(const aeolian_job *j, const direction *r,
-                     const char *desc, aero_texture *tex)
+/* the texture's metadata: what it is, its body and directions */
+static void describe_section(const aeolian_job *j, const direction *r,
+                             const char *desc, aero_texture *tex)
 {
     const int nd = j->directions;
-    const double tunit = j->d / j->v0; /* s per d/v0 */
     const aero_span3d *c = &j->correction;
     char buf[8192];
     aero_texture_set(tex, "kind", j->cavity ? "cavity" : "aeolian");
@@ -423,6 +422,15 @@ static void describe(const aeolian_job *j, const direction *r,
     aerotex_job_loop_meta(&j->job, tex);
     aero_texture_set(tex, "frame", "x=flow,y=across,z=axis");
     aero_texture_set(tex, "units", "N/(m s)");
+}
+
+/* what the flow measured */
+static void describe_flow(const aeolian_job *j, const direction *r,
+                          aero_texture *tex)
+{
+    const int nd = j->directions;
+    const aero_span3d *c = &j->correction;
+    char buf[8192];
     /* St of the lift's spectral peak and the rms lift as the texture holds
        them (after the 2D-to-3D correction), the 2D solver's own beside
        them; the mean drag is the 2D one */
@@ -442,6 +450,15 @@ static void describe(const aeolian_job *j, const direction *r,
         join_stat(buf, sizeof buf, r, nd, 3, c);
         aero_texture_set(tex, "cl_rms_list", buf);
     }
+}
+
+/* how it was made: the 2D-to-3D correction, the turbulence model, the
+   band limit and the solver's grid and steps */
+static void describe_solver(const aeolian_job *j, const direction *r,
+                            aero_texture *tex)
+{
+    const double tunit = j->d / j->v0; /* s per d/v0 */
+    const aero_span3d *c = &j->correction;
     aero_texture_set(tex, "span3d", c->applied ? "circle-calibrated"
                                     : urans(j) ? "urans" : "none");
     if (urans(j)) {
@@ -474,6 +491,15 @@ static void describe(const aeolian_job *j, const direction *r,
     aero_texture_setd(tex, "dt", r[0].st.dt * tunit);
     aero_texture_set(tex, "solver", "2D incompressible projection, MAC grid, "
                                     "immersed boundary");
+}
+
+/* the texture's metadata */
+static void describe(const aeolian_job *j, const direction *r,
+                     const char *desc, aero_texture *tex)
+{
+    describe_section(j, r, desc, tex);
+    describe_flow(j, r, tex);
+    describe_solver(j, r, tex);
 }
 
 /* what the texture measured, on stdout */

@@ -28,8 +28,8 @@ make --no-print-directory -s -f platforms/platform.mk P=linux-amd64 B="$B" \
 # for minutes each (ZIG_UNITS overrides the list; the tests' own binaries
 # are the gcc build's, build/tests/)
 ZIG_UNITS=${ZIG_UNITS:-test_aeolian_model test_band_limit test_bandwidth_extension
-    test_body_texture test_cavity test_combustion_noise test_leafwave
-    test_texture test_tree test_tree_motion test_treebranch test_vortex_player
+    test_body test_cavity test_combustion_noise test_leafwave
+    test_texture test_tree test_tree_motion test_treebranch test_vortex
     test_vortex_sound}
 # built as the Makefile builds them, with platform.mk's flags
 CFLAGS="-std=c99 -D_POSIX_C_SOURCE=200809L -O3 -funroll-loops -fomit-frame-pointer

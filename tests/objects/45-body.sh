@@ -83,7 +83,7 @@ if [ -f build/tests/sine-sphere.wav ]; then
         pass "negative control: from the centre of the circle $up Hz and $down Hz, not a ratio of $want"
     fi
 else
-    fail "build/tests/sine-sphere.wav is missing (written by test_body_texture)"
+    fail "build/tests/sine-sphere.wav is missing (written by test_body)"
 fi
 # 2b. the shipped sphere as a 5 cm ball (scale 0.5) whirled on a 1.2 m
 #     cord at 2.5 turns/s (18.85 m/s, issue 17), as [aero.whirl~] does:

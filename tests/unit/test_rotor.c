@@ -564,8 +564,26 @@ UNIT_TEST(multi_instance)
     unit_multi_instance("rotor~", "tones", mi_make, mi_run, mi_drop);
 }
 
+/* the object contract (CONTRIBUTING.md): init answers -1 for a sample
+   rate it cannot use and the rotor still plays, at 48 kHz */
+UNIT_TEST(unusable_sample_rate)
+{
+    aero_rotor r;
+    float in[4096], out[4096];
+    for (int i = 0; i < 4096; i++)
+        in[i] = 6000.0f; /* rpm */
+    UNIT_CHECK(aero_rotor_init(&r, NAN, 1, 1u) == -1,
+               "init at a NaN sample rate answers -1");
+    for (int i = 0; i < 4096; i += 64)
+        aero_rotor_process(&r, in + i, (float *[]){out + i}, 64);
+    double peak = unit_finite_peak(out, 4096);
+    UNIT_CHECK(peak > 0.0, "and the rotor still sounds at 6000 rpm: peak %g Pa",
+               peak);
+    aero_rotor_free(&r);
+}
+
 UNIT_MAIN(UNIT_CASE(gutin_static_propeller), UNIT_CASE(silent_on_axis),
           UNIT_CASE(strip_broadband_is_bpm), UNIT_CASE(turbine_swish),
           UNIT_CASE(flyby_doppler), UNIT_CASE(blade_table),
-          UNIT_CASE(bad_input),
-          UNIT_CASE(multi_instance))
+          UNIT_CASE(bad_input), UNIT_CASE(multi_instance),
+          UNIT_CASE(unusable_sample_rate))

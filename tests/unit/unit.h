@@ -74,6 +74,19 @@ static inline double unit_zero_crossing_hz(const float *x, int n, double sr)
     return count > 0 ? count * sr / (last - first) : 0;
 }
 
+/* the largest |x[i]|, or -1 when a sample is NaN or infinite */
+static inline double unit_finite_peak(const float *x, int n)
+{
+    double peak = 0.0;
+    for (int i = 0; i < n; i++) {
+        if (!isfinite(x[i]))
+            return -1.0;
+        if (fabs(x[i]) > peak)
+            peak = fabs(x[i]);
+    }
+    return peak;
+}
+
 static inline double unit_rms(const float *x, int n)
 {
     double sum = 0;

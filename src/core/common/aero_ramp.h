@@ -3,10 +3,10 @@
  * The glide is block-size-free: a block of n samples goes the fraction
  * n / (samples left) of the way, so the values arrive exactly when the
  * ramp time is over whatever the block sizes (aeolian's model mode,
- * cavity, vortex_player, field_render, and the ears of leafwave and treebranch,
+ * cavity, vortex, fieldsound, and the ears of leafwave and treebranch,
  * move several values on one count).
  * aero_ramp is one value on that glide, advanced in whole chunks of a
- * fixed size (moving_player: body_texture; aeolian's texture mode glides
+ * fixed size (moving_player: body.c; aeolian's texture mode glides
  * the same way, its targets read from the object): a ramp of
  * ramp_samples takes ceil(ramp_samples / chunk) chunks and lands on its
  * target at the last. */

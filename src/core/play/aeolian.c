@@ -10,7 +10,7 @@
 #include "aero_util.h"
 
 static const double default_ears[AERO_AEOLIAN_MAX_EARS][3] = {
-    {-0.1, 1.0, 0.0}, {0.1, 1.0, 0.0}};
+    {-AERO_EAR_HALF_SPACING, 1.0, 0.0}, {AERO_EAR_HALF_SPACING, 1.0, 0.0}};
 
 int aero_aeolian_init(aero_aeolian *a, double sample_rate, int n_ears,
                       uint32_t seed)
@@ -19,7 +19,7 @@ int aero_aeolian_init(aero_aeolian *a, double sample_rate, int n_ears,
     static const double wind[3] = AERO_AEOLIAN_WIND_DEFAULT;
     memset(a, 0, sizeof(*a));
     int sr_ok = sample_rate > 0 && aero_is_finite(sample_rate);
-    a->sample_rate = sr_ok ? sample_rate : 44100.0;
+    a->sample_rate = sr_ok ? sample_rate : AERO_SAMPLE_RATE_FALLBACK;
     a->n_ears = n_ears == 2 ? 2 : 1;
     a->seed = seed;
     a->target[AERO_AEO_DIAMETER] = AERO_AEOLIAN_DIAMETER_DEFAULT;
@@ -128,12 +128,13 @@ int aero_aeolian_set_ramp_ms(aero_aeolian *a, double ms)
     return 0;
 }
 
-void aero_aeolian_set_seed(aero_aeolian *a, uint32_t seed)
+int aero_aeolian_set_seed(aero_aeolian *a, uint32_t seed)
 {
     a->seed = seed;
     aero_aeolian_model_seed(a);
     if (a->texture)
         aero_aeolian_texture_seed(a);
+    return 0;
 }
 
 int aero_aeolian_set_ears(aero_aeolian *a, const aero_ears *e)
@@ -210,8 +211,8 @@ int aero_aeolian_set_sources(aero_aeolian *a, int n)
 
 int aero_aeolian_set_exponent(aero_aeolian *a, double e)
 {
-    if (aero_aeolian_texture_make(a) || !(e >= AERO_MOVING_EXPONENT_MIN &&
-                                          e <= AERO_MOVING_EXPONENT_MAX))
+    if (aero_aeolian_texture_make(a) || !(e >= AERO_AEOLIAN_EXPONENT_MIN &&
+                                          e <= AERO_AEOLIAN_EXPONENT_MAX))
         return -1;
     a->exponent = e;
     return 0;

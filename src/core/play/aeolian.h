@@ -60,8 +60,7 @@
 #include "texture.h"
 
 #define AERO_AEOLIAN_MAX_EARS AERO_EARS_MAX
-/* ranges (gain and ramp: aero_ranges.h; exponent and wind:
-   moving_player.h) */
+/* ranges (gain and ramp: aero_ranges.h; wind: moving_player.h) */
 #define AERO_AEOLIAN_SR_MIN 1.0      /* Hz */
 #define AERO_AEOLIAN_SR_MAX 1e7      /* Hz */
 #define AERO_AEOLIAN_D_MIN 1e-5      /* m */
@@ -71,6 +70,9 @@
 #define AERO_AEOLIAN_SOURCES_MAX 256 /* point sources of texture mode */
 #define AERO_AEOLIAN_ROLL_MAX 1e6    /* deg, either way */
 #define AERO_AEOLIAN_PHASE_WANDER_MAX 0.1
+/* texture mode's amplitude law, (v/v0)^exponent */
+#define AERO_AEOLIAN_EXPONENT_MIN 0.0
+#define AERO_AEOLIAN_EXPONENT_MAX 12.0
 /* model mode's near-field limit: a diameter, at least this (m) */
 #define AERO_AEOLIAN_NEAR_MIN 0.01
 
@@ -78,8 +80,10 @@
 #define AERO_AEOLIAN_DIAMETER_DEFAULT 0.01 /* m */
 #define AERO_AEOLIAN_LENGTH_DEFAULT 0.5    /* m */
 #define AERO_AEOLIAN_LISTENER_DEFAULT {0.0, 1.0, 0.0} /* m, across flow
-                                        and axis; stereo: ears at x -+0.1 */
-#define AERO_AEOLIAN_EXPONENT_DEFAULT AERO_MOVING_EXPONENT_DEFAULT /* 3 */
+                                        and axis; stereo: ears at x -+
+                                        AERO_EAR_HALF_SPACING from it */
+/* a compact dipole's pressure ~ U^3 (Curle 1955) */
+#define AERO_AEOLIAN_EXPONENT_DEFAULT 3.0
 #define AERO_AEOLIAN_SOURCES_DEFAULT 0     /* 0: length / (3 d) */
 #define AERO_AEOLIAN_ROLL_DEFAULT 0.0      /* deg */
 #define AERO_AEOLIAN_WIND_DEFAULT {0.0, 0.0, 0.0} /* m/s */
@@ -203,7 +207,7 @@ int aero_aeolian_set_diameter(aero_aeolian *a, double d);
 int aero_aeolian_set_length(aero_aeolian *a, double l);
 int aero_aeolian_set_gain_db(aero_aeolian *a, double db);
 int aero_aeolian_set_ramp_ms(aero_aeolian *a, double ms);
-void aero_aeolian_set_seed(aero_aeolian *a, uint32_t seed);
+int aero_aeolian_set_seed(aero_aeolian *a, uint32_t seed); /* any: 0 */
 /* ears 0..e->n-1 (e->n at most the ears the object was made with) */
 int aero_aeolian_set_ears(aero_aeolian *a, const aero_ears *e);
 /* texture mode: ends A and B, applied now; interval_s is the time since

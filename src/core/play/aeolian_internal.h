@@ -7,6 +7,7 @@
 #include "aeolian.h"
 #include "arrivals.h"
 #include "blade_noise.h"
+#include "ghost_fade.h"
 #include "pose_glide.h"
 
 /* --- model mode (aeolian_model.c) ------------------------------------------ */
@@ -48,10 +49,7 @@ typedef struct {
     int wander_left;     /* samples until the next draw */
     double law_speed, law_diameter, law_pitch, law_level; /* Re law cache */
     int primed;
-    /* a ghost's amplitude and rate when it began to fade, and the
-       samples since */
-    double fade_amp, fade_inc, fade_samples;
-    double fade_rate[AERO_AEOLIAN_MAX_EARS]; /* its delays' rates then */
+    aero_ghost fade; /* as a ghost (ghost_fade.h) */
 } aero_aeolian_source;
 
 struct aero_aeolian_texture {

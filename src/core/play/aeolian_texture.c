@@ -13,7 +13,6 @@
 #include "aero_util.h"
 #include "strouhal.h"
 
-#define VELOCITY_TAU_S 0.008 /* smoothing of pose-derived velocities */
 #define MIN_SPEED 1e-6       /* below this the flow direction is unknown */
 /* Sources further apart than the correlation length must add their powers,
    as model mode's segments do. Offsets alone do not give that: every
@@ -235,7 +234,9 @@ int aero_aeolian_texture_make(aero_aeolian *a)
     s->rng = seed ? seed : 1;
     s->gain.value = 1.0;
     for (int e = 0; e < AERO_EARS_MAX; e++) {
-        s->ear[3 * e + 0].value = a->n_ears == 2 ? (e ? 0.1 : -0.1) : 0.0;
+        s->ear[3 * e + 0].value = a->n_ears == 2 ? (e ? AERO_EAR_HALF_SPACING
+                                                      : -AERO_EAR_HALF_SPACING)
+                                                 : 0.0;
         s->ear[3 * e + 1].value = 1.0;
     }
     s->reference[0] = 1.0;
@@ -262,7 +263,7 @@ static void drop_blade(aero_aeolian_texture *s)
 
 /* The stick jumps while it sounds: what it sounded goes on where it was,
    fading as a stopped stream's sound does (its velocity, hence its rate,
-   falling with VELOCITY_TAU_S, its amplitude as the rate to the exponent:
+   falling with AERO_VELOCITY_TAU_S, its amplitude as the rate to the exponent:
    render_ghosts), and the sources start again from rest at the new place.
    Moving the sounding sources with the stick instead jumped their delays
    within a chunk, the tail of the old sound cut where the new place's
@@ -284,12 +285,8 @@ static void leave_sound(aero_aeolian_texture *s)
     drop_ghost_texture(s);
     for (int i = 0; i < s->n_sources; i++) {
         s->ghost[i] = s->src[i];
-        s->ghost[i].fade_amp = s->src[i].amp;
-        s->ghost[i].fade_inc = s->src[i].inc;
-        s->ghost[i].fade_samples = 0.0;
-        for (int e = 0; e < AERO_AEOLIAN_MAX_EARS; e++) /* its delay's rate */
-            s->ghost[i].fade_rate[e] =
-                s->src[i].step[e] > 0.0 ? s->src[i].step[e] - 1.0 : 0.0;
+        aero_ghost_begin(&s->ghost[i].fade, s->src[i].amp, s->src[i].inc,
+                         s->src[i].step);
         s->src[i].amp = 0.0;
         /* the blade's noise goes on with its ghost, filters and gains as
            they were, and fades in again with the new source */
@@ -807,7 +804,7 @@ static void advance_frame(aero_aeolian *a, int m, double speed,
     /* the stream's velocity, smoothed, falling to 0 as the path comes to
      * rest (the stream has ended) */
     double pace = aero_pose_path_pace(&s->path);
-    double alpha = 1.0 - exp(-m / (VELOCITY_TAU_S * a->sample_rate));
+    double alpha = 1.0 - exp(-m / (AERO_VELOCITY_TAU_S * a->sample_rate));
     for (int i = 0; i < 6; i++) {
         double v = pace * s->pose_velocity[i];
         s->velocity[i] += alpha * (v - s->velocity[i]);
@@ -1048,39 +1045,12 @@ static int render_source(aero_aeolian *a, aero_aeolian_source *src,
     return then.amp != 0.0 || g->amp != 0.0;
 }
 
-/* the ghosts' next m samples, each at its own place, its velocity (so its
-   rate, and its amplitude as the velocity to the exponent) falling to 0
-   over GHOST_FADE_S on a half cosine: smooth where it begins and where it
-   ends, as a stopped stream's velocity falls (pose_glide.h, then
-   VELOCITY_TAU_S); 1 if one sounded */
-#define GHOST_FADE_S (4.0 * VELOCITY_TAU_S)
-
-/* the ghosts' fade at `t` samples after the jump: the velocity's fraction
-   to the exponent */
-static double ghost_fade(const aero_aeolian *a, double t)
-{
-    double span = GHOST_FADE_S * a->sample_rate;
-    if (!(t < span))
-        return 0.0;
-    return pow(0.5 + 0.5 * cos(AERO_PI * t / span), a->exponent);
-}
-
-/* the sources' amplitude factor at the end of the next m samples: they
-   fade in as the ghosts fade out (a stick in a wind sounds at once at its
-   new place) */
-static double fade_in(aero_aeolian *a, int m)
-{
-    aero_aeolian_texture *s = a->texture;
-    if (!(s->fade_in < GHOST_FADE_S * a->sample_rate))
-        return 1.0;
-    s->fade_in += m;
-    return 1.0 - ghost_fade(a, s->fade_in);
-}
-
+/* the ghosts' next m samples, each at its own place, fading
+   (ghost_fade.h); 1 if one sounded */
 static int render_ghosts(aero_aeolian *a, int m)
 {
     aero_aeolian_texture *s = a->texture;
-    const double span = GHOST_FADE_S * a->sample_rate;
+    const double span = AERO_GHOST_FADE_S * a->sample_rate;
     int sounding = 0;
     /* after a texture change they read the old one */
     aero_texture *texture = s->texture;
@@ -1104,23 +1074,20 @@ static int render_ghosts(aero_aeolian *a, int m)
     }
     for (int i = 0; i < s->n_ghosts; i++) {
         aero_aeolian_source *gh = &s->ghost[i];
-        if (!gh->primed || !(gh->fade_samples < span))
+        double v_then, v;
+        if (!gh->primed || !(gh->fade.samples < span))
             continue;
-        double v_then = gh->fade_samples < span
-                            ? 0.5 + 0.5 * cos(AERO_PI * gh->fade_samples / span)
-                            : 0.0;
-        gh->fade_samples += m;
-        double v = gh->fade_samples < span
-                       ? 0.5 + 0.5 * cos(AERO_PI * gh->fade_samples / span)
-                       : 0.0;
-        if (s->ghost_moving) /* a texture change: the stick goes on */
-            v = v_then = 1.0;
+        /* after a texture change the stick goes on */
+        aero_ghost_advance(&gh->fade.samples, m, span, s->ghost_moving,
+                           &v_then, &v);
+        double fade = aero_ghost_fade(gh->fade.samples, a->sample_rate,
+                                      a->exponent);
         source_geometry g;
-        g.inc = gh->fade_inc * v;
+        g.inc = gh->fade.inc * v;
         g.angle = gh->angle;
-        g.amp = gh->fade_amp * ghost_fade(a, gh->fade_samples);
+        g.amp = gh->fade.amp * fade;
         /* its noise fades as its texture does, its spectrum held */
-        g.namp = gh->namp * ghost_fade(a, gh->fade_samples);
+        g.namp = gh->namp * fade;
         g.speed = g.span = 0.0;
         if (s->voices) {
             const aero_blade_voice *bv = voice_of(s, gh);
@@ -1131,7 +1098,7 @@ static int render_ghosts(aero_aeolian *a, int m)
             g.fx[e] = gh->fx[e];
             g.fy[e] = gh->fy[e];
             /* it moves on as it slows: its delay's rate falls with v */
-            g.delay[e] = gh->delay[e] + gh->fade_rate[e] * 0.5 * (v_then + v) * m;
+            g.delay[e] = gh->delay[e] + gh->fade.rate[e] * 0.5 * (v_then + v) * m;
         }
         sounding |= render_source(a, gh, &g, m);
     }
@@ -1174,7 +1141,8 @@ int aero_aeolian_texture_process(aero_aeolian *a, const float *speed,
         advance_frame(a, m, sp, &f);
         int sounding = 0;
         if (s->texture) {
-            double faded = fade_in(a, m);
+            double faded = aero_ghost_fade_in(&s->fade_in, m, a->sample_rate,
+                                              a->exponent);
             for (int i = 0; i < s->n_sources; i++) {
                 source_geometry g;
                 double u = (i + 0.5) / s->n_sources;

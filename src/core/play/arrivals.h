@@ -2,7 +2,7 @@
  * at its fractional arrival time (emission time + r/c0), so the Doppler
  * of any motion and the interaural delay come for free, and any number of
  * sources costs one ring per ear, not a delay line each. Shared by the
- * texture players ([aeolian~]'s texture mode, body_texture). No globals. */
+ * texture players ([aeolian~]'s texture mode, [body~]). No globals. */
 #ifndef AERO_ARRIVALS_H
 #define AERO_ARRIVALS_H
 

@@ -151,9 +151,10 @@ int aero_combustion_set_fluctuation(aero_combustion *m, double eps)
     return 0;
 }
 
-void aero_combustion_set_seed(aero_combustion *m, uint32_t seed)
+int aero_combustion_set_seed(aero_combustion *m, uint32_t seed)
 {
     m->rng = seed ? seed : 1;
+    return 0;
 }
 
 /* the digital filter for peak fp (bilinear transform, each corner

@@ -83,7 +83,7 @@ int aero_combustion_set_power_kw(aero_combustion *m, double kw);
 int aero_combustion_set_length(aero_combustion *m, double l);
 int aero_combustion_set_strouhal(aero_combustion *m, double st);
 int aero_combustion_set_fluctuation(aero_combustion *m, double eps); /* 0..1 */
-void aero_combustion_set_seed(aero_combustion *m, uint32_t seed);
+int aero_combustion_set_seed(aero_combustion *m, uint32_t seed); /* any: 0 */
 
 /* f_p of gas speed u (m/s): St u / L, kept within 1 Hz .. 0.2 sr */
 double aero_combustion_peak_hz(const aero_combustion *m, double u);

@@ -6,7 +6,7 @@
 #ifndef AERO_FIELD_JOB_H
 #define AERO_FIELD_JOB_H
 
-#include "field_render.h"
+#include "fieldsound.h"
 
 typedef struct aero_field_job aero_field_job;
 

@@ -26,7 +26,9 @@ int aero_moving_player_init(aero_moving_player *p, double sample_rate,
     aero_ramp_jump(&p->gain, pow(10.0, AERO_GAIN_DB_DEFAULT / 20.0));
     for (int e = 0; e < AERO_EARS_MAX; e++) {
         aero_ramp_jump(&p->ear[3 * e + 0],
-                       p->n_ears == 2 ? (e ? 0.1 : -0.1) : 0.0);
+                       p->n_ears == 2 ? (e ? AERO_EAR_HALF_SPACING
+                                             : -AERO_EAR_HALF_SPACING)
+                                    : 0.0);
         aero_ramp_jump(&p->ear[3 * e + 1], 1.0);
         aero_ramp_jump(&p->ear[3 * e + 2], 0.0);
     }

@@ -1,6 +1,6 @@
 /* aero: what the players of moving bodies share: sample rate and arrival
  * rings, ears, wind, gain, ramp time, amplitude exponent, and the setters
- * that validate them. body_texture embeds one (`base`) and keeps its own
+ * that validate them. body.c embeds one (`base`) and keeps its own
  * pose, texture and sources; [aeolian~]'s object holds these settings
  * itself and takes the ranges. No globals. */
 #ifndef AERO_MOVING_PLAYER_H
@@ -47,14 +47,27 @@ typedef struct {
 } aero_moving_player;
 
 /* Defaults: still air, one listener 1 m away along +y (stereo: ears at
- * x = -+0.1), exponent AERO_MOVING_EXPONENT_DEFAULT, gain and ramp from
- * aero_ranges.h; n_ears is kept within
- * 1..2. sample_rate is taken as given (the player checks it). 0, or -1
- * when the rings cannot be allocated. */
+ * x = -+AERO_EAR_HALF_SPACING), exponent AERO_MOVING_EXPONENT_DEFAULT,
+ * gain and ramp from aero_ranges.h; n_ears is kept within 1..2.
+ * sample_rate is taken as given (the player checks it). 0, or -1 when the
+ * rings cannot be allocated. */
 int aero_moving_player_init(aero_moving_player *p, double sample_rate,
                             int n_ears, uint32_t seed, int chunk,
                             double max_delay_s);
 void aero_moving_player_free(aero_moving_player *p);
+/* a player whose rings could not be allocated (init, or a sample rate,
+ * ran out of memory) is silent: 1 with its n_ears outputs zeroed, else 0
+ * (its process goes on) */
+static inline int aero_moving_player_silent(const aero_moving_player *p,
+                                            float *const *out, int n)
+{
+    if (p->arrivals.ring[0])
+        return 0;
+    for (int e = 0; e < p->n_ears; e++)
+        for (int i = 0; i < n; i++)
+            out[e][i] = 0.0f;
+    return 1;
+}
 
 /* -1 invalid or out of memory (nothing changes), 0 unchanged, 1 changed:
  * the rings are new, the player re-primes its sources */

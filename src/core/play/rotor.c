@@ -254,14 +254,13 @@ int aero_rotor_init(aero_rotor *r, double sample_rate, int n_ears,
     layout(r);
     memcpy(r->pose, unturned, sizeof(unturned));
     aero_pose_path_jump(&r->path, 7, unturned);
-    int k = aero_moving_player_init(
-        &r->base,
-        sample_rate >= AERO_MOVING_SR_MIN && sample_rate <= AERO_MOVING_SR_MAX
-            ? sample_rate
-            : 48000.0,
-        n_ears, seed, AERO_ROTOR_CHUNK, AERO_ROTOR_MAX_DELAY_S);
+    int sr_ok = sample_rate >= AERO_MOVING_SR_MIN &&
+                sample_rate <= AERO_MOVING_SR_MAX;
+    int k = aero_moving_player_init(&r->base, sr_ok ? sample_rate : 48000.0,
+                                    n_ears, seed, AERO_ROTOR_CHUNK,
+                                    AERO_ROTOR_MAX_DELAY_S);
     noise_bank(r);
-    return k;
+    return k || !sr_ok ? -1 : 0;
 }
 
 void aero_rotor_free(aero_rotor *r)
@@ -1201,6 +1200,8 @@ int aero_rotor_process(aero_rotor *r, const float *rpm, float *const *out,
                        int n)
 {
     r->base.clamped = 0;
+    if (aero_moving_player_silent(&r->base, out, n))
+        return 0;
     for (int done = 0; done < n;) {
         int m = n - done < AERO_ROTOR_CHUNK ? n - done : AERO_ROTOR_CHUNK;
         /* the poses due at this sample, then a chunk up to the next */

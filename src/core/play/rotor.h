@@ -204,10 +204,11 @@ typedef struct aero_rotor {
     int envelope_due; /* chunks until the broadband's envelope is made again */
 } aero_rotor;
 
-/* 0, or -1 when out of memory. Defaults: the AERO_ROTOR_*_DEFAULT values,
- * the hub at the origin with its thrust along +z, still air, one listener
- * 1 m away along +y (stereo: ears at x = -+0.1), gain and ramp as
- * moving_player.h's. */
+/* 0, or -1 when out of memory (silent then, until a sample rate is set)
+ * or the sample rate is not usable (48 kHz is taken). Defaults: the
+ * AERO_ROTOR_*_DEFAULT values, the hub at the origin with its thrust along
+ * +z, still air, one listener 1 m away along +y (stereo: ears at
+ * x = -+AERO_EAR_HALF_SPACING), gain and ramp as moving_player.h's. */
 int aero_rotor_init(aero_rotor *r, double sample_rate, int n_ears,
                     uint32_t seed);
 void aero_rotor_free(aero_rotor *r);
@@ -233,7 +234,7 @@ int aero_rotor_set_ears(aero_rotor *r, const aero_ears *e);
  * here; the thrust axis is the turned +z), at sample `offset` of the next
  * process call, moving there on a smooth path over interval_s (the first
  * pose, one after a 0.5 s pause and interval_s < 0 jump): as
- * aero_body_set_pose_at (body_texture.h). 0, or -1 invalid. */
+ * aero_body_set_pose_at (body.h). 0, or -1 invalid. */
 int aero_rotor_set_pose_at(aero_rotor *r, const double pos[3],
                            const double quat[4], double interval_s,
                            int offset);

@@ -1,5 +1,5 @@
 /* aero: field auralization of time-varying volume data, the offline half
- * (the sources of sound in each frame; field_render.h plays them), after
+ * (the sources of sound in each frame; fieldsound.h plays them), after
  * Shin and Bajaj (Auralization I: vortex sound synthesis), made fast.
  *
  * 1. Acoustic mapping (Shin and Bajaj, sec. 3.2.2): the field value s

@@ -1,4 +1,4 @@
-/* Unit tests of src/core/play/body_texture: the player of 3D object textures
+/* Unit tests of src/core/play/body: the player of 3D object textures
  * for moving bodies, on synthetic textures whose content is known exactly:
  * pitch St v / d, U^3 level, 1/r, dipole directivity, exact Doppler of a
  * body flying at the listener and of a whirled one, direction
@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "body_texture.h"
+#include "body.h"
 #include "multi_instance.h"
 #include "unit.h"
 
@@ -592,10 +592,37 @@ UNIT_TEST(listener_through_source)
     free(a);
 }
 
+/* the object contract (CONTRIBUTING.md): init answers -1 for a sample
+   rate it cannot use and the core still plays, at 44.1 kHz; set_seed
+   answers 0 like every setter */
+UNIT_TEST(unusable_sample_rate)
+{
+    aero_body s;
+    char err[256];
+    float out[4096];
+    UNIT_CHECK(aero_body_init(&s, NAN, 1, 1) == -1,
+               "init at a NaN sample rate answers -1");
+    aero_texture *t = sphere(1);
+    if (aero_body_set_texture(&s, t, err, sizeof err)) {
+        aero_texture_free(t);
+        free(t);
+    }
+    aero_body_set_wind(&s, w10);
+    render(&s, out, 4096, 64);
+    double peak = unit_finite_peak(out, 4096);
+    UNIT_CHECK(peak > 0.0,
+               "and the body still sounds in a 10 m/s wind: peak %g Pa",
+               peak);
+    UNIT_CHECK(aero_body_set_seed(&s, 0) == 0 &&
+                   aero_body_set_seed(&s, 0xffffffffu) == 0,
+               "set_seed answers 0 for any seed");
+    aero_body_free(&s);
+}
+
 UNIT_MAIN(UNIT_CASE(listener_through_source),
           UNIT_CASE(static_sphere_laws), UNIT_CASE(block_sizes),
           UNIT_CASE(doppler_approach), UNIT_CASE(whirled_sphere),
           UNIT_CASE(direction_interpolation), UNIT_CASE(regions_centres),
           UNIT_CASE(bad_input), UNIT_CASE(save_and_load),
           UNIT_CASE(pd_fixture), UNIT_CASE(poses_within_block),
-          UNIT_CASE(multi_instance))
+          UNIT_CASE(multi_instance), UNIT_CASE(unusable_sample_rate))

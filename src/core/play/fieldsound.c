@@ -1,7 +1,7 @@
-/* aero: field auralization, the real-time half (see field_render.h):
+/* aero: field auralization, the real-time half (see fieldsound.h):
  * Catmull-Rom strengths between frames, summed at the listener at the
  * retarded time. */
-#include "field_render.h"
+#include "fieldsound.h"
 
 #include "aero_air.h"
 #include "aero_util.h"
@@ -15,11 +15,13 @@
 
 /* --- rendering ------------------------------------------------------------ */
 
-int aero_fieldsound_init(aero_fieldsound *r, double sample_rate)
+int aero_fieldsound_init(aero_fieldsound *r, double sample_rate, int n_ears,
+                         uint32_t seed)
 {
+    (void)seed; /* nothing random: the sources are the flow's own */
     memset(r, 0, sizeof *r);
-    int sr_ok = sample_rate > 0 && sample_rate < 1e7;
-    r->sample_rate = sr_ok ? sample_rate : 44100;
+    int sr_ok = sample_rate > 0 && sample_rate < 1e7 && n_ears == 1;
+    r->sample_rate = sr_ok ? sample_rate : AERO_SAMPLE_RATE_FALLBACK;
     r->speed = r->speed_target = 0;
     r->ramp_ms = AERO_RAMP_MS_DEFAULT;
     r->gain = pow(10.0, AERO_GAIN_DB_DEFAULT / 20.0);
@@ -35,7 +37,7 @@ void aero_fieldsound_free(aero_fieldsound *r)
 }
 
 int aero_fieldsound_set_sources(aero_fieldsound *r,
-                                  const aero_field_sources *s)
+                                const aero_field_sources *s)
 {
     free(r->dist);
     r->dist = NULL;
@@ -130,7 +132,7 @@ void aero_fieldsound_stop(aero_fieldsound *r)
 }
 
 double aero_fieldsound_length(const aero_field_sources *s, double speed,
-                                double distance)
+                              double distance)
 {
     if (!s || !(speed > 0))
         return 0;

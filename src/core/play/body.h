@@ -37,12 +37,13 @@
  *
  * Life cycle: init, set_texture (takes ownership), set_*, process (any
  * block size), free. No globals. */
-#ifndef AERO_BODY_TEXTURE_H
-#define AERO_BODY_TEXTURE_H
+#ifndef AERO_BODY_H
+#define AERO_BODY_H
 
 #include <stddef.h>
 #include <stdint.h>
 
+#include "ghost_fade.h"
 #include "moving_player.h"
 #include "pose_glide.h"
 #include "texture.h"
@@ -75,10 +76,7 @@ typedef struct {
     aero_body_geometry then;    /* at the previous chunk's end */
     double step[AERO_BODY_MAX_EARS]; /* arrival step over that chunk */
     int primed;
-    /* a ghost's amplitude and rate when it began to fade, and the
-       samples since (body_texture.c) */
-    double fade_amp, fade_inc, fade_samples;
-    double fade_rate[AERO_BODY_MAX_EARS]; /* its delays' rates then */
+    aero_ghost fade; /* as a ghost (ghost_fade.h) */
 } aero_body_source;
 
 typedef struct aero_body {
@@ -116,18 +114,21 @@ typedef struct aero_body {
     int ghost_regions, ghost_moving;
 } aero_body;
 
-/* 0, or -1 when out of memory. Defaults: no texture (silent), the body at
- * the origin unturned, still air, one listener 1 m away along +y (stereo:
- * ears at x = -+0.1), scale AERO_BODY_SCALE_DEFAULT, exponent, gain and
- * ramp as moving_player.h's. */
+/* n_ears 1 (the listener) or 2 (the ears). 0, or -1 when out of memory
+ * (silent then, until a sample rate is set) or the sample rate is not
+ * usable (AERO_SAMPLE_RATE_FALLBACK is taken). Defaults: no texture
+ * (silent), the body at the origin unturned, still air, one listener 1 m
+ * away along +y (stereo:
+ * ears at x = -+AERO_EAR_HALF_SPACING), scale AERO_BODY_SCALE_DEFAULT,
+ * exponent, gain and ramp as moving_player.h's. */
 int aero_body_init(aero_body *s, double sample_rate,
-                           int n_ears, uint32_t seed);
+                   int n_ears, uint32_t seed);
 void aero_body_free(aero_body *s);
 
 /* Takes ownership of a loaded texture of kind object (NULL removes it):
  * 0, or -1 with a message in err (then the texture is NOT taken). */
 int aero_body_set_texture(aero_body *s, aero_texture *t,
-                                  char *err, size_t errlen);
+                          char *err, size_t errlen);
 
 /* setters: 0 accepted, -1 invalid (the previous value stays) */
 int aero_body_set_sample_rate(aero_body *s, double sr);
@@ -135,13 +136,13 @@ int aero_body_set_scale(aero_body *s, double scale);
 int aero_body_set_exponent(aero_body *s, double e);
 int aero_body_set_gain_db(aero_body *s, double db);
 int aero_body_set_ramp_ms(aero_body *s, double ms);
-void aero_body_set_seed(aero_body *s, uint32_t seed);
+int aero_body_set_seed(aero_body *s, uint32_t seed); /* any seed: 0 */
 /* position and orientation (unit quaternion w x y z; normalised here),
  * applied now; interval_s as for sticks: the body moves on a smooth path
  * to it over that time (pose_glide.h); the first pose, one after a 0.5 s
  * pause and interval_s < 0 jump without motion */
 int aero_body_set_pose(aero_body *s, const double pos[3],
-                               const double quat[4], double interval_s);
+                       const double quat[4], double interval_s);
 /* the same at sample `offset` of the next process call (a host gives each
  * pose its logical time within the block, as [vline~] times its
  * segments): queued (up to AERO_GLIDE_QUEUE; beyond, the oldest is
@@ -154,7 +155,7 @@ int aero_body_set_pose_at(aero_body *s, const double pos[3],
 /* the orientation of the last pose given (w x y z), for a pose that moves
  * alone */
 static inline void aero_body_orientation(const aero_body *s,
-                                                 double quat[4])
+                                         double quat[4])
 {
     const aero_pose_event *e = aero_pose_queue_back(&s->queue);
     for (int k = 0; k < 4; k++)
@@ -167,7 +168,7 @@ int aero_body_set_ears(aero_body *s, const aero_ears *e);
 /* n samples; speed[i] (may be NULL) adds a wind along +x; out[e][i] is the
  * sound pressure at ear e in Pa. Returns 1 if a speed was clamped. */
 int aero_body_process(aero_body *s, const float *speed,
-                              float *const *out, int n);
+                      float *const *out, int n);
 
 /* a rotation vector (axis times angle in degrees) as a unit quaternion */
 void aero_body_quaternion_from_rotvec(const double r[3], double q[4]);

@@ -32,8 +32,8 @@
  *
  * Life cycle: init, set_*, process, free. No globals; no allocation in
  * process (set_count and set_texture allocate). */
-#ifndef AERO_VORTEX_PLAYER_H
-#define AERO_VORTEX_PLAYER_H
+#ifndef AERO_VORTEX_H
+#define AERO_VORTEX_H
 
 #include "aero_ears.h"
 #include "aero_ranges.h"
@@ -86,11 +86,14 @@ typedef struct aero_vortex {
     aero_near near;             /* a listener came within r_min */
 } aero_vortex;
 
-/* Defaults: the AERO_VORTEX_*_DEFAULT above (1 source, at the origin, no
-   clip, 1/r), gain and ramp from aero_ranges.h, listener at (0, 1, 0),
-   ears at (-0.1, 1, 0) and (0.1, 1, 0), no texture (silence). 0, or -1 when out of memory. */
-int aero_vortex_init(aero_vortex *m, double sample_rate,
-                            int stereo, uint32_t seed);
+/* n_ears 1 (the listener) or 2 (the ears). Defaults: the
+   AERO_VORTEX_*_DEFAULT above (1 source, at the origin, no clip, 1/r),
+   gain and ramp from aero_ranges.h, listener at (0, 1, 0), ears at
+   x = -+AERO_EAR_HALF_SPACING from it, no texture (silence). 0, or -1
+   when out of memory (silent then: no sources) or the sample rate is not
+   usable (AERO_SAMPLE_RATE_FALLBACK is taken). */
+int aero_vortex_init(aero_vortex *m, double sample_rate, int n_ears,
+                     uint32_t seed);
 void aero_vortex_free(aero_vortex *m);
 
 /* Setters: 0 when accepted, -1 when invalid (the old value stays). */
@@ -104,10 +107,10 @@ static inline int aero_vortex_count(const aero_vortex *m)
 }
 /* per-source speeds (m/s, >= 0), count values for sources 0..count-1 */
 int aero_vortex_set_speeds(aero_vortex *m, const double *u,
-                                  int count);
+                           int count);
 /* per-source positions x y z (m), count sources */
 int aero_vortex_set_positions(aero_vortex *m,
-                                     const double *xyz, int count);
+                              const double *xyz, int count);
 /* one listener (both ears there) or two ears */
 int aero_vortex_set_ears(aero_vortex *m, const aero_ears *e);
 int aero_vortex_set_gain_db(aero_vortex *m, double db);
@@ -123,17 +126,17 @@ int aero_vortex_set_power_kw(aero_vortex *m, double kw);
 int aero_vortex_set_flame_length(aero_vortex *m, double l);
 int aero_vortex_set_strouhal(aero_vortex *m, double st);
 int aero_vortex_set_fluctuation(aero_vortex *m, double eps);
-/* new random texture offsets from this seed */
-void aero_vortex_set_seed(aero_vortex *m, uint32_t seed);
+/* new random texture offsets from this seed (any seed: 0) */
+int aero_vortex_set_seed(aero_vortex *m, uint32_t seed);
 /* takes ownership of a loaded kind=vortex texture (returns -1 and frees
    nothing when it is not usable); NULL: silence */
 int aero_vortex_set_texture(aero_vortex *m, aero_texture *t,
-                                   char *err, size_t errlen);
+                            char *err, size_t errlen);
 
 /* n samples; speed in m/s (NaN -> 0, |u| clamped at Mach 0.3; may be
    NULL: 0); out[0] (and out[1] in stereo) in Pa. Returns 1 if a speed was
    clamped. The outputs may alias the speed input. */
 int aero_vortex_process(aero_vortex *m, const float *speed,
-                               float *const *out, int n);
+                        float *const *out, int n);
 
 #endif

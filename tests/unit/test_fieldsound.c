@@ -3,7 +3,7 @@
  * a pulsating point, silence until the radiation arrives, the dipole class
  * of a translating density, the chunk polynomials against the per-sample
  * sum. Files go to build/tests/field/. */
-#include "field_render.h"
+#include "fieldsound.h"
 #include "unit.h"
 #include "multi_instance.h"
 
@@ -184,7 +184,7 @@ static float *render(const aero_field_sources *s, double x, double y,
     aero_fieldsound r;
     long n = (long)(seconds * SR);
     float *out = calloc(n, sizeof(float));
-    aero_fieldsound_init(&r, SR);
+    aero_fieldsound_init(&r, SR, 1, 0);
     aero_fieldsound_set_sources(&r, s);
     aero_fieldsound_place_ears(&r, &(aero_ears){1, {{x, y, z}}});
     r.direct = direct;
@@ -455,7 +455,7 @@ UNIT_TEST(demo)
     double worst = 0, peak = 0;
     int bad = 0;
     for (int k = 0; k < 2; k++) {
-        aero_fieldsound_init(&r[k], SR);
+        aero_fieldsound_init(&r[k], SR, 1, 0);
         aero_fieldsound_set_sources(&r[k], &s);
         r[k].direct = k;
         aero_fieldsound_place_ears(&r[k], &(aero_ears){1, {{1, 0, 0}}});
@@ -481,7 +481,7 @@ UNIT_TEST(demo)
     for (size_t i = 0; i < 6 * 4 * 512; i++)
         m.data[i] = i % 7 == 0 ? NAN : i % 11 == 0 ? INFINITY : 1.0f;
     rc = memvol_sources(&m, &par, &s);
-    aero_fieldsound_init(&r[0], SR);
+    aero_fieldsound_init(&r[0], SR, 1, 0);
     aero_fieldsound_set_sources(&r[0], &s);
     int refused = aero_fieldsound_set_ears(&r[0],
                                              &(aero_ears){1, {{NAN, 0, 0}}}) &&
@@ -528,7 +528,7 @@ static void *mi_make(int variant)
     aero_field_demo_info(&d, &info);
     aero_field_params_default(&par);
     aero_field_prepare(&info, &d, &par, &f->src, NULL, NULL, e, sizeof(e));
-    aero_fieldsound_init(&f->r, 44100.0);
+    aero_fieldsound_init(&f->r, 44100.0, 1, 0);
     aero_fieldsound_set_sources(&f->r, &f->src);
     aero_fieldsound_place_ears(&f->r,
             &(aero_ears){1, {{variant ? 0.5 : 0.8, 0.1, 0.0}}});
@@ -555,4 +555,24 @@ UNIT_TEST(multi_instance)
                         mi_drop);
 }
 
-UNIT_MAIN(UNIT_CASE(format), UNIT_CASE(monopole), UNIT_CASE(reach), UNIT_CASE(classification), UNIT_CASE(demo), UNIT_CASE(multi_instance))
+/* the object contract (CONTRIBUTING.md): init(r, sr, n_ears, seed)
+   answers -1 for a sample rate it cannot use or more than the one
+   listener, and the player stays usable (silent without sources) */
+UNIT_TEST(init_contract)
+{
+    aero_fieldsound r;
+    float out[64];
+    int silent = 1;
+    UNIT_CHECK(aero_fieldsound_init(&r, SR, 2, 0) == -1,
+               "init with two ears answers -1 (one listener)");
+    aero_fieldsound_free(&r);
+    UNIT_CHECK(aero_fieldsound_init(&r, NAN, 1, 0) == -1,
+               "init at a NaN sample rate answers -1");
+    aero_fieldsound_process(&r, out, 64);
+    for (int i = 0; i < 64; i++)
+        silent &= out[i] == 0.0f;
+    UNIT_CHECK(silent, "and the player is silent without sources");
+    aero_fieldsound_free(&r);
+}
+
+UNIT_MAIN(UNIT_CASE(format), UNIT_CASE(monopole), UNIT_CASE(reach), UNIT_CASE(classification), UNIT_CASE(demo), UNIT_CASE(multi_instance), UNIT_CASE(init_contract))

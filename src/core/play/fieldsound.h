@@ -1,12 +1,14 @@
 /* aero: field auralization, the real-time half: the retarded-time sum of
  * the sources field_prepare.h found, heard by a moving listener (Shin and
  * Bajaj; the method and where it departs from the paper: field_prepare.h). */
-#ifndef AERO_FIELD_RENDER_H
-#define AERO_FIELD_RENDER_H
+#ifndef AERO_FIELDSOUND_H
+#define AERO_FIELDSOUND_H
 
 #include "aero_ears.h"
 #include "aero_ranges.h"
 #include "field_prepare.h"
+
+#include <stdint.h>
 
 /* --- rendering ----------------------------------------------------------- */
 #define AERO_FIELD_CHUNK 64
@@ -34,13 +36,17 @@ typedef struct aero_fieldsound {
 } aero_fieldsound;
 
 /* Defaults: listener at (0, 0, 0) ... set it; speed = the data's rate
- * once sources are set; ramp and gain from aero_ranges.h; stopped. */
-/* 0, or -1 when the sample rate is not usable (44.1 kHz is taken) */
-int aero_fieldsound_init(aero_fieldsound *r, double sample_rate);
+ * once sources are set; ramp and gain from aero_ranges.h; stopped.
+ * n_ears: 1 (one listener; [fieldsound~] is mono); seed: the contract's,
+ * unused (nothing is random). 0, or -1 when the sample rate is not usable
+ * (AERO_SAMPLE_RATE_FALLBACK is taken) or n_ears is not 1 (one listener
+ * is taken): the player is usable either way. */
+int aero_fieldsound_init(aero_fieldsound *r, double sample_rate, int n_ears,
+                         uint32_t seed);
 void aero_fieldsound_free(aero_fieldsound *r);
 /* new sources (NULL: silence); 0, or -1 when out of memory. Stops. */
 int aero_fieldsound_set_sources(aero_fieldsound *r,
-                                  const aero_field_sources *s);
+                                const aero_field_sources *s);
 int aero_fieldsound_set_sample_rate(aero_fieldsound *r, double sr);
 int aero_fieldsound_set_speed(aero_fieldsound *r, double fps);
 /* one listener (mono: e->n must be 1), reached over the ramp time */
@@ -58,7 +64,7 @@ static inline int aero_fieldsound_clamped(const aero_fieldsound *r)
     return r->clamped;
 }
 static inline const double *aero_fieldsound_target(
-    const aero_fieldsound *r)
+                                                   const aero_fieldsound *r)
 {
     return r->target;
 }
@@ -71,6 +77,6 @@ int aero_fieldsound_process(aero_fieldsound *r, float *out, int n);
 /* seconds until every source has been heard, from play, at the current
  * speed, for a listener at most `distance` m from the origin */
 double aero_fieldsound_length(const aero_field_sources *s, double speed,
-                                double distance);
+                              double distance);
 
 #endif

@@ -1,6 +1,6 @@
 /* aero: a moving 3D body played from an object texture (see
- * body_texture.h). */
-#include "body_texture.h"
+ * body.h). */
+#include "body.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -10,7 +10,6 @@
 #include "aero_air.h"
 #include "strouhal.h"
 
-#define VELOCITY_TAU_S 0.008 /* smoothing of pose-derived velocities */
 #define MIN_SPEED 1e-6       /* below this the flow direction is unknown */
 
 static void rotate(const double *q, const double *v, double *out)
@@ -46,7 +45,7 @@ static void restart_sources(aero_body *s)
 }
 
 int aero_body_init(aero_body *s, double sample_rate,
-                           int n_ears, uint32_t seed)
+                   int n_ears, uint32_t seed)
 {
     static const double unturned[7] = {0, 0, 0, 1, 0, 0, 0};
     memset(s, 0, sizeof(*s));
@@ -54,11 +53,14 @@ int aero_body_init(aero_body *s, double sample_rate,
     s->fade_in = HUGE_VAL; /* no jump to fade in from */
     memcpy(s->pose, unturned, sizeof(unturned));
     aero_pose_path_jump(&s->path, 7, unturned);
-    return aero_moving_player_init(
-        &s->base,
-        sample_rate >= AERO_MOVING_SR_MIN && sample_rate <= AERO_MOVING_SR_MAX
-            ? sample_rate : 44100.0,
-        n_ears, seed, AERO_BODY_CHUNK, AERO_BODY_MAX_DELAY_S);
+    int sr_ok = sample_rate >= AERO_MOVING_SR_MIN &&
+                sample_rate <= AERO_MOVING_SR_MAX;
+    if (aero_moving_player_init(&s->base,
+                                sr_ok ? sample_rate : AERO_SAMPLE_RATE_FALLBACK,
+                                n_ears, seed, AERO_BODY_CHUNK,
+                                AERO_BODY_MAX_DELAY_S))
+        return -1; /* no rings: process is silent until a sample rate */
+    return sr_ok ? 0 : -1;
 }
 
 void aero_body_free(aero_body *s)
@@ -130,11 +132,7 @@ static void leave_sound(aero_body *s)
     for (int l = 0; l < s->regions; l++) {
         aero_body_source *src = &s->src[l], *gh = &s->ghost[l];
         *gh = *src;
-        gh->fade_amp = src->then.amp;
-        gh->fade_inc = src->then.inc;
-        gh->fade_samples = 0.0;
-        for (int e = 0; e < AERO_BODY_MAX_EARS; e++) /* its delay's rate */
-            gh->fade_rate[e] = src->step[e] > 0.0 ? src->step[e] - 1.0 : 0.0;
+        aero_ghost_begin(&gh->fade, src->then.amp, src->then.inc, src->step);
         src->then.amp = 0.0;
         memset(src->velocity, 0, sizeof(src->velocity));
     }
@@ -142,47 +140,85 @@ static void leave_sound(aero_body *s)
     s->fade_in = 0.0;
 }
 
+/* a texture of kind object this player can read: 0 with its regions'
+   centres (body frame) and symmetry, or -1 with a message in err */
+static int check_texture(const aero_texture *t, double *centre, int *sphere,
+                         char *err, size_t errlen)
+{
+    const char *sym = t->head.symmetry;
+    double v0 = t->head.v0;
+    double d = t->head.diameter;
+    if (aero_texture_wrong_kind(t, "object", err, errlen)) {
+        return -1;
+    }
+    if (strcmp(sym, "sphere") && strcmp(sym, "axis")) {
+        snprintf(err, errlen, "symmetry must be sphere or axis");
+        return -1;
+    }
+    *sphere = !strcmp(sym, "sphere");
+    if (!(v0 > 0.0 && v0 < 1e3) || !(d > 0.0 && d < 100.0) ||
+        !(t->rate > 0.0) || t->frames < 2 || t->directions < 1 ||
+        t->regions < 1 || t->regions > AERO_BODY_MAX_SOURCES ||
+        (*sphere && t->directions != 1)) {
+        snprintf(err, errlen, "bad metadata (v0 %g, diameter %g, %d "
+                 "directions, %d regions, %d frames)", v0, d,
+                 t->directions, t->regions, t->frames);
+        return -1;
+    }
+    for (int k = 0; k < t->directions; k++)
+        if (!(t->angles[k] >= 0.0 && t->angles[k] <= 180.0) ||
+            (k && !(t->angles[k] > t->angles[k - 1]))) {
+            snprintf(err, errlen, "angles must increase within 0..180");
+            return -1;
+        }
+    if (!t->head.centres ||
+        parse_centres(t->head.centres, t->regions, centre)) {
+        snprintf(err, errlen, "centres= must list %d x,y,z triples "
+                 "separated by ';'", t->regions);
+        return -1;
+    }
+    return 0;
+}
+
+/* a texture changed while sounding: the old sources fade out reading the
+   old texture, moving on as they were, as the new ones (at the body's
+   speed) fade in; cutting them stepped the sound */
+static void change_while_sounding(aero_body *s, aero_texture *t,
+                                  int was_regions)
+{
+    double velocity[AERO_BODY_MAX_SOURCES][2][3];
+    for (int l = 0; l < AERO_BODY_MAX_SOURCES; l++) {
+        memcpy(velocity[l][0], s->src[l].velocity, sizeof(velocity[l][0]));
+        memcpy(velocity[l][1], s->src[l].stream_velocity,
+               sizeof(velocity[l][1]));
+    }
+    int regions = s->regions;
+    s->regions = was_regions; /* the old sources */
+    leave_sound(s);
+    s->regions = regions;
+    s->ghost_texture = s->texture;
+    s->ghost_regions = was_regions;
+    s->ghost_moving = 1;
+    s->texture = t;
+    restart_sources(s);
+    for (int l = 0; l < AERO_BODY_MAX_SOURCES; l++) {
+        memcpy(s->src[l].velocity, velocity[l][0], sizeof(velocity[l][0]));
+        memcpy(s->src[l].stream_velocity, velocity[l][1],
+               sizeof(velocity[l][1]));
+    }
+}
+
 int aero_body_set_texture(aero_body *s, aero_texture *t,
-                                  char *err, size_t errlen)
+                          char *err, size_t errlen)
 {
     int was_regions = s->regions;
     if (t) {
-        const char *sym = t->head.symmetry;
         double centre[3 * AERO_BODY_MAX_SOURCES];
-        double v0 = t->head.v0;
-        double d = t->head.diameter;
         int sphere;
-        if (aero_texture_wrong_kind(t, "object", err, errlen)) {
+        if (check_texture(t, centre, &sphere, err, errlen))
             return -1;
-        }
-        if (strcmp(sym, "sphere") && strcmp(sym, "axis")) {
-            snprintf(err, errlen, "symmetry must be sphere or axis");
-            return -1;
-        }
-        sphere = !strcmp(sym, "sphere");
-        if (!(v0 > 0.0 && v0 < 1e3) || !(d > 0.0 && d < 100.0) ||
-            !(t->rate > 0.0) || t->frames < 2 || t->directions < 1 ||
-            t->regions < 1 || t->regions > AERO_BODY_MAX_SOURCES ||
-            (sphere && t->directions != 1)) {
-            snprintf(err, errlen, "bad metadata (v0 %g, diameter %g, %d "
-                     "directions, %d regions, %d frames)", v0, d,
-                     t->directions, t->regions, t->frames);
-            return -1;
-        }
-        for (int k = 0; k < t->directions; k++)
-            if (!(t->angles[k] >= 0.0 && t->angles[k] <= 180.0) ||
-                (k && !(t->angles[k] > t->angles[k - 1]))) {
-                snprintf(err, errlen, "angles must increase within 0..180");
-                return -1;
-            }
-        if (!t->head.centres ||
-            parse_centres(t->head.centres, t->regions, centre)) {
-            snprintf(err, errlen, "centres= must list %d x,y,z triples "
-                     "separated by ';'", t->regions);
-            return -1;
-        }
-        s->v0 = v0;
-        s->tex_size = d;
+        s->v0 = t->head.v0;
+        s->tex_size = t->head.diameter;
         s->tex_rate = t->rate;
         s->regions = t->regions;
         s->sphere = sphere;
@@ -191,30 +227,7 @@ int aero_body_set_texture(aero_body *s, aero_texture *t,
         s->re_law = !sphere && strip_re_law(s, t);
     }
     if (s->base.sounding && s->texture && t) {
-        /* a texture changed while sounding: the old sources fade out
-           reading the old texture, moving on as they were, as the new
-           ones (at the body's speed) fade in; cutting them stepped the
-           sound */
-        double velocity[AERO_BODY_MAX_SOURCES][2][3];
-        for (int l = 0; l < AERO_BODY_MAX_SOURCES; l++) {
-            memcpy(velocity[l][0], s->src[l].velocity, sizeof(velocity[l][0]));
-            memcpy(velocity[l][1], s->src[l].stream_velocity,
-                   sizeof(velocity[l][1]));
-        }
-        int regions = s->regions;
-        s->regions = was_regions; /* the old sources */
-        leave_sound(s);
-        s->regions = regions;
-        s->ghost_texture = s->texture;
-        s->ghost_regions = was_regions;
-        s->ghost_moving = 1;
-        s->texture = t;
-        restart_sources(s);
-        for (int l = 0; l < AERO_BODY_MAX_SOURCES; l++) {
-            memcpy(s->src[l].velocity, velocity[l][0], sizeof(velocity[l][0]));
-            memcpy(s->src[l].stream_velocity, velocity[l][1],
-                   sizeof(velocity[l][1]));
-        }
+        change_while_sounding(s, t, was_regions);
         return 0;
     }
     drop_ghost_texture(s);
@@ -267,10 +280,11 @@ int aero_body_set_ramp_ms(aero_body *s, double ms)
     return aero_moving_player_set_ramp_ms(&s->base, ms);
 }
 
-void aero_body_set_seed(aero_body *s, uint32_t seed)
+int aero_body_set_seed(aero_body *s, uint32_t seed)
 {
     s->base.rng = seed ? seed : 1;
     restart_sources(s);
+    return 0;
 }
 
 /* where region l's body-frame centre is for a pose */
@@ -356,7 +370,7 @@ static void flush_poses(aero_body *s)
 }
 
 int aero_body_set_pose(aero_body *s, const double pos[3],
-                               const double quat[4], double interval_s)
+                       const double quat[4], double interval_s)
 {
     double p[7];
     if (make_pose(pos, quat, p))
@@ -676,36 +690,11 @@ static int render(aero_body *s, aero_body_source *src, int l,
     return then.amp != 0.0 || g->amp != 0.0;
 }
 
-/* the ghosts' next m samples, each where it was, its velocity (so its
-   rate, and its amplitude as the velocity to the exponent) falling to 0
-   over GHOST_FADE_S on a half cosine, smooth where it begins and ends;
+/* the ghosts' next m samples, each where it was, fading (ghost_fade.h);
    1 if one sounded */
-#define GHOST_FADE_S (4.0 * VELOCITY_TAU_S)
-
-/* the ghosts' fade at `t` samples after the jump: the velocity's fraction
-   to the exponent */
-static double ghost_fade(const aero_body *s, double t)
-{
-    double span = GHOST_FADE_S * s->base.sample_rate;
-    if (!(t < span))
-        return 0.0;
-    return pow(0.5 + 0.5 * cos(AERO_PI * t / span), s->base.exponent);
-}
-
-/* the sources' amplitude factor at the end of the next m samples: they
-   fade in as the ghosts fade out (a body in a wind sounds at once at its
-   new place) */
-static double fade_in(aero_body *s, int m)
-{
-    if (!(s->fade_in < GHOST_FADE_S * s->base.sample_rate))
-        return 1.0;
-    s->fade_in += m;
-    return 1.0 - ghost_fade(s, s->fade_in);
-}
-
 static int render_ghosts(aero_body *s, int m)
 {
-    const double span = GHOST_FADE_S * s->base.sample_rate;
+    const double span = AERO_GHOST_FADE_S * s->base.sample_rate;
     int sounding = 0;
     /* after a texture change they read the old one */
     aero_texture *texture = s->texture;
@@ -716,23 +705,20 @@ static int render_ghosts(aero_body *s, int m)
     }
     for (int l = 0; l < s->n_ghosts; l++) {
         aero_body_source *gh = &s->ghost[l];
-        if (!gh->primed || !(gh->fade_samples < span))
+        double v_then, v;
+        if (!gh->primed || !(gh->fade.samples < span))
             continue;
-        double v_then = gh->fade_samples < span
-                            ? 0.5 + 0.5 * cos(AERO_PI * gh->fade_samples / span)
-                            : 0.0;
-        gh->fade_samples += m;
-        double v = gh->fade_samples < span
-                       ? 0.5 + 0.5 * cos(AERO_PI * gh->fade_samples / span)
-                       : 0.0;
-        if (s->ghost_moving) /* a texture change: the body goes on */
-            v = v_then = 1.0;
+        /* after a texture change the body goes on */
+        aero_ghost_advance(&gh->fade.samples, m, span, s->ghost_moving,
+                           &v_then, &v);
         aero_body_geometry g = gh->then;
-        g.inc = gh->fade_inc * v;
-        g.amp = gh->fade_amp * ghost_fade(s, gh->fade_samples);
+        g.inc = gh->fade.inc * v;
+        g.amp = gh->fade.amp * aero_ghost_fade(gh->fade.samples,
+                                               s->base.sample_rate,
+                                               s->base.exponent);
         /* it moves on as it slows: its delay's rate falls with v */
         for (int e = 0; e < s->base.n_ears; e++)
-            g.delay[e] += gh->fade_rate[e] * 0.5 * (v_then + v) * m;
+            g.delay[e] += gh->fade.rate[e] * 0.5 * (v_then + v) * m;
         sounding |= render(s, gh, l, &g, m);
     }
     s->texture = texture;
@@ -745,9 +731,11 @@ static int render_ghosts(aero_body *s, int m)
 }
 
 int aero_body_process(aero_body *s, const float *speed,
-                              float *const *out, int n)
+                      float *const *out, int n)
 {
     s->base.clamped = 0;
+    if (aero_moving_player_silent(&s->base, out, n))
+        return 0;
     for (int done = 0; done < n;) {
         int m = n - done < AERO_BODY_CHUNK ? n - done : AERO_BODY_CHUNK;
         /* the poses due at this sample, then a chunk up to the next */
@@ -768,7 +756,7 @@ int aero_body_process(aero_body *s, const float *speed,
         }
         advance_pose(s, m);
         pace = aero_pose_path_pace(&s->path);
-        alpha = 1.0 - exp(-m / (VELOCITY_TAU_S * s->base.sample_rate));
+        alpha = 1.0 - exp(-m / (AERO_VELOCITY_TAU_S * s->base.sample_rate));
         for (int i = 0; i < 3; i++)
             wind[i] = ramp_advance(&s->base.wind[i], m);
         wind[0] += sp;
@@ -778,7 +766,9 @@ int aero_body_process(aero_body *s, const float *speed,
         gain = ramp_advance(&s->base.gain, m);
         s->base.sounding = 0;
         if (s->texture) {
-            double faded = fade_in(s, m);
+            double faded = aero_ghost_fade_in(&s->fade_in, m,
+                                              s->base.sample_rate,
+                                              s->base.exponent);
             for (int l = 0; l < s->regions; l++) {
                 aero_body_geometry g;
                 for (int i = 0; i < 3; i++) {

@@ -1,4 +1,4 @@
-/* aero: tests of the vortex texture player (src/core/play/vortex_player.c) with
+/* aero: tests of the vortex texture player (src/core/play/vortex.c) with
  * synthetic textures: 1/r, the Doppler factor of a moving source and of a
  * moving listener, speed interpolation and the u^4 law below the smallest
  * speed, clip, n sources adding in power, hostile input, the paper's 1/r^3
@@ -6,7 +6,7 @@
 #include "unit.h"
 #include "aero_air.h"
 #include "aero_util.h"
-#include "vortex_player.h"
+#include "vortex.h"
 #include "multi_instance.h"
 
 #include <stdlib.h>
@@ -66,7 +66,7 @@ static double zero_cross_hz(const float *x, int n)
 static void setup(aero_vortex *m, aero_texture *t, int n)
 {
     char err[128];
-    aero_vortex_init(m, SR, 0, 42);
+    aero_vortex_init(m, SR, 1, 42);
     aero_vortex_set_count(m, n);
     if (aero_vortex_set_texture(m, t, err, sizeof err))
         printf("  texture refused: %s\n", err);
@@ -252,7 +252,7 @@ UNIT_TEST(combustion)
     static float a[N];
     double xyz[6] = {0.1, 0.0, 0.0, -0.1, 0.0, 0.0}, want, got;
     printf("combustion noise in the player\n");
-    aero_vortex_init(&m, SR, 0, 42);
+    aero_vortex_init(&m, SR, 1, 42);
     aero_vortex_set_count(&m, 2);
     aero_vortex_set_positions(&m, xyz, 2);
     aero_vortex_set_ears(&m, &(aero_ears){1, {{0.0, 2.0, 0.0}}});
@@ -280,7 +280,7 @@ static void *mi_make(int variant)
     double speeds[3] = {5.0, 10.0, 20.0}, pos[12];
     aero_vortex *m = calloc(1, sizeof(*m));
     aero_texture *t = calloc(1, sizeof(*t));
-    aero_vortex_init(m, 44100.0, 0, 7u + variant);
+    aero_vortex_init(m, 44100.0, 1, 7u + variant);
     aero_texture_init_speeds(t, 2048, 3, speeds, 8000.0);
     for (int n = 0; n < 2048 * 3; n++)
         t->data[n] = (float)sin(0.05 * n) * (float)cos(0.0031 * n);
@@ -306,4 +306,29 @@ UNIT_TEST(multi_instance)
     unit_multi_instance("vortex~", "4 sources", mi_make, mi_run, mi_drop);
 }
 
-UNIT_MAIN(UNIT_CASE(falloff), UNIT_CASE(combustion), UNIT_CASE(distance_and_speed), UNIT_CASE(doppler), UNIT_CASE(clip_and_sources), UNIT_CASE(hostile), UNIT_CASE(multi_instance))
+/* the object contract (CONTRIBUTING.md): init answers -1 for a sample
+   rate it cannot use and the core stays usable (silent without a
+   texture, finite); n_ears 2 puts the ears AERO_EAR_HALF_SPACING either
+   side of the listener; set_seed answers 0 like every setter */
+UNIT_TEST(init_contract)
+{
+    aero_vortex m;
+    float l[64], r[64], in[64] = {0};
+    float *o[2] = {l, r};
+    int silent = 1;
+    UNIT_CHECK(aero_vortex_init(&m, NAN, 2, 1) == -1,
+               "init at a NaN sample rate answers -1");
+    aero_vortex_process(&m, in, o, 64);
+    for (int i = 0; i < 64; i++)
+        silent &= l[i] == 0.0f && r[i] == 0.0f;
+    UNIT_CHECK(silent, "and the core plays silence without a texture");
+    UNIT_CHECK(m.ear[0] == -AERO_EAR_HALF_SPACING &&
+                   m.ear[3] == AERO_EAR_HALF_SPACING,
+               "two ears at x = %g and %g m", m.ear[0], m.ear[3]);
+    UNIT_CHECK(aero_vortex_set_seed(&m, 0) == 0 &&
+                   aero_vortex_set_seed(&m, 0xffffffffu) == 0,
+               "set_seed answers 0 for any seed");
+    aero_vortex_free(&m);
+}
+
+UNIT_MAIN(UNIT_CASE(falloff), UNIT_CASE(combustion), UNIT_CASE(distance_and_speed), UNIT_CASE(doppler), UNIT_CASE(clip_and_sources), UNIT_CASE(hostile), UNIT_CASE(multi_instance), UNIT_CASE(init_contract))

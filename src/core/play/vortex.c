@@ -1,6 +1,6 @@
 /* aero: real-time vortex sound from a texture Q(u, t) (see
- * vortex_player.h). */
-#include "vortex_player.h"
+ * vortex.h). */
+#include "vortex.h"
 
 #include "aero_air.h"
 #include "aero_util.h"
@@ -24,26 +24,29 @@ static void randomise_offsets(aero_vortex *m, int from)
             m->pos[i] *= m->frames;
 }
 
-int aero_vortex_init(aero_vortex *m, double sample_rate,
-                            int stereo, uint32_t seed)
+int aero_vortex_init(aero_vortex *m, double sample_rate, int n_ears,
+                     uint32_t seed)
 {
     memset(m, 0, sizeof *m);
-    m->sample_rate = sample_rate > 0.0 ? sample_rate : 44100.0;
-    m->stereo = stereo ? 1 : 0;
+    int sr_ok = sample_rate > 0.0 && aero_is_finite(sample_rate);
+    m->sample_rate = sr_ok ? sample_rate : AERO_SAMPLE_RATE_FALLBACK;
+    m->stereo = n_ears == 2;
     m->rng = seed ? seed : 1;
     m->gain = m->gain_target = pow(10.0, AERO_GAIN_DB_DEFAULT / 20.0);
     m->clip = AERO_VORTEX_CLIP_DEFAULT;
     m->r_min = 0.05;
     m->falloff = AERO_VORTEX_FALLOFF_DEFAULT;
-    if (aero_combustion_init(&m->combustion, m->sample_rate,
-                             m->rng ^ 0x9e3779b9u))
-        return -1;
     aero_vortex_set_ramp_ms(m, AERO_RAMP_MS_DEFAULT);
-    m->ear[0] = m->ear_target[0] = stereo ? -0.1 : 0.0;
+    m->ear[0] = m->ear_target[0] = m->stereo ? -AERO_EAR_HALF_SPACING : 0.0;
     m->ear[1] = m->ear_target[1] = 1.0;
-    m->ear[3] = m->ear_target[3] = 0.1;
+    m->ear[3] = m->ear_target[3] = AERO_EAR_HALF_SPACING;
     m->ear[4] = m->ear_target[4] = 1.0;
-    return aero_vortex_set_count(m, AERO_VORTEX_SOURCES_DEFAULT);
+    /* out of memory: no sources and no flame, silent (process reads n 0) */
+    if (aero_combustion_init(&m->combustion, m->sample_rate,
+                             m->rng ^ 0x9e3779b9u) ||
+        aero_vortex_set_count(m, AERO_VORTEX_SOURCES_DEFAULT))
+        return -1;
+    return sr_ok ? 0 : -1;
 }
 
 void aero_vortex_free(aero_vortex *m)
@@ -117,7 +120,7 @@ static void start_ramp(aero_vortex *m)
 }
 
 int aero_vortex_set_speeds(aero_vortex *m, const double *u,
-                                  int count)
+                           int count)
 {
     if (count < 1 || count > m->n)
         return -1;
@@ -131,7 +134,7 @@ int aero_vortex_set_speeds(aero_vortex *m, const double *u,
 }
 
 int aero_vortex_set_positions(aero_vortex *m,
-                                     const double *xyz, int count)
+                              const double *xyz, int count)
 {
     if (count < 1 || count > m->n ||
         !aero_finite_within(xyz, 3 * count, AERO_POSITION_LIMIT))
@@ -212,17 +215,18 @@ int aero_vortex_set_fluctuation(aero_vortex *m, double eps)
     return aero_combustion_set_fluctuation(&m->combustion, eps);
 }
 
-void aero_vortex_set_seed(aero_vortex *m, uint32_t seed)
+int aero_vortex_set_seed(aero_vortex *m, uint32_t seed)
 {
     m->rng = seed ? seed : 1;
     aero_combustion_set_seed(&m->combustion, m->rng ^ 0x9e3779b9u);
     randomise_offsets(m, 0);
     for (int i = 0; i < 2 * m->n; i++)
         m->dist[i] = -1.0; /* read positions restart from the offsets */
+    return 0;
 }
 
 int aero_vortex_set_texture(aero_vortex *m, aero_texture *t,
-                                   char *err, size_t errlen)
+                            char *err, size_t errlen)
 {
     float *tab = NULL;
     if (t) {
@@ -472,6 +476,8 @@ static void add_combustion(aero_vortex *m, double u_in, int nout,
                            float *const *out, int n)
 {
     double c[3] = {0.0, 0.0, 0.0}, u = 0.0;
+    if (m->n < 1) /* after a failed init: no volumes, no flame */
+        return;
     for (int i = 0; i < m->n; i++) {
         for (int k = 0; k < 3; k++) c[k] += m->xyz[3 * i + k];
         u += u_in + m->speed[i];
@@ -509,7 +515,7 @@ static void limit_and_gain(aero_vortex *m, double frac, int nout,
 }
 
 int aero_vortex_process(aero_vortex *m, const float *speed,
-                               float *const *out, int n)
+                        float *const *out, int n)
 {
     const int nout = m->stereo ? 2 : 1;
     double u_in0, u_in1, frac;

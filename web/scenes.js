@@ -170,13 +170,14 @@ export const SCENES = [
   },
   {
     id: 'fan', title: 'Desk fan', patch: 'fan.pd', gain: 31, data: [],
-    text: 'A desk fan 1 m in front: five 15 cm blades spin up to 1200 rpm ' +
-      'over 3 s. Each blade is split into strips along its radius; the ' +
-      'steady thrust and torque on each strip turn with it, a rotating ' +
-      'dipole heard with its retarded time (compact Farassat 1A), so the ' +
-      'fan hums at the blade-passing frequency B rpm / 60 = 100 Hz and its ' +
-      'harmonics (Gutin 1936), over the blades\' broadband self-noise ' +
-      '(Brooks, Pope and Marcolini 1989).',
+    text: 'A desk fan 1 m in front, pointed at you: five 15 cm blades spin ' +
+      'up to 1200 rpm over 3 s. What you hear is the blades\' broadband ' +
+      'self-noise (Brooks, Pope and Marcolini 1989), rising with the speed. ' +
+      'Each blade\'s steady thrust and torque turn with it, a rotating ' +
+      'dipole heard with its retarded time (compact Farassat 1A), whose ' +
+      'tone is the blade-passing frequency B rpm / 60 = 100 Hz and its ' +
+      'harmonics; near the fan\'s axis, where you sit, those steady-loading ' +
+      'tones all but vanish (Gutin 1936), so the hum is faint.',
     controls: [
       { id: 'rpm', label: 'Speed', unit: 'rpm', min: 300, max: 2400, step: 50,
         value: 1200, send: v => [['aero-scene', 'rpm', v]] },

@@ -608,8 +608,10 @@ WASM_LDFLAGS = -O3 -sMODULARIZE=1 -sEXPORT_ES6=1 -sEXPORT_NAME=createAero \
 web.textures = textures/sword.wav textures/cylinder.wav textures/sphere.wav \
     textures/fire.wav
 web.trees = trees/medium.tree
+# the blade tables aero.propeller~ and aero.turbine~ read beside themselves
+web.blades = $(wildcard abstractions/*.blade)
 web.data = $(wildcard web/scenes/*.pd) $(wildcard abstractions/*.pd) \
-    $(web.textures) $(web.trees)
+    $(web.blades) $(web.textures) $(web.trees)
 web.page = $(wildcard web/*.html web/*.js web/*.css)
 
 # platforms/deps.sh wasm: links in build/deps/wasm to the cached libraries
@@ -672,7 +674,7 @@ web: $(WEB)/aero.js $(web.data) $(web.page)
 	    $(WEB)/aero/textures $(WEB)/aero/trees
 	cp $(web.page) $(WEB)/
 	cp web/scenes/*.pd $(WEB)/aero/scenes/
-	cp abstractions/*.pd $(WEB)/aero/abstractions/
+	cp abstractions/*.pd $(web.blades) $(WEB)/aero/abstractions/
 	cp $(web.textures) $(WEB)/aero/textures/
 	cp $(web.trees) $(WEB)/aero/trees/
 	@echo "web: $(WEB)/ (make web-serve, then open http://127.0.0.1:$(PORT)/)"

@@ -7,8 +7,8 @@ import { SCENES, controlMessages } from './scenes.js';
 import { AeroPd, wavBytes, BLOCK } from './aero-pd.js';
 
 const $ = id => document.getElementById(id);
-const ABSTRACTIONS = ['draft', 'fence', 'fire', 'swing', 'throw', 'tree',
-  'whirl', 'wind'].map(n => `abstractions/aero.${n}~.pd`);
+const ABSTRACTIONS = ['draft', 'drone', 'fan', 'fence', 'fire', 'propeller',
+  'swing', 'throw', 'tree', 'turbine', 'whirl', 'wind'].map(n => `abstractions/aero.${n}~.pd`);
 const dB = x => Math.pow(10, x / 20);
 
 const state = {

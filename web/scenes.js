@@ -168,6 +168,79 @@ export const SCENES = [
     ],
     actions: [{ label: 'Squall', send: [['aero-scene', 'squall']] }],
   },
+  {
+    id: 'fan', title: 'Desk fan', patch: 'fan.pd', gain: 31, data: [],
+    text: 'A desk fan 1 m in front, pointed at you: five 15 cm blades spin ' +
+      'up to 1200 rpm over 3 s. What you hear is the blades\' broadband ' +
+      'self-noise (Brooks, Pope and Marcolini 1989), rising with the speed. ' +
+      'Each blade\'s steady thrust and torque turn with it, a rotating ' +
+      'dipole heard with its retarded time (compact Farassat 1A), whose ' +
+      'tone is the blade-passing frequency B rpm / 60 = 100 Hz and its ' +
+      'harmonics; near the fan\'s axis, where you sit, those steady-loading ' +
+      'tones all but vanish (Gutin 1936), so the hum is faint.',
+    controls: [
+      { id: 'rpm', label: 'Speed', unit: 'rpm', min: 300, max: 2400, step: 50,
+        value: 1200, send: v => [['aero-scene', 'rpm', v]] },
+    ],
+    actions: [
+      { label: 'Switch off', send: [['aero-scene', 'fan', 0]] },
+      { label: 'Switch on', send: [['aero-scene', 'fan', 1]] },
+    ],
+  },
+  {
+    id: 'drone', title: 'Drone', patch: 'drone.pd', gain: 9, data: [],
+    text: 'A 1 kg quadcopter hovering 3 m in front, 2 m up: four two-bladed ' +
+      '12 cm rotors, each turning at the rpm that gives a quarter of the ' +
+      'thrust asked (thrust as rpm squared: 4700 rpm to hover), so they hum ' +
+      'at the blade-passing frequency 2 rpm / 60, about 157 Hz. More thrust ' +
+      'spins them faster; yaw speeds one diagonal pair and slows the other, ' +
+      'and the two tones beat. Fly past sends it across at 8 m/s: the hum ' +
+      'rises and falls with the Doppler shift and the distance.',
+    controls: [
+      { id: 'thrust', label: 'Thrust (x weight)', unit: '', min: 0, max: 1.5,
+        step: 0.05, value: 1, send: v => [['aero-scene', 'thrust', v]] },
+      { id: 'yaw', label: 'Yaw', unit: '', min: -0.5, max: 0.5, step: 0.05,
+        value: 0, send: v => [['aero-scene', 'yaw', v]] },
+    ],
+    actions: [
+      { label: 'Fly past', send: [['aero-flypast', 'bang']] },
+      { label: 'Hover in front', send: [['aero-scene', 'place', 0, 3, 2]] },
+    ],
+  },
+  {
+    id: 'propeller', title: 'Propeller aircraft', patch: 'propeller.pd',
+    gain: -14, data: ['abstractions/propeller.blade'],
+    text: 'A light aircraft\'s two-bladed 1.9 m propeller at 2400 rpm ' +
+      '(2000 N of thrust, about 100 kW) passing 30 m to the side and 20 m ' +
+      'up at 50 m/s. Its blade-passing tone of 80 Hz and harmonics are ' +
+      'loudest near the propeller\'s plane (Gutin 1936); each strip is heard ' +
+      'with its own retarded time and Doppler shift, so the tone is high ' +
+      'as the aircraft comes, falls as it passes and the level follows ' +
+      'the distance and the directivity.',
+    controls: [
+      { id: 'rpm', label: 'Engine speed', unit: 'rpm', min: 1200, max: 2700,
+        step: 50, value: 2400, send: v => [['aero-scene', 'rpm', v]] },
+    ],
+    actions: [{ label: 'Fly past', send: [['aero-flypast', 'bang']] }],
+  },
+  {
+    id: 'turbine', title: 'Wind turbine', patch: 'turbine.pd', gain: 10,
+    data: ['abstractions/turbine.blade'],
+    text: 'A wind turbine on a hill (three 47 m blades at 16 rpm on a 100 m ' +
+      'tower, the size Oerlemans and Schepers 2009 measured), heard 200 m ' +
+      'from the tower, 60 degrees from downwind. The noise is the blades\' ' +
+      'trailing-edge self-noise (Brooks, Pope and Marcolini 1989), loudest ' +
+      'near the tips; its convective amplification and directivity make it ' +
+      'swell as each blade comes down towards you: the swish, 3 x 16 / 60 ' +
+      '= 0.8 times a second.',
+    controls: [
+      { id: 'wind', label: 'Wind speed', unit: 'm/s', min: 4, max: 14,
+        step: 0.5, value: 8, send: v => [['aero-scene', 'wind', v]] },
+      { id: 'rpm', label: 'Rotor speed', unit: 'rpm', min: 6, max: 20,
+        step: 0.5, value: 16, send: v => [['aero-scene', 'rpm', v]] },
+    ],
+    actions: [],
+  },
 ];
 
 // the messages that put a scene's controls at VALUES (id -> value): those

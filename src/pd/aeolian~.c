@@ -41,7 +41,7 @@ static void aeolian_tilde_dsp(t_aeolian_tilde *x, t_signal **sp)
 {
     aero_pd_pose_clock_dsp(&x->x_clock, sp[0]);
     if (aero_aeolian_set_sample_rate(&x->x_core, sp[0]->s_sr))
-        pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
+        aero_pd_rate_failed(&x->x_base, sp[0]->s_sr);
     aero_pd_dsp(&x->x_base, sp, 1, aeolian_tilde_process);
 }
 
@@ -157,7 +157,7 @@ static const aero_pd_method aeolian_tilde_methods[] = {
     {"ears", AERO_PD_LIST, 6, (t_method)aeolian_tilde_listener, 0, AERO_PD_NO_RULE},
     {"texture", AERO_PD_SYMBOL, 0, (t_method)aeolian_tilde_texture, 0, AERO_PD_NO_RULE},
     {"n", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_n, 0,
-     AERO_PD_RANGE_NOTE_DEF(0, AERO_AEOLIAN_SOURCES_MAX,
+     AERO_PD_RANGE_NOTE_DEF(AERO_AEOLIAN_SOURCES_MIN, AERO_AEOLIAN_SOURCES_MAX,
                             AERO_AEOLIAN_SOURCES_DEFAULT, NULL,
                             "point sources, 0: auto, length / 3 d")},
     {"exponent", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_exponent, 0,
@@ -168,7 +168,8 @@ static const aero_pd_method aeolian_tilde_methods[] = {
     {"roll", AERO_PD_FLOAT, 0, (t_method)aeolian_tilde_roll, 0,
      AERO_PD_NOTE("finite degrees")},
     {"wind", AERO_PD_LIST, 3, (t_method)aeolian_tilde_wind, 0,
-     AERO_PD_RANGE_NOTE(0, AERO_MOVING_WIND_MAX, "m/s", "finite")},
+     AERO_PD_RANGE_NOTE(AERO_MOVING_WIND_MIN, AERO_MOVING_WIND_MAX, "m/s",
+                        "finite")},
     {"model", AERO_PD_BANG, 0, (t_method)aeolian_tilde_model,
      AERO_PD_MESSAGE_ONLY, AERO_PD_NO_RULE},
     {"pose", AERO_PD_LIST, 0, (t_method)aeolian_tilde_pose,

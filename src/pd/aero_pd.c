@@ -417,6 +417,12 @@ void aero_pd_init_failed(const aero_pd_base *b, double sr)
                  "default rate until the DSP starts", b->obj, sr);
 }
 
+void aero_pd_rate_failed(const aero_pd_base *b, double sr)
+{
+    pd_error(b->owner, "%s: sample rate %g refused (out of range, or out of "
+             "memory)", b->obj, sr);
+}
+
 double aero_pd_at_bound(const aero_pd_base *b, const char *name, t_float f)
 {
     const aero_pd_rule *r = aero_pd_rule_of(b, name);

@@ -92,6 +92,9 @@ typedef struct {
                       AERO_GAIN_DB_DEFAULT, "dB")
 #define AERO_PD_RAMP                                                       \
     AERO_PD_RANGE_DEF(0, AERO_RAMP_MS_MAX, AERO_RAMP_MS_DEFAULT, "ms")
+/* a switch: 0 off, 1 on, starting at def */
+#define AERO_PD_ON_OFF(def)                                                \
+    AERO_PD_RANGE_NOTE_DEF(0, 1, (def), NULL, "0 off, 1 on")
 /* a constant as a string, for a note: AERO_PD_STR(AERO_LEAFWAVE_TABLES_MAX) */
 #define AERO_PD_STR_(x) #x
 #define AERO_PD_STR(x) AERO_PD_STR_(x)
@@ -455,6 +458,9 @@ int aero_pd_seed_of(const struct aero_pd_base *b, t_float f, uint32_t *seed);
  * rate was not usable (the core takes its default rate, 44.1 or 48 kHz,
  * until the DSP starts) or memory ran out (the core is silent) */
 void aero_pd_init_failed(const struct aero_pd_base *b, double sr);
+/* a core's set_sample_rate returned -1 in dsp, at Pd's rate sr: out of the
+ * core's range, or memory ran out making its buffers */
+void aero_pd_rate_failed(const struct aero_pd_base *b, double sr);
 #define AERO_PD_SEED                                                       \
     AERO_PD_NOTE("any finite number, its whole part modulo 2^32")
 

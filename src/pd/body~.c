@@ -41,7 +41,7 @@ static void body_tilde_dsp(t_body_tilde *x, t_signal **sp)
 {
     aero_pd_pose_clock_dsp(&x->x_clock, sp[0]);
     if (aero_body_set_sample_rate(&x->x_core, sp[0]->s_sr))
-        pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
+        aero_pd_rate_failed(&x->x_base, sp[0]->s_sr);
     aero_pd_dsp(&x->x_base, sp, 1, body_tilde_process);
 }
 
@@ -135,7 +135,8 @@ static const aero_pd_method body_tilde_methods[] = {
     {"listener", AERO_PD_LIST, 3, (t_method)body_tilde_listener, 0, AERO_PD_NO_RULE},
     {"ears", AERO_PD_LIST, 6, (t_method)body_tilde_listener, 0, AERO_PD_NO_RULE},
     {"wind", AERO_PD_LIST, 3, (t_method)body_tilde_wind, 0,
-     AERO_PD_RANGE_NOTE(0, AERO_MOVING_WIND_MAX, "m/s", "finite")},
+     AERO_PD_RANGE_NOTE(AERO_MOVING_WIND_MIN, AERO_MOVING_WIND_MAX, "m/s",
+                        "finite")},
     {"pose", AERO_PD_LIST, 0, (t_method)body_tilde_pose,
      AERO_PD_MESSAGE_ONLY, POSE},
     {"place", AERO_PD_LIST, 0, (t_method)body_tilde_pose,

@@ -19,7 +19,6 @@ typedef struct _cavity_tilde {
     aero_cavity x_core;
 } t_cavity_tilde;
 
-#define OBJ "[cavity~]"
 
 static int cavity_tilde_process(void *obj, const float *in,
                                 float *const *out, int n)
@@ -33,7 +32,7 @@ static int cavity_tilde_process(void *obj, const float *in,
 static void cavity_tilde_dsp(t_cavity_tilde *x, t_signal **sp)
 {
     if (aero_cavity_set_sample_rate(&x->x_core, sp[0]->s_sr))
-        pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
+        aero_pd_rate_failed(&x->x_base, sp[0]->s_sr);
     aero_pd_dsp(&x->x_base, sp, 1, cavity_tilde_process);
 }
 
@@ -131,8 +130,7 @@ static void *cavity_tilde_new(t_symbol *s, int argc, t_atom *argv)
     aero_pd_base_init(&x->x_base, x, &cavity_tilde_spec, argc, argv);
     if (aero_cavity_init(&x->x_core, sys_getsr(), x->x_base.stereo ? 2 : 1,
                          aero_pd_default_seed()))
-        pd_error(x, OBJ ": sample rate %g not usable: %g Hz until the "
-                 "DSP starts", sys_getsr(), AERO_SAMPLE_RATE_FALLBACK);
+        aero_pd_init_failed(&x->x_base, sys_getsr());
     aero_pd_parse_flags(&x->x_base, argc, argv);
     aero_pd_base_outlets(&x->x_base);
     return x;

@@ -84,7 +84,7 @@ static int leafwave_tilde_process(void *obj, const float *in,
 static void leafwave_tilde_dsp(t_leafwave_tilde *x, t_signal **sp)
 {
     if (aero_leafwave_set_sample_rate(&x->x_core, sp[0]->s_sr))
-        pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
+        aero_pd_rate_failed(&x->x_base, sp[0]->s_sr);
     aero_pd_dsp(&x->x_base, sp, 1, leafwave_tilde_process);
 }
 
@@ -463,7 +463,7 @@ static void *leafwave_tilde_new(t_symbol *s, int argc, t_atom *argv)
     /* a failed init leaves a silent core, safe to use */
     if (aero_leafwave_init(&x->x_core, sys_getsr(), x->x_base.stereo ? 2 : 1,
                            aero_pd_default_seed()))
-        pd_error(x, OBJ ": out of memory: silent");
+        aero_pd_init_failed(&x->x_base, sys_getsr());
     /* the tree file: the first argument that is not a flag; the seed and
        the tables are set by the flags first, so the tree is built once */
     t_symbol *file = aero_pd_first_symbol(&argc, &argv);

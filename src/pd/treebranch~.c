@@ -78,8 +78,7 @@ static int treebranch_tilde_process(void *obj, const float *in,
 static void treebranch_tilde_dsp(t_treebranch_tilde *x, t_signal **sp)
 {
     if (aero_treebranch_set_sample_rate(&x->x_core, sp[0]->s_sr))
-        pd_error(x, OBJ ": bad sample rate %g (or out of memory)",
-                 sp[0]->s_sr);
+        aero_pd_rate_failed(&x->x_base, sp[0]->s_sr);
     aero_pd_dsp(&x->x_base, sp, 1, treebranch_tilde_process);
 }
 
@@ -279,12 +278,13 @@ static const aero_pd_method treebranch_tilde_methods[] = {
      AERO_PD_RANGE_DEF(AERO_TREE_STIFFNESS_MIN, AERO_TREE_STIFFNESS_MAX,
                        AERO_TREE_STIFFNESS_DEFAULT, NULL)},
     {"beta", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_beta, 0,
-     AERO_PD_RANGE_DEF(0, AERO_TREE_BETA_MAX, AERO_TREE_BETA_DEFAULT, NULL)},
+     AERO_PD_RANGE_DEF(AERO_TREE_BETA_MIN, AERO_TREE_BETA_MAX,
+                       AERO_TREE_BETA_DEFAULT, NULL)},
     {"alpha", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_alpha, 0,
      AERO_PD_RANGE_DEF(AERO_TREEBRANCH_ALPHA_MIN, AERO_TREEBRANCH_ALPHA_MAX,
                        AERO_TREEBRANCH_ALPHA_DEFAULT, NULL)},
     {"k", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_k, 0,
-     AERO_PD_RANGE_DEF(0, AERO_TREEBRANCH_MIC_K_MAX,
+     AERO_PD_RANGE_DEF(AERO_TREEBRANCH_MIC_K_MIN, AERO_TREEBRANCH_MIC_K_MAX,
                        AERO_TREEBRANCH_MIC_K_DEFAULT, NULL)},
     {"ramp", AERO_PD_FLOAT, 0, (t_method)treebranch_tilde_ramp, 0,
      AERO_PD_RAMP},
@@ -315,7 +315,7 @@ static void *treebranch_tilde_new(t_symbol *s, int argc, t_atom *argv)
                       treebranch_tilde_free_core);
     x->x_creating = 1;
     if (aero_treebranch_init(&x->x_core, sys_getsr(), aero_pd_default_seed()))
-        pd_error(x, OBJ ": out of memory: silent");
+        aero_pd_init_failed(&x->x_base, sys_getsr());
     aero_treebranch_set_stereo(&x->x_core, x->x_base.stereo);
     x->x_want_seed = x->x_core.seed;
     /* the tree file: the first argument, when it is not a flag */

@@ -38,7 +38,7 @@ static int vortex_tilde_process(void *obj, const float *in,
 static void vortex_tilde_dsp(t_vortex_tilde *x, t_signal **sp)
 {
     if (aero_vortex_set_sample_rate(&x->x_core, sp[0]->s_sr))
-        pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
+        aero_pd_rate_failed(&x->x_base, sp[0]->s_sr);
     aero_pd_dsp(&x->x_base, sp, 1, vortex_tilde_process);
 }
 
@@ -140,7 +140,8 @@ static const aero_pd_method vortex_tilde_methods[] = {
     {"stereo", AERO_PD_SWITCH, 0, NULL, 0, AERO_PD_NO_RULE},
     /* -n first, so -texture and the rest see every source */
     {"n", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_n, AERO_PD_EARLY,
-     AERO_PD_RANGE_NOTE_DEF(1, AERO_VORTEX_MAX_SOURCES,
+     AERO_PD_RANGE_NOTE_DEF(AERO_VORTEX_MIN_SOURCES,
+                            AERO_VORTEX_MAX_SOURCES,
                             AERO_VORTEX_SOURCES_DEFAULT, NULL,
                             "source volumes, a whole number")},
     {"texture", AERO_PD_SYMBOL, 0, (t_method)vortex_tilde_texture, 0, AERO_PD_NO_RULE},
@@ -148,14 +149,15 @@ static const aero_pd_method vortex_tilde_methods[] = {
      AERO_PD_RANGE_DEF(AERO_GAIN_DB_MIN, AERO_VORTEX_GAIN_DB_MAX,
                        AERO_GAIN_DB_DEFAULT, "dB")},
     {"clip", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_clip, 0,
-     AERO_PD_RANGE_NOTE_DEF(0, AERO_VORTEX_CLIP_MAX, AERO_VORTEX_CLIP_DEFAULT,
-                            "Pa", "0 = off")},
+     AERO_PD_RANGE_NOTE_DEF(AERO_VORTEX_CLIP_MIN, AERO_VORTEX_CLIP_MAX,
+                            AERO_VORTEX_CLIP_DEFAULT, "Pa", "0 = off")},
     {"ramp", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_ramp, 0,
      AERO_PD_RAMP},
     {"seed", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_seed, 0,
      AERO_PD_SEED},
     {"power", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_power, 0,
-     AERO_PD_RANGE_NOTE_DEF(0, AERO_COMBUSTION_POWER_KW_MAX,
+     AERO_PD_RANGE_NOTE_DEF(AERO_COMBUSTION_POWER_KW_MIN,
+                            AERO_COMBUSTION_POWER_KW_MAX,
                             AERO_COMBUSTION_POWER_KW_DEFAULT, "kW",
                             "0 = no combustion noise")},
     {"length", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_length, 0,
@@ -165,16 +167,20 @@ static const aero_pd_method vortex_tilde_methods[] = {
      AERO_PD_RANGE_DEF(AERO_COMBUSTION_ST_MIN, AERO_COMBUSTION_ST_MAX,
                        AERO_COMBUSTION_ST_DEFAULT, NULL)},
     {"fluctuation", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_fluctuation, 0,
-     AERO_PD_RANGE_DEF(0, 1, AERO_COMBUSTION_FLUCTUATION_DEFAULT, NULL)},
+     AERO_PD_RANGE_DEF(AERO_COMBUSTION_FLUCTUATION_MIN,
+                       AERO_COMBUSTION_FLUCTUATION_MAX,
+                       AERO_COMBUSTION_FLUCTUATION_DEFAULT, NULL)},
     {"falloff", AERO_PD_FLOAT, 0, (t_method)vortex_tilde_falloff, 0,
-     AERO_PD_RANGE_NOTE_DEF(1, 3, AERO_VORTEX_FALLOFF_DEFAULT, NULL,
+     AERO_PD_RANGE_NOTE_DEF(AERO_VORTEX_FALLOFF_MIN, AERO_VORTEX_FALLOFF_MAX,
+                            AERO_VORTEX_FALLOFF_DEFAULT, NULL,
                             "1: p ~ 1/r, the far field, or 3: the "
                             "paper's 1/r^3")},
     {"listener", AERO_PD_LIST, 3, (t_method)vortex_tilde_listener, 0, AERO_PD_NO_RULE},
     {"ears", AERO_PD_LIST, 6, (t_method)vortex_tilde_listener, 0, AERO_PD_NO_RULE},
     {"speeds", AERO_PD_LIST, 0, (t_method)vortex_tilde_speeds,
      AERO_PD_MESSAGE_ONLY,
-     AERO_PD_RANGE_NOTE(0, AERO_MACH_LIMIT * AERO_C0, "m/s", "Mach 0.3")},
+     AERO_PD_RANGE_NOTE(AERO_VORTEX_SPEED_MIN, AERO_VORTEX_SPEED_MAX, "m/s",
+                        "Mach 0.3")},
     {"positions", AERO_PD_LIST, 0, (t_method)vortex_tilde_positions,
      AERO_PD_MESSAGE_ONLY,
      AERO_PD_RANGE_NOTE(-AERO_POSITION_LIMIT, AERO_POSITION_LIMIT, "m",

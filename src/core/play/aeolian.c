@@ -201,7 +201,7 @@ int aero_aeolian_set_roll_deg(aero_aeolian *a, double deg)
 
 int aero_aeolian_set_sources(aero_aeolian *a, int n)
 {
-    if (aero_aeolian_texture_make(a) || n < 0 ||
+    if (aero_aeolian_texture_make(a) || n < AERO_AEOLIAN_SOURCES_MIN ||
         n > AERO_AEOLIAN_SOURCES_MAX)
         return -1;
     a->sources = n;

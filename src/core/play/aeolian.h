@@ -67,6 +67,7 @@
 #define AERO_AEOLIAN_D_MAX 10.0      /* m */
 #define AERO_AEOLIAN_L_MIN 1e-5      /* m */
 #define AERO_AEOLIAN_L_MAX 1000.0    /* m */
+#define AERO_AEOLIAN_SOURCES_MIN 0   /* 0: the default count, length / (3 d) */
 #define AERO_AEOLIAN_SOURCES_MAX 256 /* point sources of texture mode */
 #define AERO_AEOLIAN_ROLL_MAX 1e6    /* deg, either way */
 #define AERO_AEOLIAN_PHASE_WANDER_MAX 0.1

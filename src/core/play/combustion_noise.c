@@ -121,7 +121,8 @@ int aero_combustion_set_sample_rate(aero_combustion *m, double sr)
 
 int aero_combustion_set_power_kw(aero_combustion *m, double kw)
 {
-    if (!(kw >= 0.0 && kw <= AERO_COMBUSTION_POWER_KW_MAX))
+    if (!(kw >= AERO_COMBUSTION_POWER_KW_MIN &&
+          kw <= AERO_COMBUSTION_POWER_KW_MAX))
         return -1;
     m->power = kw * 1000.0;
     return 0;
@@ -145,7 +146,8 @@ int aero_combustion_set_strouhal(aero_combustion *m, double st)
 
 int aero_combustion_set_fluctuation(aero_combustion *m, double eps)
 {
-    if (!(eps >= 0.0 && eps <= 1.0))
+    if (!(eps >= AERO_COMBUSTION_FLUCTUATION_MIN &&
+          eps <= AERO_COMBUSTION_FLUCTUATION_MAX))
         return -1;
     m->fluctuation = eps;
     return 0;

@@ -39,7 +39,11 @@
 #define AERO_COMBUSTION_GAMMA 1.4
 #define AERO_COMBUSTION_TILTS 4   /* pole-zero pairs, one per decade */
 /* ranges of the settings */
+#define AERO_COMBUSTION_POWER_KW_MIN 0.0
 #define AERO_COMBUSTION_POWER_KW_MAX 1e6
+/* rms over the mean */
+#define AERO_COMBUSTION_FLUCTUATION_MIN 0.0
+#define AERO_COMBUSTION_FLUCTUATION_MAX 1.0
 #define AERO_COMBUSTION_LENGTH_MIN 1e-3 /* m */
 #define AERO_COMBUSTION_LENGTH_MAX 100.0
 #define AERO_COMBUSTION_ST_MIN 0.01

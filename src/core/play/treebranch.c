@@ -266,7 +266,8 @@ int aero_treebranch_set_stiffness(aero_treebranch *tb, double s)
 
 int aero_treebranch_set_beta(aero_treebranch *tb, double beta)
 {
-    if (!aero_is_finite(beta) || beta < 0.0 || beta > AERO_TREE_BETA_MAX)
+    if (!aero_is_finite(beta) || beta < AERO_TREE_BETA_MIN ||
+        beta > AERO_TREE_BETA_MAX)
         return -1;
     if (tb->has_tree)
         aero_tree_motion_set_beta(&tb->motion, beta);
@@ -299,7 +300,8 @@ int aero_treebranch_set_mic(aero_treebranch *tb, const double dir[3])
 
 int aero_treebranch_set_mic_k(aero_treebranch *tb, double k)
 {
-    return aero_set_within(&tb->mic_k, k, 0.0, AERO_TREEBRANCH_MIC_K_MAX);
+    return aero_set_within(&tb->mic_k, k, AERO_TREEBRANCH_MIC_K_MIN,
+                           AERO_TREEBRANCH_MIC_K_MAX);
 }
 
 static int valid_point(const double p[3])

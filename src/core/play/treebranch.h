@@ -45,6 +45,7 @@
    aero_ranges.h) */
 #define AERO_TREEBRANCH_ALPHA_MIN 0.5
 #define AERO_TREEBRANCH_ALPHA_MAX 8.0
+#define AERO_TREEBRANCH_MIC_K_MIN 0.0
 #define AERO_TREEBRANCH_MIC_K_MAX 20.0
 /* defaults (stiffness and beta: tree_motion.h; gain and ramp:
    aero_ranges.h) */

@@ -96,7 +96,7 @@ static int grow(double **a, int old, int n, double fill)
 int aero_vortex_set_count(aero_vortex *m, int n)
 {
     int old = m->n;
-    if (n < 1 || n > AERO_VORTEX_MAX_SOURCES)
+    if (n < AERO_VORTEX_MIN_SOURCES || n > AERO_VORTEX_MAX_SOURCES)
         return -1;
     if (n > old) {
         if (grow(&m->pos, old, n, 0.0) || grow(&m->speed, old, n, 0.0) ||
@@ -125,7 +125,7 @@ int aero_vortex_set_speeds(aero_vortex *m, const double *u,
     if (count < 1 || count > m->n)
         return -1;
     for (int i = 0; i < count; i++)
-        if (!(u[i] >= 0.0 && u[i] <= AERO_MACH_LIMIT * AERO_C0))
+        if (!(u[i] >= AERO_VORTEX_SPEED_MIN && u[i] <= AERO_VORTEX_SPEED_MAX))
             return -1;
     for (int i = 0; i < count; i++)
         m->speed_target[i] = u[i];
@@ -171,7 +171,7 @@ int aero_vortex_set_gain_db(aero_vortex *m, double db)
 
 int aero_vortex_set_clip(aero_vortex *m, double pa)
 {
-    if (!(pa >= 0.0 && pa <= AERO_VORTEX_CLIP_MAX))
+    if (!(pa >= AERO_VORTEX_CLIP_MIN && pa <= AERO_VORTEX_CLIP_MAX))
         return -1;
     m->clip = pa;
     return 0;
@@ -189,7 +189,8 @@ int aero_vortex_set_ramp_ms(aero_vortex *m, double ms)
 
 int aero_vortex_set_falloff(aero_vortex *m, int exponent)
 {
-    if (exponent != 1 && exponent != 3)
+    if (exponent != AERO_VORTEX_FALLOFF_MIN &&
+        exponent != AERO_VORTEX_FALLOFF_MAX)
         return -1;
     m->falloff = exponent;
     return 0;

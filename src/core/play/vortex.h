@@ -43,11 +43,19 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#define AERO_VORTEX_MIN_SOURCES 1
 #define AERO_VORTEX_MAX_SOURCES 4096
 /* its own gain range reaches higher than AERO_GAIN_DB_MAX (aero_ranges.h),
    the microphone limit, Pa */
 #define AERO_VORTEX_GAIN_DB_MAX 200.0
+#define AERO_VORTEX_CLIP_MIN 0.0 /* 0: off */
 #define AERO_VORTEX_CLIP_MAX 1e6
+/* the falloff exponent: 1 (p ~ 1/r) or 3 (1/r^3), nothing between */
+#define AERO_VORTEX_FALLOFF_MIN 1
+#define AERO_VORTEX_FALLOFF_MAX 3
+/* source speeds, m/s: up to Mach 0.3 */
+#define AERO_VORTEX_SPEED_MIN 0.0
+#define AERO_VORTEX_SPEED_MAX (AERO_MACH_LIMIT * AERO_C0)
 /* defaults (gain and ramp: aero_ranges.h; combustion noise:
    combustion_noise.h) */
 #define AERO_VORTEX_SOURCES_DEFAULT 1

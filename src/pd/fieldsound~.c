@@ -213,7 +213,7 @@ static int fieldsound_tilde_process(void *obj, const float *in,
 static void fieldsound_tilde_dsp(t_fieldsound_tilde *x, t_signal **sp)
 {
     if (aero_fieldsound_set_sample_rate(&x->x_core, sp[0]->s_sr))
-        pd_error(x, OBJ ": bad sample rate %g", sp[0]->s_sr);
+        aero_pd_rate_failed(&x->x_base, sp[0]->s_sr);
     aero_pd_dsp(&x->x_base, sp, 0, fieldsound_tilde_process);
 }
 
@@ -229,17 +229,19 @@ static void fieldsound_tilde_open(t_fieldsound_tilde *x, t_symbol *dir)
 static void fieldsound_tilde_demo(t_fieldsound_tilde *x, t_symbol *s,
                                   int argc, t_atom *argv)
 {
-    int size = 32;
+    int size = AERO_FIELD_DEMO_SIZE_DEFAULT;
     (void)s;
     if (argc >= 1) {
         if (argv[0].a_type != A_FLOAT ||
-            aero_pd_whole(atom_getfloat(argv), 4, 128, &size)) {
-            /* the demo still runs, at 32^3: not "flag -demo ignored" */
+            aero_pd_whole_of(&x->x_base, "demo", atom_getfloat(argv),
+                             &size)) {
+            /* the demo still runs, at its default size: not "flag -demo
+               ignored" */
             const char *flag = x->x_base.flag;
             x->x_base.flag = NULL;
             aero_pd_refused(&x->x_base, "demo", atom_getfloat(argv));
             x->x_base.flag = flag;
-            size = 32;
+            size = AERO_FIELD_DEMO_SIZE_DEFAULT;
         }
     }
     x->x_demo_size = size;
@@ -284,80 +286,56 @@ AERO_PD_SETTER(fieldsound_tilde, t_fieldsound_tilde, gain, x_core,
 AERO_PD_SETTER(fieldsound_tilde, t_fieldsound_tilde, ramp, x_core,
                aero_fieldsound_set_ramp_ms)
 
-/* a changed parameter: check it, then preprocess again */
-static void fieldsound_tilde_reparam(t_fieldsound_tilde *x,
-                                     const aero_field_params *p)
+/* A volume parameter set (the core's setter accepted it): preprocess
+   again. The setters below take the object itself (its first member, as
+   Pd hands it) for AERO_PD_SETTER, and refuse with the params unchanged. */
+static int fieldsound_tilde_reparam(t_fieldsound_tilde *x, int rc)
 {
-    char err[256];
-    if (aero_field_params_check(p, err, sizeof err)) {
-        pd_error(x, OBJ ": %s: keeping the %s setting", err,
-                 x->x_creating ? "default" : "old");
-        return;
-    }
-    x->x_par = *p;
-    if (!x->x_creating && (x->x_dir || x->x_demo_size > 0))
+    if (!rc && !x->x_creating && (x->x_dir || x->x_demo_size > 0))
         fieldsound_tilde_prepare(x);
+    return rc;
 }
+
+#define FIELDSOUND_PARAM(msg, type, setter)                                \
+    static int fieldsound_tilde_set_##msg(t_object *o, type v)             \
+    {                                                                      \
+        t_fieldsound_tilde *x = (t_fieldsound_tilde *)o;                   \
+        return fieldsound_tilde_reparam(x, setter(&x->x_par, v));          \
+    }
+FIELDSOUND_PARAM(zero, double, aero_field_params_set_zero)
+FIELDSOUND_PARAM(vscale, double, aero_field_params_set_vscale)
+FIELDSOUND_PARAM(log, int, aero_field_params_set_log)
+FIELDSOUND_PARAM(velocity, int, aero_field_params_set_velocity)
+
+AERO_PD_SETTER(fieldsound_tilde, t_fieldsound_tilde, zero, x_obj,
+               fieldsound_tilde_set_zero)
+AERO_PD_SETTER(fieldsound_tilde, t_fieldsound_tilde, vscale, x_obj,
+               fieldsound_tilde_set_vscale)
+AERO_PD_SETTER_WHOLE(fieldsound_tilde, t_fieldsound_tilde, log, x_obj,
+                     fieldsound_tilde_set_log)
+AERO_PD_SETTER_WHOLE(fieldsound_tilde, t_fieldsound_tilde, velocity, x_obj,
+                     fieldsound_tilde_set_velocity)
 
 static void fieldsound_tilde_threshold(t_fieldsound_tilde *x, t_symbol *s,
                                        int argc, t_atom *argv)
 {
     double v[3];
-    aero_field_params p = x->x_par;
     if (aero_pd_floats(x, OBJ, s->s_name, argc, argv, 3, v))
         return;
-    for (int t = 0; t < 3; t++)
-        p.threshold[t] = v[t];
-    fieldsound_tilde_reparam(x, &p);
+    if (fieldsound_tilde_reparam(
+            x, aero_field_params_set_threshold(&x->x_par, v)))
+        aero_pd_refused_list(&x->x_base, "threshold");
 }
 
 static void fieldsound_tilde_map(t_fieldsound_tilde *x, t_symbol *s,
                                  int argc, t_atom *argv)
 {
     double v[4];
-    aero_field_params p = x->x_par;
     if (aero_pd_floats(x, OBJ, s->s_name, argc, argv, 4, v))
         return;
-    p.in_lo = v[0], p.in_hi = v[1], p.rho_lo = v[2], p.rho_hi = v[3];
-    fieldsound_tilde_reparam(x, &p);
-}
-
-static void fieldsound_tilde_zero(t_fieldsound_tilde *x, t_floatarg f)
-{
-    aero_field_params p = x->x_par;
-    p.zero = f;
-    fieldsound_tilde_reparam(x, &p);
-}
-
-static void fieldsound_tilde_vscale(t_fieldsound_tilde *x, t_floatarg f)
-{
-    aero_field_params p = x->x_par;
-    p.vscale = f;
-    fieldsound_tilde_reparam(x, &p);
-}
-
-static void fieldsound_tilde_log(t_fieldsound_tilde *x, t_floatarg f)
-{
-    aero_field_params p = x->x_par;
-    int on;
-    if (aero_pd_whole_of(&x->x_base, "log", f, &on)) {
-        aero_pd_refused(&x->x_base, "log", f);
-        return;
-    }
-    p.log_input = on;
-    fieldsound_tilde_reparam(x, &p);
-}
-
-static void fieldsound_tilde_velocity(t_fieldsound_tilde *x, t_floatarg f)
-{
-    aero_field_params p = x->x_par;
-    int on;
-    if (aero_pd_whole_of(&x->x_base, "velocity", f, &on)) {
-        aero_pd_refused(&x->x_base, "velocity", f);
-        return;
-    }
-    p.use_velocity = on;
-    fieldsound_tilde_reparam(x, &p);
+    if (fieldsound_tilde_reparam(
+            x, aero_field_params_set_map(&x->x_par, v[0], v[1], v[2], v[3])))
+        aero_pd_refused_list(&x->x_base, "map");
 }
 
 /* --- creation --------------------------------------------------------- */
@@ -372,19 +350,31 @@ static const aero_pd_method fieldsound_tilde_methods[] = {
      AERO_PD_GAIN},
     {"ramp", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_ramp, 0,
      AERO_PD_RAMP},
-    /* the volume's parameters: aero_field_params_check words refusals */
+    /* the volume's parameters (field_prepare.h), each preprocessed again */
     {"threshold", AERO_PD_LIST, 3, (t_method)fieldsound_tilde_threshold, 0,
-     AERO_PD_NO_RULE},
-    {"map", AERO_PD_LIST, 4, (t_method)fieldsound_tilde_map, 0, AERO_PD_NO_RULE},
-    {"zero", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_zero, 0, AERO_PD_NO_RULE},
-    {"vscale", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_vscale, 0, AERO_PD_NO_RULE},
+     AERO_PD_RANGE_NOTE(AERO_FIELD_THRESHOLD_MIN, AERO_FIELD_THRESHOLD_MAX,
+                        NULL, "monopole kg/m^3/s, dipole and quadrupole "
+                        "kg/m^3/s^2, each above the minimum")},
+    {"map", AERO_PD_LIST, 4, (t_method)fieldsound_tilde_map, 0,
+     AERO_PD_RANGE_NOTE(AERO_FIELD_RHO_MIN, AERO_FIELD_RHO_MAX, "kg/m^3",
+                        "in_lo in_hi rho_lo rho_hi: a finite input range, "
+                        "not empty, to densities in this range")},
+    {"zero", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_zero, 0,
+     AERO_PD_RANGE_NOTE_DEF(AERO_FIELD_ZERO_MIN, AERO_FIELD_ZERO_MAX,
+                            AERO_FIELD_ZERO_DEFAULT, NULL,
+                            "of each threshold")},
+    {"vscale", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_vscale, 0,
+     AERO_PD_RANGE_DEF(-AERO_FIELD_VSCALE_MAX, AERO_FIELD_VSCALE_MAX,
+                       AERO_FIELD_VSCALE_DEFAULT, "m/s per kg/m^4")},
     {"log", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_log, 0,
-     AERO_PD_RANGE_NOTE(0, 1, NULL, "0 off, 1 on")},
+     AERO_PD_ON_OFF(AERO_FIELD_LOG_DEFAULT)},
     {"velocity", AERO_PD_FLOAT, 0, (t_method)fieldsound_tilde_velocity, 0,
-     AERO_PD_RANGE_NOTE(0, 1, NULL, "0 off, 1 on")},
+     AERO_PD_ON_OFF(AERO_FIELD_VELOCITY_DEFAULT)},
     {"demo", AERO_PD_LIST, 1, (t_method)fieldsound_tilde_demo, 0,
-     AERO_PD_RANGE_NOTE(4, 128, "vertices", "a whole number; the demo runs "
-                        "at 32 vertices")},
+     AERO_PD_RANGE_NOTE(AERO_FIELD_DEMO_SIZE_MIN, AERO_FIELD_DEMO_SIZE_MAX,
+                        "vertices", "a whole number; the demo runs at "
+                        AERO_PD_STR(AERO_FIELD_DEMO_SIZE_DEFAULT)
+                        " vertices")},
     {"open", AERO_PD_SYMBOL, 0, (t_method)fieldsound_tilde_open,
      AERO_PD_MESSAGE_ONLY, AERO_PD_NO_RULE},
     {"play", AERO_PD_BANG, 0, (t_method)fieldsound_tilde_play,

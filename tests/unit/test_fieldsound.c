@@ -575,4 +575,49 @@ UNIT_TEST(init_contract)
     aero_fieldsound_free(&r);
 }
 
-UNIT_MAIN(UNIT_CASE(format), UNIT_CASE(monopole), UNIT_CASE(reach), UNIT_CASE(classification), UNIT_CASE(demo), UNIT_CASE(multi_instance), UNIT_CASE(init_contract))
+/* the volume parameters' setters (the object contract): 0 within the
+   named ranges, -1 outside with the parameters unchanged, and what they
+   accept is what aero_field_params_check accepts */
+UNIT_TEST(param_setters)
+{
+    aero_field_params p, before;
+    const double good_t[3] = {1, 2, AERO_FIELD_THRESHOLD_MAX};
+    const double bad_t[3][3] = {{AERO_FIELD_THRESHOLD_MIN, 1, 1},
+                                {1, NAN, 1},
+                                {1, 1, AERO_FIELD_THRESHOLD_MAX * 2}};
+    int kept = 1, ok;
+    aero_field_params_default(&p);
+    before = p;
+    for (int k = 0; k < 3; k++)
+        kept &= aero_field_params_set_threshold(&p, bad_t[k]) == -1;
+    kept &= aero_field_params_set_map(&p, 1, 1, 0, 1) == -1;
+    kept &= aero_field_params_set_map(&p, 0, INFINITY, 0, 1) == -1;
+    kept &= aero_field_params_set_map(&p, 0, 1, AERO_FIELD_RHO_MIN - 1,
+                                      1) == -1;
+    kept &= aero_field_params_set_map(&p, 0, 1, 0,
+                                      AERO_FIELD_RHO_MAX * 2) == -1;
+    kept &= aero_field_params_set_zero(&p, AERO_FIELD_ZERO_MAX + 1) == -1;
+    kept &= aero_field_params_set_zero(&p, NAN) == -1;
+    kept &= aero_field_params_set_vscale(&p, -2 * AERO_FIELD_VSCALE_MAX)
+        == -1;
+    kept &= aero_field_params_set_vscale(&p, INFINITY) == -1;
+    kept &= aero_field_params_set_log(&p, 2) == -1;
+    kept &= aero_field_params_set_velocity(&p, -1) == -1;
+    UNIT_CHECK(kept && !memcmp(&p, &before, sizeof p),
+               "out-of-range values refused (-1), the parameters unchanged");
+    ok = !aero_field_params_set_threshold(&p, good_t) &&
+        !aero_field_params_set_map(&p, 5, -5, AERO_FIELD_RHO_MAX,
+                                   AERO_FIELD_RHO_MIN) &&
+        !aero_field_params_set_zero(&p, AERO_FIELD_ZERO_MIN) &&
+        !aero_field_params_set_vscale(&p, -AERO_FIELD_VSCALE_MAX) &&
+        !aero_field_params_set_log(&p, 1) &&
+        !aero_field_params_set_velocity(&p, 0);
+    UNIT_CHECK(ok && p.threshold[2] == AERO_FIELD_THRESHOLD_MAX &&
+                   p.in_lo == 5 && p.rho_hi == AERO_FIELD_RHO_MIN &&
+                   p.zero == AERO_FIELD_ZERO_MIN && p.log_input == 1 &&
+                   p.use_velocity == 0 &&
+                   !aero_field_params_check(&p, err, sizeof err),
+               "values at the bounds accepted, and check agrees");
+}
+
+UNIT_MAIN(UNIT_CASE(format), UNIT_CASE(monopole), UNIT_CASE(reach), UNIT_CASE(classification), UNIT_CASE(demo), UNIT_CASE(multi_instance), UNIT_CASE(init_contract), UNIT_CASE(param_setters))

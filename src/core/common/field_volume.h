@@ -72,6 +72,11 @@ int aero_volume_write_frame(const aero_volume_info *v, int k,
  * `size`^3 vertices, a shell of compressed gas expanding at `shell_speed`
  * and thinning out, a hot core that decays, and turbulence (a sum of
  * random Fourier modes drifting in time, seeded) riding on the shell. */
+/* its size a host offers, vertices along an edge */
+#define AERO_FIELD_DEMO_SIZE_MIN 4
+#define AERO_FIELD_DEMO_SIZE_MAX 128
+#define AERO_FIELD_DEMO_SIZE_DEFAULT 32
+
 typedef struct aero_field_demo {
     int size, frames;
     double spacing, rate;

@@ -15,43 +15,117 @@ void aero_field_params_default(aero_field_params *p)
 {
     /* ranges, velocity, thresholds (monopole, dipole, quadrupole), ~0 */
     *p = (aero_field_params){
-        .in_lo = 0, .in_hi = 1, .rho_lo = 0, .rho_hi = 1, .log_input = 0,
-        .vscale = 1, .use_velocity = 1, .threshold = {40, 2e5, 2e5},
-        .zero = 1};
+        .in_lo = 0, .in_hi = 1, .rho_lo = 0, .rho_hi = 1,
+        .log_input = AERO_FIELD_LOG_DEFAULT,
+        .vscale = AERO_FIELD_VSCALE_DEFAULT,
+        .use_velocity = AERO_FIELD_VELOCITY_DEFAULT,
+        .threshold = {40, 2e5, 2e5}, .zero = AERO_FIELD_ZERO_DEFAULT};
+}
+
+/* each range once, for the setters and for check */
+static int span_ok(double lo, double hi)
+{
+    return aero_is_finite(lo) && aero_is_finite(hi) && hi != lo &&
+        fabs(hi - lo) >= AERO_FIELD_SPAN_MIN;
+}
+
+static int rho_ok(double rho)
+{
+    return rho >= AERO_FIELD_RHO_MIN && rho <= AERO_FIELD_RHO_MAX;
+}
+
+static int vscale_ok(double k)
+{
+    return aero_is_finite(k) && fabs(k) <= AERO_FIELD_VSCALE_MAX;
+}
+
+static int threshold_ok(double t)
+{
+    return t > AERO_FIELD_THRESHOLD_MIN && t <= AERO_FIELD_THRESHOLD_MAX;
+}
+
+static int zero_ok(double z)
+{
+    return z >= AERO_FIELD_ZERO_MIN && z <= AERO_FIELD_ZERO_MAX;
 }
 
 int aero_field_params_check(const aero_field_params *p, char *err,
                             size_t errlen)
 {
-    if (!aero_is_finite(p->in_lo) || !aero_is_finite(p->in_hi) ||
-        p->in_hi == p->in_lo || fabs(p->in_hi - p->in_lo) < 1e-30) {
+    if (!span_ok(p->in_lo, p->in_hi)) {
         aero_say(err, errlen, "input range %g..%g is empty", p->in_lo,
                  p->in_hi);
         return -1;
     }
-    if (!aero_is_finite(p->rho_lo) || !aero_is_finite(p->rho_hi) ||
-        p->rho_lo < 0 || p->rho_hi < 0 || p->rho_hi > 1e6 ||
-        p->rho_lo > 1e6) {
-        aero_say(err, errlen, "density range %g..%g kg/m^3 must lie in 0..1e6",
-                 p->rho_lo, p->rho_hi);
+    if (!rho_ok(p->rho_lo) || !rho_ok(p->rho_hi)) {
+        aero_say(err, errlen, "density range %g..%g kg/m^3 must lie in "
+                 "%g..%g", p->rho_lo, p->rho_hi, AERO_FIELD_RHO_MIN,
+                 AERO_FIELD_RHO_MAX);
         return -1;
     }
-    if (!aero_is_finite(p->vscale) || fabs(p->vscale) > 1e6) {
-        aero_say(err, errlen, "velocity scale %g out of range (-1e6..1e6)",
-                 p->vscale);
+    if (!vscale_ok(p->vscale)) {
+        aero_say(err, errlen, "velocity scale %g out of range (%g..%g)",
+                 p->vscale, -AERO_FIELD_VSCALE_MAX, AERO_FIELD_VSCALE_MAX);
         return -1;
     }
     for (int t = 0; t < 3; t++)
-        if (!(p->threshold[t] > 0) || p->threshold[t] > 1e30) {
-            aero_say(err, errlen, "%s threshold %g must be > 0",
+        if (!threshold_ok(p->threshold[t])) {
+            aero_say(err, errlen, "%s threshold %g must be > %g",
                      t == 0 ? "monopole" : t == 1 ? "dipole" : "quadrupole",
-                     p->threshold[t]);
+                     p->threshold[t], AERO_FIELD_THRESHOLD_MIN);
             return -1;
         }
-    if (!(p->zero >= 0 && p->zero <= 1)) {
-        aero_say(err, errlen, "zero fraction %g out of range (0..1)", p->zero);
+    if (!zero_ok(p->zero)) {
+        aero_say(err, errlen, "zero fraction %g out of range (%g..%g)",
+                 p->zero, AERO_FIELD_ZERO_MIN, AERO_FIELD_ZERO_MAX);
         return -1;
     }
+    return 0;
+}
+
+int aero_field_params_set_threshold(aero_field_params *p, const double t[3])
+{
+    if (!threshold_ok(t[0]) || !threshold_ok(t[1]) || !threshold_ok(t[2]))
+        return -1;
+    memcpy(p->threshold, t, sizeof p->threshold);
+    return 0;
+}
+
+int aero_field_params_set_map(aero_field_params *p, double in_lo,
+                              double in_hi, double rho_lo, double rho_hi)
+{
+    if (!span_ok(in_lo, in_hi) || !rho_ok(rho_lo) || !rho_ok(rho_hi))
+        return -1;
+    p->in_lo = in_lo, p->in_hi = in_hi;
+    p->rho_lo = rho_lo, p->rho_hi = rho_hi;
+    return 0;
+}
+
+int aero_field_params_set_zero(aero_field_params *p, double zero)
+{
+    return aero_set_within(&p->zero, zero, AERO_FIELD_ZERO_MIN,
+                           AERO_FIELD_ZERO_MAX);
+}
+
+int aero_field_params_set_vscale(aero_field_params *p, double vscale)
+{
+    return aero_set_within(&p->vscale, vscale, -AERO_FIELD_VSCALE_MAX,
+                           AERO_FIELD_VSCALE_MAX);
+}
+
+int aero_field_params_set_log(aero_field_params *p, int on)
+{
+    if (on != 0 && on != 1)
+        return -1;
+    p->log_input = on;
+    return 0;
+}
+
+int aero_field_params_set_velocity(aero_field_params *p, int on)
+{
+    if (on != 0 && on != 1)
+        return -1;
+    p->use_velocity = on;
     return 0;
 }
 

@@ -73,12 +73,40 @@ typedef struct aero_field_params {
     double zero;            /* "~0" = below zero * threshold, 0..1 */
 } aero_field_params;
 
+/* ranges of the settings (the setters below and aero_field_params_check
+   hold them) */
+#define AERO_FIELD_SPAN_MIN 1e-30     /* the input range's least width */
+#define AERO_FIELD_RHO_MIN 0.0        /* mapped density, kg/m^3 */
+#define AERO_FIELD_RHO_MAX 1e6
+#define AERO_FIELD_VSCALE_MAX 1e6     /* either way, m/s per kg/m^4 */
+#define AERO_FIELD_THRESHOLD_MIN 0.0  /* excluded: a threshold is > 0 */
+#define AERO_FIELD_THRESHOLD_MAX 1e30
+#define AERO_FIELD_ZERO_MIN 0.0
+#define AERO_FIELD_ZERO_MAX 1.0
+/* defaults of the numbers a patch sets one at a time */
+#define AERO_FIELD_VSCALE_DEFAULT 1.0
+#define AERO_FIELD_ZERO_DEFAULT 1.0
+#define AERO_FIELD_LOG_DEFAULT 0
+#define AERO_FIELD_VELOCITY_DEFAULT 1
+
 /* Identity mapping (input 0..1 -> 0..1 kg/m^3), vscale 1, velocity fields
  * used, thresholds 40, 2e5, 2e5 (suited to the demo burst), zero 1. */
 void aero_field_params_default(aero_field_params *p);
 /* 0 if usable, else -1 and a message (ranges, thresholds > 0, ...) */
 int aero_field_params_check(const aero_field_params *p, char *err,
                             size_t errlen);
+/* The setters: 0, or -1 with p unchanged when the values are out of the
+ * ranges above. map: the input range in_lo..in_hi (not empty, either
+ * order) to the density range rho_lo..rho_hi; threshold: monopole, dipole,
+ * quadrupole, each in (AERO_FIELD_THRESHOLD_MIN, AERO_FIELD_THRESHOLD_MAX];
+ * log and velocity: 0 or 1. */
+int aero_field_params_set_threshold(aero_field_params *p, const double t[3]);
+int aero_field_params_set_map(aero_field_params *p, double in_lo,
+                              double in_hi, double rho_lo, double rho_hi);
+int aero_field_params_set_zero(aero_field_params *p, double zero);
+int aero_field_params_set_vscale(aero_field_params *p, double vscale);
+int aero_field_params_set_log(aero_field_params *p, int on);
+int aero_field_params_set_velocity(aero_field_params *p, int on);
 
 typedef struct aero_field_sources {
     int count;             /* active vertices (a source in some frame) */

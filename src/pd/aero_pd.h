@@ -91,7 +91,8 @@ typedef struct {
     AERO_PD_RANGE_DEF(AERO_GAIN_DB_MIN, AERO_GAIN_DB_MAX,                  \
                       AERO_GAIN_DB_DEFAULT, "dB")
 #define AERO_PD_RAMP                                                       \
-    AERO_PD_RANGE_DEF(0, AERO_RAMP_MS_MAX, AERO_RAMP_MS_DEFAULT, "ms")
+    AERO_PD_RANGE_DEF(AERO_RAMP_MS_MIN, AERO_RAMP_MS_MAX,                  \
+                      AERO_RAMP_MS_DEFAULT, "ms")
 /* a switch: 0 off, 1 on, starting at def */
 #define AERO_PD_ON_OFF(def)                                                \
     AERO_PD_RANGE_NOTE_DEF(0, 1, (def), NULL, "0 off, 1 on")

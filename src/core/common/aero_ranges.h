@@ -7,7 +7,8 @@
 
 #define AERO_GAIN_DB_MIN -200.0
 #define AERO_GAIN_DB_MAX 120.0
-#define AERO_RAMP_MS_MAX 600000.0 /* ramps from 0 ms */
+#define AERO_RAMP_MS_MIN 0.0 /* 0: a new value at once */
+#define AERO_RAMP_MS_MAX 600000.0
 /* the sample rate a player takes when the host's is not usable, until
    the host gives one (Pd: when the DSP starts), Hz */
 #define AERO_SAMPLE_RATE_FALLBACK 44100.0

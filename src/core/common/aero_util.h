@@ -280,10 +280,10 @@ static inline int aero_set_gain_db(double *gain, double db)
 }
 
 /* the ramp setters' range: *samples = ms at `rate` for ms within
-   [0, AERO_RAMP_MS_MAX]: 0; else -1 (kept) */
+   [AERO_RAMP_MS_MIN, AERO_RAMP_MS_MAX]: 0; else -1 (kept) */
 static inline int aero_set_ramp_ms(double *samples, double ms, double rate)
 {
-    if (aero_set_within(&ms, ms, 0.0, AERO_RAMP_MS_MAX))
+    if (aero_set_within(&ms, ms, AERO_RAMP_MS_MIN, AERO_RAMP_MS_MAX))
         return -1;
     *samples = ms * 0.001 * rate;
     return 0;

@@ -122,7 +122,8 @@ int aero_aeolian_set_gain_db(aero_aeolian *a, double db)
 
 int aero_aeolian_set_ramp_ms(aero_aeolian *a, double ms)
 {
-    if (!aero_is_finite(ms) || ms < 0.0 || ms > AERO_RAMP_MS_MAX)
+    if (!aero_is_finite(ms) || ms < AERO_RAMP_MS_MIN ||
+        ms > AERO_RAMP_MS_MAX)
         return -1;
     a->ramp_ms = ms; /* for the glides that start from now on */
     return 0;

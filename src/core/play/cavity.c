@@ -126,7 +126,8 @@ int aero_cavity_set_gain_db(aero_cavity *m, double db)
 
 int aero_cavity_set_ramp_ms(aero_cavity *m, double ms)
 {
-    if (!aero_is_finite(ms) || ms < 0.0 || ms > AERO_RAMP_MS_MAX)
+    if (!aero_is_finite(ms) || ms < AERO_RAMP_MS_MIN ||
+        ms > AERO_RAMP_MS_MAX)
         return -1;
     m->ramp_samples = fmax(1.0, ms * 0.001 * m->sample_rate);
     return 0;

@@ -98,7 +98,7 @@ int aero_fieldsound_place_ears(aero_fieldsound *r, const aero_ears *e)
 
 int aero_fieldsound_set_ramp_ms(aero_fieldsound *r, double ms)
 {
-    if (!(ms >= 0 && ms <= AERO_RAMP_MS_MAX))
+    if (!(ms >= AERO_RAMP_MS_MIN && ms <= AERO_RAMP_MS_MAX))
         return -1;
     r->ramp_ms = ms;
     return 0;

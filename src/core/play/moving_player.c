@@ -90,7 +90,7 @@ int aero_moving_player_set_gain_db(aero_moving_player *p, double db)
 
 int aero_moving_player_set_ramp_ms(aero_moving_player *p, double ms)
 {
-    if (!(ms >= 0.0 && ms <= AERO_RAMP_MS_MAX))
+    if (!(ms >= AERO_RAMP_MS_MIN && ms <= AERO_RAMP_MS_MAX))
         return -1;
     p->ramp_samples = ms * 0.001 * p->sample_rate;
     return 0;

@@ -179,7 +179,7 @@ int aero_vortex_set_clip(aero_vortex *m, double pa)
 
 int aero_vortex_set_ramp_ms(aero_vortex *m, double ms)
 {
-    if (!(ms >= 0.0 && ms <= AERO_RAMP_MS_MAX))
+    if (!(ms >= AERO_RAMP_MS_MIN && ms <= AERO_RAMP_MS_MAX))
         return -1;
     m->ramp_samples = ms * 0.001 * m->sample_rate;
     if (m->ramp_samples < 1.0)

@@ -124,6 +124,9 @@ AERO_PD_SETTER(rotor_tilde, t_rotor_tilde, gain, x_core,
 AERO_PD_SETTER(rotor_tilde, t_rotor_tilde, ramp, x_core,
                aero_rotor_set_ramp_ms)
 
+AERO_PD_SEED_SETTER(rotor_tilde, t_rotor_tilde, x_core,
+                    aero_rotor_set_seed)
+
 /* --- the blade's table (chord and twist per radius) ----------------------- */
 
 static int rotor_tilde_read(void *arg)
@@ -265,6 +268,7 @@ static const aero_pd_method rotor_tilde_methods[] = {
                             "the blades' self-noise (Brooks et al. 1989)")},
     {"gain", AERO_PD_FLOAT, 0, (t_method)rotor_tilde_gain, 0, AERO_PD_GAIN},
     {"ramp", AERO_PD_FLOAT, 0, (t_method)rotor_tilde_ramp, 0, AERO_PD_RAMP},
+    {"seed", AERO_PD_FLOAT, 0, (t_method)rotor_tilde_seed, 0, AERO_PD_SEED},
     {"listener", AERO_PD_LIST, 3, (t_method)rotor_tilde_listener, 0,
      AERO_PD_NO_RULE},
     {"ears", AERO_PD_LIST, 6, (t_method)rotor_tilde_listener, 0,

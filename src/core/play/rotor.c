@@ -626,6 +626,16 @@ static double octave_hz(int j)
    small), and the inverse of their leakage: leak[j][i] the
    part of band-pass i's output power (white input) inside octave j, so
    that gains solving leak g^2 = P give each octave its power P_j */
+static void noise_bank(aero_rotor *r);
+
+int aero_rotor_set_seed(aero_rotor *r, uint32_t seed)
+{
+    r->base.rng = seed ? seed : 1u;
+    for (int i = 0; i < AERO_ROTOR_LANES; i++)
+        r->noise.rng[i] = aero_run_seed(r->base.rng, i) | 1u;
+    return 0;
+}
+
 static void noise_bank(aero_rotor *r)
 {
     aero_rotor_noise *z = &r->noise;

@@ -213,6 +213,10 @@ int aero_rotor_init(aero_rotor *r, double sample_rate, int n_ears,
                     uint32_t seed);
 void aero_rotor_free(aero_rotor *r);
 
+/* the seed of the blades' broadband noise (0 is taken as 1): the same seed,
+   the same sound; always 0 */
+int aero_rotor_set_seed(aero_rotor *r, uint32_t seed);
+
 /* setters: 0 accepted, -1 invalid (the previous value stays) */
 int aero_rotor_set_sample_rate(aero_rotor *r, double sr);
 int aero_rotor_set_blades(aero_rotor *r, double blades);

@@ -174,17 +174,19 @@ void aerotex_farm_keep(aerotex_job *j, int k, const void *task,
     }
 }
 
-void aerotex_farm_save_state(void *ctx, const void *state, size_t bytes)
+/* a solver state of task t to `path` in the checkpoint folder: written
+   under a temporary name and renamed, so a killed writer leaves the old
+   state or none, never half of one */
+static void write_state(const aerotex_task *t, const char *path,
+                        const void *state, size_t bytes)
 {
-    aerotex_task *t = ctx;
-    char path[4200], tmp[4300];
+    char dir[4200], tmp[4300];
     ckpt_header h = header(t->job, t->index, bytes, 0);
     FILE *f;
     int bad;
-    ckpt_path(path, sizeof path, t->job, -1);
-    if (aerotex_mkdir(path) && errno != EEXIST)
+    ckpt_path(dir, sizeof dir, t->job, -1);
+    if (aerotex_mkdir(dir) && errno != EEXIST)
         return;
-    state_path(path, sizeof path, t->job, t->index);
     snprintf(tmp, sizeof tmp, "%s.%ld.tmp", path, (long)getpid());
     if (!(f = fopen(tmp, "wb")))
         return;
@@ -193,6 +195,14 @@ void aerotex_farm_save_state(void *ctx, const void *state, size_t bytes)
     bad |= fclose(f) != 0;
     if (bad || rename(tmp, path))
         remove(tmp);
+}
+
+void aerotex_farm_save_state(void *ctx, const void *state, size_t bytes)
+{
+    aerotex_task *t = ctx;
+    char path[4200];
+    state_path(path, sizeof path, t->job, t->index);
+    write_state(t, path, state, bytes);
 }
 
 int aerotex_farm_load_state(void *ctx, void *state, size_t bytes)
@@ -227,22 +237,9 @@ void aerotex_farm_save_slab_state(void *ctx, const void *state,
                                   size_t bytes)
 {
     aerotex_task *t = ctx;
-    char path[4200], tmp[4300];
-    ckpt_header h = header(t->job, t->index, bytes, 0);
-    FILE *f;
-    int bad;
-    ckpt_path(path, sizeof path, t->job, -1);
-    if (aerotex_mkdir(path) && errno != EEXIST)
-        return;
+    char path[4200];
     slab_state_path(path, sizeof path, t->job, t->index);
-    snprintf(tmp, sizeof tmp, "%s.%ld.tmp", path, (long)getpid());
-    if (!(f = fopen(tmp, "wb")))
-        return;
-    bad = fwrite(&h, sizeof h, 1, f) != 1 ||
-          fwrite(state, bytes, 1, f) != 1;
-    bad |= fclose(f) != 0;
-    if (bad || rename(tmp, path))
-        remove(tmp);
+    write_state(t, path, state, bytes);
 }
 
 int aerotex_farm_load_slab_state(void *ctx, void *state, size_t bytes)

@@ -85,6 +85,9 @@ F3_GATHER := $(shell $(CC) -mtune-ctrl=use_gather -x c -c -o /dev/null \
     /dev/null 2>/dev/null && echo -mtune-ctrl=use_gather)
 $(BUILD)/core/solve/flow3d.o: CORE_CFLAGS += -fno-trapping-math -fno-math-errno \
     $(F3_GATHER)
+# the same two for the rotor's self-noise envelope (rotor.c: its loop over
+# the strips, with square roots and floors, vectorises only with both)
+$(BUILD)/core/play/rotor.o: CORE_CFLAGS += -fno-trapping-math -fno-math-errno
 core.sources = $(sort $(wildcard src/core/*/*.c))
 core.objects = $(patsubst src/core/%.c,$(BUILD)/core/%.o,$(core.sources))
 core.lib = $(BUILD)/libaero_core.a

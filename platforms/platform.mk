@@ -148,8 +148,8 @@ LIBS = $(B)/libaero_core.a $(DEPS)/lib/libsndfile.a $(DEPS)/lib/libfftw3f.a \
 LINK ?= $(CC)
 EXT_LDFLAGS ?= -shared $(EXPORTS)
 
-# the same flow3d.c speed-up flags as the native build (Makefile)
-$(B)/core/solve/flow3d.o $(B)/core-omp/solve/flow3d.o: \
+# the same flow3d.c and rotor.c speed-up flags as the native build (Makefile)
+$(B)/core/solve/flow3d.o $(B)/core-omp/solve/flow3d.o $(B)/core/play/rotor.o: \
     CORE_CFLAGS += -fno-trapping-math -fno-math-errno
 
 core.sources = $(sort $(wildcard src/core/*/*.c))

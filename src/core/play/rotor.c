@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "aero_air.h"
+#include "aero_lanes.h"
 #include "airfoil_noise.h"
 
 /* area of a NACA four-digit section: 0.685 t c (Abbott & von Doenhoff
@@ -774,6 +775,17 @@ static void noise_spectrum_make(aero_rotor *r, double w, double u)
     /* the lanes beyond the bands stay silent (zero gains and filters) */
 }
 
+/* cos and sin of the strips' angles of attack (ear_envelope's chords),
+   each time the spectrum's step changes */
+static void alpha_trig(aero_rotor *r)
+{
+    aero_rotor_noise *z = &r->noise;
+    for (int q = 0; q < r->strips; q++) {
+        z->cos_alpha[q] = cos(z->alpha[q]);
+        z->sin_alpha[q] = sin(z->alpha[q]);
+    }
+}
+
 /* the self-noise spectrum at angular speed w and axial inflow u: made at
    the nearest speed of a grid of ratio 1 + AERO_ROTOR_NOISE_TOLERANCE
    (its shape moves with log U: its frequencies are off by at most half a
@@ -790,8 +802,20 @@ static void noise_spectrum(aero_rotor *r, double w, double u)
         z->layout = r->layout;
         z->cached = z->next = z->have = 0;
     }
+    if (z->psi_blades != r->blades) { /* the envelope's azimuths */
+        const int B = r->blades;
+        for (int j = 0; j < AERO_ROTOR_AZIMUTHS; j++)
+            for (int b = 0; b < B; b++) {
+                double psi = TWO_PI * ((double)j / (B * AERO_ROTOR_AZIMUTHS) +
+                                       (double)b / B);
+                z->psi_cos[j * B + b] = cos(psi);
+                z->psi_sin[j * B + b] = sin(psi);
+            }
+        z->psi_blades = B;
+    }
     if (!(key > 1e-6)) { /* still: silent, not kept */
         noise_spectrum_make(r, w, u);
+        alpha_trig(r);
         z->scale = 1.0;
         z->have = 0;
         return;
@@ -809,9 +833,11 @@ static void noise_spectrum(aero_rotor *r, double w, double u)
             memcpy(z->power, z->cache_power[i], sizeof(z->power));
             memcpy(z->mach, z->cache_mach[i], sizeof(z->mach));
             memcpy(z->alpha, z->cache_alpha[i], sizeof(z->alpha));
+            alpha_trig(r);
             return;
         }
     noise_spectrum_make(r, w * f, u * f);
+    alpha_trig(r);
     int i = z->next;
     z->next = (z->next + 1) % AERO_ROTOR_SPECTRA;
     if (z->cached < AERO_ROTOR_SPECTRA)
@@ -905,7 +931,7 @@ static void ear_envelope(const aero_rotor *r, double omega, double u,
     for (int q = 0; q < r->strips; q++) {
         double wt = w * r->strip[q].r, W = hypot(wt, ud);
         double cf = W > 0.0 ? wt / W : 1.0, sf = W > 0.0 ? ud / W : 0.0;
-        double ca = cos(z->alpha[q]), sa = sin(z->alpha[q]);
+        double ca = z->cos_alpha[q], sa = z->sin_alpha[q];
         cws[q] = -ca * cf - sa * lift * sf;
         aws[q] = ca * sf - sa * lift * cf;
         if (r->has_blade) { /* the table's twist: the leading edge into
@@ -919,16 +945,20 @@ static void ear_envelope(const aero_rotor *r, double omega, double u,
         Rs[q] = r->strip[q].r;
     }
     for (int j = 0; j < NA; j++) {
-        double P = 0.0;
+        double P = 0.0, term[AERO_ROTOR_STRIPS_MAX];
         for (int b = 0; b < B; b++) {
-            double psi = TWO_PI * ((double)j / (B * NA) + (double)b / B);
-            double cp0 = cos(psi), sp0 = sin(psi);
+            /* psi = 2 pi (j / (B NA) + b / B) (noise_spectrum's table) */
+            const double cp0 = z->psi_cos[j * B + b];
+            const double sp0 = z->psi_sin[j * B + b];
             /* the ear in the disc's polar frame at psi: along the span
                and along the motion */
             double vr0 = cp0 * vp1 + sp0 * vp2;
             double vt0 = sense * (-sp0 * vp1 + cp0 * vp2);
-            /* branch-free over the strips (it vectorises): a strip at
-               the ear or silent adds 0 */
+            /* branch-free over the strips, each term to its own slot (it
+               vectorises; the terms are summed in order below, so the
+               sum is the same on every compiler): a strip at the ear or
+               silent adds 0. The floors as comparisons, not fmax (a
+               library call the loop cannot vectorise; the same values) */
             for (int q = 0; q < nq; q++) {
                 const double rq = Rs[q], M = Ms[q];
                 /* the retarded azimuth: turned back by Omega (d - d_hub)/c0
@@ -941,11 +971,13 @@ static void ear_envelope(const aero_rotor *r, double omega, double u,
                 double vr = ct1 * vr0 + st1 * vt0; /* psi turned by t */
                 double vt = ct1 * vt0 - st1 * vr0;
                 double y = vr - rq; /* from the strip, along the span */
-                double d2 = fmax(v2 - vr * vr + y * y, 1e-6);
+                double d2 = v2 - vr * vr + y * y;
+                d2 = d2 > 1e-6 ? d2 : 1e-6;
                 double vx = cws[q] * vt + aws[q] * vz;
                 double vn = cws[q] * vz - aws[q] * vt;
                 /* the distance off the span's line */
-                double h = sqrt(fmax(vx * vx + vn * vn, 1e-12));
+                double h2 = vx * vx + vn * vn;
+                double h = sqrt(h2 > 1e-12 ? h2 : 1e-12);
                 /* the half-plane's directivity about its edge (Ffowcs
                    Williams and Hall 1970): 2 sin^2(theta/2) of the
                    azimuth theta about the span from the wake, times
@@ -954,9 +986,11 @@ static void ear_envelope(const aero_rotor *r, double omega, double u,
                    of the angle from the chord, cos = vx / d */
                 double id = 1.0 / sqrt(d2);
                 double ct = vx * id, c1 = 1.0 + 0.2 * M * ct;
-                P += Ps[q] * (h - vx) * id /
-                     ((1.0 + M * ct) * c1 * c1 * d2);
+                term[q] = Ps[q] * (h - vx) * id /
+                          ((1.0 + M * ct) * c1 * c1 * d2);
             }
+            for (int q = 0; q < nq; q++)
+                P += term[q];
         }
         a[j] = r->noise_gain * sqrt(P);
     }
@@ -975,66 +1009,111 @@ static void ear_envelope(const aero_rotor *r, double omega, double u,
     }
 }
 
+/* lanes i0.. of the self-noise: the band-passes' coefficients and state,
+   four lanes to a SIMD register (aero_lanes.h), held in registers over a
+   chunk */
+typedef struct {
+    lane4 b0, a1, a2, g, x1, x2, y1, y2, u1, u2;
+    lane4u rng;
+} noise_regs;
+
+static inline void regs_load(const aero_rotor_noise *z, int i0,
+                             noise_regs *q)
+{
+    memcpy(&q->b0, z->b0 + i0, sizeof(lane4));
+    memcpy(&q->a1, z->a1 + i0, sizeof(lane4));
+    memcpy(&q->a2, z->a2 + i0, sizeof(lane4));
+    memcpy(&q->g, z->gain + i0, sizeof(lane4));
+    memcpy(&q->x1, z->x1 + i0, sizeof(lane4));
+    memcpy(&q->x2, z->x2 + i0, sizeof(lane4));
+    memcpy(&q->y1, z->y1 + i0, sizeof(lane4));
+    memcpy(&q->y2, z->y2 + i0, sizeof(lane4));
+    memcpy(&q->u1, z->u1 + i0, sizeof(lane4));
+    memcpy(&q->u2, z->u2 + i0, sizeof(lane4));
+    memcpy(&q->rng, z->rng + i0, sizeof(lane4u));
+}
+
+static inline void regs_store(aero_rotor_noise *z, int i0,
+                              const noise_regs *q)
+{
+    memcpy(z->x1 + i0, &q->x1, sizeof(lane4));
+    memcpy(z->x2 + i0, &q->x2, sizeof(lane4));
+    memcpy(z->y1 + i0, &q->y1, sizeof(lane4));
+    memcpy(z->y2 + i0, &q->y2, sizeof(lane4));
+    memcpy(z->u1 + i0, &q->u1, sizeof(lane4));
+    memcpy(z->u2 + i0, &q->u2, sizeof(lane4));
+    memcpy(z->rng + i0, &q->rng, sizeof(lane4u));
+}
+
+/* one sample of four lanes: the two band-pass stages fed white noise
+   (xorshift32 to [-1, 1), times sqrt 3: unit variance), weighted by the
+   gains: y = b0 (x - x2) - a1 y1 - a2 y2, and u of y the same */
+static inline lane4 regs_step(noise_regs *q)
+{
+    lane4 x = l4_mul(l4_splat(1.7320508f), l4_uniform(&q->rng));
+    lane4 y = l4_sub(l4_sub(l4_mul(q->b0, l4_sub(x, q->x2)),
+                            l4_mul(q->a1, q->y1)),
+                     l4_mul(q->a2, q->y2));
+    lane4 u = l4_sub(l4_sub(l4_mul(q->b0, l4_sub(y, q->y2)),
+                            l4_mul(q->a1, q->u1)),
+                     l4_mul(q->a2, q->u2));
+    q->x2 = q->x1;
+    q->x1 = x;
+    q->y2 = q->y1;
+    q->y1 = y;
+    q->u2 = q->u1;
+    q->u1 = u;
+    return l4_mul(q->g, u);
+}
+
+/* lanes i0..i0+3 (and i0+4..i0+7 when `eight`: their outputs added lane
+   by lane to the first four's, both recursions interleaved) over m
+   samples, into acc (set when `first`, else added) */
+static inline void noise_lanes(aero_rotor_noise *z, int i0, int eight,
+                               float (*acc)[4], int m, int first)
+{
+    noise_regs p, q;
+    regs_load(z, i0, &p);
+    if (eight)
+        regs_load(z, i0 + 4, &q);
+    for (int j = 0; j < m; j++) {
+        lane4 w = regs_step(&p);
+        if (eight)
+            w = l4_add(w, regs_step(&q));
+        if (!first) {
+            lane4 a;
+            memcpy(&a, acc[j], sizeof(a));
+            w = l4_add(a, w);
+        }
+        memcpy(acc[j], &w, sizeof(w));
+    }
+    regs_store(z, i0, &p);
+    if (eight)
+        regs_store(z, i0 + 4, &q);
+}
+
 /* m samples of the rotor's unit-power self-noise spectrum: each octave
    band-pass fed its own white noise (the bands overlap: one noise through
    all would add their outputs coherently where they overlap, and the
    powers the gains were solved for would not add), weighted by its gain.
-   The bands are lanes of one loop (independent: it vectorises) */
+   The lanes in use: the bands rounded up to four (at 44.1 and 48 kHz 8
+   of the 12; the lanes beyond are silent), four at a time; their sum in
+   a fixed order written out (the same on every compiler, no
+   reassociation): lanes i, i + 4, i + 8 into quarter i, then the
+   quarters pairwise */
+typedef char aero_rotor_lanes_are_12[AERO_ROTOR_LANES == 12 ? 1 : -1];
 static void noise_chunk(aero_rotor *r, float *out, int m)
 {
-    enum { L = AERO_ROTOR_LANES };
     aero_rotor_noise *z = &r->noise;
-    /* xorshift32 as a signed int, to unit variance: 2^-31 sqrt 3 */
-    const float amp = 1.7320508f / 2147483648.0f;
-    /* the lanes in locals: no aliasing with out, so the loop over the
-       lanes vectorises */
-    float b0[L], a1[L], a2[L], g[L], x1[L], x2[L], y1[L], y2[L], u1[L],
-        u2[L];
-    uint32_t rng[L];
-    memcpy(b0, z->b0, sizeof(b0));
-    memcpy(a1, z->a1, sizeof(a1));
-    memcpy(a2, z->a2, sizeof(a2));
-    memcpy(g, z->gain, sizeof(g));
-    memcpy(x1, z->x1, sizeof(x1));
-    memcpy(x2, z->x2, sizeof(x2));
-    memcpy(y1, z->y1, sizeof(y1));
-    memcpy(y2, z->y2, sizeof(y2));
-    memcpy(u1, z->u1, sizeof(u1));
-    memcpy(u2, z->u2, sizeof(u2));
-    memcpy(rng, z->rng, sizeof(rng));
-    /* the lanes in use: the bands rounded up to four (a SIMD register);
-       at 44.1 and 48 kHz 8 of the 12 (the lanes beyond are silent) */
-    const int n = (z->bands + 3) / 4 * 4 < L ? (z->bands + 3) / 4 * 4 : L;
-    for (int j = 0; j < m; j++) {
-        float lane[L], sum = 0.0f;
-        for (int i = 0; i < n; i++) {
-            uint32_t v = rng[i];
-            v ^= v << 13;
-            v ^= v >> 17;
-            v ^= v << 5;
-            rng[i] = v;
-            float x = amp * (float)(int32_t)v;
-            float y = b0[i] * (x - x2[i]) - a1[i] * y1[i] - a2[i] * y2[i];
-            float u = b0[i] * (y - y2[i]) - a1[i] * u1[i] - a2[i] * u2[i];
-            x2[i] = x1[i];
-            x1[i] = x;
-            y2[i] = y1[i];
-            y1[i] = y;
-            u2[i] = u1[i];
-            u1[i] = u;
-            lane[i] = g[i] * u;
-        }
-        for (int i = 0; i < n; i++) /* in order: no reassociation */
-            sum += lane[i];
-        out[j] = sum;
-    }
-    memcpy(z->x1, x1, sizeof(x1));
-    memcpy(z->x2, x2, sizeof(x2));
-    memcpy(z->y1, y1, sizeof(y1));
-    memcpy(z->y2, y2, sizeof(y2));
-    memcpy(z->u1, u1, sizeof(u1));
-    memcpy(z->u2, u2, sizeof(u2));
-    memcpy(z->rng, rng, sizeof(rng));
+    float acc[AERO_ROTOR_CHUNK][4];
+    if (z->bands > 4)
+        noise_lanes(z, 0, 1, acc, m, 1);
+    else
+        noise_lanes(z, 0, 0, acc, m, 1);
+    if (z->bands > 8)
+        noise_lanes(z, 8, 0, acc, m, 0);
+    for (int j = 0; j < m; j++)
+        out[j] = (acc[j][0] + acc[j][2]) + (acc[j][1] + acc[j][3]);
 }
 
 /* --- processing ---------------------------------------------------------------- */
@@ -1049,6 +1128,8 @@ static double ramp_after(aero_ramp *r, int m)
     return r->value;
 }
 
+typedef char aero_rotor_harmonics_by_4[AERO_ROTOR_HARMONICS_MAX % 4 == 0
+                                       ? 1 : -1];
 /* the tones of one ear over m samples: the coefficients and the delay
    glide from then to now, the phase turns from psi0 by dpsi a sample.
    Each harmonic keeps its own phasor e^{i (k+1) B psi}, turned by its own
@@ -1061,6 +1142,8 @@ static void radiate(aero_rotor *r, const aero_rotor_ear *then,
 {
     enum { H = AERO_ROTOR_HARMONICS_MAX };
     const int h = then->h > now->h ? then->h : now->h;
+    /* the harmonics in fours (those beyond h silent: 0 coefficients) */
+    const int h4 = (h + 3) / 4 * 4;
     const double inv_m = 1.0 / m, B = r->blades;
     float c[H], s[H], dc[H], ds[H], zr[H], zi[H], tr[H], ti[H];
     float *ring = r->base.arrivals.ring[e];
@@ -1083,7 +1166,7 @@ static void radiate(aero_rotor *r, const aero_rotor_ear *then,
     ei = (float)z1i;
     etr = (float)t1r;
     eti = (float)t1i;
-    for (int k = 0; k < h; k++) {
+    for (int k = 0; k < h4; k++) {
         c[k] = (float)(gain0 * then->c[k]);
         s[k] = (float)(gain0 * then->s[k]);
         dc[k] = (float)((gain1 * now->c[k] - gain0 * then->c[k]) * inv_m);
@@ -1108,14 +1191,22 @@ static void radiate(aero_rotor *r, const aero_rotor_ear *then,
         er = nr;
         for (int k = 0; k < 5; k++)
             ev[k] += dev[k];
-        for (int k = 0; k < h; k++) {
-            v += c[k] * zr[k] + s[k] * zi[k];
+        /* the harmonics' sum in a fixed order written out (the same on
+           every compiler, no reassociation): harmonic k into quarter
+           k % 4, the quarters pairwise */
+        float q[4] = {0.0f, 0.0f, 0.0f, 0.0f}, t[H];
+        for (int k = 0; k < h4; k++) {
+            t[k] = c[k] * zr[k] + s[k] * zi[k];
             float wr = zr[k] * tr[k] - zi[k] * ti[k];
             zi[k] = zr[k] * ti[k] + zi[k] * tr[k];
             zr[k] = wr;
             c[k] += dc[k];
             s[k] += ds[k];
         }
+        for (int k = 0; k < h4; k += 4)
+            for (int i = 0; i < 4; i++)
+                q[i] += t[k + i];
+        v += (q[0] + q[2]) + (q[1] + q[3]);
         aero_arrivals_add_span(ring, mask, at, 1.0 + ddelay, v);
         at += 1.0 + ddelay;
     }

@@ -163,6 +163,12 @@ typedef struct {
     double power[AERO_ROTOR_STRIPS_MAX]; /* Pa^2 at 1 m, D_h = 1, a blade */
     double mach[AERO_ROTOR_STRIPS_MAX];
     double alpha[AERO_ROTOR_STRIPS_MAX]; /* angle of attack, rad */
+    double cos_alpha[AERO_ROTOR_STRIPS_MAX], sin_alpha[AERO_ROTOR_STRIPS_MAX];
+    /* cos and sin of the envelope's blade azimuths (AERO_ROTOR_AZIMUTHS
+       per blade passing, each blade), made for psi_blades blades */
+    double psi_cos[AERO_ROTOR_AZIMUTHS * AERO_ROTOR_BLADES_MAX];
+    double psi_sin[AERO_ROTOR_AZIMUTHS * AERO_ROTOR_BLADES_MAX];
+    int psi_blades;
     double scale; /* the speed against the grid's: powers as U^5 */
     int layout, step, have; /* the grid step held, whether any */
     /* the spectra made, by grid step (a drone's rotors move among a few) */

@@ -929,7 +929,7 @@ static void ear_envelope(const aero_rotor *r, double omega, double u,
        (-cos phi, sin phi) turned by alpha away from the lift
        lift (sin phi, cos phi); the normal (span x chord) follows */
     for (int q = 0; q < r->strips; q++) {
-        double wt = w * r->strip[q].r, W = hypot(wt, ud);
+        double wt = w * r->strip[q].r, W = sqrt(wt * wt + ud * ud);
         double cf = W > 0.0 ? wt / W : 1.0, sf = W > 0.0 ? ud / W : 0.0;
         double ca = z->cos_alpha[q], sa = z->sin_alpha[q];
         cws[q] = -ca * cf - sa * lift * sf;
@@ -964,10 +964,12 @@ static void ear_envelope(const aero_rotor *r, double omega, double u,
                 /* the retarded azimuth: turned back by Omega (d - d_hub)/c0
                    (sense-wise), d - d_hub = -r vr / d_hub in the far
                    field; cos and sin of that step by series (the step
-                   below 1 rad: its error under 1e-3) */
+                   below 1 rad: its error under 1e-3), its coefficients
+                   multiplied, not divided (the divider, which the square
+                   roots need, is this loop's bottleneck) */
                 double t = w * rq * vr0 * rdh, t2 = t * t;
-                double ct1 = 1.0 - t2 * (0.5 - t2 / 24.0);
-                double st1 = t * (1.0 - t2 * (1.0 / 6.0 - t2 / 120.0));
+                double ct1 = 1.0 - t2 * (0.5 - t2 * (1.0 / 24.0));
+                double st1 = t * (1.0 - t2 * (1.0 / 6.0 - t2 * (1.0 / 120.0)));
                 double vr = ct1 * vr0 + st1 * vt0; /* psi turned by t */
                 double vt = ct1 * vt0 - st1 * vr0;
                 double y = vr - rq; /* from the strip, along the span */

@@ -1130,13 +1130,72 @@ static double ramp_after(aero_ramp *r, int m)
     return r->value;
 }
 
+/* four harmonics of a chunk's tones (radiate): their coefficients of
+   cos and sin and those coefficients' steps a sample, their phasors and
+   those phasors' turns a sample */
+typedef struct {
+    lane4 c, s, dc, ds, zr, zi, tr, ti;
+} tone4;
 typedef char aero_rotor_harmonics_by_4[AERO_ROTOR_HARMONICS_MAX % 4 == 0
                                        ? 1 : -1];
+
+/* a chunk's glide (radiate): the broadband's envelope (its harmonics
+   k B psi, k = 0..2, and their steps a sample, the phasor e^{i B psi}
+   and its turn) and the arrival time of each sample on the ring */
+typedef struct {
+    float ev[5], dev[5], er, ei, etr, eti;
+    float *ring;
+    long mask;
+    double at, step;
+} glide;
+
+/* m samples of one ear: the broadband noise under its envelope plus nb
+   fours of harmonics, onto the ring. nb a constant where this is inlined
+   (radiate), so that the compiler keeps the harmonics in registers.
+   Each harmonic's sum in a fixed order written out (the same on every
+   compiler, no reassociation): harmonic k into quarter k % 4, the
+   quarters pairwise */
+static inline void radiate_run(glide *gl, const tone4 *bank, const int nb,
+                               const float *noise, int m)
+{
+    tone4 b[AERO_ROTOR_HARMONICS_MAX / 4];
+    float ev[5], er = gl->er, ei = gl->ei;
+    const float etr = gl->etr, eti = gl->eti;
+    double at = gl->at;
+    for (int i = 0; i < nb; i++)
+        b[i] = bank[i];
+    memcpy(ev, gl->ev, sizeof(ev));
+    for (int j = 0; j < m; j++) {
+        float e2r = er * er - ei * ei, e2i = 2.0f * er * ei;
+        float env = ev[0] + ev[1] * er + ev[2] * ei + ev[3] * e2r +
+                    ev[4] * e2i;
+        float v = (env > 0.0f ? env : 0.0f) * noise[j];
+        float nr = er * etr - ei * eti;
+        ei = er * eti + ei * etr;
+        er = nr;
+        for (int k = 0; k < 5; k++)
+            ev[k] += gl->dev[k];
+        lane4 q = l4_splat(0.0f);
+        for (int i = 0; i < nb; i++) {
+            tone4 *p = &b[i];
+            q = l4_add(q, l4_add(l4_mul(p->c, p->zr), l4_mul(p->s, p->zi)));
+            lane4 wr = l4_sub(l4_mul(p->zr, p->tr), l4_mul(p->zi, p->ti));
+            p->zi = l4_add(l4_mul(p->zr, p->ti), l4_mul(p->zi, p->tr));
+            p->zr = wr;
+            p->c = l4_add(p->c, p->dc);
+            p->s = l4_add(p->s, p->ds);
+        }
+        v += (l4_get(q, 0) + l4_get(q, 2)) + (l4_get(q, 1) + l4_get(q, 3));
+        aero_arrivals_add_span(gl->ring, gl->mask, at, gl->step, v);
+        at += gl->step;
+    }
+}
+
 /* the tones of one ear over m samples: the coefficients and the delay
    glide from then to now, the phase turns from psi0 by dpsi a sample.
    Each harmonic keeps its own phasor e^{i (k+1) B psi}, turned by its own
    step (set exactly in double at each chunk): the harmonics are
-   independent, so the loop over them vectorises */
+   independent, four to a SIMD register (aero_lanes.h) */
 static void radiate(aero_rotor *r, const aero_rotor_ear *then,
                     const aero_rotor_ear *now, double gain0, double gain1,
                     double psi0, double dpsi, const float *noise, int e,
@@ -1145,18 +1204,19 @@ static void radiate(aero_rotor *r, const aero_rotor_ear *then,
     enum { H = AERO_ROTOR_HARMONICS_MAX };
     const int h = then->h > now->h ? then->h : now->h;
     /* the harmonics in fours (those beyond h silent: 0 coefficients) */
-    const int h4 = (h + 3) / 4 * 4;
+    const int nb = (h + 3) / 4, h4 = 4 * nb;
     const double inv_m = 1.0 / m, B = r->blades;
     float c[H], s[H], dc[H], ds[H], zr[H], zi[H], tr[H], ti[H];
-    float *ring = r->base.arrivals.ring[e];
-    const long mask = r->base.arrivals.mask;
-    const double ddelay = (now->delay - then->delay) * inv_m;
-    double at = (double)r->base.arrivals.head + then->delay;
-    /* the broadband's envelope: its harmonics k B psi, k = 0..2 */
-    float ev[5], dev[5], er, ei, etr, eti;
+    tone4 bank[H / 4];
+    glide gl;
+    gl.ring = r->base.arrivals.ring[e];
+    gl.mask = r->base.arrivals.mask;
+    gl.step = 1.0 + (now->delay - then->delay) * inv_m;
+    gl.at = (double)r->base.arrivals.head + then->delay;
     for (int k = 0; k < 5; k++) {
-        ev[k] = (float)(gain0 * then->env[k]);
-        dev[k] = (float)((gain1 * now->env[k] - gain0 * then->env[k]) * inv_m);
+        gl.ev[k] = (float)(gain0 * then->env[k]);
+        gl.dev[k] =
+            (float)((gain1 * now->env[k] - gain0 * then->env[k]) * inv_m);
     }
     /* e^{i n psi0} and e^{i n dpsi} for n = (k+1) B as powers of the
        first, in double (each product's rounding 1e-16: 40 of them far
@@ -1164,10 +1224,10 @@ static void radiate(aero_rotor *r, const aero_rotor_ear *then,
     const double z1r = cos(B * psi0), z1i = sin(B * psi0);
     const double t1r = cos(B * dpsi), t1i = sin(B * dpsi);
     double znr = z1r, zni = z1i, tnr = t1r, tni = t1i;
-    er = (float)z1r;
-    ei = (float)z1i;
-    etr = (float)t1r;
-    eti = (float)t1i;
+    gl.er = (float)z1r;
+    gl.ei = (float)z1i;
+    gl.etr = (float)t1r;
+    gl.eti = (float)t1i;
     for (int k = 0; k < h4; k++) {
         c[k] = (float)(gain0 * then->c[k]);
         s[k] = (float)(gain0 * then->s[k]);
@@ -1183,34 +1243,33 @@ static void radiate(aero_rotor *r, const aero_rotor_ear *then,
         tni = tnr * t1i + tni * t1r;
         tnr = b;
     }
-    for (int j = 0; j < m; j++) {
-        float e2r = er * er - ei * ei, e2i = 2.0f * er * ei;
-        float env = ev[0] + ev[1] * er + ev[2] * ei + ev[3] * e2r +
-                    ev[4] * e2i;
-        float v = (env > 0.0f ? env : 0.0f) * noise[j];
-        float nr = er * etr - ei * eti;
-        ei = er * eti + ei * etr;
-        er = nr;
-        for (int k = 0; k < 5; k++)
-            ev[k] += dev[k];
-        /* the harmonics' sum in a fixed order written out (the same on
-           every compiler, no reassociation): harmonic k into quarter
-           k % 4, the quarters pairwise */
-        float q[4] = {0.0f, 0.0f, 0.0f, 0.0f}, t[H];
-        for (int k = 0; k < h4; k++) {
-            t[k] = c[k] * zr[k] + s[k] * zi[k];
-            float wr = zr[k] * tr[k] - zi[k] * ti[k];
-            zi[k] = zr[k] * ti[k] + zi[k] * tr[k];
-            zr[k] = wr;
-            c[k] += dc[k];
-            s[k] += ds[k];
-        }
-        for (int k = 0; k < h4; k += 4)
-            for (int i = 0; i < 4; i++)
-                q[i] += t[k + i];
-        v += (q[0] + q[2]) + (q[1] + q[3]);
-        aero_arrivals_add_span(ring, mask, at, 1.0 + ddelay, v);
-        at += 1.0 + ddelay;
+    for (int i = 0; i < nb; i++) {
+        memcpy(&bank[i].c, c + 4 * i, sizeof(lane4));
+        memcpy(&bank[i].s, s + 4 * i, sizeof(lane4));
+        memcpy(&bank[i].dc, dc + 4 * i, sizeof(lane4));
+        memcpy(&bank[i].ds, ds + 4 * i, sizeof(lane4));
+        memcpy(&bank[i].zr, zr + 4 * i, sizeof(lane4));
+        memcpy(&bank[i].zi, zi + 4 * i, sizeof(lane4));
+        memcpy(&bank[i].tr, tr + 4 * i, sizeof(lane4));
+        memcpy(&bank[i].ti, ti + 4 * i, sizeof(lane4));
+    }
+    /* a subsonic tip's harmonics fall fast (a drone's: 5 above -80 dB):
+       the common counts with theirs fixed */
+    switch (nb) {
+    case 0:
+        radiate_run(&gl, bank, 0, noise, m);
+        break;
+    case 1:
+        radiate_run(&gl, bank, 1, noise, m);
+        break;
+    case 2:
+        radiate_run(&gl, bank, 2, noise, m);
+        break;
+    case 3:
+        radiate_run(&gl, bank, 3, noise, m);
+        break;
+    default:
+        radiate_run(&gl, bank, nb, noise, m);
     }
 }
 

@@ -1330,9 +1330,10 @@ static void chunk(aero_rotor *r, const float *rpm, int m)
         for (int i = 0; i < 3; i++)
             ear[i] = ramp_after(&r->base.ear[3 * e + i], m);
         ear_tones(r, omega, ear, axes, &r->sums[e], &now[e]);
-        /* the envelope every AERO_ROTOR_ENVELOPE_CHUNKS chunks (5.3 ms at
-           48 kHz), held between: it moves with the geometry and the
-           speed, slowly against a chunk, and costs more than the tones */
+        /* the envelope every AERO_ROTOR_ENVELOPE_SAMPLES (5.3 ms at 48
+           kHz, whatever the host's block and so the chunk), held
+           between: it moves with the geometry and the speed, slowly
+           against a chunk, and costs more than the tones */
         if (!hiss)
             memset(now[e].env, 0, sizeof(now[e].env));
         else if (r->envelope_due <= 0 || !r->primed)
@@ -1350,8 +1351,8 @@ static void chunk(aero_rotor *r, const float *rpm, int m)
         r->then[e] = now[e];
     }
     r->envelope_due = r->envelope_due <= 0 || !r->primed
-                          ? AERO_ROTOR_ENVELOPE_CHUNKS - 1
-                          : r->envelope_due - 1;
+                          ? AERO_ROTOR_ENVELOPE_SAMPLES - m
+                          : r->envelope_due - m;
     r->primed = 1;
     r->psi = fmod(r->psi + dpsi * m, TWO_PI);
     if (r->psi < 0.0)

@@ -117,7 +117,7 @@ typedef struct {
 #define AERO_ROTOR_THIRDS (3 * AERO_ROTOR_BANDS)
 #define AERO_ROTOR_ENVELOPE 2
 #define AERO_ROTOR_AZIMUTHS 8
-#define AERO_ROTOR_ENVELOPE_CHUNKS 2 /* chunks between two envelopes */
+#define AERO_ROTOR_ENVELOPE_SAMPLES 256 /* between two envelopes */
 /* the self-noise spectrum is made at speeds on a grid of this ratio (its
    frequencies off by at most half of it: 3 %, a 24th of an octave) */
 #define AERO_ROTOR_NOISE_TOLERANCE 0.06
@@ -207,7 +207,7 @@ typedef struct aero_rotor {
 
     aero_rotor_ear then[AERO_EARS_MAX]; /* at the last chunk's end */
     int primed;
-    int envelope_due; /* chunks until the broadband's envelope is made again */
+    int envelope_due; /* samples until the broadband's envelope is made again */
 } aero_rotor;
 
 /* 0, or -1 when out of memory (silent then, until a sample rate is set)

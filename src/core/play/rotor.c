@@ -1139,42 +1139,49 @@ typedef struct {
 typedef char aero_rotor_harmonics_by_4[AERO_ROTOR_HARMONICS_MAX % 4 == 0
                                        ? 1 : -1];
 
-/* a chunk's glide (radiate): the broadband's envelope (its harmonics
-   k B psi, k = 0..2, and their steps a sample, the phasor e^{i B psi}
-   and its turn) and the arrival time of each sample on the ring */
+/* a chunk's glide (radiate): the broadband's envelope, its mean and its
+   harmonics B psi and 2 B psi as coefficients of the first two
+   harmonics' phasors (lanes 0 and 1 of ec and es, lanes 2 and 3 zero),
+   their steps a sample, and the arrival time of each sample on the ring */
 typedef struct {
-    float ev[5], dev[5], er, ei, etr, eti;
+    float ev0, dev0;
+    lane4 ec, es, dec, des;
     float *ring;
     long mask;
     double at, step;
 } glide;
 
-/* m samples of one ear: the broadband noise under its envelope plus nb
-   fours of harmonics, onto the ring. nb a constant where this is inlined
-   (radiate), so that the compiler keeps the harmonics in registers.
-   Each harmonic's sum in a fixed order written out (the same on every
+/* m samples of one ear: the broadband noise under its envelope (when
+   `hiss`) plus nb fours of harmonics (nb >= 1: the envelope turns with
+   the first four's phasors), onto the ring. hiss and nb constants where
+   this is inlined (radiate), so that the compiler keeps the harmonics in
+   registers. The sums in a fixed order written out (the same on every
    compiler, no reassociation): harmonic k into quarter k % 4, the
-   quarters pairwise */
+   quarters pairwise; the envelope's mean plus its two harmonics */
 static inline void radiate_run(glide *gl, const tone4 *bank, const int nb,
-                               const float *noise, int m)
+                               const int hiss, const float *noise, int m)
 {
     tone4 b[AERO_ROTOR_HARMONICS_MAX / 4];
-    float ev[5], er = gl->er, ei = gl->ei;
-    const float etr = gl->etr, eti = gl->eti;
+    float ev0 = gl->ev0;
+    lane4 ec = gl->ec, es = gl->es;
+    const lane4 dec = gl->dec, des = gl->des;
+    const float dev0 = gl->dev0;
+    const double step = gl->step;
+    float *ring = gl->ring;
+    const long mask = gl->mask;
     double at = gl->at;
     for (int i = 0; i < nb; i++)
         b[i] = bank[i];
-    memcpy(ev, gl->ev, sizeof(ev));
     for (int j = 0; j < m; j++) {
-        float e2r = er * er - ei * ei, e2i = 2.0f * er * ei;
-        float env = ev[0] + ev[1] * er + ev[2] * ei + ev[3] * e2r +
-                    ev[4] * e2i;
-        float v = (env > 0.0f ? env : 0.0f) * noise[j];
-        float nr = er * etr - ei * eti;
-        ei = er * eti + ei * etr;
-        er = nr;
-        for (int k = 0; k < 5; k++)
-            ev[k] += gl->dev[k];
+        float v = 0.0f;
+        if (hiss) {
+            lane4 pe = l4_add(l4_mul(ec, b[0].zr), l4_mul(es, b[0].zi));
+            float env = ev0 + (l4_get(pe, 0) + l4_get(pe, 1));
+            v = (env > 0.0f ? env : 0.0f) * noise[j];
+            ev0 += dev0;
+            ec = l4_add(ec, dec);
+            es = l4_add(es, des);
+        }
         lane4 q = l4_splat(0.0f);
         for (int i = 0; i < nb; i++) {
             tone4 *p = &b[i];
@@ -1186,8 +1193,8 @@ static inline void radiate_run(glide *gl, const tone4 *bank, const int nb,
             p->s = l4_add(p->s, p->ds);
         }
         v += (l4_get(q, 0) + l4_get(q, 2)) + (l4_get(q, 1) + l4_get(q, 3));
-        aero_arrivals_add_span(gl->ring, gl->mask, at, gl->step, v);
-        at += gl->step;
+        aero_arrivals_add_span(ring, mask, at, step, v);
+        at += step;
     }
 }
 
@@ -1198,36 +1205,43 @@ static inline void radiate_run(glide *gl, const tone4 *bank, const int nb,
    independent, four to a SIMD register (aero_lanes.h) */
 static void radiate(aero_rotor *r, const aero_rotor_ear *then,
                     const aero_rotor_ear *now, double gain0, double gain1,
-                    double psi0, double dpsi, const float *noise, int e,
-                    int m)
+                    double psi0, double dpsi, const float *noise, int hiss,
+                    int e, int m)
 {
     enum { H = AERO_ROTOR_HARMONICS_MAX };
     const int h = then->h > now->h ? then->h : now->h;
-    /* the harmonics in fours (those beyond h silent: 0 coefficients) */
-    const int nb = (h + 3) / 4, h4 = 4 * nb;
+    /* the harmonics in fours (those beyond h silent: 0 coefficients), at
+       least one four (the envelope's phasors) */
+    const int nb = h > 4 ? (h + 3) / 4 : 1, h4 = 4 * nb;
     const double inv_m = 1.0 / m, B = r->blades;
     float c[H], s[H], dc[H], ds[H], zr[H], zi[H], tr[H], ti[H];
+    float ec[4] = {0}, es[4] = {0}, dec[4] = {0}, des[4] = {0};
     tone4 bank[H / 4];
     glide gl;
     gl.ring = r->base.arrivals.ring[e];
     gl.mask = r->base.arrivals.mask;
     gl.step = 1.0 + (now->delay - then->delay) * inv_m;
     gl.at = (double)r->base.arrivals.head + then->delay;
-    for (int k = 0; k < 5; k++) {
-        gl.ev[k] = (float)(gain0 * then->env[k]);
-        gl.dev[k] =
-            (float)((gain1 * now->env[k] - gain0 * then->env[k]) * inv_m);
+    gl.ev0 = (float)(gain0 * then->env[0]);
+    gl.dev0 = (float)((gain1 * now->env[0] - gain0 * then->env[0]) * inv_m);
+    for (int k = 0; k < 2; k++) {
+        ec[k] = (float)(gain0 * then->env[2 * k + 1]);
+        es[k] = (float)(gain0 * then->env[2 * k + 2]);
+        dec[k] = (float)((gain1 * now->env[2 * k + 1] -
+                          gain0 * then->env[2 * k + 1]) * inv_m);
+        des[k] = (float)((gain1 * now->env[2 * k + 2] -
+                          gain0 * then->env[2 * k + 2]) * inv_m);
     }
+    memcpy(&gl.ec, ec, sizeof(lane4));
+    memcpy(&gl.es, es, sizeof(lane4));
+    memcpy(&gl.dec, dec, sizeof(lane4));
+    memcpy(&gl.des, des, sizeof(lane4));
     /* e^{i n psi0} and e^{i n dpsi} for n = (k+1) B as powers of the
        first, in double (each product's rounding 1e-16: 40 of them far
        below float's) instead of four cos and sin a harmonic */
     const double z1r = cos(B * psi0), z1i = sin(B * psi0);
     const double t1r = cos(B * dpsi), t1i = sin(B * dpsi);
     double znr = z1r, zni = z1i, tnr = t1r, tni = t1i;
-    gl.er = (float)z1r;
-    gl.ei = (float)z1i;
-    gl.etr = (float)t1r;
-    gl.eti = (float)t1i;
     for (int k = 0; k < h4; k++) {
         c[k] = (float)(gain0 * then->c[k]);
         s[k] = (float)(gain0 * then->s[k]);
@@ -1255,22 +1269,31 @@ static void radiate(aero_rotor *r, const aero_rotor_ear *then,
     }
     /* a subsonic tip's harmonics fall fast (a drone's: 5 above -80 dB):
        the common counts with theirs fixed */
-    switch (nb) {
-    case 0:
-        radiate_run(&gl, bank, 0, noise, m);
-        break;
-    case 1:
-        radiate_run(&gl, bank, 1, noise, m);
-        break;
-    case 2:
-        radiate_run(&gl, bank, 2, noise, m);
-        break;
-    case 3:
-        radiate_run(&gl, bank, 3, noise, m);
-        break;
-    default:
-        radiate_run(&gl, bank, nb, noise, m);
-    }
+    if (hiss)
+        switch (nb) {
+        case 1:
+            radiate_run(&gl, bank, 1, 1, noise, m);
+            break;
+        case 2:
+            radiate_run(&gl, bank, 2, 1, noise, m);
+            break;
+        case 3:
+            radiate_run(&gl, bank, 3, 1, noise, m);
+            break;
+        default:
+            radiate_run(&gl, bank, nb, 1, noise, m);
+        }
+    else
+        switch (nb) {
+        case 1:
+            radiate_run(&gl, bank, 1, 0, noise, m);
+            break;
+        case 2:
+            radiate_run(&gl, bank, 2, 0, noise, m);
+            break;
+        default:
+            radiate_run(&gl, bank, nb, 0, noise, m);
+        }
 }
 
 /* the rotor's axes in the world: e1, e2 and the thrust axis, from the
@@ -1347,7 +1370,7 @@ static void chunk(aero_rotor *r, const float *rpm, int m)
             memset(r->then[e].env, 0, sizeof(r->then[e].env));
         }
         radiate(r, &r->then[e], &now[e], gain_then, gain, r->psi, dpsi,
-                noise, e, m);
+                noise, hiss, e, m);
         r->then[e] = now[e];
     }
     r->envelope_due = r->envelope_due <= 0 || !r->primed

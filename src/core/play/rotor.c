@@ -912,9 +912,14 @@ static void ear_envelope(const aero_rotor *r, double omega, double u,
                                  -0.70710678118654752, 0.0,
                                  0.70710678118654752};
     const double s5 = z->scale * z->scale * z->scale * z->scale * z->scale;
-    double a[NA], rel[3], cws[AERO_ROTOR_STRIPS_MAX], aws[AERO_ROTOR_STRIPS_MAX],
-        Ms[AERO_ROTOR_STRIPS_MAX], Ps[AERO_ROTOR_STRIPS_MAX],
-        Rs[AERO_ROTOR_STRIPS_MAX];
+    /* the strips' constants: the retarded step's factor, the chord's
+       components, Mach number and a fifth of it, power, radius and its
+       square and double (float: see below) */
+    float kq[AERO_ROTOR_STRIPS_MAX], cws[AERO_ROTOR_STRIPS_MAX],
+        aws[AERO_ROTOR_STRIPS_MAX], Ms[AERO_ROTOR_STRIPS_MAX],
+        M5[AERO_ROTOR_STRIPS_MAX], Ps[AERO_ROTOR_STRIPS_MAX],
+        R2[AERO_ROTOR_STRIPS_MAX], R2x[AERO_ROTOR_STRIPS_MAX];
+    double a[NA], rel[3];
     const int nq = r->strips;
     aero_near seen = {0, 0.0}; /* ear_tones reports it */
     for (int i = 0; i < 3; i++)
@@ -929,72 +934,80 @@ static void ear_envelope(const aero_rotor *r, double omega, double u,
        (-cos phi, sin phi) turned by alpha away from the lift
        lift (sin phi, cos phi); the normal (span x chord) follows */
     for (int q = 0; q < r->strips; q++) {
-        double wt = w * r->strip[q].r, W = sqrt(wt * wt + ud * ud);
+        const double rq = r->strip[q].r;
+        double wt = w * rq, W = sqrt(wt * wt + ud * ud);
         double cf = W > 0.0 ? wt / W : 1.0, sf = W > 0.0 ? ud / W : 0.0;
         double ca = z->cos_alpha[q], sa = z->sin_alpha[q];
-        cws[q] = -ca * cf - sa * lift * sf;
-        aws[q] = ca * sf - sa * lift * cf;
+        double cw = -ca * cf - sa * lift * sf, aw = ca * sf - sa * lift * cf;
         if (r->has_blade) { /* the table's twist: the leading edge into
                                the flow through the disc */
             double tw = r->strip[q].twist;
-            cws[q] = -cos(tw);
-            aws[q] = (ud < 0.0 ? -1.0 : 1.0) * sin(tw);
+            cw = -cos(tw);
+            aw = (ud < 0.0 ? -1.0 : 1.0) * sin(tw);
         }
-        Ms[q] = z->mach[q] * z->scale;
-        Ps[q] = z->power[q] * s5;
-        Rs[q] = r->strip[q].r;
+        cws[q] = (float)cw;
+        aws[q] = (float)aw;
+        kq[q] = (float)(w * rq * rdh);
+        Ms[q] = (float)(z->mach[q] * z->scale);
+        M5[q] = 0.2f * Ms[q];
+        Ps[q] = (float)(z->power[q] * s5);
+        R2[q] = (float)(rq * rq);
+        R2x[q] = (float)(2.0 * rq);
     }
+    const float fvz = (float)vz, fv2 = (float)v2;
     for (int j = 0; j < NA; j++) {
-        double P = 0.0, term[AERO_ROTOR_STRIPS_MAX];
+        float P = 0.0f, term[AERO_ROTOR_STRIPS_MAX];
         for (int b = 0; b < B; b++) {
             /* psi = 2 pi (j / (B NA) + b / B) (noise_spectrum's table) */
             const double cp0 = z->psi_cos[j * B + b];
             const double sp0 = z->psi_sin[j * B + b];
             /* the ear in the disc's polar frame at psi: along the span
                and along the motion */
-            double vr0 = cp0 * vp1 + sp0 * vp2;
-            double vt0 = sense * (-sp0 * vp1 + cp0 * vp2);
+            const float vr0 = (float)(cp0 * vp1 + sp0 * vp2);
+            const float vt0 = (float)(sense * (-sp0 * vp1 + cp0 * vp2));
             /* branch-free over the strips, each term to its own slot (it
                vectorises; the terms are summed in order below, so the
                sum is the same on every compiler): a strip at the ear or
-               silent adds 0. The floors as comparisons, not fmax (a
-               library call the loop cannot vectorise; the same values) */
+               silent adds 0. In float, four strips to a SIMD register:
+               the distance from the strip as d^2 = |v|^2 - 2 r v_r + r^2
+               (no difference of the large |v|^2 and v_r^2), so float's
+               1e-7 holds at any range the rings hold; the floors as
+               comparisons, not fmax (a library call the loop cannot
+               vectorise) */
             for (int q = 0; q < nq; q++) {
-                const double rq = Rs[q], M = Ms[q];
                 /* the retarded azimuth: turned back by Omega (d - d_hub)/c0
                    (sense-wise), d - d_hub = -r vr / d_hub in the far
                    field; cos and sin of that step by series (the step
                    below 1 rad: its error under 1e-3), its coefficients
                    multiplied, not divided (the divider, which the square
                    roots need, is this loop's bottleneck) */
-                double t = w * rq * vr0 * rdh, t2 = t * t;
-                double ct1 = 1.0 - t2 * (0.5 - t2 * (1.0 / 24.0));
-                double st1 = t * (1.0 - t2 * (1.0 / 6.0 - t2 * (1.0 / 120.0)));
-                double vr = ct1 * vr0 + st1 * vt0; /* psi turned by t */
-                double vt = ct1 * vt0 - st1 * vr0;
-                double y = vr - rq; /* from the strip, along the span */
-                double d2 = v2 - vr * vr + y * y;
-                d2 = d2 > 1e-6 ? d2 : 1e-6;
-                double vx = cws[q] * vt + aws[q] * vz;
-                double vn = cws[q] * vz - aws[q] * vt;
+                float t = kq[q] * vr0, t2 = t * t;
+                float ct1 = 1.0f - t2 * (0.5f - t2 * (1.0f / 24.0f));
+                float st1 = t * (1.0f - t2 * (1.0f / 6.0f - t2 * (1.0f / 120.0f)));
+                float vr = ct1 * vr0 + st1 * vt0; /* psi turned by t */
+                float vt = ct1 * vt0 - st1 * vr0;
+                float d2 = (fv2 + R2[q]) - R2x[q] * vr;
+                d2 = d2 > 1e-6f ? d2 : 1e-6f;
+                float vx = cws[q] * vt + aws[q] * fvz;
+                float vn = cws[q] * fvz - aws[q] * vt;
                 /* the distance off the span's line */
-                double h2 = vx * vx + vn * vn;
-                double h = sqrt(h2 > 1e-12 ? h2 : 1e-12);
+                float h2 = vx * vx + vn * vn;
+                float h = sqrtf(h2 > 1e-12f ? h2 : 1e-12f);
                 /* the half-plane's directivity about its edge (Ffowcs
                    Williams and Hall 1970): 2 sin^2(theta/2) of the
                    azimuth theta about the span from the wake, times
                    sin(psi) of the angle from the span, = (h - vx) / d;
                    the report's D_h at mid-span. Its convective factors
                    of the angle from the chord, cos = vx / d */
-                double id = 1.0 / sqrt(d2);
-                double ct = vx * id, c1 = 1.0 + 0.2 * M * ct;
+                float id = 1.0f / sqrtf(d2);
+                float ct = vx * id, c1 = 1.0f + M5[q] * ct;
                 term[q] = Ps[q] * (h - vx) * id /
-                          ((1.0 + M * ct) * c1 * c1 * d2);
+                          ((1.0f + Ms[q] * ct) * c1 * c1 * d2);
             }
             for (int q = 0; q < nq; q++)
                 P += term[q];
         }
-        a[j] = r->noise_gain * sqrt(P);
+        a[j] = r->noise_gain * sqrt((double)P);
     }
     for (int k = 0; k <= AERO_ROTOR_ENVELOPE; k++) {
         double c = 0.0, s = 0.0;

@@ -63,13 +63,16 @@ static inline void aero_arrivals_add_density(float *r, long mask, double at,
 {
     const double end = at + step;
     long k = (long)at;
-    double lo = at;
-    while (lo < end) {
-        double hi = (double)(k + 1) < end ? (double)(k + 1) : end;
+    double lo = at, hi = (double)(k + 1);
+    /* the whole cells the span crosses, then the part of the last */
+    while (hi < end) {
         r[k & mask] += density * (float)(hi - lo);
         lo = hi;
+        hi += 1.0; /* (double)(k + 1), exactly */
         k++;
     }
+    if (lo < end)
+        r[k & mask] += density * (float)(end - lo);
 }
 
 /* sample j of a chunk of m whose samples each span `step` (the last

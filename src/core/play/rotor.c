@@ -47,6 +47,30 @@ static void blade_at(const aero_rotor_blade *b, double x, double *chord,
              180.0;
 }
 
+/* the inflow distortion's loading harmonics per strip (rotor.h): N
+   Gaussian dips of depth a and standard deviation sd = wake / (2.355 r_s)
+   in azimuth; their sum's Fourier coefficient at order k N, its mean
+   taken out, is a_k = -a N sd sqrt(2/pi) exp(-(k N sd)^2 / 2) (exact for
+   the periodic sum of the Gaussians). Kept: k up to the last whose a_k
+   reaches 1e-5 a at some strip (-100 dB) */
+static void distortion_layout(aero_rotor *r)
+{
+    const int N = r->struts;
+    const double a = r->distortion;
+    r->loads = 0;
+    for (int q = 0; q < r->strips; q++) {
+        aero_rotor_strip *sp = &r->strip[q];
+        const double sd = r->wake / (2.0 * sqrt(2.0 * log(2.0)) * sp->r);
+        const double first = -a * N * sd * sqrt(2.0 / AERO_PI);
+        for (int k = 1; k <= AERO_ROTOR_LOADS; k++) {
+            const double x = k * N * sd;
+            sp->load[k - 1] = a > 0.0 ? 0.5 * first * exp(-0.5 * x * x) : 0.0;
+            if (fabs(sp->load[k - 1]) > 0.5e-5 * a && k > r->loads)
+                r->loads = k;
+        }
+    }
+}
+
 static void layout(aero_rotor *r)
 {
     const int N = r->strips, B = r->blades;
@@ -77,6 +101,7 @@ static void layout(aero_rotor *r)
         double w = r->strip[s].r * r->strip[s].r / w_sum;
         r->strip[s].drag = r->torque * w / (B * q_arm);
     }
+    distortion_layout(r);
 }
 
 /* --- the blade's table ------------------------------------------------------ */
@@ -251,6 +276,9 @@ int aero_rotor_init(aero_rotor *r, double sample_rate, int n_ears,
     r->torque = AERO_ROTOR_TORQUE_DEFAULT;
     r->design_rpm = AERO_ROTOR_DESIGN_DEFAULT;
     r->noise_gain = pow(10.0, AERO_ROTOR_NOISE_DB_DEFAULT / 20.0);
+    r->struts = AERO_ROTOR_STRUTS_DEFAULT;
+    r->distortion = AERO_ROTOR_DISTORTION_DEFAULT;
+    r->wake = AERO_ROTOR_WAKE_DEFAULT;
     layout(r);
     memcpy(r->pose, unturned, sizeof(unturned));
     aero_pose_path_jump(&r->path, 7, unturned);
@@ -352,6 +380,24 @@ int aero_rotor_set_design(aero_rotor *r, double rpm)
 {
     return set_geometry(r, &r->design_rpm, rpm, AERO_ROTOR_DESIGN_MIN,
                         AERO_ROTOR_DESIGN_MAX);
+}
+
+int aero_rotor_set_struts(aero_rotor *r, double struts)
+{
+    return set_whole(r, &r->struts, struts, AERO_ROTOR_STRUTS_MIN,
+                     AERO_ROTOR_STRUTS_MAX);
+}
+
+int aero_rotor_set_distortion(aero_rotor *r, double dip)
+{
+    return set_geometry(r, &r->distortion, dip, AERO_ROTOR_DISTORTION_MIN,
+                        AERO_ROTOR_DISTORTION_MAX);
+}
+
+int aero_rotor_set_wake(aero_rotor *r, double m)
+{
+    return set_geometry(r, &r->wake, m, AERO_ROTOR_WAKE_MIN,
+                        AERO_ROTOR_WAKE_MAX);
 }
 
 int aero_rotor_set_noise_db(aero_rotor *r, double db)
@@ -491,6 +537,57 @@ static double bessel_jn(int n, double z)
     return jn / norm;
 }
 
+/* J_v(z) of any integer order: J_0, and J_{-v} = (-1)^v J_v */
+static double bessel_jv(int v, double z)
+{
+    const int a = v < 0 ? -v : v;
+    double j = a > 0 ? bessel_jn(a, z) : z > 1e-9 ? bessel_jn(0, z) : 1.0;
+    return v < 0 && (a & 1) ? -j : j;
+}
+
+/* |J_v(z)| <= (z/2)^|v| / |v|! below 1e-7 (-140 dB): left out */
+static int bessel_negligible(int v, double z)
+{
+    const int a = v < 0 ? -v : v;
+    if (a == 0)
+        return 0;
+    if (!(z > 1e-9))
+        return 1;
+    return a * log(0.5 * z) - lgamma(a + 1.0) < -16.0;
+}
+
+/* the inflow distortion's strip sums of harmonic m (rotor.h): per loading
+   harmonic k, orders nu = n - kN and n + kN, J_nu of the harmonic's own
+   argument n x r_s / c0, weighted by a_k / 2; the drag's factor nu / n is
+   the in-plane force's (the steady term's is 1) */
+static void distortion_sums(const aero_rotor *r, double x, int m,
+                            aero_rotor_sums *u)
+{
+    const int n = m * r->blades;
+    const double z_tip = n * x * r->strip[r->strips - 1].r / AERO_C0;
+    for (int k = 1; k <= r->loads; k++) {
+        for (int side = 0; side < 2; side++) {
+            const int nu = side ? n + k * r->struts : n - k * r->struts;
+            double t = 0.0, d = 0.0;
+            if (!bessel_negligible(nu, z_tip))
+                for (int q = 0; q < r->strips; q++) {
+                    const aero_rotor_strip *sp = &r->strip[q];
+                    double j = bessel_jv(nu, n * x * sp->r / AERO_C0) *
+                               sp->load[k - 1];
+                    t -= j * sp->thrust;
+                    d += j * (double)nu / n * sp->drag * AERO_C0 / sp->r;
+                }
+            if (side) {
+                u->thrust_hi[m - 1][k - 1] = t;
+                u->drag_hi[m - 1][k - 1] = d;
+            } else {
+                u->thrust_lo[m - 1][k - 1] = t;
+                u->drag_lo[m - 1][k - 1] = d;
+            }
+        }
+    }
+}
+
 /* the strip sums of harmonic m (n = mB) at x = Omega sin(theta) into
    slot m - 1 of u: J_n(n x r_s / c0) times each strip's thrust, drag and
    volume */
@@ -509,15 +606,19 @@ static void strip_sums(const aero_rotor *r, double x, int m,
     u->thrust[m - 1] = t;
     u->drag[m - 1] = d;
     u->volume[m - 1] = v;
+    if (r->loads > 0)
+        distortion_sums(r, x, m, u);
 }
 
 /* the coefficients of cos(n Psi) and sin(n Psi), n = mB, of the tone at
    distance d, cos(theta) ct in the rotor frame and e^{i g} = (cg, sg),
    g = n (phi - pi/2), angular speed omega > 0, from the strip sums u
-   (rotor.h's formula) */
+   (rotor.h's formula); e^{i g0} = (c0, s0), g0 = phi - pi/2, turns the
+   inflow distortion's terms (nu - n) g0 from the steady's */
 static void harmonic_at(const aero_rotor *r, const aero_rotor_sums *u,
                         double omega, double ct, double cg, double sg,
-                        double d, int m, double *c, double *s)
+                        double c0, double s0, double d, int m, double *c,
+                        double *s)
 {
     const int B = r->blades, n = m * B;
     const double load = (omega * 60.0 / TWO_PI) / r->design_rpm;
@@ -525,21 +626,58 @@ static void harmonic_at(const aero_rotor *r, const aero_rotor_sums *u,
     double L = k2 * (u->thrust[m - 1] * ct + u->drag[m - 1] / omega);
     double K = n * omega * B / (4.0 * AERO_PI * AERO_C0 * d);
     double th = n * omega * AERO_RHO * AERO_C0 * u->volume[m - 1];
-    *c = 2.0 * K * (-th * cg + L * sg);
-    *s = 2.0 * K * (-L * cg - th * sg);
+    if (r->loads <= 0) {
+        *c = 2.0 * K * (-th * cg + L * sg);
+        *s = 2.0 * K * (-L * cg - th * sg);
+        return;
+    }
+    /* L + SUM_k (e^{-i kN g0} L_lo + e^{+i kN g0} L_hi) = Lr + i Li;
+       e^{i kN g0} as powers of e^{i N g0} */
+    double Lr = L, Li = 0.0, er = 1.0, ei = 0.0, nr = 1.0, ni = 0.0;
+    for (int j = 0; j < r->struts; j++) {
+        double t = nr * c0 - ni * s0;
+        ni = nr * s0 + ni * c0;
+        nr = t;
+    }
+    for (int k = 0; k < r->loads; k++) {
+        double t = er * nr - ei * ni;
+        ei = er * ni + ei * nr;
+        er = t;
+        double lo = k2 * (u->thrust_lo[m - 1][k] * ct +
+                          u->drag_lo[m - 1][k] / omega);
+        double hi = k2 * (u->thrust_hi[m - 1][k] * ct +
+                          u->drag_hi[m - 1][k] / omega);
+        Lr += (lo + hi) * er;
+        Li += (hi - lo) * ei;
+    }
+    /* K e^{i g} (-i (Lr + i Li) - th) */
+    *c = 2.0 * K * ((Li - th) * cg + Lr * sg);
+    *s = 2.0 * K * ((Li - th) * sg - Lr * cg);
+}
+
+void aero_rotor_harmonic_at(const aero_rotor *r, int m, double omega,
+                            double theta, double phi, double d, double *c,
+                            double *s)
+{
+    *c = *s = 0.0;
+    if (m < 1 || m > AERO_ROTOR_HARMONICS_MAX || !(omega > 0.0) ||
+        !(d > 0.0))
+        return;
+    aero_rotor_sums *u = malloc(sizeof(*u)); /* 42 kB: not on the stack */
+    if (!u)
+        return;
+    double g0 = phi - 0.5 * AERO_PI, g = m * r->blades * g0;
+    strip_sums(r, omega * sin(theta), m, u);
+    harmonic_at(r, u, omega, cos(theta), cos(g), sin(g), cos(g0), sin(g0),
+                d, m, c, s);
+    free(u);
 }
 
 double aero_rotor_harmonic_amplitude(const aero_rotor *r, int m,
                                      double omega, double theta, double d)
 {
     double c, s;
-    aero_rotor_sums u;
-    if (m < 1 || m > AERO_ROTOR_HARMONICS_MAX || !(omega > 0.0) ||
-        !(d > 0.0))
-        return 0.0;
-    double g = m * r->blades * -0.5 * AERO_PI;
-    strip_sums(r, omega * sin(theta), m, &u);
-    harmonic_at(r, &u, omega, cos(theta), cos(g), sin(g), d, m, &c, &s);
+    aero_rotor_harmonic_at(r, m, omega, theta, 0.0, d, &c, &s);
     return hypot(c, s);
 }
 
@@ -590,6 +728,8 @@ static void ear_tones(aero_rotor *r, double omega, const double *ear,
     /* e^{i m B (phi - pi/2)}, harmonic by harmonic */
     const double g1 = r->blades * (phi - 0.5 * AERO_PI);
     const double rc = cos(g1), rs = sin(g1);
+    const double c0 = r->loads > 0 ? cos(phi - 0.5 * AERO_PI) : 1.0;
+    const double s0 = r->loads > 0 ? sin(phi - 0.5 * AERO_PI) : 0.0;
     double cg = 1.0, sg = 0.0;
     for (int m = 1; m <= h_max; m++) {
         double c1, s1, t = cg * rc - sg * rs;
@@ -599,7 +739,7 @@ static void ear_tones(aero_rotor *r, double omega, const double *ear,
             strip_sums(r, u->key, m, u);
             u->h = m;
         }
-        harmonic_at(r, u, w, ct, cg, sg, d, m, &c1, &s1);
+        harmonic_at(r, u, w, ct, cg, sg, c0, s0, d, m, &c1, &s1);
         double a = hypot(c1, s1);
         out->c[m - 1] = c1;
         out->s[m - 1] = omega < 0.0 ? -s1 : s1;

@@ -27,8 +27,26 @@
  * The whole rotor is then a moving point source at its hub, heard through
  * the arrival rings (arrivals.h): retarded time, exact Doppler of the
  * hub's motion per ear, interaural delay.
- * Left out: unsteady loading (blade-vortex interaction, inflow distortion,
- * a turbine's tower passage), the near field (r of the order of R),
+ * Unsteady loading from an inflow distortion (the wakes of N struts, a
+ * fan's stand or a turbine's tower, fixed in space): each blade's loading
+ * at azimuth psi is F (1 + SUM_k a_k cos(k N psi)), and a loading harmonic
+ * of order sigma = kN radiates at harmonic n through J_{n-sigma} and
+ * J_{n+sigma} of the same argument (Lowson 1965, Lowson and Ollerhead
+ * 1969; the rotor-stator rule n - kN of Tyler and Sofrin 1962):
+ *   L_n += SUM_k SUM_{nu = n -+ k N} e^{i (nu - n)(phi - pi/2)} (a_k/2)
+ *          SUM_s J_nu(z_s) (-T_s cos(theta) + (nu/n) D_s c0 / (Omega r_s))
+ * so sigma = n radiates on the axis (J_0), where the steady tones vanish:
+ * p = n Omega B T a_k / (4 pi c0 r) there (peak). Each wake is a Gaussian
+ * loading dip of depth `distortion` (of the steady loading) and width
+ * `wake` (m, full width at half depth, the same at every radius): its
+ * angular width wake / r_s is wider near the hub, so a_k falls as
+ * exp(-(k N s_s)^2 / 2), s_s = wake / (2.355 r_s) (a wake's Gaussian
+ * defect, as a plane body's far wake: Schlichting and Gersten 2000).
+ * The dip's mean is taken out: `thrust` and `torque` stay the means.
+ * Left out: other unsteady loading (blade-vortex interaction, inflow
+ * turbulence's tones), the blade's unsteady response (Sears 1941: the
+ * loading follows the inflow quasi-steadily), the near field (r of the
+ * order of R),
  * forward-flight convective factors of the tones (Garrick & Watkins 1954)
  * beyond the hub's Doppler, ground reflection, quadrupole noise.
  *
@@ -83,6 +101,20 @@
 #define AERO_ROTOR_NOISE_DB_MIN -200.0
 #define AERO_ROTOR_NOISE_DB_MAX 40.0
 #define AERO_ROTOR_NOISE_DB_DEFAULT 0.0
+/* the inflow distortion: its struts (wakes), their loading dip (of the
+   steady loading; 0: steady loading alone) and their wakes' width */
+#define AERO_ROTOR_STRUTS_MIN 1
+#define AERO_ROTOR_STRUTS_MAX 32
+#define AERO_ROTOR_STRUTS_DEFAULT 1
+#define AERO_ROTOR_DISTORTION_MIN 0.0
+#define AERO_ROTOR_DISTORTION_MAX 1.0
+#define AERO_ROTOR_DISTORTION_DEFAULT 0.0
+#define AERO_ROTOR_WAKE_MIN 0.001 /* m */
+#define AERO_ROTOR_WAKE_MAX 100.0
+#define AERO_ROTOR_WAKE_DEFAULT 0.03
+/* loading harmonics k N kept, k = 1..AERO_ROTOR_LOADS (those of a wake
+   narrower than R / 6 beyond it are left out: -56 dB and less) */
+#define AERO_ROTOR_LOADS 32
 
 /* a blade's chord and twist along its radius (a small text file, as
  * trees are): rows of r/R, chord in m and twist in degrees (the section's
@@ -108,6 +140,7 @@ typedef struct {
     double thrust; /* per blade at the design rpm, N */
     double drag;   /* in-plane, per blade at the design rpm, N */
     double volume; /* displaced volume, m^3 */
+    double load[AERO_ROTOR_LOADS]; /* a_k / 2 of the inflow distortion */
 } aero_rotor_strip;
 
 /* the broadband: octave bands 63 Hz .. 16 kHz, an envelope of harmonics
@@ -142,6 +175,12 @@ typedef struct {
     double thrust[AERO_ROTOR_HARMONICS_MAX]; /* SUM J_n (-T_s) */
     double drag[AERO_ROTOR_HARMONICS_MAX];   /* SUM J_n D_s c0 / r_s */
     double volume[AERO_ROTOR_HARMONICS_MAX]; /* SUM J_n V_s */
+    /* the inflow distortion's, per loading harmonic k, nu = n -+ k N:
+       SUM J_nu (-T_s) a_k/2 and SUM J_nu (nu/n) D_s c0 / r_s a_k/2 */
+    double thrust_lo[AERO_ROTOR_HARMONICS_MAX][AERO_ROTOR_LOADS];
+    double thrust_hi[AERO_ROTOR_HARMONICS_MAX][AERO_ROTOR_LOADS];
+    double drag_lo[AERO_ROTOR_HARMONICS_MAX][AERO_ROTOR_LOADS];
+    double drag_hi[AERO_ROTOR_HARMONICS_MAX][AERO_ROTOR_LOADS];
 } aero_rotor_sums;
 
 /* the blades' self-noise (Brooks et al. 1989, airfoil_noise.h): each
@@ -181,6 +220,9 @@ typedef struct aero_rotor {
     double radius, chord, thickness, hub;
     double thrust, torque, design_rpm;
     double noise_gain;   /* linear, of the self-noise */
+    int struts;          /* the inflow distortion: its order N */
+    double distortion, wake; /* its loading dip, its wakes' width (m) */
+    int loads;           /* loading harmonics k in use (0: steady alone) */
     aero_rotor_blade blade; /* chord and twist per radius, when has_blade */
     int has_blade;
     aero_rotor_strip strip[AERO_ROTOR_STRIPS_MAX];
@@ -229,6 +271,9 @@ int aero_rotor_set_thrust(aero_rotor *r, double newton);
 int aero_rotor_set_torque(aero_rotor *r, double newton_metre);
 int aero_rotor_set_design(aero_rotor *r, double rpm);
 int aero_rotor_set_noise_db(aero_rotor *r, double db);
+int aero_rotor_set_struts(aero_rotor *r, double struts);
+int aero_rotor_set_distortion(aero_rotor *r, double dip);
+int aero_rotor_set_wake(aero_rotor *r, double m);
 int aero_rotor_set_gain_db(aero_rotor *r, double db);
 int aero_rotor_set_ramp_ms(aero_rotor *r, double ms);
 int aero_rotor_set_wind(aero_rotor *r, const double w[3]);
@@ -281,5 +326,12 @@ int aero_rotor_process(aero_rotor *r, const float *rpm, float *const *out,
  * process renders there (the renderer's coefficients, for the tests) */
 double aero_rotor_harmonic_amplitude(const aero_rotor *r, int m,
                                      double omega, double theta, double d);
+/* the same at azimuth phi (rad, from the rotor's x axis, where the first
+   strut's wake is, turning towards y with omega > 0): the coefficients of
+   cos(n Psi) and sin(n Psi) of the pressure, Psi blade 0's azimuth at the
+   retarded time from the hub (as the process renders them) */
+void aero_rotor_harmonic_at(const aero_rotor *r, int m, double omega,
+                            double theta, double phi, double d, double *c,
+                            double *s);
 
 #endif

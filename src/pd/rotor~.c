@@ -1,7 +1,8 @@
 /* [rotor~]: a fan, a propeller, a drone's rotor or a wind turbine: B blades
  * turning at a speed in rpm given as a signal, their steady thrust and
  * torque heard as the blade-passing tone and its harmonics (Gutin 1936 per
- * blade strip, with thickness), from a hub placed and turned by a pose.
+ * blade strip, with thickness) and, behind struts, their unsteady loading
+ * (Lowson and Ollerhead 1969), from a hub placed and turned by a pose.
  * Thin Pd wrapper around src/core/play/rotor: it parses flags, routes
  * messages to setters and calls process from perform.
  *
@@ -119,6 +120,12 @@ AERO_PD_SETTER(rotor_tilde, t_rotor_tilde, design, x_core,
                aero_rotor_set_design)
 AERO_PD_SETTER(rotor_tilde, t_rotor_tilde, noise, x_core,
                aero_rotor_set_noise_db)
+AERO_PD_SETTER_WHOLE(rotor_tilde, t_rotor_tilde, struts, x_core,
+                     aero_rotor_set_struts)
+AERO_PD_SETTER(rotor_tilde, t_rotor_tilde, distortion, x_core,
+               aero_rotor_set_distortion)
+AERO_PD_SETTER(rotor_tilde, t_rotor_tilde, wake, x_core,
+               aero_rotor_set_wake)
 AERO_PD_SETTER(rotor_tilde, t_rotor_tilde, gain, x_core,
                aero_rotor_set_gain_db)
 AERO_PD_SETTER(rotor_tilde, t_rotor_tilde, ramp, x_core,
@@ -266,6 +273,19 @@ static const aero_pd_method rotor_tilde_methods[] = {
      AERO_PD_RANGE_NOTE_DEF(AERO_ROTOR_NOISE_DB_MIN, AERO_ROTOR_NOISE_DB_MAX,
                             AERO_ROTOR_NOISE_DB_DEFAULT, "dB",
                             "the blades' self-noise (Brooks et al. 1989)")},
+    {"struts", AERO_PD_FLOAT, 0, (t_method)rotor_tilde_struts, 0,
+     AERO_PD_RANGE_NOTE_DEF(AERO_ROTOR_STRUTS_MIN, AERO_ROTOR_STRUTS_MAX,
+                            AERO_ROTOR_STRUTS_DEFAULT, NULL,
+                            "wakes in the inflow, evenly spaced")},
+    {"distortion", AERO_PD_FLOAT, 0, (t_method)rotor_tilde_distortion, 0,
+     AERO_PD_RANGE_NOTE_DEF(AERO_ROTOR_DISTORTION_MIN,
+                            AERO_ROTOR_DISTORTION_MAX,
+                            AERO_ROTOR_DISTORTION_DEFAULT, NULL,
+                            "the loading's dip in a wake, of the steady; < 0 a rise")},
+    {"wake", AERO_PD_FLOAT, 0, (t_method)rotor_tilde_wake, 0,
+     AERO_PD_RANGE_NOTE_DEF(AERO_ROTOR_WAKE_MIN, AERO_ROTOR_WAKE_MAX,
+                            AERO_ROTOR_WAKE_DEFAULT, "m",
+                            "a wake's width at half depth")},
     {"gain", AERO_PD_FLOAT, 0, (t_method)rotor_tilde_gain, 0, AERO_PD_GAIN},
     {"ramp", AERO_PD_FLOAT, 0, (t_method)rotor_tilde_ramp, 0, AERO_PD_RAMP},
     {"seed", AERO_PD_FLOAT, 0, (t_method)rotor_tilde_seed, 0, AERO_PD_SEED},

@@ -501,6 +501,24 @@ UNIT_TEST(bad_input)
                    aero_rotor_set_strips(&r, 99) &&
                    aero_rotor_set_design(&r, 0) && r.blades == 2,
                "bad settings refused, the old kept");
+    UNIT_CHECK(aero_rotor_set_struts(&r, NAN) && aero_rotor_set_struts(&r, 0) &&
+                   aero_rotor_set_struts(&r, 2.5) &&
+                   aero_rotor_set_struts(&r, 1e9) &&
+                   aero_rotor_set_distortion(&r, NAN) &&
+                   aero_rotor_set_distortion(&r, -1.5) &&
+                   aero_rotor_set_distortion(&r, INFINITY) &&
+                   aero_rotor_set_wake(&r, 0) &&
+                   aero_rotor_set_wake(&r, NAN) &&
+                   aero_rotor_set_wake(&r, 1e30) &&
+                   r.struts == AERO_ROTOR_STRUTS_DEFAULT &&
+                   r.distortion == 0.0 && r.loads == 0 &&
+                   r.wake == AERO_ROTOR_WAKE_DEFAULT,
+               "bad inflow distortions refused, the old kept");
+    /* the strongest distortion allowed, narrowest wakes, most struts:
+       finite (set here, before the speeds below) */
+    aero_rotor_set_struts(&r, AERO_ROTOR_STRUTS_MAX);
+    aero_rotor_set_distortion(&r, AERO_ROTOR_DISTORTION_MIN);
+    aero_rotor_set_wake(&r, AERO_ROTOR_WAKE_MIN);
     for (int i = 0; i < 1000; i++)
         in[i] = i % 3 == 0 ? NAN : i % 3 == 1 ? 1e30f : -1e30f;
     int clamped = aero_rotor_process(&r, in, (float *[]){a}, 1000);
@@ -674,7 +692,8 @@ static double load_harmonic(double rs, int N, double a, double wake,
     return 2.0 * sum / K;
 }
 
-/* A fan (5 blades, 15 cm, tip Mach 0.55) behind 1 and 3 struts: the
+/* A fan (5 blades, 15 cm, tip Mach 0.55) behind 1 strut (its loading
+ * dipping by half in the wake) and 3 (rising by half): the
  * closed form's first three harmonics (Lowson 1965's loading harmonics
  * through J_{mB -+ kN}) against the direct time-domain sum above, on the
  * axis, at 30, 70 and 90 deg, at an azimuth off the struts'; and on the
@@ -688,13 +707,14 @@ static double load_harmonic(double rs, int N, double a, double wake,
  * slip in the unsteady terms is of the size of the terms themselves. */
 UNIT_TEST(inflow_distortion_tones)
 {
-    const double rpm = 12000.0, d = 1e4, a = 0.5, wake = 0.03;
+    const double rpm = 12000.0, d = 1e4, wake = 0.03;
     const double omega = rpm * 2.0 * PI / 60.0, phi = 0.6;
     const double angles[4] = {0.0, 30.0, 70.0, 90.0};
     const int struts[2] = {1, 3};
     aero_rotor *r = malloc(sizeof(*r));
     for (int st = 0; st < 2; st++) {
         const int N = struts[st];
+        const double a = st ? -0.5 : 0.5; /* a dip, a rise */
         aero_rotor_init(r, SR, 1, 1u);
         aero_rotor_set_blades(r, 5);
         aero_rotor_set_radius(r, 0.15);

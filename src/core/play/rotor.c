@@ -48,7 +48,7 @@ static void blade_at(const aero_rotor_blade *b, double x, double *chord,
 }
 
 /* the inflow distortion's loading harmonics per strip (rotor.h): N
-   Gaussian dips of depth a and standard deviation sd = wake / (2.355 r_s)
+   Gaussian dips of depth a (a < 0: rises) and standard deviation sd = wake / (2.355 r_s)
    in azimuth; their sum's Fourier coefficient at order k N, its mean
    taken out, is a_k = -a N sd sqrt(2/pi) exp(-(k N sd)^2 / 2) (exact for
    the periodic sum of the Gaussians). Kept: k up to the last whose a_k
@@ -64,8 +64,9 @@ static void distortion_layout(aero_rotor *r)
         const double first = -a * N * sd * sqrt(2.0 / AERO_PI);
         for (int k = 1; k <= AERO_ROTOR_LOADS; k++) {
             const double x = k * N * sd;
-            sp->load[k - 1] = a > 0.0 ? 0.5 * first * exp(-0.5 * x * x) : 0.0;
-            if (fabs(sp->load[k - 1]) > 0.5e-5 * a && k > r->loads)
+            sp->load[k - 1] = a != 0.0 ? 0.5 * first * exp(-0.5 * x * x)
+                                       : 0.0;
+            if (fabs(sp->load[k - 1]) > 0.5e-5 * fabs(a) && k > r->loads)
                 r->loads = k;
         }
     }

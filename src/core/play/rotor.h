@@ -37,7 +37,8 @@
  *          SUM_s J_nu(z_s) (-T_s cos(theta) + (nu/n) D_s c0 / (Omega r_s))
  * so sigma = n radiates on the axis (J_0), where the steady tones vanish:
  * p = n Omega B T a_k / (4 pi c0 r) there (peak). Each wake is a Gaussian
- * loading dip of depth `distortion` (of the steady loading) and width
+ * loading dip of depth `distortion` (of the steady loading; negative: a
+ * rise) and width
  * `wake` (m, full width at half depth, the same at every radius): its
  * angular width wake / r_s is wider near the hub, so a_k falls as
  * exp(-(k N s_s)^2 / 2), s_s = wake / (2.355 r_s) (a wake's Gaussian
@@ -102,18 +103,23 @@
 #define AERO_ROTOR_NOISE_DB_MAX 40.0
 #define AERO_ROTOR_NOISE_DB_DEFAULT 0.0
 /* the inflow distortion: its struts (wakes), their loading dip (of the
-   steady loading; 0: steady loading alone) and their wakes' width */
+   steady loading; 0: steady loading alone; negative: the loading rises in
+   a wake, as a fan's or propeller's does, the slower inflow meeting the
+   blade at a larger angle of attack; positive: it falls, as a wind
+   turbine's behind its tower) and their wakes' width */
 #define AERO_ROTOR_STRUTS_MIN 1
 #define AERO_ROTOR_STRUTS_MAX 32
 #define AERO_ROTOR_STRUTS_DEFAULT 1
-#define AERO_ROTOR_DISTORTION_MIN 0.0
+#define AERO_ROTOR_DISTORTION_MIN -1.0
 #define AERO_ROTOR_DISTORTION_MAX 1.0
 #define AERO_ROTOR_DISTORTION_DEFAULT 0.0
 #define AERO_ROTOR_WAKE_MIN 0.001 /* m */
 #define AERO_ROTOR_WAKE_MAX 100.0
 #define AERO_ROTOR_WAKE_DEFAULT 0.03
-/* loading harmonics k N kept, k = 1..AERO_ROTOR_LOADS (those of a wake
-   narrower than R / 6 beyond it are left out: -56 dB and less) */
+/* loading harmonics k N kept, k = 1..AERO_ROTOR_LOADS: beyond them a
+   wake's harmonics are left out (one strut's wake R/4 wide: below -53 dB
+   of its first at the tip; R/5, a desk fan's: -34 dB, on the axis from
+   the 7th blade-passing harmonic up) */
 #define AERO_ROTOR_LOADS 32
 
 /* a blade's chord and twist along its radius (a small text file, as

@@ -546,15 +546,16 @@ static double bessel_jv(int v, double z)
     return v < 0 && (a & 1) ? -j : j;
 }
 
-/* |J_v(z)| <= (z/2)^|v| / |v|! below 1e-7 (-140 dB): left out */
-static int bessel_negligible(int v, double z)
+/* the largest order |v| whose J_v(z) may reach 1e-7 (-140 dB): beyond
+   it |J_v(z)| <= (z/2)^|v| / |v|! <= (e z / (2|v|))^|v| is below that */
+static int bessel_reach(double z)
 {
-    const int a = v < 0 ? -v : v;
-    if (a == 0)
-        return 0;
+    int a = 1;
     if (!(z > 1e-9))
-        return 1;
-    return a * log(0.5 * z) - lgamma(a + 1.0) < -16.0;
+        return 0;
+    while (a < 1000000 && a * log(2.718281828459045 * z / (2.0 * a)) >= -16.0)
+        a++;
+    return a - 1;
 }
 
 /* the inflow distortion's strip sums of harmonic m (rotor.h): per loading
@@ -565,12 +566,13 @@ static void distortion_sums(const aero_rotor *r, double x, int m,
                             aero_rotor_sums *u)
 {
     const int n = m * r->blades;
-    const double z_tip = n * x * r->strip[r->strips - 1].r / AERO_C0;
+    const int reach =
+        bessel_reach(n * x * r->strip[r->strips - 1].r / AERO_C0);
     for (int k = 1; k <= r->loads; k++) {
         for (int side = 0; side < 2; side++) {
             const int nu = side ? n + k * r->struts : n - k * r->struts;
             double t = 0.0, d = 0.0;
-            if (!bessel_negligible(nu, z_tip))
+            if (abs(nu) <= reach)
                 for (int q = 0; q < r->strips; q++) {
                     const aero_rotor_strip *sp = &r->strip[q];
                     double j = bessel_jv(nu, n * x * sp->r / AERO_C0) *

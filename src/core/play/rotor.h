@@ -28,22 +28,25 @@
  * the arrival rings (arrivals.h): retarded time, exact Doppler of the
  * hub's motion per ear, interaural delay.
  * Unsteady loading from an inflow distortion (the wakes of N struts, a
- * fan's stand or a turbine's tower, fixed in space): each blade's loading
- * at azimuth psi is F (1 + SUM_k a_k cos(k N psi)), and a loading harmonic
- * of order sigma = kN radiates at harmonic n through J_{n-sigma} and
- * J_{n+sigma} of the same argument (Lowson 1965, Lowson and Ollerhead
- * 1969; the rotor-stator rule n - kN of Tyler and Sofrin 1962):
+ * fan's stand or a turbine's tower, fixed in space, the first along the
+ * rotor's x axis): each blade's loading at azimuth psi is
+ * F (1 + SUM_k a_k cos(k N psi)), and a loading harmonic of order
+ * sigma = kN radiates at harmonic n through J_{n-sigma} and J_{n+sigma}
+ * of the same argument (Lowson 1965, Lowson and Ollerhead 1969; the
+ * rotor-stator rule n - kN of Tyler and Sofrin 1962):
  *   L_n += SUM_k SUM_{nu = n -+ k N} e^{i (nu - n)(phi - pi/2)} (a_k/2)
  *          SUM_s J_nu(z_s) (-T_s cos(theta) + (nu/n) D_s c0 / (Omega r_s))
- * so sigma = n radiates on the axis (J_0), where the steady tones vanish:
- * p = n Omega B T a_k / (4 pi c0 r) there (peak). Each wake is a Gaussian
- * loading dip of depth `distortion` (of the steady loading; negative: a
- * rise) and width
- * `wake` (m, full width at half depth, the same at every radius): its
- * angular width wake / r_s is wider near the hub, so a_k falls as
+ * (derived from the far field of a rotating point force in the frame and
+ * phase above, sigma = 0 giving Gutin's terms; test_rotor checks it
+ * against a direct time-domain sum). Only sigma = n reaches the axis
+ * (J_0), where the steady tones vanish: there p = n Omega B |SUM_s T_s
+ * a_k,s| / (4 pi c0 r) (peak), kN = n. Each wake is a Gaussian change of
+ * the loading by `distortion` of the steady (negative: a rise) over
+ * `wake` metres (full width at half depth, the same at every radius):
+ * its angle wake / r_s is wider near the hub, so a_k falls as
  * exp(-(k N s_s)^2 / 2), s_s = wake / (2.355 r_s) (a wake's Gaussian
- * defect, as a plane body's far wake: Schlichting and Gersten 2000).
- * The dip's mean is taken out: `thrust` and `torque` stay the means.
+ * defect, as a plane body's far wake: Schlichting and Gersten 2000). The
+ * change's mean is taken out: `thrust` and `torque` stay the means.
  * Left out: other unsteady loading (blade-vortex interaction, inflow
  * turbulence's tones), the blade's unsteady response (Sears 1941: the
  * loading follows the inflow quasi-steadily), the near field (r of the

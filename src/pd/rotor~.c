@@ -257,7 +257,8 @@ static const aero_pd_method rotor_tilde_methods[] = {
      AERO_PD_RANGE_NOTE_DEF(AERO_ROTOR_DISTORTION_MIN,
                             AERO_ROTOR_DISTORTION_MAX,
                             AERO_ROTOR_DISTORTION_DEFAULT, NULL,
-                            "the loading's dip in a wake, of the steady; < 0 a rise")},
+                            "the loading's dip in a wake, of the steady; "
+                            "< 0 a rise")},
     {"wake", AERO_PD_FLOAT, 0, (t_method)rotor_tilde_wake, 0,
      AERO_PD_RANGE_NOTE_DEF(AERO_ROTOR_WAKE_MIN, AERO_ROTOR_WAKE_MAX,
                             AERO_ROTOR_WAKE_DEFAULT, "m",

@@ -48,11 +48,12 @@ static void blade_at(const aero_rotor_blade *b, double x, double *chord,
 }
 
 /* the inflow distortion's loading harmonics per strip (rotor.h): N
-   Gaussian dips of depth a (a < 0: rises) and standard deviation sd = wake / (2.355 r_s)
-   in azimuth; their sum's Fourier coefficient at order k N, its mean
-   taken out, is a_k = -a N sd sqrt(2/pi) exp(-(k N sd)^2 / 2) (exact for
-   the periodic sum of the Gaussians). Kept: k up to the last whose a_k
-   reaches 1e-5 a at some strip (-100 dB) */
+   Gaussian dips of depth a (a < 0: rises) and standard deviation
+   sd = wake / (2.355 r_s) in azimuth; their sum's Fourier coefficient at
+   order k N, its mean taken out, is
+   a_k = -a N sd sqrt(2/pi) exp(-(k N sd)^2 / 2) (exact for the periodic
+   sum of the Gaussians). Kept: k up to the last whose a_k reaches 1e-5 a
+   at some strip (-100 dB) */
 static void distortion_layout(aero_rotor *r)
 {
     const int N = r->struts;
@@ -553,7 +554,8 @@ static int bessel_reach(double z)
     int a = 1;
     if (!(z > 1e-9))
         return 0;
-    while (a < 1000000 && a * log(2.718281828459045 * z / (2.0 * a)) >= -16.0)
+    const double e = 2.718281828459045;
+    while (a < 1000000 && a * log(e * z / (2.0 * a)) >= -16.0)
         a++;
     return a - 1;
 }

@@ -9,6 +9,7 @@
 
 #include "aero_air.h"
 #include "airfoil_noise.h"
+#include "ghost_fade.h"
 
 /* area of a NACA four-digit section: 0.685 t c (Abbott & von Doenhoff
    1959), the strip's displaced volume per unit span */
@@ -305,6 +306,7 @@ int aero_rotor_set_sample_rate(aero_rotor *r, double sr)
     int k = aero_moving_player_set_sample_rate(&r->base, sr);
     if (k == 1) {
         r->primed = 0; /* new rings: the sound starts again from 0 */
+        memset(r->ghost, 0, sizeof(r->ghost));
         noise_bank(r);
     }
     return k < 0 ? -1 : 0;
@@ -441,6 +443,7 @@ static void apply_pose(aero_rotor *r, double *p, double interval_s)
         for (int i = 3; i < 7; i++)
             p[i] = -p[i];
     if (!r->pose_set || interval_s < 0.0 || interval_s > 0.5) {
+        r->jumped |= r->pose_set && r->primed;
         aero_pose_path_jump(&r->path, 7, p);
         memcpy(r->pose, p, 7 * sizeof(double));
         r->pose_set = 1;
@@ -1198,11 +1201,12 @@ static double ramp_after(aero_ramp *r, int m)
    glide from then to now, the phase turns from psi0 by dpsi a sample.
    Each harmonic keeps its own phasor e^{i (k+1) B psi}, turned by its own
    step (set exactly in double at each chunk): the harmonics are
-   independent, so the loop over them vectorises */
+   independent, so the loop over them vectorises. shape (NULL: none): a
+   fade's factor per sample, smooth where a glide per chunk would kink */
 static void radiate(aero_rotor *r, const aero_rotor_ear *then,
                     const aero_rotor_ear *now, double gain0, double gain1,
-                    double psi0, double dpsi, const float *noise, int e,
-                    int m)
+                    double psi0, double dpsi, const float *noise,
+                    const float *shape, int e, int m)
 {
     enum { H = AERO_ROTOR_HARMONICS_MAX };
     const int h = then->h > now->h ? then->h : now->h;
@@ -1261,7 +1265,8 @@ static void radiate(aero_rotor *r, const aero_rotor_ear *then,
             c[k] += dc[k];
             s[k] += ds[k];
         }
-        aero_arrivals_add_span(ring, mask, at, 1.0 + ddelay, v);
+        aero_arrivals_add_span(ring, mask, at, 1.0 + ddelay,
+                               shape ? v * shape[j] : v);
         at += 1.0 + ddelay;
     }
 }
@@ -1298,6 +1303,53 @@ static double chunk_turn(const aero_rotor *r, const float *rpm, int m,
     return sum / m * TWO_PI / 60.0 / r->base.sample_rate;
 }
 
+/* a jump while sounding: the sound where the rotor was goes on there as a
+   ghost (the oldest replaced when all are fading) */
+static void leave_ghost(aero_rotor *r, double level)
+{
+    aero_rotor_ghost *g = &r->ghost[0];
+    for (int k = 1; k < AERO_ROTOR_GHOSTS && g->active; k++)
+        if (!r->ghost[k].active || r->ghost[k].samples > g->samples)
+            g = &r->ghost[k];
+    memcpy(g->ear, r->then, sizeof(g->ear));
+    g->level = level;
+    g->samples = 0.0;
+    g->active = 1;
+}
+
+/* a fade's factors over the m samples after t (samples since it began):
+   ghost_fade.h's half cosine falling (out) or rising (!out); 0 when done */
+static int fade_shape(double t, int m, double sr, int out, float *shape)
+{
+    if (!(t < AERO_GHOST_FADE_S * sr))
+        return 0;
+    for (int j = 0; j < m; j++) {
+        double f = aero_ghost_fade(t + j + 1, sr, 1.0);
+        shape[j] = (float)(out ? f : 1.0 - f);
+    }
+    return 1;
+}
+
+/* the ghosts' next m samples: their tones and envelope held, at their
+   delays, fading out */
+static void radiate_ghosts(aero_rotor *r, double gain0, double gain1,
+                           double dpsi, const float *noise, int m)
+{
+    float shape[AERO_ROTOR_CHUNK];
+    for (int k = 0; k < AERO_ROTOR_GHOSTS; k++) {
+        aero_rotor_ghost *g = &r->ghost[k];
+        if (!g->active)
+            continue;
+        g->active = fade_shape(g->samples, m, r->base.sample_rate, 1, shape);
+        g->samples += m;
+        if (!g->active)
+            continue;
+        for (int e = 0; e < r->base.n_ears; e++)
+            radiate(r, &g->ear[e], &g->ear[e], gain0 * g->level,
+                    gain1 * g->level, r->psi, dpsi, noise, shape, e, m);
+    }
+}
+
 /* one chunk of m samples */
 static void chunk(aero_rotor *r, const float *rpm, int m)
 {
@@ -1306,6 +1358,21 @@ static void chunk(aero_rotor *r, const float *rpm, int m)
     double dpsi = chunk_turn(r, rpm, m, &r->base.clamped);
     double omega = dpsi * r->base.sample_rate;
     float noise[AERO_ROTOR_CHUNK];
+    const double sr = r->base.sample_rate;
+    /* the first chunk or the first at a new place: the sound fades in
+       (from 0 at the start, as the ghost of the old place fades out) */
+    const int fresh = !r->primed || r->jumped;
+    if (fresh) {
+        if (r->jumped)
+            leave_ghost(r, r->fade_in < AERO_GHOST_FADE_S * sr
+                               ? 1.0 - aero_ghost_fade(r->fade_in, sr, 1.0)
+                               : 1.0);
+        r->fade_in = 0.0;
+        r->jumped = 0;
+    }
+    float shape[AERO_ROTOR_CHUNK];
+    const int fading = fade_shape(r->fade_in, m, sr, 0, shape);
+    r->fade_in += m;
     advance_pose(r, m);
     rotor_axes(r, axes);
     for (int i = 0; i < 3; i++)
@@ -1319,6 +1386,7 @@ static void chunk(aero_rotor *r, const float *rpm, int m)
     } else
         memset(noise, 0, sizeof(noise));
     gain = ramp_after(&r->base.gain, m);
+    radiate_ghosts(r, gain_then, gain, dpsi, noise, m);
     for (int e = 0; e < r->base.n_ears; e++) {
         for (int i = 0; i < 3; i++)
             ear[i] = ramp_after(&r->base.ear[3 * e + i], m);
@@ -1328,21 +1396,17 @@ static void chunk(aero_rotor *r, const float *rpm, int m)
            speed, slowly against a chunk, and costs more than the tones */
         if (!hiss)
             memset(now[e].env, 0, sizeof(now[e].env));
-        else if (r->envelope_due <= 0 || !r->primed)
+        else if (r->envelope_due <= 0 || fresh)
             ear_envelope(r, omega, u_axis, ear, axes, now[e].env);
         else
             memcpy(now[e].env, r->then[e].env, sizeof(now[e].env));
-        if (!r->primed) { /* the first chunk: the sound from 0 */
+        if (fresh) /* at its place from the start: no glide from the old */
             r->then[e] = now[e];
-            memset(r->then[e].c, 0, sizeof(r->then[e].c));
-            memset(r->then[e].s, 0, sizeof(r->then[e].s));
-            memset(r->then[e].env, 0, sizeof(r->then[e].env));
-        }
         radiate(r, &r->then[e], &now[e], gain_then, gain, r->psi, dpsi,
-                noise, e, m);
+                noise, fading ? shape : NULL, e, m);
         r->then[e] = now[e];
     }
-    r->envelope_due = r->envelope_due <= 0 || !r->primed
+    r->envelope_due = r->envelope_due <= 0 || fresh
                           ? AERO_ROTOR_ENVELOPE_CHUNKS - 1
                           : r->envelope_due - 1;
     r->primed = 1;

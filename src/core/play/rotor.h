@@ -174,6 +174,16 @@ typedef struct {
     int h; /* harmonics above the floor; those beyond are 0 */
 } aero_rotor_ear;
 
+/* the sound at a place the rotor jumped from (`place`, a pose after a
+   pause): each ear's tones and envelope as they were, its level then
+   (the start's fade-in, if not done) and the samples since the jump */
+#define AERO_ROTOR_GHOSTS 4 /* jumps heard fading at once: 8 ms apart */
+typedef struct {
+    aero_rotor_ear ear[AERO_EARS_MAX];
+    double level, samples;
+    int active;
+} aero_rotor_ghost;
+
 /* an ear's strip sums of harmonics 1..h (rotor.c: the Bessel functions,
    which depend on Omega sin(theta) alone), kept while that moves less
    than AERO_ROTOR_SUMS_TOLERANCE */
@@ -252,6 +262,12 @@ typedef struct aero_rotor {
 
     aero_rotor_ear then[AERO_EARS_MAX]; /* at the last chunk's end */
     int primed;
+    /* a start and each jump fade the sound in over AERO_GHOST_FADE_S
+       (ghost_fade.h): the samples since; the sound at the places left
+       goes on there as ghosts fading out over the same time */
+    double fade_in;
+    int jumped; /* a jump while sounding, for the next chunk */
+    aero_rotor_ghost ghost[AERO_ROTOR_GHOSTS];
     int envelope_due; /* chunks until the broadband's envelope is made again */
 } aero_rotor;
 

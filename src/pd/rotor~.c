@@ -1,7 +1,8 @@
 /* [rotor~]: a fan, a propeller, a drone's rotor or a wind turbine: B blades
  * turning at a speed in rpm given as a signal, their steady thrust and
  * torque heard as the blade-passing tone and its harmonics (Gutin 1936 per
- * blade strip, with thickness), from a hub placed and turned by a pose.
+ * blade strip, with thickness) and, behind struts, their unsteady loading
+ * (Lowson and Ollerhead 1969), from a hub placed and turned by a pose.
  * Thin Pd wrapper around src/core/play/rotor: it parses flags, routes
  * messages to setters and calls process from perform.
  *
@@ -14,7 +15,6 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "load_job.h"
 #include "rotor.h"
 
 static t_class *rotor_tilde_class;
@@ -25,17 +25,14 @@ typedef struct _rotor_tilde {
     aero_pd_base x_base;
     aero_rotor x_core;
     aero_pd_pose_clock x_clock; /* poses' intervals and block offsets */
-    /* a blade table read in a worker (load_job.h), taken by the clock */
-    struct rotor_blade_load *x_load;
-    aero_load_job *x_job;
-    t_symbol *x_next; /* asked for while one loads: the latest wins */
-    t_clock *x_poll;
-    double x_logical, x_real;
+    /* a blade table read in a worker and taken by the clock (aero_pd_swap:
+       its job, its poll, the latest asked for meanwhile; no core is
+       swapped, the table is set on the live one) */
+    aero_pd_swap x_swap;
     int x_creating;
 } t_rotor_tilde;
 
 #define OBJ "[rotor~]"
-#define POLL_MS 5.0
 
 /* a blade table being read: the worker writes b, err and bad only */
 typedef struct rotor_blade_load {
@@ -119,6 +116,12 @@ AERO_PD_SETTER(rotor_tilde, t_rotor_tilde, design, x_core,
                aero_rotor_set_design)
 AERO_PD_SETTER(rotor_tilde, t_rotor_tilde, noise, x_core,
                aero_rotor_set_noise_db)
+AERO_PD_SETTER_WHOLE(rotor_tilde, t_rotor_tilde, struts, x_core,
+                     aero_rotor_set_struts)
+AERO_PD_SETTER(rotor_tilde, t_rotor_tilde, distortion, x_core,
+               aero_rotor_set_distortion)
+AERO_PD_SETTER(rotor_tilde, t_rotor_tilde, wake, x_core,
+               aero_rotor_set_wake)
 AERO_PD_SETTER(rotor_tilde, t_rotor_tilde, gain, x_core,
                aero_rotor_set_gain_db)
 AERO_PD_SETTER(rotor_tilde, t_rotor_tilde, ramp, x_core,
@@ -139,39 +142,27 @@ static int rotor_tilde_read(void *arg)
 static void rotor_tilde_blade(t_rotor_tilde *x, t_symbol *name);
 
 /* the read done: the table taken, or why not (the old blade stays) */
-static void rotor_tilde_finish(t_rotor_tilde *x)
+static void rotor_tilde_finish(void *owner)
 {
-    rotor_blade_load *l = x->x_load;
-    aero_load_job_finish(x->x_job);
-    x->x_job = NULL;
-    x->x_load = NULL;
+    t_rotor_tilde *x = owner;
+    rotor_blade_load *l = aero_pd_swap_take(&x->x_swap);
     if (l->bad)
         pd_error(x, OBJ ": blade: %s: the previous blade stays", l->err);
     else if (aero_rotor_set_blade(&x->x_core, &l->b))
         pd_error(x, OBJ ": blade: %s refused: the previous blade stays",
                  l->path);
     free(l);
-    if (x->x_next) {
-        t_symbol *next = x->x_next;
-        x->x_next = NULL;
+    if (x->x_swap.next) {
+        t_symbol *next = x->x_swap.next;
+        x->x_swap.next = NULL;
         rotor_tilde_blade(x, next);
     }
 }
 
-/* Pd's logical time well ahead of the real one: batch mode, where the
-   table is taken at the first poll (the same logical time in every run) */
-static int rotor_tilde_batch(const t_rotor_tilde *x)
+/* aero_pd_swap's old core: never set here */
+static void rotor_tilde_no_core(void *core)
 {
-    double logical = clock_gettimesince(x->x_logical) * 0.001;
-    return sys_getrealtime() - x->x_real < 0.5 * logical;
-}
-
-static void rotor_tilde_poll(t_rotor_tilde *x)
-{
-    if (x->x_job && (aero_load_job_done(x->x_job) || rotor_tilde_batch(x)))
-        rotor_tilde_finish(x);
-    else if (x->x_job)
-        clock_delay(x->x_poll, POLL_MS);
+    (void)core;
 }
 
 /* blade <file>: a table of r/R chord twist_deg (found as textures and
@@ -181,13 +172,13 @@ static void rotor_tilde_poll(t_rotor_tilde *x)
 static void rotor_tilde_blade(t_rotor_tilde *x, t_symbol *name)
 {
     if (!name || !*name->s_name) {
-        if (x->x_job)
-            x->x_next = NULL;
+        if (x->x_swap.job)
+            x->x_swap.next = NULL;
         aero_rotor_set_blade(&x->x_core, NULL);
         return;
     }
-    if (x->x_job) {
-        x->x_next = name;
+    if (x->x_swap.job) {
+        x->x_swap.next = name; /* the latest wins */
         return;
     }
     rotor_blade_load *l = calloc(1, sizeof(*l));
@@ -203,21 +194,13 @@ static void rotor_tilde_blade(t_rotor_tilde *x, t_symbol *name)
         free(l);
         return;
     }
-    x->x_load = l;
-    x->x_job = aero_load_job_start(rotor_tilde_read, l, !x->x_creating);
-    if (!x->x_job) {
-        x->x_load = NULL;
+    /* blade files are small (AERO_ROTOR_BLADE_FILE_MAX): read at once at
+       creation */
+    if (aero_pd_swap_start(&x->x_swap, rotor_tilde_read, l,
+                           x->x_creating)) {
         free(l);
         pd_error(x, OBJ ": blade: out of memory: the previous blade stays");
-        return;
     }
-    if (x->x_creating) {
-        rotor_tilde_finish(x);
-        return;
-    }
-    x->x_logical = clock_getlogicaltime();
-    x->x_real = sys_getrealtime();
-    clock_delay(x->x_poll, POLL_MS);
 }
 
 /* --- creation -------------------------------------------------------------- */
@@ -266,6 +249,20 @@ static const aero_pd_method rotor_tilde_methods[] = {
      AERO_PD_RANGE_NOTE_DEF(AERO_ROTOR_NOISE_DB_MIN, AERO_ROTOR_NOISE_DB_MAX,
                             AERO_ROTOR_NOISE_DB_DEFAULT, "dB",
                             "the blades' self-noise (Brooks et al. 1989)")},
+    {"struts", AERO_PD_FLOAT, 0, (t_method)rotor_tilde_struts, 0,
+     AERO_PD_RANGE_NOTE_DEF(AERO_ROTOR_STRUTS_MIN, AERO_ROTOR_STRUTS_MAX,
+                            AERO_ROTOR_STRUTS_DEFAULT, NULL,
+                            "wakes in the inflow, evenly spaced")},
+    {"distortion", AERO_PD_FLOAT, 0, (t_method)rotor_tilde_distortion, 0,
+     AERO_PD_RANGE_NOTE_DEF(AERO_ROTOR_DISTORTION_MIN,
+                            AERO_ROTOR_DISTORTION_MAX,
+                            AERO_ROTOR_DISTORTION_DEFAULT, NULL,
+                            "the loading's dip in a wake, of the steady; "
+                            "< 0 a rise")},
+    {"wake", AERO_PD_FLOAT, 0, (t_method)rotor_tilde_wake, 0,
+     AERO_PD_RANGE_NOTE_DEF(AERO_ROTOR_WAKE_MIN, AERO_ROTOR_WAKE_MAX,
+                            AERO_ROTOR_WAKE_DEFAULT, "m",
+                            "a wake's width at half depth")},
     {"gain", AERO_PD_FLOAT, 0, (t_method)rotor_tilde_gain, 0, AERO_PD_GAIN},
     {"ramp", AERO_PD_FLOAT, 0, (t_method)rotor_tilde_ramp, 0, AERO_PD_RAMP},
     {"seed", AERO_PD_FLOAT, 0, (t_method)rotor_tilde_seed, 0, AERO_PD_SEED},
@@ -298,7 +295,8 @@ static void *rotor_tilde_new(t_symbol *s, int argc, t_atom *argv)
                         aero_pd_default_seed()))
         aero_pd_init_failed(&x->x_base, sys_getsr());
     aero_pd_pose_clock_init(&x->x_clock);
-    x->x_poll = clock_new(x, (t_method)rotor_tilde_poll);
+    aero_pd_swap_init(&x->x_swap, x, rotor_tilde_finish,
+                      rotor_tilde_no_core);
     x->x_creating = 1;
     aero_pd_parse_flags(&x->x_base, argc, argv);
     x->x_creating = 0;
@@ -308,9 +306,8 @@ static void *rotor_tilde_new(t_symbol *s, int argc, t_atom *argv)
 
 static void rotor_tilde_free(t_rotor_tilde *x)
 {
-    clock_free(x->x_poll);
-    if (x->x_job) /* the worker frees the load when it is done */
-        aero_load_job_abandon(x->x_job, free);
+    /* a read running: the worker frees its load when it is done */
+    aero_pd_swap_free(&x->x_swap, free);
     aero_pd_base_free(&x->x_base);
     aero_rotor_free(&x->x_core);
 }

@@ -9,30 +9,17 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define SLAB_PI 3.14159265358979323846
-
-/* the same factors as flow3d.c's factor_poisson (in double, then float,
-   so the same numbers), for this rank's ky rows only */
+/* flow3d.c's factors, for this rank's ky rows only */
 static void slab_factor(aero_flow3d_slab *s)
 {
-    const int nx = s->nx, ny = s->ny, nz = s->nz, nxh = nx / 2 + 1;
-    for (ptrdiff_t yl = 0; yl < s->nyl; yl++) {
-        const int ky = (int)(s->ky0 + yl);
-        (void)ny;
-        for (int kx = 0; kx < nxh; kx++) {
-            double mu = 2.0 * cos(2.0 * SLAB_PI * kx / nx) +
-                        2.0 * cos(2.0 * SLAB_PI * ky / ny) - 4.0;
-            double cprev = 0.0;
-            for (int k = 0; k < nz; k++) {
-                double b = mu - 2.0;
-                if (k == 0) b = mu - 1.0;
-                if (k == nz - 1) b = mu - 3.0;
-                double m = 1.0 / (b - (k ? cprev : 0.0));
-                s->tri_m[((size_t)yl * nz + k) * nxh + kx] = (float)m;
-                cprev = m;
-            }
-        }
-    }
+    const int nxh = s->nx / 2 + 1;
+    for (ptrdiff_t yl = 0; yl < s->nyl; yl++)
+        for (int kx = 0; kx < nxh; kx++)
+            aero_flow3d_poisson_factors(s->nx, s->ny, s->nz, kx,
+                                        (int)(s->ky0 + yl),
+                                        s->tri_m + (size_t)yl * s->nz * nxh +
+                                            kx,
+                                        (size_t)nxh);
 }
 
 int aero_flow3d_slab_init(aero_flow3d_slab *s, MPI_Comm comm, int nx, int ny,

@@ -442,6 +442,12 @@ fieldsound~ | fieldsound~ -demo 8 -sync | ; aero-obj log 5 | log 5 out of range 
 fieldsound~ | fieldsound~ -demo 8 -sync | ; aero-obj velocity 7 | velocity 7 out of range (0..1 | -
 fieldsound~ | fieldsound~ -demo 8 -sync | ; aero-obj speed 1e-30 | speed 1e-30 frames/s out of range (0.001.. | -
 rotor~ | rotor~ | ; aero-obj blades 0 | blades 0 out of range (1..16 | -
+rotor~ | rotor~ | ; aero-obj struts 0 | struts 0 out of range (1..32 | -
+rotor~ | rotor~ -struts 2.5 | | struts 2.5 | -
+rotor~ | rotor~ | ; aero-obj distortion 1.5 | distortion 1.5 out of range (-1..1 | -
+rotor~ | rotor~ -distortion -1.5 | | distortion -1.5 out of range (-1..1 | -
+rotor~ | rotor~ | ; aero-obj wake 0 | wake 0 m out of range (0.001..100 m | -
+rotor~ | rotor~ -struts 32 -distortion 1 -wake 0.001 -listener 0 0 1 | ; aero-speed 6000 | !error | 10
 rotor~ | rotor~ -blade $H/falling.blade | | does not rise from 0.5: the previous blade stays | -
 rotor~ | rotor~ -blade $H/nan.blade | | line 2: not three finite numbers | -
 rotor~ | rotor~ -blade $H/big.blade | | larger than 65536 bytes | -

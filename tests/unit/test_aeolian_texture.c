@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "aeolian.h"
+#include "clicks.h"
 #include "multi_instance.h"
 #include "unit.h"
 
@@ -441,32 +442,6 @@ UNIT_TEST(phase_wander)
 
 /* --- a whirl without clicks ----------------------------------------------- */
 
-/* the worst 2 ms window's largest |second difference| over the largest of
-   its three neighbours on each side (aero-analyze's `clicks`, the sword
-   test's measure): 1 for a smooth sound, large where one window jumps */
-static double click_ratio(const float *x, long n, double sr)
-{
-    long w = (long)(0.002 * sr), windows = n / w;
-    double *peak = calloc((size_t)windows + 1, sizeof(double)), global = 0;
-    for (long k = 0; k < windows; k++) {
-        for (long i = k * w; i < (k + 1) * w; i++)
-            if (i >= 2)
-                peak[k] = fmax(peak[k], fabs(x[i] - 2 * x[i - 1] + x[i - 2]));
-        global = fmax(global, peak[k]);
-    }
-    double worst = 1.0;
-    for (long k = 3; k + 3 < windows; k++) {
-        double around = 0;
-        for (long j = k - 3; j <= k + 3; j++)
-            if (j != k)
-                around = fmax(around, peak[j]);
-        around = fmax(around, 1e-6 * global);
-        if (around > 0)
-            worst = fmax(worst, peak[k] / around);
-    }
-    free(peak);
-    return worst;
-}
 
 /* one direction, a WHIRL_HZ sine at v0 in every channel (whole periods),
    the sword's diameter */

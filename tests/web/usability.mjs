@@ -21,6 +21,12 @@
 //            from disk (file://) the page says why it cannot run
 //   small    one button per label in the whirl scene, "Solo wire" a named
 //            choice, the spectrogram's axes drawn
+//   rotors   each rotor scene's buttons do what they say, heard on the
+//            page's output: the fan's Switch off silences it and Switch on
+//            brings it back; the drone's and the propeller's Fly past
+//            come from far (quieter than before), pass close (louder) and
+//            go (quieter); Hover in front brings the drone back; never
+//            over -1 dBFS
 import { readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
 
@@ -382,10 +388,102 @@ async function caseSmall(browser, url, out, say, errors) {
   await page.context().close();
 }
 
+// the page output's mean power over the next WAIT ms (dB, full scale 0),
+// from an AnalyserNode read every 50 ms (its 4096 samples, 85 ms, overlap)
+async function power(page, wait) {
+  await page.evaluate(() => {
+    const { ctx, node } = window.aero.state;
+    if (!window.__power) {
+      const a = ctx.createAnalyser();
+      a.fftSize = 4096;
+      node.connect(a);
+      const x = new Float32Array(a.fftSize);
+      window.__power = { sum: 0, n: 0 };
+      setInterval(() => {
+        a.getFloatTimeDomainData(x);
+        let s = 0;
+        for (const v of x) s += v * v;
+        window.__power.sum += s / x.length;
+        window.__power.n++;
+      }, 50);
+    }
+    window.__power.sum = 0;
+    window.__power.n = 0;
+  });
+  await page.waitForTimeout(wait);
+  const p = await page.evaluate(() => window.__power.sum / Math.max(1, window.__power.n));
+  return p > 0 ? 10 * Math.log10(p) : -Infinity;
+}
+
+// a fly-past heard in steps of STEP ms for SPAN ms after its button
+async function flyPast(page, span, step) {
+  await action(page, 'Fly past');
+  const trace = [];
+  for (let t = 0; t < span; t += step) trace.push(await power(page, step));
+  return trace;
+}
+
+async function caseRotors(browser, url, say, errors) {
+  const page = await open(browser, url, errors);
+  const f1 = v => v.toFixed(1);
+  try {
+    await play(page);
+    await probe(page);
+    // the fan spins up over 3 s from its start, and down over 3 s
+    await scene(page, 'fan');
+    await page.waitForTimeout(3500);
+    await resetLevels(page);
+    const on = await power(page, 1000);
+    await action(page, 'Switch off');
+    await page.waitForTimeout(3500);
+    const off = await power(page, 1000);
+    await action(page, 'Switch on');
+    await page.waitForTimeout(3500);
+    const again = await power(page, 1000);
+    say(off < on - 30 && Math.abs(again - on) < 2,
+      `rotors: the fan at speed ${f1(on)} dB, Switch off ${f1(off)} dB (30 dB under or more), ` +
+      `Switch on ${f1(again)} dB (within 2 dB of before)`);
+
+    // the drone hovers 3.6 m away; flown past from 20 m left to 20 m
+    // right, 3 m in front, in 5 s
+    await scene(page, 'drone');
+    await page.waitForTimeout(1500);
+    const hover = await power(page, 1000);
+    const d = await flyPast(page, 5500, 500);
+    const dMax = Math.max(...d), dAt = d.indexOf(dMax);
+    say(d[1] < hover - 8 && dMax > d[1] + 10 && d[d.length - 1] < dMax - 10 &&
+      dAt >= 3 && dAt <= 8,
+      `rotors: the drone hovering ${f1(hover)} dB; Fly past every 0.5 s: ${d.map(f1).join(' ')} dB ` +
+      `(far, then 10 dB louder near the middle, then 10 dB quieter)`);
+    await action(page, 'Hover in front');
+    await page.waitForTimeout(1000);
+    const back = await power(page, 1000);
+    say(Math.abs(back - hover) < 2,
+      `rotors: Hover in front brings the drone back: ${f1(back)} dB (hovering ${f1(hover)})`);
+
+    // the propeller passes from 150 m before to 150 m past in 6 s, 36 m
+    // from the listener at its closest
+    await scene(page, 'propeller');
+    const p = await flyPast(page, 7000, 500);
+    const pMax = Math.max(...p), pAt = p.indexOf(pMax);
+    say(pMax > p[1] + 10 && pMax > p[p.length - 1] + 10 && pAt >= 3 && pAt <= 10,
+      `rotors: the propeller's Fly past every 0.5 s: ${p.map(f1).join(' ')} dB (10 dB louder ` +
+      `as it passes than as it comes and goes)`);
+    const m = await levels(page, 0);
+    say(m.probe <= CEIL && m.peak <= CEIL,
+      `rotors: the whole case's output sample peak ${dB(m.probe)} dBFS, true peak ` +
+      `${dB(m.peak)} dBTP (ceiling -1)`);
+  } catch (err) {
+    say(false, `rotors: ${err.message.split('\n')[0]}`);
+  }
+  await page.context().close();
+}
+
 export async function usability(browser, url, out, say, errors) {
   await caseLevels(browser, url, say, errors);
   await caseRaces(browser, url, say, errors);
   await caseRenders(browser, url, out, say, errors);
   await casePhone(browser, url, out, say, errors);
   await caseSmall(browser, url, out, say, errors);
+  await caseRotors(browser, url, say, errors);
 }

@@ -10,6 +10,7 @@
 #include "aero_air.h"
 #include "aero_lanes.h"
 #include "airfoil_noise.h"
+#include "ghost_fade.h"
 
 /* area of a NACA four-digit section: 0.685 t c (Abbott & von Doenhoff
    1959), the strip's displaced volume per unit span */
@@ -48,6 +49,32 @@ static void blade_at(const aero_rotor_blade *b, double x, double *chord,
              180.0;
 }
 
+/* the inflow distortion's loading harmonics per strip (rotor.h): N
+   Gaussian dips of depth a (a < 0: rises) and standard deviation
+   sd = wake / (2.355 r_s) in azimuth; their sum's Fourier coefficient at
+   order k N, its mean taken out, is
+   a_k = -a N sd sqrt(2/pi) exp(-(k N sd)^2 / 2) (exact for the periodic
+   sum of the Gaussians). Kept: k up to the last whose a_k reaches 1e-5 a
+   at some strip (-100 dB) */
+static void distortion_layout(aero_rotor *r)
+{
+    const int N = r->struts;
+    const double a = r->distortion;
+    r->loads = 0;
+    for (int q = 0; q < r->strips; q++) {
+        aero_rotor_strip *sp = &r->strip[q];
+        const double sd = r->wake / (2.0 * sqrt(2.0 * log(2.0)) * sp->r);
+        const double first = -a * N * sd * sqrt(2.0 / AERO_PI);
+        for (int k = 1; k <= AERO_ROTOR_LOADS; k++) {
+            const double x = k * N * sd;
+            sp->load[k - 1] = a != 0.0 ? 0.5 * first * exp(-0.5 * x * x)
+                                       : 0.0;
+            if (fabs(sp->load[k - 1]) > 0.5e-5 * fabs(a) && k > r->loads)
+                r->loads = k;
+        }
+    }
+}
+
 static void layout(aero_rotor *r)
 {
     const int N = r->strips, B = r->blades;
@@ -78,6 +105,7 @@ static void layout(aero_rotor *r)
         double w = r->strip[s].r * r->strip[s].r / w_sum;
         r->strip[s].drag = r->torque * w / (B * q_arm);
     }
+    distortion_layout(r);
 }
 
 /* --- the blade's table ------------------------------------------------------ */
@@ -252,6 +280,9 @@ int aero_rotor_init(aero_rotor *r, double sample_rate, int n_ears,
     r->torque = AERO_ROTOR_TORQUE_DEFAULT;
     r->design_rpm = AERO_ROTOR_DESIGN_DEFAULT;
     r->noise_gain = pow(10.0, AERO_ROTOR_NOISE_DB_DEFAULT / 20.0);
+    r->struts = AERO_ROTOR_STRUTS_DEFAULT;
+    r->distortion = AERO_ROTOR_DISTORTION_DEFAULT;
+    r->wake = AERO_ROTOR_WAKE_DEFAULT;
     layout(r);
     memcpy(r->pose, unturned, sizeof(unturned));
     aero_pose_path_jump(&r->path, 7, unturned);
@@ -276,6 +307,7 @@ int aero_rotor_set_sample_rate(aero_rotor *r, double sr)
     int k = aero_moving_player_set_sample_rate(&r->base, sr);
     if (k == 1) {
         r->primed = 0; /* new rings: the sound starts again from 0 */
+        memset(r->ghost, 0, sizeof(r->ghost));
         noise_bank(r);
     }
     return k < 0 ? -1 : 0;
@@ -355,6 +387,24 @@ int aero_rotor_set_design(aero_rotor *r, double rpm)
                         AERO_ROTOR_DESIGN_MAX);
 }
 
+int aero_rotor_set_struts(aero_rotor *r, double struts)
+{
+    return set_whole(r, &r->struts, struts, AERO_ROTOR_STRUTS_MIN,
+                     AERO_ROTOR_STRUTS_MAX);
+}
+
+int aero_rotor_set_distortion(aero_rotor *r, double dip)
+{
+    return set_geometry(r, &r->distortion, dip, AERO_ROTOR_DISTORTION_MIN,
+                        AERO_ROTOR_DISTORTION_MAX);
+}
+
+int aero_rotor_set_wake(aero_rotor *r, double m)
+{
+    return set_geometry(r, &r->wake, m, AERO_ROTOR_WAKE_MIN,
+                        AERO_ROTOR_WAKE_MAX);
+}
+
 int aero_rotor_set_noise_db(aero_rotor *r, double db)
 {
     if (!(db >= AERO_ROTOR_NOISE_DB_MIN && db <= AERO_ROTOR_NOISE_DB_MAX))
@@ -394,6 +444,7 @@ static void apply_pose(aero_rotor *r, double *p, double interval_s)
         for (int i = 3; i < 7; i++)
             p[i] = -p[i];
     if (!r->pose_set || interval_s < 0.0 || interval_s > 0.5) {
+        r->jumped |= r->pose_set && r->primed;
         aero_pose_path_jump(&r->path, 7, p);
         memcpy(r->pose, p, 7 * sizeof(double));
         r->pose_set = 1;
@@ -492,6 +543,60 @@ static double bessel_jn(int n, double z)
     return jn / norm;
 }
 
+/* J_v(z) of any integer order: J_0, and J_{-v} = (-1)^v J_v */
+static double bessel_jv(int v, double z)
+{
+    const int a = v < 0 ? -v : v;
+    double j = a > 0 ? bessel_jn(a, z) : z > 1e-9 ? bessel_jn(0, z) : 1.0;
+    return v < 0 && (a & 1) ? -j : j;
+}
+
+/* the largest order |v| whose J_v(z) may reach 1e-7 (-140 dB): beyond
+   it |J_v(z)| <= (z/2)^|v| / |v|! <= (e z / (2|v|))^|v| is below that */
+static int bessel_reach(double z)
+{
+    int a = 1;
+    if (!(z > 1e-9))
+        return 0;
+    const double e = 2.718281828459045;
+    while (a < 1000000 && a * log(e * z / (2.0 * a)) >= -16.0)
+        a++;
+    return a - 1;
+}
+
+/* the inflow distortion's strip sums of harmonic m (rotor.h): per loading
+   harmonic k, orders nu = n - kN and n + kN, J_nu of the harmonic's own
+   argument n x r_s / c0, weighted by a_k / 2; the drag's factor nu / n is
+   the in-plane force's (the steady term's is 1) */
+static void distortion_sums(const aero_rotor *r, double x, int m,
+                            aero_rotor_sums *u)
+{
+    const int n = m * r->blades;
+    const int reach =
+        bessel_reach(n * x * r->strip[r->strips - 1].r / AERO_C0);
+    for (int k = 1; k <= r->loads; k++) {
+        for (int side = 0; side < 2; side++) {
+            const int nu = side ? n + k * r->struts : n - k * r->struts;
+            double t = 0.0, d = 0.0;
+            if (abs(nu) <= reach)
+                for (int q = 0; q < r->strips; q++) {
+                    const aero_rotor_strip *sp = &r->strip[q];
+                    double j = bessel_jv(nu, n * x * sp->r / AERO_C0) *
+                               sp->load[k - 1];
+                    t -= j * sp->thrust;
+                    d += j * (double)nu / n * sp->drag * AERO_C0 / sp->r;
+                }
+            if (side) {
+                u->thrust_hi[m - 1][k - 1] = t;
+                u->drag_hi[m - 1][k - 1] = d;
+            } else {
+                u->thrust_lo[m - 1][k - 1] = t;
+                u->drag_lo[m - 1][k - 1] = d;
+            }
+        }
+    }
+}
+
 /* the strip sums of harmonic m (n = mB) at x = Omega sin(theta) into
    slot m - 1 of u: J_n(n x r_s / c0) times each strip's thrust, drag and
    volume */
@@ -510,15 +615,19 @@ static void strip_sums(const aero_rotor *r, double x, int m,
     u->thrust[m - 1] = t;
     u->drag[m - 1] = d;
     u->volume[m - 1] = v;
+    if (r->loads > 0)
+        distortion_sums(r, x, m, u);
 }
 
 /* the coefficients of cos(n Psi) and sin(n Psi), n = mB, of the tone at
    distance d, cos(theta) ct in the rotor frame and e^{i g} = (cg, sg),
    g = n (phi - pi/2), angular speed omega > 0, from the strip sums u
-   (rotor.h's formula) */
+   (rotor.h's formula); e^{i g0} = (c0, s0), g0 = phi - pi/2, turns the
+   inflow distortion's terms (nu - n) g0 from the steady's */
 static void harmonic_at(const aero_rotor *r, const aero_rotor_sums *u,
                         double omega, double ct, double cg, double sg,
-                        double d, int m, double *c, double *s)
+                        double c0, double s0, double d, int m, double *c,
+                        double *s)
 {
     const int B = r->blades, n = m * B;
     const double load = (omega * 60.0 / TWO_PI) / r->design_rpm;
@@ -526,21 +635,58 @@ static void harmonic_at(const aero_rotor *r, const aero_rotor_sums *u,
     double L = k2 * (u->thrust[m - 1] * ct + u->drag[m - 1] / omega);
     double K = n * omega * B / (4.0 * AERO_PI * AERO_C0 * d);
     double th = n * omega * AERO_RHO * AERO_C0 * u->volume[m - 1];
-    *c = 2.0 * K * (-th * cg + L * sg);
-    *s = 2.0 * K * (-L * cg - th * sg);
+    if (r->loads <= 0) {
+        *c = 2.0 * K * (-th * cg + L * sg);
+        *s = 2.0 * K * (-L * cg - th * sg);
+        return;
+    }
+    /* L + SUM_k (e^{-i kN g0} L_lo + e^{+i kN g0} L_hi) = Lr + i Li;
+       e^{i kN g0} as powers of e^{i N g0} */
+    double Lr = L, Li = 0.0, er = 1.0, ei = 0.0, nr = 1.0, ni = 0.0;
+    for (int j = 0; j < r->struts; j++) {
+        double t = nr * c0 - ni * s0;
+        ni = nr * s0 + ni * c0;
+        nr = t;
+    }
+    for (int k = 0; k < r->loads; k++) {
+        double t = er * nr - ei * ni;
+        ei = er * ni + ei * nr;
+        er = t;
+        double lo = k2 * (u->thrust_lo[m - 1][k] * ct +
+                          u->drag_lo[m - 1][k] / omega);
+        double hi = k2 * (u->thrust_hi[m - 1][k] * ct +
+                          u->drag_hi[m - 1][k] / omega);
+        Lr += (lo + hi) * er;
+        Li += (hi - lo) * ei;
+    }
+    /* K e^{i g} (-i (Lr + i Li) - th) */
+    *c = 2.0 * K * ((Li - th) * cg + Lr * sg);
+    *s = 2.0 * K * ((Li - th) * sg - Lr * cg);
+}
+
+void aero_rotor_harmonic_at(const aero_rotor *r, int m, double omega,
+                            double theta, double phi, double d, double *c,
+                            double *s)
+{
+    *c = *s = 0.0;
+    if (m < 1 || m > AERO_ROTOR_HARMONICS_MAX || !(omega > 0.0) ||
+        !(d > 0.0))
+        return;
+    aero_rotor_sums *u = malloc(sizeof(*u)); /* 42 kB: not on the stack */
+    if (!u)
+        return;
+    double g0 = phi - 0.5 * AERO_PI, g = m * r->blades * g0;
+    strip_sums(r, omega * sin(theta), m, u);
+    harmonic_at(r, u, omega, cos(theta), cos(g), sin(g), cos(g0), sin(g0),
+                d, m, c, s);
+    free(u);
 }
 
 double aero_rotor_harmonic_amplitude(const aero_rotor *r, int m,
                                      double omega, double theta, double d)
 {
     double c, s;
-    aero_rotor_sums u;
-    if (m < 1 || m > AERO_ROTOR_HARMONICS_MAX || !(omega > 0.0) ||
-        !(d > 0.0))
-        return 0.0;
-    double g = m * r->blades * -0.5 * AERO_PI;
-    strip_sums(r, omega * sin(theta), m, &u);
-    harmonic_at(r, &u, omega, cos(theta), cos(g), sin(g), d, m, &c, &s);
+    aero_rotor_harmonic_at(r, m, omega, theta, 0.0, d, &c, &s);
     return hypot(c, s);
 }
 
@@ -591,6 +737,8 @@ static void ear_tones(aero_rotor *r, double omega, const double *ear,
     /* e^{i m B (phi - pi/2)}, harmonic by harmonic */
     const double g1 = r->blades * (phi - 0.5 * AERO_PI);
     const double rc = cos(g1), rs = sin(g1);
+    const double c0 = r->loads > 0 ? cos(phi - 0.5 * AERO_PI) : 1.0;
+    const double s0 = r->loads > 0 ? sin(phi - 0.5 * AERO_PI) : 0.0;
     double cg = 1.0, sg = 0.0;
     for (int m = 1; m <= h_max; m++) {
         double c1, s1, t = cg * rc - sg * rs;
@@ -600,7 +748,7 @@ static void ear_tones(aero_rotor *r, double omega, const double *ear,
             strip_sums(r, u->key, m, u);
             u->h = m;
         }
-        harmonic_at(r, u, w, ct, cg, sg, d, m, &c1, &s1);
+        harmonic_at(r, u, w, ct, cg, sg, c0, s0, d, m, &c1, &s1);
         double a = hypot(c1, s1);
         out->c[m - 1] = c1;
         out->s[m - 1] = omega < 0.0 ? -s1 : s1;
@@ -1159,6 +1307,7 @@ typedef char aero_rotor_harmonics_by_4[AERO_ROTOR_HARMONICS_MAX % 4 == 0
 typedef struct {
     float ev0, dev0;
     lane4 ec, es, dec, des;
+    const float *shape; /* a fade per sample, or NULL */
     float *ring;
     long mask;
     double at, step;
@@ -1181,6 +1330,7 @@ static inline void radiate_run(glide *gl, const tone4 *bank, const int nb,
     const float dev0 = gl->dev0;
     const double step = gl->step;
     float *ring = gl->ring;
+    const float *shape = gl->shape;
     const long mask = gl->mask;
     double at = gl->at;
     for (int i = 0; i < nb; i++)
@@ -1206,7 +1356,8 @@ static inline void radiate_run(glide *gl, const tone4 *bank, const int nb,
             p->s = l4_add(p->s, p->ds);
         }
         v += (l4_get(q, 0) + l4_get(q, 2)) + (l4_get(q, 1) + l4_get(q, 3));
-        aero_arrivals_add_span(ring, mask, at, step, v);
+        aero_arrivals_add_span(ring, mask, at, step,
+                               shape ? v * shape[j] : v);
         at += step;
     }
 }
@@ -1215,11 +1366,13 @@ static inline void radiate_run(glide *gl, const tone4 *bank, const int nb,
    glide from then to now, the phase turns from psi0 by dpsi a sample.
    Each harmonic keeps its own phasor e^{i (k+1) B psi}, turned by its own
    step (set exactly in double at each chunk): the harmonics are
-   independent, four to a SIMD register (aero_lanes.h) */
+   independent, four to a SIMD register (aero_lanes.h). shape (NULL:
+   none): a fade's factor per sample, smooth where a glide per chunk would
+   kink. hiss: the broadband noise heard (else not evaluated) */
 static void radiate(aero_rotor *r, const aero_rotor_ear *then,
                     const aero_rotor_ear *now, double gain0, double gain1,
-                    double psi0, double dpsi, const float *noise, int hiss,
-                    int e, int m)
+                    double psi0, double dpsi, const float *noise,
+                    const float *shape, int hiss, int e, int m)
 {
     enum { H = AERO_ROTOR_HARMONICS_MAX };
     const int h = then->h > now->h ? then->h : now->h;
@@ -1231,6 +1384,7 @@ static void radiate(aero_rotor *r, const aero_rotor_ear *then,
     float ec[4] = {0}, es[4] = {0}, dec[4] = {0}, des[4] = {0};
     tone4 bank[H / 4];
     glide gl;
+    gl.shape = shape;
     gl.ring = r->base.arrivals.ring[e];
     gl.mask = r->base.arrivals.mask;
     gl.step = 1.0 + (now->delay - then->delay) * inv_m;
@@ -1341,6 +1495,54 @@ static double chunk_turn(const aero_rotor *r, const float *rpm, int m,
     return sum / m * TWO_PI / 60.0 / r->base.sample_rate;
 }
 
+/* a jump while sounding: the sound where the rotor was goes on there as a
+   ghost (the oldest replaced when all are fading) */
+static void leave_ghost(aero_rotor *r, double level)
+{
+    aero_rotor_ghost *g = &r->ghost[0];
+    for (int k = 1; k < AERO_ROTOR_GHOSTS && g->active; k++)
+        if (!r->ghost[k].active || r->ghost[k].samples > g->samples)
+            g = &r->ghost[k];
+    memcpy(g->ear, r->then, sizeof(g->ear));
+    g->level = level;
+    g->samples = 0.0;
+    g->active = 1;
+}
+
+/* a fade's factors over the m samples after t (samples since it began):
+   ghost_fade.h's half cosine falling (out) or rising (!out); 0 when done */
+static int fade_shape(double t, int m, double sr, int out, float *shape)
+{
+    if (!(t < AERO_GHOST_FADE_S * sr))
+        return 0;
+    for (int j = 0; j < m; j++) {
+        double f = aero_ghost_fade(t + j + 1, sr, 1.0);
+        shape[j] = (float)(out ? f : 1.0 - f);
+    }
+    return 1;
+}
+
+/* the ghosts' next m samples: their tones and envelope held, at their
+   delays, fading out */
+static void radiate_ghosts(aero_rotor *r, double gain0, double gain1,
+                           double dpsi, const float *noise, int hiss, int m)
+{
+    float shape[AERO_ROTOR_CHUNK];
+    for (int k = 0; k < AERO_ROTOR_GHOSTS; k++) {
+        aero_rotor_ghost *g = &r->ghost[k];
+        if (!g->active)
+            continue;
+        g->active = fade_shape(g->samples, m, r->base.sample_rate, 1, shape);
+        g->samples += m;
+        if (!g->active)
+            continue;
+        for (int e = 0; e < r->base.n_ears; e++)
+            radiate(r, &g->ear[e], &g->ear[e], gain0 * g->level,
+                    gain1 * g->level, r->psi, dpsi, noise, shape, hiss, e,
+                    m);
+    }
+}
+
 /* one chunk of m samples */
 static void chunk(aero_rotor *r, const float *rpm, int m)
 {
@@ -1349,6 +1551,21 @@ static void chunk(aero_rotor *r, const float *rpm, int m)
     double dpsi = chunk_turn(r, rpm, m, &r->base.clamped);
     double omega = dpsi * r->base.sample_rate;
     float noise[AERO_ROTOR_CHUNK];
+    const double sr = r->base.sample_rate;
+    /* the first chunk or the first at a new place: the sound fades in
+       (from 0 at the start, as the ghost of the old place fades out) */
+    const int fresh = !r->primed || r->jumped;
+    if (fresh) {
+        if (r->jumped)
+            leave_ghost(r, r->fade_in < AERO_GHOST_FADE_S * sr
+                               ? 1.0 - aero_ghost_fade(r->fade_in, sr, 1.0)
+                               : 1.0);
+        r->fade_in = 0.0;
+        r->jumped = 0;
+    }
+    float shape[AERO_ROTOR_CHUNK];
+    const int fading = fade_shape(r->fade_in, m, sr, 0, shape);
+    r->fade_in += m;
     advance_pose(r, m);
     rotor_axes(r, axes);
     for (int i = 0; i < 3; i++)
@@ -1362,6 +1579,7 @@ static void chunk(aero_rotor *r, const float *rpm, int m)
     } else
         memset(noise, 0, sizeof(noise));
     gain = ramp_after(&r->base.gain, m);
+    radiate_ghosts(r, gain_then, gain, dpsi, noise, hiss, m);
     for (int e = 0; e < r->base.n_ears; e++) {
         for (int i = 0; i < 3; i++)
             ear[i] = ramp_after(&r->base.ear[3 * e + i], m);
@@ -1372,21 +1590,17 @@ static void chunk(aero_rotor *r, const float *rpm, int m)
            against a chunk, and costs more than the tones */
         if (!hiss)
             memset(now[e].env, 0, sizeof(now[e].env));
-        else if (r->envelope_due <= 0 || !r->primed)
+        else if (r->envelope_due <= 0 || fresh)
             ear_envelope(r, omega, u_axis, ear, axes, now[e].env);
         else
             memcpy(now[e].env, r->then[e].env, sizeof(now[e].env));
-        if (!r->primed) { /* the first chunk: the sound from 0 */
+        if (fresh) /* at its place from the start: no glide from the old */
             r->then[e] = now[e];
-            memset(r->then[e].c, 0, sizeof(r->then[e].c));
-            memset(r->then[e].s, 0, sizeof(r->then[e].s));
-            memset(r->then[e].env, 0, sizeof(r->then[e].env));
-        }
         radiate(r, &r->then[e], &now[e], gain_then, gain, r->psi, dpsi,
-                noise, hiss, e, m);
+                noise, fading ? shape : NULL, hiss, e, m);
         r->then[e] = now[e];
     }
-    r->envelope_due = r->envelope_due <= 0 || !r->primed
+    r->envelope_due = r->envelope_due <= 0 || fresh
                           ? AERO_ROTOR_ENVELOPE_SAMPLES - m
                           : r->envelope_due - m;
     r->primed = 1;

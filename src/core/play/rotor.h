@@ -27,8 +27,30 @@
  * The whole rotor is then a moving point source at its hub, heard through
  * the arrival rings (arrivals.h): retarded time, exact Doppler of the
  * hub's motion per ear, interaural delay.
- * Left out: unsteady loading (blade-vortex interaction, inflow distortion,
- * a turbine's tower passage), the near field (r of the order of R),
+ * Unsteady loading from an inflow distortion (the wakes of N struts, a
+ * fan's stand or a turbine's tower, fixed in space, the first along the
+ * rotor's x axis): each blade's loading at azimuth psi is
+ * F (1 + SUM_k a_k cos(k N psi)), and a loading harmonic of order
+ * sigma = kN radiates at harmonic n through J_{n-sigma} and J_{n+sigma}
+ * of the same argument (Lowson 1965, Lowson and Ollerhead 1969; the
+ * rotor-stator rule n - kN of Tyler and Sofrin 1962):
+ *   L_n += SUM_k SUM_{nu = n -+ k N} e^{i (nu - n)(phi - pi/2)} (a_k/2)
+ *          SUM_s J_nu(z_s) (-T_s cos(theta) + (nu/n) D_s c0 / (Omega r_s))
+ * (derived from the far field of a rotating point force in the frame and
+ * phase above, sigma = 0 giving Gutin's terms; test_rotor checks it
+ * against a direct time-domain sum). Only sigma = n reaches the axis
+ * (J_0), where the steady tones vanish: there p = n Omega B |SUM_s T_s
+ * a_k,s| / (4 pi c0 r) (peak), kN = n. Each wake is a Gaussian change of
+ * the loading by `distortion` of the steady (negative: a rise) over
+ * `wake` metres (full width at half depth, the same at every radius):
+ * its angle wake / r_s is wider near the hub, so a_k falls as
+ * exp(-(k N s_s)^2 / 2), s_s = wake / (2.355 r_s) (a wake's Gaussian
+ * defect, as a plane body's far wake: Schlichting and Gersten 2000). The
+ * change's mean is taken out: `thrust` and `torque` stay the means.
+ * Left out: other unsteady loading (blade-vortex interaction, inflow
+ * turbulence's tones), the blade's unsteady response (Sears 1941: the
+ * loading follows the inflow quasi-steadily), the near field (r of the
+ * order of R),
  * forward-flight convective factors of the tones (Garrick & Watkins 1954)
  * beyond the hub's Doppler, ground reflection, quadrupole noise.
  *
@@ -83,6 +105,25 @@
 #define AERO_ROTOR_NOISE_DB_MIN -200.0
 #define AERO_ROTOR_NOISE_DB_MAX 40.0
 #define AERO_ROTOR_NOISE_DB_DEFAULT 0.0
+/* the inflow distortion: its struts (wakes), their loading dip (of the
+   steady loading; 0: steady loading alone; negative: the loading rises in
+   a wake, as a fan's or propeller's does, the slower inflow meeting the
+   blade at a larger angle of attack; positive: it falls, as a wind
+   turbine's behind its tower) and their wakes' width */
+#define AERO_ROTOR_STRUTS_MIN 1
+#define AERO_ROTOR_STRUTS_MAX 32
+#define AERO_ROTOR_STRUTS_DEFAULT 1
+#define AERO_ROTOR_DISTORTION_MIN -1.0
+#define AERO_ROTOR_DISTORTION_MAX 1.0
+#define AERO_ROTOR_DISTORTION_DEFAULT 0.0
+#define AERO_ROTOR_WAKE_MIN 0.001 /* m */
+#define AERO_ROTOR_WAKE_MAX 100.0
+#define AERO_ROTOR_WAKE_DEFAULT 0.03
+/* loading harmonics k N kept, k = 1..AERO_ROTOR_LOADS: beyond them a
+   wake's harmonics are left out (one strut's wake R/4 wide: below -53 dB
+   of its first at the tip; R/5, a desk fan's: -34 dB, on the axis from
+   the 7th blade-passing harmonic up) */
+#define AERO_ROTOR_LOADS 32
 
 /* a blade's chord and twist along its radius (a small text file, as
  * trees are): rows of r/R, chord in m and twist in degrees (the section's
@@ -108,6 +149,7 @@ typedef struct {
     double thrust; /* per blade at the design rpm, N */
     double drag;   /* in-plane, per blade at the design rpm, N */
     double volume; /* displaced volume, m^3 */
+    double load[AERO_ROTOR_LOADS]; /* a_k / 2 of the inflow distortion */
 } aero_rotor_strip;
 
 /* the broadband: octave bands 63 Hz .. 16 kHz, an envelope of harmonics
@@ -132,6 +174,16 @@ typedef struct {
     int h; /* harmonics above the floor; those beyond are 0 */
 } aero_rotor_ear;
 
+/* the sound at a place the rotor jumped from (`place`, a pose after a
+   pause): each ear's tones and envelope as they were, its level then
+   (the start's fade-in, if not done) and the samples since the jump */
+#define AERO_ROTOR_GHOSTS 4 /* jumps heard fading at once: 8 ms apart */
+typedef struct {
+    aero_rotor_ear ear[AERO_EARS_MAX];
+    double level, samples;
+    int active;
+} aero_rotor_ghost;
+
 /* an ear's strip sums of harmonics 1..h (rotor.c: the Bessel functions,
    which depend on Omega sin(theta) alone), kept while that moves less
    than AERO_ROTOR_SUMS_TOLERANCE */
@@ -142,6 +194,12 @@ typedef struct {
     double thrust[AERO_ROTOR_HARMONICS_MAX]; /* SUM J_n (-T_s) */
     double drag[AERO_ROTOR_HARMONICS_MAX];   /* SUM J_n D_s c0 / r_s */
     double volume[AERO_ROTOR_HARMONICS_MAX]; /* SUM J_n V_s */
+    /* the inflow distortion's, per loading harmonic k, nu = n -+ k N:
+       SUM J_nu (-T_s) a_k/2 and SUM J_nu (nu/n) D_s c0 / r_s a_k/2 */
+    double thrust_lo[AERO_ROTOR_HARMONICS_MAX][AERO_ROTOR_LOADS];
+    double thrust_hi[AERO_ROTOR_HARMONICS_MAX][AERO_ROTOR_LOADS];
+    double drag_lo[AERO_ROTOR_HARMONICS_MAX][AERO_ROTOR_LOADS];
+    double drag_hi[AERO_ROTOR_HARMONICS_MAX][AERO_ROTOR_LOADS];
 } aero_rotor_sums;
 
 /* the blades' self-noise (Brooks et al. 1989, airfoil_noise.h): each
@@ -187,6 +245,9 @@ typedef struct aero_rotor {
     double radius, chord, thickness, hub;
     double thrust, torque, design_rpm;
     double noise_gain;   /* linear, of the self-noise */
+    int struts;          /* the inflow distortion: its order N */
+    double distortion, wake; /* its loading dip, its wakes' width (m) */
+    int loads;           /* loading harmonics k in use (0: steady alone) */
     aero_rotor_blade blade; /* chord and twist per radius, when has_blade */
     int has_blade;
     aero_rotor_strip strip[AERO_ROTOR_STRIPS_MAX];
@@ -207,6 +268,12 @@ typedef struct aero_rotor {
 
     aero_rotor_ear then[AERO_EARS_MAX]; /* at the last chunk's end */
     int primed;
+    /* a start and each jump fade the sound in over AERO_GHOST_FADE_S
+       (ghost_fade.h): the samples since; the sound at the places left
+       goes on there as ghosts fading out over the same time */
+    double fade_in;
+    int jumped; /* a jump while sounding, for the next chunk */
+    aero_rotor_ghost ghost[AERO_ROTOR_GHOSTS];
     int envelope_due; /* samples until the broadband's envelope is made again */
 } aero_rotor;
 
@@ -235,6 +302,9 @@ int aero_rotor_set_thrust(aero_rotor *r, double newton);
 int aero_rotor_set_torque(aero_rotor *r, double newton_metre);
 int aero_rotor_set_design(aero_rotor *r, double rpm);
 int aero_rotor_set_noise_db(aero_rotor *r, double db);
+int aero_rotor_set_struts(aero_rotor *r, double struts);
+int aero_rotor_set_distortion(aero_rotor *r, double dip);
+int aero_rotor_set_wake(aero_rotor *r, double m);
 int aero_rotor_set_gain_db(aero_rotor *r, double db);
 int aero_rotor_set_ramp_ms(aero_rotor *r, double ms);
 int aero_rotor_set_wind(aero_rotor *r, const double w[3]);
@@ -287,5 +357,12 @@ int aero_rotor_process(aero_rotor *r, const float *rpm, float *const *out,
  * process renders there (the renderer's coefficients, for the tests) */
 double aero_rotor_harmonic_amplitude(const aero_rotor *r, int m,
                                      double omega, double theta, double d);
+/* the same at azimuth phi (rad, from the rotor's x axis, where the first
+   strut's wake is, turning towards y with omega > 0): the coefficients of
+   cos(n Psi) and sin(n Psi) of the pressure, Psi blade 0's azimuth at the
+   retarded time from the hub (as the process renders them) */
+void aero_rotor_harmonic_at(const aero_rotor *r, int m, double omega,
+                            double theta, double phi, double d, double *c,
+                            double *s);
 
 #endif

@@ -139,27 +139,35 @@ static int plan_fft(aero_flow3d *s)
     return s->fwd && s->inv ? 0 : -1;
 }
 
-/* Thomas factors of (phi[k-1] + (mu - 2) phi[k] + phi[k+1]) per mode,
-   mu = 2 cos(2 pi kx / nx) + 2 cos(2 pi ky / ny) - 4 (the eigenvalue of
-   the periodic 5-point Laplacian times h^2); rows 0 (Neumann: the inflow
-   is prescribed) and nz-1 (phi = 0 on the top face) differ */
+/* Thomas factors of (phi[k-1] + (mu - 2) phi[k] + phi[k+1]) for mode
+   (kx, ky), mu = 2 cos(2 pi kx / nx) + 2 cos(2 pi ky / ny) - 4 (the
+   eigenvalue of the periodic 5-point Laplacian times h^2); rows 0
+   (Neumann: the inflow is prescribed) and nz-1 (phi = 0 on the top face)
+   differ. In double, stored as float, m[k * stride] */
+void aero_flow3d_poisson_factors(int nx, int ny, int nz, int kx, int ky,
+                                 float *m, size_t stride)
+{
+    double mu = 2.0 * cos(2.0 * AERO_PI * kx / nx) +
+                2.0 * cos(2.0 * AERO_PI * ky / ny) - 4.0;
+    double cprev = 0.0;
+    for (int k = 0; k < nz; k++) {
+        double b = mu - 2.0;
+        if (k == 0) b = mu - 1.0;
+        if (k == nz - 1) b = mu - 3.0;
+        double f = 1.0 / (b - (k ? cprev : 0.0));
+        m[(size_t)k * stride] = (float)f;
+        cprev = f;
+    }
+}
+
 static void factor_poisson(aero_flow3d *s)
 {
-    const int nx = s->nx, ny = s->ny, nz = s->nz, nxh = nx / 2 + 1;
+    const int nx = s->nx, ny = s->ny, nxh = nx / 2 + 1;
     for (int ky = 0; ky < ny; ky++)
-        for (int kx = 0; kx < nxh; kx++) {
-            double mu = 2.0 * cos(2.0 * AERO_PI * kx / nx) +
-                        2.0 * cos(2.0 * AERO_PI * ky / ny) - 4.0;
-            double cprev = 0.0;
-            for (int k = 0; k < nz; k++) {
-                double b = mu - 2.0;
-                if (k == 0) b = mu - 1.0;
-                if (k == nz - 1) b = mu - 3.0;
-                double m = 1.0 / (b - (k ? cprev : 0.0));
-                s->tri_m[((size_t)k * ny + ky) * nxh + kx] = (float)m;
-                cprev = m;
-            }
-        }
+        for (int kx = 0; kx < nxh; kx++)
+            aero_flow3d_poisson_factors(nx, ny, s->nz, kx, ky,
+                                        s->tri_m + (size_t)ky * nxh + kx,
+                                        (size_t)ny * nxh);
 }
 
 int aero_flow3d_init(aero_flow3d *s, const aero_flow3d_params *p, char *err,

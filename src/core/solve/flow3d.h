@@ -154,6 +154,11 @@ void aero_flow3d_set_window(aero_flow3d *s, int own_lo, int own_hi,
 /* one step of dt seconds (the inflow arrays are read at its start);
    returns -1 if a velocity became non-finite */
 int aero_flow3d_step(aero_flow3d *s, double dt);
+/* the Thomas factors of the pressure solve's tridiagonal system along z
+   for the Fourier mode (kx, ky) of an nx x ny x nz grid, m[k * stride]
+   for k = 0..nz-1 (the slab solver of aerotex-mpi shares them) */
+void aero_flow3d_poisson_factors(int nx, int ny, int nz, int kx, int ky,
+                                 float *m, size_t stride);
 /* the projection alone (makes the current field divergence-free) */
 void aero_flow3d_project(aero_flow3d *s);
 /* largest |div u| h over the cells, m/s (0 after a projection) */

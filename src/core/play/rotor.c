@@ -1573,8 +1573,16 @@ static void chunk(aero_rotor *r, const float *rpm, int m)
     double u_axis = aero_dot3(wind, axes + 6);
     /* -noise at its floor: the tones alone, without the noise's cost */
     const int hiss = r->noise_gain > 1e-9;
+    /* the self-noise's spectrum and envelope every
+       AERO_ROTOR_ENVELOPE_SAMPLES (5.3 ms at 48 kHz, whatever the host's
+       block and so the chunk), held between: they move with the geometry
+       and the speed, slowly against a chunk, and cost more than the
+       tones (a rotor spinning up from rest crosses a spectrum's speed
+       step every few chunks) */
+    const int due = r->envelope_due <= 0 || fresh;
     if (hiss) {
-        noise_spectrum(r, fabs(omega), u_axis);
+        if (due)
+            noise_spectrum(r, fabs(omega), u_axis);
         noise_chunk(r, noise, m);
     } else
         memset(noise, 0, sizeof(noise));
@@ -1584,13 +1592,9 @@ static void chunk(aero_rotor *r, const float *rpm, int m)
         for (int i = 0; i < 3; i++)
             ear[i] = ramp_after(&r->base.ear[3 * e + i], m);
         ear_tones(r, omega, ear, axes, &r->sums[e], &now[e]);
-        /* the envelope every AERO_ROTOR_ENVELOPE_SAMPLES (5.3 ms at 48
-           kHz, whatever the host's block and so the chunk), held
-           between: it moves with the geometry and the speed, slowly
-           against a chunk, and costs more than the tones */
         if (!hiss)
             memset(now[e].env, 0, sizeof(now[e].env));
-        else if (r->envelope_due <= 0 || fresh)
+        else if (due)
             ear_envelope(r, omega, u_axis, ear, axes, now[e].env);
         else
             memcpy(now[e].env, r->then[e].env, sizeof(now[e].env));
@@ -1600,8 +1604,7 @@ static void chunk(aero_rotor *r, const float *rpm, int m)
                 noise, fading ? shape : NULL, hiss, e, m);
         r->then[e] = now[e];
     }
-    r->envelope_due = r->envelope_due <= 0 || fresh
-                          ? AERO_ROTOR_ENVELOPE_SAMPLES - m
+    r->envelope_due = due ? AERO_ROTOR_ENVELOPE_SAMPLES - m
                           : r->envelope_due - m;
     r->primed = 1;
     r->psi = fmod(r->psi + dpsi * m, TWO_PI);

@@ -169,7 +169,7 @@ export const SCENES = [
     actions: [{ label: 'Squall', send: [['aero-scene', 'squall']] }],
   },
   {
-    id: 'fan', title: 'Desk fan', patch: 'fan.pd', gain: 31, data: [],
+    id: 'fan', title: 'Desk fan', patch: 'fan.pd', gain: 30, data: [],
     text: 'A desk fan 1 m in front, pointed at you: five 15 cm blades spin ' +
       'up to 1200 rpm over 3 s. What you hear is the blades\' broadband ' +
       'self-noise (Brooks, Pope and Marcolini 1989), rising with the speed. ' +
@@ -177,7 +177,10 @@ export const SCENES = [
       'dipole heard with its retarded time (compact Farassat 1A), whose ' +
       'tone is the blade-passing frequency B rpm / 60 = 100 Hz and its ' +
       'harmonics; near the fan\'s axis, where you sit, those steady-loading ' +
-      'tones all but vanish (Gutin 1936), so the hum is faint.',
+      'tones all but vanish (Gutin 1936). The hum you hear is the blades\' ' +
+      'unsteady loading: each blade crosses the slower air behind the ' +
+      'motor\'s neck once a turn, and that loading harmonic of order 5 ' +
+      'radiates along the axis at 100 Hz (Lowson 1965).',
     controls: [
       { id: 'rpm', label: 'Speed', unit: 'rpm', min: 300, max: 2400, step: 50,
         value: 1200, send: v => [['aero-scene', 'rpm', v]] },

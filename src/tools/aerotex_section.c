@@ -286,6 +286,51 @@ static void hook(void *ctx, const aero_flow2d *s, long step)
         snprintf(r->task.err, sizeof r->task.err, "can't write %.200s", path);
 }
 
+/* the calibration circle of the 2D-to-3D correction (span3d.h), on rank
+   0 in c (the slot after the directions), its correction shared with
+   every rank: 0, or 1 when it failed on rank 0 */
+static int run_calibration(aeolian_job *j, const aero_aeolian_flow_plan *plan,
+                           direction *c)
+{
+    const int nd = j->directions;
+    struct {
+        int status;
+        aero_span3d correction;
+    } shared;
+    aero_shape2d circle;
+    aero_aeolian_flow_params pc;
+    int status = 0;
+    aero_shape2d_circle(&circle, j->d);
+    pc = flow_params(j, &circle, 0.0);
+    pc.span3d_self = 1;
+    c->task.job = &j->job;
+    c->task.index = nd;
+    c->task.snap_every = (long)(plan->t_end / plan->dt) / 24 + 1;
+    c->wmax = 5.0f;
+    if (!j->job.quiet)
+        fprintf(stderr, "aerotex: the calibration circle of the 2D-to-3D "
+                "correction, Re %.4g\n", j->re);
+    if (aerotex_farm_rank() == 0 &&
+        !aerotex_farm_resume(&j->job, nd, c, sizeof *c, 0)) {
+        if (aero_aeolian_flow_simulate(&pc, j->job.rate, NULL, 0, 0, &c->st,
+                                       hook, 1, c, c->task.err,
+                                       sizeof c->task.err)) {
+            aerotex_error("%s", c->task.err);
+            status = 1;
+        }
+        aerotex_farm_keep(&j->job, nd, c, sizeof *c, 0);
+    }
+    free(c->w);
+    aero_shape2d_free(&circle);
+    memset(&shared, 0, sizeof shared);
+    shared.status = status;
+    shared.correction = c->st.span3d;
+    aerotex_farm_share(&shared, sizeof shared);
+    if (!shared.status)
+        j->correction = shared.correction;
+    return shared.status;
+}
+
 /* every direction in parallel into the job's raw (3 channels each): 0 or 1 */
 static int run_directions(aeolian_job *j, const aero_shape2d *shape,
                           const char *desc, direction *r)
@@ -312,46 +357,9 @@ static int run_directions(aeolian_job *j, const aero_shape2d *shape,
     aerotex_progress_start(&j->job.prog, NULL,
                            (long)(aerotex_farm_count(nd) + calibrate) *
                                plan.steps, j->job.quiet);
-    if (calibrate) {
-        /* rank 0 runs it, every rank gets its correction */
-        struct {
-            int status;
-            aero_span3d correction;
-        } shared;
-        aero_shape2d circle;
-        aero_aeolian_flow_params pc;
-        direction *c = &r[nd];
-        aero_shape2d_circle(&circle, j->d);
-        pc = flow_params(j, &circle, 0.0);
-        pc.span3d_self = 1;
-        c->task.job = &j->job;
-        c->task.index = nd;
-        c->task.snap_every = (long)(plan.t_end / plan.dt) / 24 + 1;
-        c->wmax = 5.0f;
-        if (!j->job.quiet)
-            fprintf(stderr, "aerotex: the calibration circle of the 2D-to-3D "
-                    "correction, Re %.4g\n", j->re);
-        if (aerotex_farm_rank() == 0 &&
-            !aerotex_farm_resume(&j->job, nd, c, sizeof *c, 0)) {
-            if (aero_aeolian_flow_simulate(&pc, j->job.rate, NULL, 0, 0,
-                                           &c->st, hook, 1, c, c->task.err,
-                                           sizeof c->task.err)) {
-                aerotex_error("%s", c->task.err);
-                status = 1;
-            }
-            aerotex_farm_keep(&j->job, nd, c, sizeof *c, 0);
-        }
-        free(c->w);
-        aero_shape2d_free(&circle);
-        memset(&shared, 0, sizeof shared);
-        shared.status = status;
-        shared.correction = c->st.span3d;
-        aerotex_farm_share(&shared, sizeof shared);
-        if (shared.status) {
-            aerotex_progress_end(&j->job.prog);
-            return shared.status;
-        }
-        j->correction = shared.correction;
+    if (calibrate && run_calibration(j, &plan, &r[nd])) {
+        aerotex_progress_end(&j->job.prog);
+        return 1;
     }
     if (!j->job.quiet)
         fprintf(stderr, "aerotex: %s, Re %.4g, %d direction%s, grid %d x %d, "

@@ -1047,40 +1047,28 @@ static double disc_flow(const aero_rotor *r, double omega, double u)
 /* ear_envelope's table of cos (2 pi k / 8) holds for 8 azimuths */
 typedef char aero_rotor_azimuths_are_8[AERO_ROTOR_AZIMUTHS == 8 ? 1 : -1];
 
-static void ear_envelope(const aero_rotor *r, double omega, double u,
-                         const double *ear, const double *axes, double *env)
-{
-    enum { NA = AERO_ROTOR_AZIMUTHS };
-    const aero_rotor_noise *z = &r->noise;
-    const int B = r->blades;
-    const double sense = omega < 0.0 ? -1.0 : 1.0, w = fabs(omega);
-    /* cos and sin of multiples of 2 pi / NA (NA = 8) */
-    static const double c8[8] = {1.0, 0.70710678118654752, 0.0,
-                                 -0.70710678118654752, -1.0,
-                                 -0.70710678118654752, 0.0,
-                                 0.70710678118654752};
-    const double s5 = z->scale * z->scale * z->scale * z->scale * z->scale;
-    /* the strips' constants: the retarded step's factor, the chord's
-       components, Mach number and a fifth of it, power, radius and its
-       square and double (float: see below) */
+/* the strips' constants for ear_envelope: the retarded step's factor,
+   the chord's components, Mach number and a fifth of it, power, radius
+   squared and doubled (float: see strips_power) */
+typedef struct {
     float kq[AERO_ROTOR_STRIPS_MAX], cws[AERO_ROTOR_STRIPS_MAX],
         aws[AERO_ROTOR_STRIPS_MAX], Ms[AERO_ROTOR_STRIPS_MAX],
         M5[AERO_ROTOR_STRIPS_MAX], Ps[AERO_ROTOR_STRIPS_MAX],
         R2[AERO_ROTOR_STRIPS_MAX], R2x[AERO_ROTOR_STRIPS_MAX];
-    double a[NA], rel[3];
-    const int nq = r->strips;
-    aero_near seen = {0, 0.0}; /* ear_tones reports it */
-    for (int i = 0; i < 3; i++)
-        rel[i] = ear[i] - r->pose[i];
-    aero_near_field(rel, AERO_ROTOR_NEAR_RADII * r->radius, axes, &seen);
-    const double vz = aero_dot3(rel, axes + 6), v2 = aero_dot3(rel, rel);
-    const double vp1 = aero_dot3(rel, axes), vp2 = aero_dot3(rel, axes + 3);
-    const double ud = disc_flow(r, omega, u);
-    const double rdh = v2 > 0.0 ? 1.0 / (sqrt(v2) * AERO_C0) : 0.0;
+    int n;
+} aero_rotor_strip_terms;
+
+/* each strip's chord downstream, in (e_t, axis): the flow's direction
+   (-cos phi, sin phi) turned by alpha away from the lift
+   lift (sin phi, cos phi); the normal (span x chord) follows. w the
+   angular speed, ud the axial flow through the disc, rdh 1 / (d_hub c0) */
+static void strip_terms(const aero_rotor *r, double w, double ud, double rdh,
+                        aero_rotor_strip_terms *t)
+{
+    const aero_rotor_noise *z = &r->noise;
+    const double s5 = z->scale * z->scale * z->scale * z->scale * z->scale;
     const double lift = r->thrust < 0.0 ? -1.0 : 1.0;
-    /* each strip's chord downstream, in (e_t, axis): the flow's direction
-       (-cos phi, sin phi) turned by alpha away from the lift
-       lift (sin phi, cos phi); the normal (span x chord) follows */
+    t->n = r->strips;
     for (int q = 0; q < r->strips; q++) {
         const double rq = r->strip[q].r;
         double wt = w * rq, W = sqrt(wt * wt + ud * ud);
@@ -1093,70 +1081,75 @@ static void ear_envelope(const aero_rotor *r, double omega, double u,
             cw = -cos(tw);
             aw = (ud < 0.0 ? -1.0 : 1.0) * sin(tw);
         }
-        cws[q] = (float)cw;
-        aws[q] = (float)aw;
-        kq[q] = (float)(w * rq * rdh);
-        Ms[q] = (float)(z->mach[q] * z->scale);
-        M5[q] = 0.2f * Ms[q];
-        Ps[q] = (float)(z->power[q] * s5);
-        R2[q] = (float)(rq * rq);
-        R2x[q] = (float)(2.0 * rq);
+        t->cws[q] = (float)cw;
+        t->aws[q] = (float)aw;
+        t->kq[q] = (float)(w * rq * rdh);
+        t->Ms[q] = (float)(z->mach[q] * z->scale);
+        t->M5[q] = 0.2f * t->Ms[q];
+        t->Ps[q] = (float)(z->power[q] * s5);
+        t->R2[q] = (float)(rq * rq);
+        t->R2x[q] = (float)(2.0 * rq);
     }
-    const float fvz = (float)vz, fv2 = (float)v2;
-    for (int j = 0; j < NA; j++) {
-        float P = 0.0f, term[AERO_ROTOR_STRIPS_MAX];
-        for (int b = 0; b < B; b++) {
-            /* psi = 2 pi (j / (B NA) + b / B) (noise_spectrum's table) */
-            const double cp0 = z->psi_cos[j * B + b];
-            const double sp0 = z->psi_sin[j * B + b];
-            /* the ear in the disc's polar frame at psi: along the span
-               and along the motion */
-            const float vr0 = (float)(cp0 * vp1 + sp0 * vp2);
-            const float vt0 = (float)(sense * (-sp0 * vp1 + cp0 * vp2));
-            /* branch-free over the strips, each term to its own slot (it
-               vectorises; the terms are summed in order below, so the
-               sum is the same on every compiler): a strip at the ear or
-               silent adds 0. In float, four strips to a SIMD register:
-               the distance from the strip as d^2 = |v|^2 - 2 r v_r + r^2
-               (no difference of the large |v|^2 and v_r^2), so float's
-               1e-7 holds at any range the rings hold; the floors as
-               comparisons, not fmax (a library call the loop cannot
-               vectorise) */
-            for (int q = 0; q < nq; q++) {
-                /* the retarded azimuth: turned back by Omega (d - d_hub)/c0
-                   (sense-wise), d - d_hub = -r vr / d_hub in the far
-                   field; cos and sin of that step by series (the step
-                   below 1 rad: its error under 1e-3), its coefficients
-                   multiplied, not divided (the divider, which the square
-                   roots need, is this loop's bottleneck) */
-                float t = kq[q] * vr0, t2 = t * t;
-                float ct1 = 1.0f - t2 * (0.5f - t2 * (1.0f / 24.0f));
-                float st1 = t * (1.0f - t2 * (1.0f / 6.0f - t2 * (1.0f / 120.0f)));
-                float vr = ct1 * vr0 + st1 * vt0; /* psi turned by t */
-                float vt = ct1 * vt0 - st1 * vr0;
-                float d2 = (fv2 + R2[q]) - R2x[q] * vr;
-                d2 = d2 > 1e-6f ? d2 : 1e-6f;
-                float vx = cws[q] * vt + aws[q] * fvz;
-                float vn = cws[q] * fvz - aws[q] * vt;
-                /* the distance off the span's line */
-                float h2 = vx * vx + vn * vn;
-                float h = sqrtf(h2 > 1e-12f ? h2 : 1e-12f);
-                /* the half-plane's directivity about its edge (Ffowcs
-                   Williams and Hall 1970): 2 sin^2(theta/2) of the
-                   azimuth theta about the span from the wake, times
-                   sin(psi) of the angle from the span, = (h - vx) / d;
-                   the report's D_h at mid-span. Its convective factors
-                   of the angle from the chord, cos = vx / d */
-                float id = 1.0f / sqrtf(d2);
-                float ct = vx * id, c1 = 1.0f + M5[q] * ct;
-                term[q] = Ps[q] * (h - vx) * id /
-                          ((1.0f + Ms[q] * ct) * c1 * c1 * d2);
-            }
-            for (int q = 0; q < nq; q++)
-                P += term[q];
-        }
-        a[j] = r->noise_gain * sqrt((double)P);
+}
+
+/* one blade's strips heard at the ear, (vr0, vt0) the ear along its span
+   and its motion, vz along the axis, v2 = |v|^2: their powers added to P
+   (the blades before it), in order.
+   Branch-free over the strips, each term to its own slot (it vectorises;
+   the terms are summed in order below, so the sum is the same on every
+   compiler): a strip at the ear or silent adds 0. In float, four strips
+   to a SIMD register: the distance from the strip as d^2 = |v|^2 - 2 r
+   v_r + r^2 (no difference of the large |v|^2 and v_r^2), so float's
+   1e-7 holds at any range the rings hold; the floors as comparisons, not
+   fmax (a library call the loop cannot vectorise) */
+static float strips_power(const aero_rotor_strip_terms *t, float P,
+                          float vr0, float vt0, float vz, float v2)
+{
+    float term[AERO_ROTOR_STRIPS_MAX];
+    for (int q = 0; q < t->n; q++) {
+        /* the retarded azimuth: turned back by Omega (d - d_hub)/c0
+           (sense-wise), d - d_hub = -r vr / d_hub in the far field; cos
+           and sin of that step by series (the step below 1 rad: its error
+           under 1e-3), its coefficients multiplied, not divided (the
+           divider, which the square roots need, is this loop's
+           bottleneck) */
+        float tq = t->kq[q] * vr0, t2 = tq * tq;
+        float ct1 = 1.0f - t2 * (0.5f - t2 * (1.0f / 24.0f));
+        float st1 = tq * (1.0f - t2 * (1.0f / 6.0f - t2 * (1.0f / 120.0f)));
+        float vr = ct1 * vr0 + st1 * vt0; /* psi turned by t */
+        float vt = ct1 * vt0 - st1 * vr0;
+        float d2 = (v2 + t->R2[q]) - t->R2x[q] * vr;
+        d2 = d2 > 1e-6f ? d2 : 1e-6f;
+        float vx = t->cws[q] * vt + t->aws[q] * vz;
+        float vn = t->cws[q] * vz - t->aws[q] * vt;
+        /* the distance off the span's line */
+        float h2 = vx * vx + vn * vn;
+        float h = sqrtf(h2 > 1e-12f ? h2 : 1e-12f);
+        /* the half-plane's directivity about its edge (Ffowcs Williams
+           and Hall 1970): 2 sin^2(theta/2) of the azimuth theta about the
+           span from the wake, times sin(psi) of the angle from the span,
+           = (h - vx) / d; the report's D_h at mid-span. Its convective
+           factors of the angle from the chord, cos = vx / d */
+        float id = 1.0f / sqrtf(d2);
+        float ct = vx * id, c1 = 1.0f + t->M5[q] * ct;
+        term[q] = t->Ps[q] * (h - vx) * id /
+                  ((1.0f + t->Ms[q] * ct) * c1 * c1 * d2);
     }
+    for (int q = 0; q < t->n; q++)
+        P += term[q];
+    return P;
+}
+
+/* the envelope's mean, then its cos and sin harmonics of B Psi, from its
+   amplitude a[] at the AERO_ROTOR_AZIMUTHS rotor positions */
+static void envelope_harmonics(const double *a, double *env)
+{
+    enum { NA = AERO_ROTOR_AZIMUTHS };
+    /* cos and sin of multiples of 2 pi / NA (NA = 8) */
+    static const double c8[8] = {1.0, 0.70710678118654752, 0.0,
+                                 -0.70710678118654752, -1.0,
+                                 -0.70710678118654752, 0.0,
+                                 0.70710678118654752};
     for (int k = 0; k <= AERO_ROTOR_ENVELOPE; k++) {
         double c = 0.0, s = 0.0;
         for (int j = 0; j < NA; j++) {
@@ -1170,6 +1163,40 @@ static void ear_envelope(const aero_rotor *r, double omega, double u,
             env[2 * k] = 2.0 * s / NA;
         }
     }
+}
+
+static void ear_envelope(const aero_rotor *r, double omega, double u,
+                         const double *ear, const double *axes, double *env)
+{
+    enum { NA = AERO_ROTOR_AZIMUTHS };
+    const aero_rotor_noise *z = &r->noise;
+    const int B = r->blades;
+    const double sense = omega < 0.0 ? -1.0 : 1.0, w = fabs(omega);
+    aero_rotor_strip_terms terms;
+    double a[NA], rel[3];
+    aero_near seen = {0, 0.0}; /* ear_tones reports it */
+    for (int i = 0; i < 3; i++)
+        rel[i] = ear[i] - r->pose[i];
+    aero_near_field(rel, AERO_ROTOR_NEAR_RADII * r->radius, axes, &seen);
+    const double vz = aero_dot3(rel, axes + 6), v2 = aero_dot3(rel, rel);
+    const double vp1 = aero_dot3(rel, axes), vp2 = aero_dot3(rel, axes + 3);
+    const double rdh = v2 > 0.0 ? 1.0 / (sqrt(v2) * AERO_C0) : 0.0;
+    strip_terms(r, w, disc_flow(r, omega, u), rdh, &terms);
+    for (int j = 0; j < NA; j++) {
+        float P = 0.0f;
+        for (int b = 0; b < B; b++) {
+            /* psi = 2 pi (j / (B NA) + b / B) (noise_spectrum's table) */
+            const double cp0 = z->psi_cos[j * B + b];
+            const double sp0 = z->psi_sin[j * B + b];
+            /* the ear in the disc's polar frame at psi: along the span
+               and along the motion */
+            const float vr0 = (float)(cp0 * vp1 + sp0 * vp2);
+            const float vt0 = (float)(sense * (-sp0 * vp1 + cp0 * vp2));
+            P = strips_power(&terms, P, vr0, vt0, (float)vz, (float)v2);
+        }
+        a[j] = r->noise_gain * sqrt((double)P);
+    }
+    envelope_harmonics(a, env);
 }
 
 /* lanes i0.. of the self-noise: the band-passes' coefficients and state,
@@ -1362,35 +1389,23 @@ static inline void radiate_run(glide *gl, const tone4 *bank, const int nb,
     }
 }
 
-/* the tones of one ear over m samples: the coefficients and the delay
-   glide from then to now, the phase turns from psi0 by dpsi a sample.
-   Each harmonic keeps its own phasor e^{i (k+1) B psi}, turned by its own
-   step (set exactly in double at each chunk): the harmonics are
-   independent, four to a SIMD register (aero_lanes.h). shape (NULL:
-   none): a fade's factor per sample, smooth where a glide per chunk would
-   kink. hiss: the broadband noise heard (else not evaluated) */
-static void radiate(aero_rotor *r, const aero_rotor_ear *then,
-                    const aero_rotor_ear *now, double gain0, double gain1,
-                    double psi0, double dpsi, const float *noise,
-                    const float *shape, int hiss, int e, int m)
+/* the chunk's glide from then to now at ear e: its place in the ring and
+   step (the delay's), the broadband envelope's mean and first two
+   harmonics and their steps a sample */
+static void glide_begin(glide *gl, const aero_rotor *r,
+                        const aero_rotor_ear *then, const aero_rotor_ear *now,
+                        double gain0, double gain1, const float *shape, int e,
+                        int m)
 {
-    enum { H = AERO_ROTOR_HARMONICS_MAX };
-    const int h = then->h > now->h ? then->h : now->h;
-    /* the harmonics in fours (those beyond h silent: 0 coefficients), at
-       least one four (the envelope's phasors) */
-    const int nb = h > 4 ? (h + 3) / 4 : 1, h4 = 4 * nb;
-    const double inv_m = 1.0 / m, B = r->blades;
-    float c[H], s[H], dc[H], ds[H], zr[H], zi[H], tr[H], ti[H];
+    const double inv_m = 1.0 / m;
     float ec[4] = {0}, es[4] = {0}, dec[4] = {0}, des[4] = {0};
-    tone4 bank[H / 4];
-    glide gl;
-    gl.shape = shape;
-    gl.ring = r->base.arrivals.ring[e];
-    gl.mask = r->base.arrivals.mask;
-    gl.step = 1.0 + (now->delay - then->delay) * inv_m;
-    gl.at = (double)r->base.arrivals.head + then->delay;
-    gl.ev0 = (float)(gain0 * then->env[0]);
-    gl.dev0 = (float)((gain1 * now->env[0] - gain0 * then->env[0]) * inv_m);
+    gl->shape = shape;
+    gl->ring = r->base.arrivals.ring[e];
+    gl->mask = r->base.arrivals.mask;
+    gl->step = 1.0 + (now->delay - then->delay) * inv_m;
+    gl->at = (double)r->base.arrivals.head + then->delay;
+    gl->ev0 = (float)(gain0 * then->env[0]);
+    gl->dev0 = (float)((gain1 * now->env[0] - gain0 * then->env[0]) * inv_m);
     for (int k = 0; k < 2; k++) {
         ec[k] = (float)(gain0 * then->env[2 * k + 1]);
         es[k] = (float)(gain0 * then->env[2 * k + 2]);
@@ -1399,17 +1414,28 @@ static void radiate(aero_rotor *r, const aero_rotor_ear *then,
         des[k] = (float)((gain1 * now->env[2 * k + 2] -
                           gain0 * then->env[2 * k + 2]) * inv_m);
     }
-    memcpy(&gl.ec, ec, sizeof(lane4));
-    memcpy(&gl.es, es, sizeof(lane4));
-    memcpy(&gl.dec, dec, sizeof(lane4));
-    memcpy(&gl.des, des, sizeof(lane4));
-    /* e^{i n psi0} and e^{i n dpsi} for n = (k+1) B as powers of the
-       first, in double (each product's rounding 1e-16: 40 of them far
-       below float's) instead of four cos and sin a harmonic */
+    memcpy(&gl->ec, ec, sizeof(lane4));
+    memcpy(&gl->es, es, sizeof(lane4));
+    memcpy(&gl->dec, dec, sizeof(lane4));
+    memcpy(&gl->des, des, sizeof(lane4));
+}
+
+/* the tone bank of the chunk, nb fours of harmonics: each harmonic's
+   coefficients gliding from then to now, and its phasor e^{i n psi0} with
+   its step e^{i n dpsi} for n = (k+1) B, as powers of the first, in
+   double (each product's rounding 1e-16: 40 of them far below float's)
+   instead of four cos and sin a harmonic */
+static void tone_bank(tone4 *bank, int nb, const aero_rotor_ear *then,
+                      const aero_rotor_ear *now, double gain0, double gain1,
+                      double B, double psi0, double dpsi, int m)
+{
+    enum { H = AERO_ROTOR_HARMONICS_MAX };
+    const double inv_m = 1.0 / m;
+    float c[H], s[H], dc[H], ds[H], zr[H], zi[H], tr[H], ti[H];
     const double z1r = cos(B * psi0), z1i = sin(B * psi0);
     const double t1r = cos(B * dpsi), t1i = sin(B * dpsi);
     double znr = z1r, zni = z1i, tnr = t1r, tni = t1i;
-    for (int k = 0; k < h4; k++) {
+    for (int k = 0; k < 4 * nb; k++) {
         c[k] = (float)(gain0 * then->c[k]);
         s[k] = (float)(gain0 * then->s[k]);
         dc[k] = (float)((gain1 * now->c[k] - gain0 * then->c[k]) * inv_m);
@@ -1434,6 +1460,28 @@ static void radiate(aero_rotor *r, const aero_rotor_ear *then,
         memcpy(&bank[i].tr, tr + 4 * i, sizeof(lane4));
         memcpy(&bank[i].ti, ti + 4 * i, sizeof(lane4));
     }
+}
+
+/* the tones of one ear over m samples: the coefficients and the delay
+   glide from then to now, the phase turns from psi0 by dpsi a sample.
+   Each harmonic keeps its own phasor e^{i (k+1) B psi}, turned by its own
+   step (set exactly in double at each chunk): the harmonics are
+   independent, four to a SIMD register (aero_lanes.h). shape (NULL:
+   none): a fade's factor per sample, smooth where a glide per chunk would
+   kink. hiss: the broadband noise heard (else not evaluated) */
+static void radiate(aero_rotor *r, const aero_rotor_ear *then,
+                    const aero_rotor_ear *now, double gain0, double gain1,
+                    double psi0, double dpsi, const float *noise,
+                    const float *shape, int hiss, int e, int m)
+{
+    const int h = then->h > now->h ? then->h : now->h;
+    /* the harmonics in fours (those beyond h silent: 0 coefficients), at
+       least one four (the envelope's phasors) */
+    const int nb = h > 4 ? (h + 3) / 4 : 1;
+    tone4 bank[AERO_ROTOR_HARMONICS_MAX / 4];
+    glide gl;
+    glide_begin(&gl, r, then, now, gain0, gain1, shape, e, m);
+    tone_bank(bank, nb, then, now, gain0, gain1, r->blades, psi0, dpsi, m);
     /* a subsonic tip's harmonics fall fast (a drone's: 5 above -80 dB):
        the common counts with theirs fixed */
     if (hiss)
